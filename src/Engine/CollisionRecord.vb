@@ -1,0 +1,55 @@
+Option Strict On
+
+''' <summary>One collision as it happened: who, when, and the velocities just before and just after.</summary>
+Public Structure CollisionRecord
+    ''' <summary>Simulated time of the collision, s.</summary>
+    Public ReadOnly Property Time As Double
+    ''' <summary>The movable circle.</summary>
+    Public ReadOnly Property A As Circle
+    ''' <summary>The other body, or Nothing for a wall.</summary>
+    Public ReadOnly Property B As Shape
+    ''' <summary>Which wall, when <see cref="B"/> is Nothing.</summary>
+    Public ReadOnly Property Wall As WallSide
+    Public ReadOnly Property Kind As CollisionKind
+    ''' <summary>m/s</summary>
+    Public ReadOnly Property AVelocityBefore As Vector
+    ''' <summary>m/s</summary>
+    Public ReadOnly Property AVelocityAfter As Vector
+    ''' <summary>m/s; zero for a fixed body or a wall.</summary>
+    Public ReadOnly Property BVelocityBefore As Vector
+    ''' <summary>m/s; zero for a fixed body or a wall.</summary>
+    Public ReadOnly Property BVelocityAfter As Vector
+
+    Public Sub New(time As Double, a As Circle, b As Shape, wall As WallSide, kind As CollisionKind,
+                   aBefore As Vector, aAfter As Vector, bBefore As Vector, bAfter As Vector)
+        Me.Time = time
+        Me.A = a
+        Me.B = b
+        Me.Wall = wall
+        Me.Kind = kind
+        AVelocityBefore = aBefore
+        AVelocityAfter = aAfter
+        BVelocityBefore = bBefore
+        BVelocityAfter = bAfter
+    End Sub
+
+    ''' <summary>The other body's name in outputs: its id, or wall:left, wall:right, wall:bottom, wall:top.</summary>
+    Public ReadOnly Property BName As String
+        Get
+            If B IsNot Nothing Then Return B.Id
+            Return "wall:" & Wall.ToString().ToLowerInvariant()
+        End Get
+    End Property
+
+    ''' <summary>The kind as the outputs spell it: circle-circle, circle-fixed, circle-rectangle, circle-wall.</summary>
+    Public ReadOnly Property KindName As String
+        Get
+            Select Case Kind
+                Case CollisionKind.CircleCircle : Return "circle-circle"
+                Case CollisionKind.CircleFixed : Return "circle-fixed"
+                Case CollisionKind.CircleRectangle : Return "circle-rectangle"
+                Case Else : Return "circle-wall"
+            End Select
+        End Get
+    End Property
+End Structure

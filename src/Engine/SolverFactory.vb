@@ -1,0 +1,20 @@
+Option Strict On
+
+''' <summary>Makes a solver by the name the command line and the app use.</summary>
+Public Module SolverFactory
+    ''' <summary>The names <see cref="Create"/> accepts.</summary>
+    Public ReadOnly Property Names As IReadOnlyList(Of String) = {"auto", "event", "euler", "verlet"}
+
+    ''' <summary>
+    ''' Makes the named solver. "auto" picks what the scene needs. <paramref name="timeStep"/> (s) is
+    ''' the step of a stepping solver; Nothing means its default. Unknown names throw ArgumentException.
+    ''' </summary>
+    Public Function Create(name As String, Optional timeStep As Double? = Nothing) As ISolver
+        Select Case name
+            Case "auto", "euler"
+                Return New SemiImplicitEulerSolver(If(timeStep, SemiImplicitEulerSolver.DefaultTimeStep))
+            Case Else
+                Throw New ArgumentException("unknown solver '" & name & "' (expected one of: " & String.Join(", ", Names) & ")", NameOf(name))
+        End Select
+    End Function
+End Module

@@ -1,0 +1,311 @@
+Option Strict On
+
+''' <summary>
+''' The simulated world: a container of width × height metres, gravity g pulling towards −y, one
+''' coefficient of restitution e for every contact, optional walls, and the bodies. A solver
+''' (<see cref="ISolver"/>) moves it forward; every change made here is passed to the solver so its
+''' predictions stay valid.
+''' </summary>
+Partial Public NotInheritable Class World
+    Private ReadOnly _bodies As New List(Of Shape)
+    Private ReadOnly _circles As New List(Of Circle)
+    Private ReadOnly _rectangles As New List(Of Rectangle)
+    Private ReadOnly _ids As New HashSet(Of String)(StringComparer.Ordinal)
+    Private _width As Double
+    Private _height As Double
+    Private _gravity As Double
+    Private _restitution As Double
+    Private _walls As Boolean
+    Private _solver As ISolver
+    Private _nextId As Integer = 1
+
+    ''' <param name="width">container width, m, &gt; 0</param>
+    ''' <param name="height">container height, m, &gt; 0</param>
+    ''' <param name="gravity">g, m/s², ≥ 0, pulling towards −y</param>
+    ''' <param name="restitution">e in [0, 1], for every contact</param>
+    ''' <param name="walls">whether the container's sides reflect circles</param>
+    Public Sub New(width As Double, height As Double, Optional gravity As Double = 9.81,
+                   Optional restitution As Double = 1.0, Optional walls As Boolean = True)
+        CheckSize(width, height)
+        _width = width
+        _height = height
+        Me.Gravity = gravity
+        Me.Restitution = restitution
+        _walls = walls
+    End Sub
+
+    ''' <summary>Inner width of the container, m.</summary>
+    Public ReadOnly Property Width As Double
+        Get
+            Return _width
+        End Get
+    End Property
+
+    ''' <summary>Inner height of the container, m.</summary>
+    Public ReadOnly Property Height As Double
+        Get
+            Return _height
+        End Get
+    End Property
+
+    ''' <summary>Magnitude of g, m/s², pulling towards −y. Can change while running.</summary>
+    Public Property Gravity As Double
+        Get
+            Return _gravity
+        End Get
+        Set(value As Double)
+            If Not (value >= 0) OrElse Double.IsInfinity(value) Then Throw New ArgumentOutOfRangeException(NameOf(Gravity), "gravity must be a finite number ≥ 0")
+            _gravity = value
+            _solver?.Invalidate(Nothing)
+        End Set
+    End Property
+
+    ''' <summary>Coefficient of restitution e in [0, 1], used for every contact. Can change while running.</summary>
+    Public Property Restitution As Double
+        Get
+            Return _restitution
+        End Get
+        Set(value As Double)
+            If Not (value >= 0 AndAlso value <= 1) Then Throw New ArgumentOutOfRangeException(NameOf(Restitution), "restitution must be between 0 and 1")
+            _restitution = value
+            _solver?.Invalidate(Nothing)
+        End Set
+    End Property
+
+    ''' <summary>Whether the four sides of the container reflect circles.</summary>
+    Public Property Walls As Boolean
+        Get
+            Return _walls
+        End Get
+        Set(value As Boolean)
+            _walls = value
+            If value Then BringCirclesInside()
+            _solver?.Invalidate(Nothing)
+        End Set
+    End Property
+
+    ''' <summary>Simulated time, s.</summary>
+    Public ReadOnly Property Time As Double
+
+    ''' <summary>Every body, in the order it was added.</summary>
+    Public ReadOnly Property Bodies As IReadOnlyList(Of Shape)
+        Get
+            Return _bodies
+        End Get
+    End Property
+
+    ''' <summary>Every circle, movable and fixed, in the order added.</summary>
+    Public ReadOnly Property Circles As IReadOnlyList(Of Circle)
+        Get
+            Return _circles
+        End Get
+    End Property
+
+    ''' <summary>Every rectangle, in the order added.</summary>
+    Public ReadOnly Property Rectangles As IReadOnlyList(Of Rectangle)
+        Get
+            Return _rectangles
+        End Get
+    End Property
+
+    ''' <summary>Collisions reported since the world was made.</summary>
+    Public ReadOnly Property CollisionCount As Long
+
+    ''' <summary>Called for every collision, in time order. Must not change the world.</summary>
+    Public Property CollisionListener As Action(Of CollisionRecord)
+
+    ''' <summary>The circle being dragged, or Nothing.</summary>
+    Public ReadOnly Property DraggedCircle As Circle
+
+    ''' <summary>Where the dragged circle is heading, m. It reaches it at the end of the next <see cref="Advance"/>.</summary>
+    Public ReadOnly Property DragTarget As Vector
+
+    ''' <summary>The solver that moves this world. Setting it attaches it.</summary>
+    Public Property Solver As ISolver
+        Get
+            Return _solver
+        End Get
+        Set(value As ISolver)
+            If value Is Nothing Then Throw New ArgumentNullException(NameOf(value))
+            _solver = value
+            value.Attach(Me)
+        End Set
+    End Property
+
+    ''' <summary>
+    ''' Adds a body. An empty id is given the next free number. A movable circle outside a walled
+    ''' container is brought inside. Overlaps are allowed: the solver pushes them apart.
+    ''' </summary>
+    Public Sub Add(body As Shape)
+        If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
+        If _bodies.Contains(body) Then Throw New ArgumentException("this body is already in the world", NameOf(body))
+        If String.IsNullOrEmpty(body.Id) Then
+            Do
+                body.Id = _nextId.ToString(Globalization.CultureInfo.InvariantCulture)
+                _nextId += 1
+            Loop While _ids.Contains(body.Id)
+        ElseIf _ids.Contains(body.Id) Then
+            Throw New ArgumentException("id '" & body.Id & "' is already used", NameOf(body))
+        End If
+        Dim c = TryCast(body, Circle)
+        If c IsNot Nothing Then
+            If Not c.Position.IsFinite OrElse Not c.Velocity.IsFinite Then Throw New ArgumentException("position and velocity must be finite", NameOf(body))
+            If c.IsFixed Then c.Velocity = Vector.Zero
+            If _walls AndAlso Not c.IsFixed Then c.Position = Inside(c.Position, c.Radius)
+            _circles.Add(c)
+        Else
+            _rectangles.Add(DirectCast(body, Rectangle))
+        End If
+        _ids.Add(body.Id)
+        _bodies.Add(body)
+        _solver?.Invalidate(body)
+    End Sub
+
+    ''' <summary>Removes a body; returns False when it was not in the world.</summary>
+    Public Function Remove(body As Shape) As Boolean
+        If body Is Nothing OrElse Not _bodies.Remove(body) Then Return False
+        _ids.Remove(body.Id)
+        Dim c = TryCast(body, Circle)
+        If c IsNot Nothing Then
+            _circles.Remove(c)
+            If c Is _DraggedCircle Then _DraggedCircle = Nothing
+        Else
+            _rectangles.Remove(DirectCast(body, Rectangle))
+        End If
+        _solver?.Invalidate(body)
+        Return True
+    End Function
+
+    ''' <summary>Removes every body and sets the clock to zero.</summary>
+    Public Sub Clear()
+        _bodies.Clear()
+        _circles.Clear()
+        _rectangles.Clear()
+        _ids.Clear()
+        _nextId = 1
+        _DraggedCircle = Nothing
+        _Time = 0
+        _solver?.Invalidate(Nothing)
+    End Sub
+
+    ''' <summary>The body with this id, or Nothing.</summary>
+    Public Function Find(id As String) As Shape
+        For Each b In _bodies
+            If String.Equals(b.Id, id, StringComparison.Ordinal) Then Return b
+        Next
+        Return Nothing
+    End Function
+
+    ''' <summary>Advances the world by exactly <paramref name="duration"/> seconds (≥ 0).</summary>
+    Public Sub Advance(duration As Double)
+        If Not (duration >= 0) OrElse Double.IsInfinity(duration) Then Throw New ArgumentOutOfRangeException(NameOf(duration), "duration must be a finite number ≥ 0")
+        If _solver Is Nothing Then Throw New InvalidOperationException("the world has no solver")
+        If duration = 0 Then Return
+        Dim start = _Time
+        _solver.Advance(duration)
+        _Time = start + duration
+    End Sub
+
+    ''' <summary>Sets a movable circle's velocity, m/s.</summary>
+    Public Sub SetVelocity(c As Circle, velocity As Vector)
+        CheckMovable(c)
+        If Not velocity.IsFinite Then Throw New ArgumentException("velocity must be finite", NameOf(velocity))
+        c.Velocity = velocity
+        _solver?.Invalidate(c)
+    End Sub
+
+    ''' <summary>Moves a movable circle to a new centre, m (kept inside a walled container).</summary>
+    Public Sub SetPosition(c As Circle, position As Vector)
+        CheckMovable(c)
+        If Not position.IsFinite Then Throw New ArgumentException("position must be finite", NameOf(position))
+        c.Position = If(_walls, Inside(position, c.Radius), position)
+        _solver?.Invalidate(c)
+    End Sub
+
+    ''' <summary>
+    ''' Applies an impulse J (N·s) to a movable circle: Δv = J / m, so the same push moves a heavy
+    ''' ball less (F = ma integrated over the push).
+    ''' </summary>
+    Public Sub ApplyImpulse(c As Circle, impulse As Vector)
+        CheckMovable(c)
+        If Not impulse.IsFinite Then Throw New ArgumentException("impulse must be finite", NameOf(impulse))
+        c.Velocity += impulse * c.InverseMass
+        _solver?.Invalidate(c)
+    End Sub
+
+    ''' <summary>
+    ''' Starts dragging a movable circle. While dragged it follows <see cref="DragTarget"/>, feels no
+    ''' gravity, pushes what it touches and is not pushed back (it acts as if of infinite mass).
+    ''' </summary>
+    Public Sub BeginDrag(c As Circle)
+        CheckMovable(c)
+        If _DraggedCircle IsNot Nothing Then EndDrag(Vector.Zero)
+        _DraggedCircle = c
+        _DragTarget = c.Position
+        c.Velocity = Vector.Zero
+        _solver?.Invalidate(c)
+    End Sub
+
+    ''' <summary>Sets where the dragged circle is heading, m (kept inside a walled container).</summary>
+    Public Sub DragTo(target As Vector)
+        If _DraggedCircle Is Nothing Then Return
+        If Not target.IsFinite Then Throw New ArgumentException("target must be finite", NameOf(target))
+        _DragTarget = If(_walls, Inside(target, _DraggedCircle.Radius), target)
+        _solver?.Invalidate(_DraggedCircle)
+    End Sub
+
+    ''' <summary>Drops the dragged circle back into the simulation with the given velocity, m/s.</summary>
+    Public Sub EndDrag(releaseVelocity As Vector)
+        Dim c = _DraggedCircle
+        If c Is Nothing Then Return
+        _DraggedCircle = Nothing
+        c.Velocity = If(releaseVelocity.IsFinite, releaseVelocity, Vector.Zero)
+        _solver?.Invalidate(c)
+    End Sub
+
+    ''' <summary>
+    ''' Changes the container's size while running. With walls on, a movable circle that the smaller
+    ''' container leaves outside is brought back inside.
+    ''' </summary>
+    Public Sub Resize(width As Double, height As Double)
+        CheckSize(width, height)
+        _width = width
+        _height = height
+        If _walls Then BringCirclesInside()
+        If _DraggedCircle IsNot Nothing AndAlso _walls Then _DragTarget = Inside(_DragTarget, _DraggedCircle.Radius)
+        _solver?.Invalidate(Nothing)
+    End Sub
+
+    ''' <summary>Called by solvers for each collision, in time order.</summary>
+    Friend Sub ReportCollision(record As CollisionRecord)
+        _CollisionCount += 1
+        _CollisionListener?.Invoke(record)
+    End Sub
+
+    ''' <summary>The nearest centre to <paramref name="p"/> that keeps a circle of radius r inside the container.</summary>
+    Public Function Inside(p As Vector, radius As Double) As Vector
+        Return New Vector(Clamp(p.X, radius, _width - radius, _width / 2), Clamp(p.Y, radius, _height - radius, _height / 2))
+    End Function
+
+    Private Shared Function Clamp(v As Double, lo As Double, hi As Double, middle As Double) As Double
+        If lo > hi Then Return middle ' wider than the container: centre it
+        Return Math.Min(Math.Max(v, lo), hi)
+    End Function
+
+    Private Sub BringCirclesInside()
+        For Each c In _circles
+            If Not c.IsFixed Then c.Position = Inside(c.Position, c.Radius)
+        Next
+    End Sub
+
+    Private Sub CheckMovable(c As Circle)
+        If c Is Nothing Then Throw New ArgumentNullException(NameOf(c))
+        If c.IsFixed Then Throw New ArgumentException("a fixed circle never moves", NameOf(c))
+        If Not _circles.Contains(c) Then Throw New ArgumentException("the circle is not in this world", NameOf(c))
+    End Sub
+
+    Private Shared Sub CheckSize(width As Double, height As Double)
+        If Not (width > 0) OrElse Double.IsInfinity(width) Then Throw New ArgumentOutOfRangeException(NameOf(width), "width must be a finite number greater than 0")
+        If Not (height > 0) OrElse Double.IsInfinity(height) Then Throw New ArgumentOutOfRangeException(NameOf(height), "height must be a finite number greater than 0")
+    End Sub
+End Class

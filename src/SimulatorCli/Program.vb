@@ -1,0 +1,30 @@
+Option Strict On
+
+''' <summary>Entry point: dispatches the verb. Exit 0 on success, 2 on bad input, 1 on any other failure.</summary>
+Public NotInheritable Class Program
+    Private Sub New()
+    End Sub
+
+    Public Shared Function Main(args As String()) As Integer
+        Try
+            If args.Length = 0 OrElse args(0) = "--help" OrElse args(0) = "-h" Then
+                Dim usageOut = If(args.Length = 0, Console.Error, Console.Out)
+                usageOut.WriteLine(Usage)
+                Return If(args.Length = 0, ExitCodes.BadInput, ExitCodes.Ok)
+            End If
+            Select Case args(0)
+                Case Else
+                    Console.Error.WriteLine("unknown verb '" & args(0) & "' (expected validate or run)")
+                    Return ExitCodes.BadInput
+            End Select
+        Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
+            Console.Error.WriteLine("internal error: " & ex.Message)
+            Return ExitCodes.Failure
+        End Try
+    End Function
+
+    Private Const Usage As String =
+        "usage: SimulatorCli validate SCENE" & vbLf &
+        "       SimulatorCli run SCENE --time T [--solver auto|event|euler|verlet] [--dt D] [--sample S]" & vbLf &
+        "                    [--states FILE] [--events FILE] [--json]"
+End Class
