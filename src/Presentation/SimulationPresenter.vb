@@ -110,8 +110,12 @@ Partial Public NotInheritable Class SimulationPresenter
         FitView()
     End Sub
 
+    ''' <summary>Height of the strip under the container that holds the scale bar, px.</summary>
+    Public Const ScaleStrip As Integer = 34
+
     Private Sub FitView()
-        _View = ViewTransform.Fit(World.Width, World.Height, _canvasWidth, _canvasHeight, 20)
+        ' The container sits above a strip kept free for the scale bar.
+        _View = ViewTransform.Fit(World.Width, World.Height, _canvasWidth, Math.Max(1, _canvasHeight - ScaleStrip), 16)
     End Sub
 
     ''' <summary>Pauses or resumes. On pausing, the trace lists every movable body's state.</summary>
