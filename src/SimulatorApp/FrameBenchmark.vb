@@ -37,16 +37,22 @@ Friend Module FrameBenchmark
                 totalMs(f) = afterPaint
             Next
         End Using
-        Dim inv = CultureInfo.InvariantCulture
-        output.WriteLine(String.Format(inv,
-            "{{""benchmark"":""frame"",""circles"":{0},""frames"":{1},""frame_s"":{2:R},""solver"":""{3}"",""canvas"":""{4}x{5}""," &
-            """step_median_ms"":{6:F3},""step_p95_ms"":{7:F3},""paint_median_ms"":{8:F3},""paint_p95_ms"":{9:F3}," &
-            """total_median_ms"":{10:F3},""total_p95_ms"":{11:F3}}}",
-            count, Frames, FrameSeconds, world.Solver.Name, CanvasWidth, CanvasHeight,
-            Percentile(stepMs, 0.5), Percentile(stepMs, 0.95), Percentile(paintMs, 0.5), Percentile(paintMs, 0.95),
-            Percentile(totalMs, 0.5), Percentile(totalMs, 0.95)))
+        Dim fields = {
+            ("circles", count.ToString(CultureInfo.InvariantCulture)),
+            ("frames", Frames.ToString(CultureInfo.InvariantCulture)),
+            ("frame_s", FrameSeconds.ToString("R", CultureInfo.InvariantCulture)),
+            ("solver", """" & world.Solver.Name & """"),
+            ("canvas", """" & CanvasWidth.ToString(CultureInfo.InvariantCulture) & "x" & CanvasHeight.ToString(CultureInfo.InvariantCulture) & """"),
+            ("step_median_ms", Ms(Percentile(stepMs, 0.5))), ("step_p95_ms", Ms(Percentile(stepMs, 0.95))),
+            ("paint_median_ms", Ms(Percentile(paintMs, 0.5))), ("paint_p95_ms", Ms(Percentile(paintMs, 0.95))),
+            ("total_median_ms", Ms(Percentile(totalMs, 0.5))), ("total_p95_ms", Ms(Percentile(totalMs, 0.95)))}
+        output.WriteLine("{""benchmark"":""frame""," & String.Join(",", fields.Select(Function(f) """" & f.Item1 & """:" & f.Item2)) & "}")
         output.Flush()
         Return 0
+    End Function
+
+    Private Function Ms(value As Double) As String
+        Return value.ToString("F3", CultureInfo.InvariantCulture)
     End Function
 
     ''' <summary>The q-quantile (0 to 1) by nearest rank.</summary>
