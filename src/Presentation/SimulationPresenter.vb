@@ -46,6 +46,9 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>What the input boxes should show.</summary>
     Public ReadOnly Property Inputs As New BodyInputs()
 
+    ''' <summary>What the message box shows when there is no message: how to use the mouse.</summary>
+    Public Const MouseHint As String = "Right-drag carries a ball. Left-drag back from a ball and let go to fire it like a cue."
+
     ''' <summary>The message on show ("" for none).</summary>
     Public ReadOnly Property Message As String = ""
 
@@ -236,7 +239,7 @@ Partial Public NotInheritable Class SimulationPresenter
             Dim pe = World.PotentialEnergy()
             Return "t = " & Units.Num(World.Time, 2) & " s    Σp = " & Units.Pair(p) & " kg·m/s  (|Σp| = " & Units.Num(p.Length) & ")    " &
                 "ΣKE = " & Units.Num(ke) & " J    ΣPE = " & Units.Num(pe) & " J    KE + PE = " & Units.Num(ke + pe) & " J    collisions: " &
-                World.CollisionCount.ToString(Globalization.CultureInfo.InvariantCulture)
+                Log.TotalSeen.ToString(Globalization.CultureInfo.InvariantCulture)
         End Get
     End Property
 

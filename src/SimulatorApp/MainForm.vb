@@ -374,8 +374,11 @@ Partial Friend NotInheritable Class MainForm
     End Sub
 
     Public Sub ShowMessage(text As String) Implements ISimulationView.ShowMessage
-        _message.Text = text
-        _message.Visible = Not String.IsNullOrEmpty(text)
+        ' No message: a quiet reminder of what the mouse does, in grey rather than on yellow.
+        Dim quiet = String.IsNullOrEmpty(text)
+        _message.Text = If(quiet, SimulationPresenter.MouseHint, text)
+        _message.BackColor = If(quiet, SystemColors.Control, Color.FromArgb(255, 248, 196))
+        _message.ForeColor = If(quiet, Color.DimGray, Color.FromArgb(120, 20, 0))
     End Sub
 
     Public Sub ShowSettings() Implements ISimulationView.ShowSettings
