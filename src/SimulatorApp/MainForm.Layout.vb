@@ -22,7 +22,8 @@ Partial Friend NotInheritable Class MainForm
         Dim line = Font.Height
         Dim canvasHeight = CInt(h * 0.62)
         _canvas.SetBounds(0, 0, w - sideWidth, canvasHeight)
-        _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), line + S(10))
+        ' With large fonts the totals take two lines rather than being cut short.
+        _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), If(_presenter.LargeFonts, 2 * line + S(8), line + S(10)))
         Dim tabsTop = _totals.Bottom
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
         _side.SetBounds(w - sideWidth, 0, sideWidth, h)
@@ -45,7 +46,12 @@ Partial Friend NotInheritable Class MainForm
         Row(sliderHeight, (_speed, 1.0))
         Row(rh, (_gravityLabel, 1.0))
         Row(sliderHeight, (_gravity, 1.0))
-        Row(rh, (_gravityMarks(0), 0.25), (_gravityMarks(1), 0.25), (_gravityMarks(2), 0.25), (_gravityMarks(3), 0.25))
+        If pairs Then
+            Row(rh, (_gravityMarks(0), 0.25), (_gravityMarks(1), 0.25), (_gravityMarks(2), 0.25), (_gravityMarks(3), 0.25))
+        Else
+            Row(rh, (_gravityMarks(0), 0.5), (_gravityMarks(1), 0.5))
+            Row(rh, (_gravityMarks(2), 0.5), (_gravityMarks(3), 0.5))
+        End If
         Gap()
         Row(rh, (_restitutionLabel, 1.0))
         Row(sliderHeight, (_restitution, 1.0))
@@ -79,8 +85,9 @@ Partial Friend NotInheritable Class MainForm
     ''' <summary>Each column as wide as its header, and the spare width shared out, so no header is clipped.</summary>
     Private Sub FitColumns(list As BufferedListView, available As Integer)
         Dim widths(list.Columns.Count - 1) As Integer
+        Dim cell = TextRenderer.MeasureText("#888888", list.Font).Width
         For i = 0 To widths.Length - 1
-            widths(i) = TextRenderer.MeasureText(list.Columns(i).Text, list.Font).Width + S(14)
+            widths(i) = Math.Max(TextRenderer.MeasureText(list.Columns(i).Text, list.Font).Width, cell) + S(14)
         Next
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
         For i = 0 To widths.Length - 1

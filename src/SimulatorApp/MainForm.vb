@@ -117,6 +117,7 @@ Partial Friend NotInheritable Class MainForm
 
         _totals.TextAlign = ContentAlignment.MiddleLeft
         _totals.AutoEllipsis = True
+        _totals.UseMnemonic = False
         Controls.Add(_totals)
 
         SetUpTable(_circleTable, BodyTable.CircleHeaders, AddressOf OnRetrieveCircle)
@@ -391,7 +392,7 @@ Partial Friend NotInheritable Class MainForm
             _gravity.Value = CInt(Math.Round(w.Gravity * 100))
             _gravityLabel.Text = "Gravity g = " & Units.Num(w.Gravity) & " m/s²"
             _restitution.Value = CInt(Math.Round(w.Restitution * 100))
-            _restitutionLabel.Text = "Restitution e = " & Units.Num(w.Restitution) & "   (0 = sticky, 1 = elastic)"
+            _restitutionLabel.Text = "Restitution e = " & Units.Num(w.Restitution) & "  (1 = elastic)"
             _pause.Text = If(_presenter.IsPaused, "▶ Resume", "❚❚ Pause")
             _pause.ForeColor = If(_presenter.IsPaused, Color.DarkGreen, Color.DarkRed)
             _deleteMode.Text = If(_presenter.Mode = ClickMode.Delete, "Delete mode: ON", "Delete mode")

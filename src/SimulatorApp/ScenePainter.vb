@@ -16,7 +16,7 @@ Friend NotInheritable Class ScenePainter
     ''' <summary>Shorter arrows (px) are not drawn: they would be a blob on the ball.</summary>
     Private Const MinArrowPx As Single = 8
     ''' <summary>With more balls than this, drawing turns off anti-aliasing, labels and arrows to keep the frame rate.</summary>
-    Private Const BusyScene As Integer = 300
+    Private Const BusyScene As Integer = 80
 
     Private ReadOnly _brushes As New Dictionary(Of String, SolidBrush)(StringComparer.Ordinal)
     Private ReadOnly _solid As New Dictionary(Of Integer, SolidBrush)
@@ -24,6 +24,7 @@ Friend NotInheritable Class ScenePainter
     Private _font As Font
     Private _bigFont As Font
     Private _fontsLarge As Boolean = True ' forces the first build
+    Private ReadOnly _arrowPoints(2) As PointF
     Private ReadOnly _pullPen As New Pen(Color.Gray, 2) With {.DashStyle = DashStyle.Dash}
 
     ''' <summary>Paints the whole canvas of <paramref name="width"/> × <paramref name="height"/> px.</summary>
@@ -166,16 +167,20 @@ Friend NotInheritable Class ScenePainter
         g.DrawString(text, _bigFont, SolidOf(If(theme.IsHighContrast AndAlso colour = &HC62828, &HFF5252, colour)), 24, 4)
     End Sub
 
-    Private Shared Sub Arrow(g As Graphics, pen As Pen, x0 As Single, y0 As Single, x1 As Single, y1 As Single)
-        g.DrawLine(pen, x0, y0, x1, y1)
+    ''' <summary>An arrow as one polyline (shaft, then the two strokes of the head), so GDI+ strokes it in one call.</summary>
+    Private Sub Arrow(g As Graphics, pen As Pen, x0 As Single, y0 As Single, x1 As Single, y1 As Single)
         Dim dx = x1 - x0, dy = y1 - y0
         Dim len = CSng(Math.Sqrt(dx * dx + dy * dy))
         If len < 1 Then Return
         Dim head = Math.Min(10.0F, len * 0.4F)
         Dim ux = dx / len, uy = dy / len
-        ' Two strokes at ±30° back from the tip.
-        g.DrawLine(pen, x1, y1, x1 - head * (ux * 0.866F - uy * 0.5F), y1 - head * (uy * 0.866F + ux * 0.5F))
-        g.DrawLine(pen, x1, y1, x1 - head * (ux * 0.866F + uy * 0.5F), y1 - head * (uy * 0.866F - ux * 0.5F))
+        ' Wings at ±30° back from the tip; the path goes wing → tip → start, then tip → other wing.
+        Dim pts = _arrowPoints
+        pts(0) = New PointF(x1 - head * (ux * 0.866F - uy * 0.5F), y1 - head * (uy * 0.866F + ux * 0.5F))
+        pts(1) = New PointF(x1, y1)
+        pts(2) = New PointF(x1 - head * (ux * 0.866F + uy * 0.5F), y1 - head * (uy * 0.866F - ux * 0.5F))
+        g.DrawLines(pen, pts)
+        g.DrawLine(pen, x0, y0, x1, y1)
     End Sub
 
     Private Sub EnsureFonts(large As Boolean)

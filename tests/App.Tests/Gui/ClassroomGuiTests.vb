@@ -6,6 +6,7 @@ Imports Xunit
 ''' The real window under Xvfb, driven with the mouse and keyboard as a teacher would: every test
 ''' checks the effect twice, in the app's --trace output and in a screenshot's pixels.
 ''' </summary>
+<Collection(RealWindow.Name)>
 Public Class ClassroomGuiTests
     <GuiFact>
     Public Sub AddCircle_FollowsTheCursor_AndIsPlacedWhereClicked()

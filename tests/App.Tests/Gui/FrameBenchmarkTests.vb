@@ -3,6 +3,7 @@ Imports System.Text.RegularExpressions
 Imports Xunit
 
 ''' <summary>The app's --frame-benchmark switch: no window, one JSON line, then exit.</summary>
+<Collection(RealWindow.Name)>
 Public Class FrameBenchmarkTests
     <GuiFact>
     Public Sub FrameBenchmark_PrintsOneJsonLine_WithoutADisplay()
