@@ -75,23 +75,36 @@ Public NotInheritable Class CollisionLogEntry
         End Get
     End Property
 
-    ''' <summary>The line as the log shows it (built once, on first use).</summary>
+    ''' <summary>The log's column headers, with units.</summary>
+    Public Shared ReadOnly Property Headers As IReadOnlyList(Of String) = {
+        "t (s)", "Bodies", "Speeds before → after (m/s)", "KE before → after (J)", "KE lost", "Momentum p before → after (kg·m/s)"}
+
+    Private _cells As String()
+
+    ''' <summary>The cells of this line, one per header (built once, on first use).</summary>
+    Public Function Cells() As String()
+        If _cells Is Nothing Then _cells = Format()
+        Return CType(_cells.Clone(), String())
+    End Function
+
+    ''' <summary>The whole line as one string.</summary>
     Public ReadOnly Property Text As String
         Get
-            If _text Is Nothing Then _text = Format()
+            If _text Is Nothing Then _text = String.Join("   ", Cells())
             Return _text
         End Get
     End Property
 
-    Private Function Format() As String
-        Dim t = "t = " & Units.Num(Time, 3) & " s   "
-        If SkippedCount > 0 Then Return t & "… " & SkippedCount.ToString(Globalization.CultureInfo.InvariantCulture) & " more collisions in this frame (counted, not listed)"
-        Dim s = t & AName & " hits " & BName & "   speed " & AName & ": " & Units.Num(ASpeedBefore) & " → " & Units.Num(ASpeedAfter) & " m/s"
-        If IsPair Then s &= ", " & BName & ": " & Units.Num(BSpeedBefore) & " → " & Units.Num(BSpeedAfter) & " m/s"
-        s &= "   p: " & Units.Pair(MomentumBefore) & " → " & Units.Pair(MomentumAfter) & " kg·m/s"
-        If Not IsPair Then s &= " (not conserved: the other body is fixed)"
-        s &= "   KE: " & Units.Num(EnergyBefore) & " → " & Units.Num(EnergyAfter) & " J"
-        s &= " (" & Units.Num(100 * (1 - EnergyKept), 0) & "% lost)"
-        Return s
+    Private Function Format() As String()
+        Dim t = Units.Num(Time, 3)
+        If SkippedCount > 0 Then
+            Return {t, "… " & SkippedCount.ToString(Globalization.CultureInfo.InvariantCulture) & " more collisions in this frame", "(counted, not listed)", "", "", ""}
+        End If
+        Dim speeds = If(IsPair,
+            AName & ": " & Units.Num(ASpeedBefore) & " → " & Units.Num(ASpeedAfter) & ", " & BName & ": " & Units.Num(BSpeedBefore) & " → " & Units.Num(BSpeedAfter),
+            AName & ": " & Units.Num(ASpeedBefore) & " → " & Units.Num(ASpeedAfter))
+        Dim p = Units.Pair(MomentumBefore) & " → " & Units.Pair(MomentumAfter)
+        If Not IsPair Then p &= "  (" & AName & " only: " & BName & " is fixed, p not conserved)"
+        Return {t, AName & " ↔ " & BName, speeds, Units.Num(EnergyBefore) & " → " & Units.Num(EnergyAfter), Units.Num(100 * (1 - EnergyKept), 0) & "%", p}
     End Function
 End Class

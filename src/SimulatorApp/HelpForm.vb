@@ -18,7 +18,8 @@ Friend NotInheritable Class HelpForm
         StartPosition = FormStartPosition.Manual
         Location = New Point(120, 60)
         ClientSize = New Size(1000, 640)
-        Me.Font = font
+        ' Never smaller than 12 pt: this window is read from the back of a classroom.
+        Me.Font = If(font IsNot Nothing AndAlso font.SizeInPoints >= 12, font, New Font(FontFamily.GenericSansSerif, 12.0F))
         _pages.Dock = DockStyle.Left
         _pages.Width = 300
         _pages.IntegralHeight = False

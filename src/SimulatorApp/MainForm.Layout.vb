@@ -30,6 +30,11 @@ Partial Friend NotInheritable Class MainForm
         For Each list In {_circleTable, _rectangleTable}
             FitColumns(list, w - sideWidth - S(28))
         Next
+        ' Each log column as wide as its header or a typical entry, whichever is wider; the list scrolls sideways.
+        For i = 0 To _logList.Columns.Count - 1
+            Dim c = _logList.Columns(i)
+            c.Width = Math.Max(TextRenderer.MeasureText(c.Text, _logList.Font).Width, TextRenderer.MeasureText(LogSamples(i), _logList.Font).Width) + S(16)
+        Next
 
         Dim rh = Math.Max(S(30), line + S(12))
         Dim sliderHeight = Math.Max(S(45), _speed.PreferredSize.Height)

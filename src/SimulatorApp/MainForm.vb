@@ -15,8 +15,10 @@ Partial Friend NotInheritable Class MainForm
     ''' <summary>Frames between refreshes of the tables and totals (about 10 per second).</summary>
     Private Const TableEvery As Integer = 6
 
-    Private Shared ReadOnly LogHeaders As String() = {"Collisions, newest first: speeds, momentum p and kinetic energy KE of the pair, before → after"}
     Private Shared ReadOnly BlankRow As String() = New String(9) {}
+    Private Shared ReadOnly LogSamples As String() = {
+        "00.000", "green ↔ wall:bottom", "blue: 4.17 → 4.15, green: 2.70 → 2.58", "100.00 → 100.00", "100%",
+        "(-14.37, -17.94) → (-14.37, -17.94)  (green only: wall:bottom is fixed, p not conserved)"}
 
     Private ReadOnly _presenter As SimulationPresenter
     Private ReadOnly _painter As New ScenePainter()
@@ -122,8 +124,7 @@ Partial Friend NotInheritable Class MainForm
 
         SetUpTable(_circleTable, BodyTable.CircleHeaders, AddressOf OnRetrieveCircle)
         SetUpTable(_rectangleTable, BodyTable.RectangleHeaders, AddressOf OnRetrieveRectangle)
-        SetUpTable(_logList, LogHeaders, AddressOf OnRetrieveLog)
-        _logList.Columns(0).Width = 2400
+        SetUpTable(_logList, CollisionLogEntry.Headers, AddressOf OnRetrieveLog)
         AddTab("Circles", _circleTable)
         AddTab("Rectangles", _rectangleTable)
         AddTab("Collision log", _logList)
@@ -336,7 +337,7 @@ Partial Friend NotInheritable Class MainForm
 
     Private Sub OnRetrieveLog(sender As Object, e As RetrieveVirtualItemEventArgs)
         Dim log = _presenter.Log
-        e.Item = New ListViewItem(If(e.ItemIndex < log.Count, log(e.ItemIndex).Text, ""))
+        e.Item = New ListViewItem(If(e.ItemIndex < log.Count, log(e.ItemIndex).Cells(), BlankRow))
     End Sub
 
     ''' <summary>A table row whose colour cell is filled with the body's colour.</summary>
