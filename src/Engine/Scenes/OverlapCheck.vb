@@ -22,7 +22,7 @@ Namespace Scenes
             If bodies Is Nothing Then Throw New ArgumentNullException(NameOf(bodies))
             Dim cell = CellSize(bodies)
             If cell = 0 Then Return ' no circles: rectangles never clash with each other
-            Dim grid As New Dictionary(Of Long, List(Of Integer))
+            Dim grid As New Dictionary(Of Long, List(Of Integer))(CellKeyComparer.Instance)
             Dim large As New List(Of Integer)
             For j = 0 To bodies.Count - 1
                 Dim b = bodies(j)
@@ -122,5 +122,27 @@ Namespace Scenes
         Private Function Key(ix As Long, iy As Long) As Long
             Return (ix << 32) Or (iy And &HFFFFFFFFL)
         End Function
+
+        ''' <summary>
+        ''' Long's own hash is high word Xor low word, which sends every cell (i, j) with the same i Xor j
+        ''' to one bucket; this spreads cells with large primes (Teschner et al., 2003) so the grid stays
+        ''' O(1) per cell. |i|, |j| ≤ 1e9, so the products cannot overflow.
+        ''' </summary>
+        Private NotInheritable Class CellKeyComparer
+            Implements IEqualityComparer(Of Long)
+
+            Friend Shared ReadOnly Instance As New CellKeyComparer()
+
+            Public Overloads Function Equals(x As Long, y As Long) As Boolean Implements IEqualityComparer(Of Long).Equals
+                Return x = y
+            End Function
+
+            Public Overloads Function GetHashCode(obj As Long) As Integer Implements IEqualityComparer(Of Long).GetHashCode
+                Dim ix = obj >> 32
+                Dim iy = obj And &HFFFFFFFFL
+                If iy > Integer.MaxValue Then iy -= &H100000000L
+                Return CInt(((ix * 73856093L) Xor (iy * 19349663L)) And &H7FFFFFFFL)
+            End Function
+        End Class
     End Module
 End Namespace

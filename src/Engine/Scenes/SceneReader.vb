@@ -50,8 +50,47 @@ Namespace Scenes
                 Throw New SceneFormatException("document", "is not valid JSON (" & OneLine(ex.Message) & ")", ex)
             End Try
             If JsonFields.JsonType(element) <> "object" Then Throw JsonFields.WrongType(element, "document", "a JSON object")
+            CheckComplete(text)
             Return element
         End Function
+
+        ''' <summary>
+        ''' The BCL reader closes open objects silently when the text ends after a number, and stops
+        ''' reading at the root's end: a truncated file (a crash while saving) or trailing text would
+        ''' pass. This is not a parser, only a count of brackets outside strings: the root object must
+        ''' close exactly at the last non-blank character.
+        ''' </summary>
+        Private Sub CheckComplete(text As String)
+            Dim depth = 0
+            Dim inString = False
+            Dim escaped = False
+            Dim closedAt = -1
+            For i = 0 To text.Length - 1
+                Dim ch = text(i)
+                If inString Then
+                    If escaped Then
+                        escaped = False
+                    ElseIf ch = "\"c Then
+                        escaped = True
+                    ElseIf ch = """"c Then
+                        inString = False
+                    End If
+                    Continue For
+                End If
+                If closedAt >= 0 Then
+                    If Not Char.IsWhiteSpace(ch) Then Throw New SceneFormatException("document", "is not valid JSON (there is more text after its closing '}', at character " & (i + 1).ToString(CultureInfo.InvariantCulture) & ")")
+                    Continue For
+                End If
+                Select Case ch
+                    Case """"c : inString = True
+                    Case "{"c, "["c : depth += 1
+                    Case "}"c, "]"c
+                        depth -= 1
+                        If depth = 0 Then closedAt = i
+                End Select
+            Next
+            If closedAt < 0 Then Throw New SceneFormatException("document", "is not valid JSON (it ends before its closing '}': is the file complete?)")
+        End Sub
 
         Private Function OneLine(message As String) As String
             Return String.Join(" ", message.Split({ChrW(13), ChrW(10)}, StringSplitOptions.RemoveEmptyEntries)).Trim()
