@@ -71,8 +71,30 @@ Friend NotInheritable Class OutputFile
 
     ''' <summary>Without <see cref="Commit"/>, throws the temporary file away.</summary>
     Public Sub Dispose() Implements IDisposable.Dispose
-        _writer?.Dispose()
+        If _committed Then Return
+        ' Delete first: on Linux and macOS that works while the file is still open, which matters when a
+        ' signal arrives while the main thread is writing; on Windows the second try does it.
+        TryDelete()
+        Try
+            _writer?.Dispose()
+        Catch ex As IOException
+            ' the file is thrown away anyway; a failed flush must not hide the first error
+        Catch ex As ObjectDisposedException
+            ' disposed already, by a signal handler
+        Catch ex As InvalidOperationException
+            ' the main thread was writing when a signal arrived
+        End Try
         _writer = Nothing
-        If Not _committed AndAlso File.Exists(_temp) Then File.Delete(_temp)
+        TryDelete()
+    End Sub
+
+    Private Sub TryDelete()
+        Try
+            If File.Exists(_temp) Then File.Delete(_temp)
+        Catch ex As IOException
+            ' still open (Windows): the caller tries again after closing it
+        Catch ex As UnauthorizedAccessException
+            ' nothing more can be done; the target file was never touched
+        End Try
     End Sub
 End Class

@@ -1,5 +1,6 @@
 Option Strict On
 Imports System.Diagnostics
+Imports System.Runtime.InteropServices
 
 ''' <summary>
 ''' run SCENE --time T: checks every argument and the scene before any output file exists, then
@@ -18,6 +19,14 @@ Friend Module RunCommand
 
         Dim states As OutputFile = Nothing
         Dim events As OutputFile = Nothing
+        ' Ctrl+C and SIGTERM end the process without unwinding: throw the temporary files away first.
+        Dim discard = Sub()
+                          states?.Dispose()
+                          events?.Dispose()
+                      End Sub
+        Dim cancel As ConsoleCancelEventHandler = Sub(sender, e) discard()
+        AddHandler Console.CancelKeyPress, cancel
+        Dim terminate = PosixSignalRegistration.Create(PosixSignal.SIGTERM, Sub(context) discard())
         Try
             If o.StatesPath IsNot Nothing Then states = OutputFile.Create("--states", o.StatesPath)
             If o.EventsPath IsNot Nothing Then events = OutputFile.Create("--events", o.EventsPath)
@@ -27,6 +36,8 @@ Friend Module RunCommand
             Console.Out.WriteLine(If(o.Json, summary.ToJson(), summary.ToText()))
             Return ExitCodes.Ok
         Finally
+            RemoveHandler Console.CancelKeyPress, cancel
+            terminate.Dispose()
             states?.Dispose()
             events?.Dispose()
         End Try
