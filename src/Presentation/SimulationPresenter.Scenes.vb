@@ -20,7 +20,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Try
             loaded = SceneStore.Load(path)
         Catch ex As Exception When IsFileProblem(ex)
-            ShowMessage("Could not open " & SafeName(path) & ": " & OneLine(ex.Message))
+            ShowMessage("Could not open " & SafeName(path) & ": " & Reason(ex, path))
             Return
         End Try
         EndGestures()
@@ -41,7 +41,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Try
             SceneStore.Save(World, path)
         Catch ex As Exception When IsFileProblem(ex)
-            ShowMessage("Could not save " & SafeName(path) & ": " & OneLine(ex.Message))
+            ShowMessage("Could not save " & SafeName(path) & ": " & Reason(ex, path))
             Return
         End Try
         Emit("saved " & SafeName(path) & ": " & World.Bodies.Count & " bodies")
@@ -59,6 +59,29 @@ Partial Public NotInheritable Class SimulationPresenter
             Return IO.Path.GetFileName(path)
         Catch ex As ArgumentException
             Return path
+        End Try
+    End Function
+
+    ''' <summary>The exception's one-line message without a leading "path: " (the file is already named).</summary>
+    Private Shared Function Reason(ex As Exception, path As String) As String
+        Dim text = OneLine(ex.Message)
+        For Each prefix In {path, TryFullPath(path)}
+            If Not String.IsNullOrEmpty(prefix) AndAlso text.StartsWith(prefix & ": ", StringComparison.Ordinal) Then Return text.Substring(prefix.Length + 2)
+        Next
+        Return text
+    End Function
+
+    Private Shared Function TryFullPath(path As String) As String
+        Try
+            Return IO.Path.GetFullPath(path)
+        Catch ex As ArgumentException
+            Return Nothing
+        Catch ex As NotSupportedException
+            Return Nothing
+        Catch ex As IO.PathTooLongException
+            Return Nothing
+        Catch ex As Security.SecurityException
+            Return Nothing
         End Try
     End Function
 

@@ -70,3 +70,46 @@ Public Class SceneFileTests
         Assert.Equal("Could not save b.json: disk full", h.View.LastMessage)
     End Sub
 End Class
+
+''' <summary>Open and Save with the real scene files on disk.</summary>
+Public Class SceneFileStoreTests
+    <Fact>
+    Public Sub SaveThenOpen_RoundTripsTheScene()
+        Dim path = IO.Path.Combine(IO.Path.GetTempPath(), "app-roundtrip-" & Guid.NewGuid().ToString("N") & ".json")
+        Try
+            Dim h As New PresenterHarness(Scenarios.Demo(), New SceneFileStore())
+            h.P.SetGravity(3.71)
+            h.P.SaveScene(path)
+            Assert.True(IO.File.Exists(path), h.View.LastMessage)
+            Dim other As New PresenterHarness(store:=New SceneFileStore())
+            other.P.OpenScene(path)
+            Assert.Equal(3.71, other.P.World.Gravity)
+            Assert.Equal(h.P.World.Bodies.Select(Function(b) b.Id), other.P.World.Bodies.Select(Function(b) b.Id))
+            Assert.Equal("#e53935", other.P.World.Find("red").Color)
+        Finally
+            IO.File.Delete(path)
+        End Try
+    End Sub
+
+    <Fact>
+    Public Sub Open_InvalidScene_ShowsTheFieldAndKeepsTheScene()
+        Dim path = IO.Path.Combine(IO.Path.GetTempPath(), "app-bad-" & Guid.NewGuid().ToString("N") & ".json")
+        Try
+            IO.File.WriteAllText(path, "{""format"":""physics-scene/1"",""world"":{""width"":4,""height"":3},""bodies"":[{""type"":""circle"",""x"":1,""y"":1,""radius"":0,""mass"":1}]}")
+            Dim h As New PresenterHarness(store:=New SceneFileStore())
+            Dim before = h.P.World
+            h.P.OpenScene(path)
+            Assert.Same(before, h.P.World)
+            Assert.Equal("Could not open " & IO.Path.GetFileName(path) & ": bodies[0].radius: must be greater than 0", h.View.LastMessage)
+        Finally
+            IO.File.Delete(path)
+        End Try
+    End Sub
+
+    <Fact>
+    Public Sub Open_MissingFile_IsAMessage()
+        Dim h As New PresenterHarness(store:=New SceneFileStore())
+        h.P.OpenScene("/no/such/folder/scene.json")
+        Assert.Equal("Could not open scene.json: file not found", h.View.LastMessage)
+    End Sub
+End Class
