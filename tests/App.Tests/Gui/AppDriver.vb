@@ -105,6 +105,26 @@ Public NotInheritable Class AppDriver
         Thread.Sleep(100)
     End Sub
 
+    ''' <summary>Waits for a visible window with this title (a dialog) and returns its X id.</summary>
+    Public Function WaitForWindow(title As String, Optional timeoutSeconds As Double = 10) As String
+        Dim sw = Diagnostics.Stopwatch.StartNew()
+        Do
+            Dim r = X.Tool("xdotool", "search", "--onlyvisible", "--name", title)
+            Dim id = r.StdOut.Split(NewLine, StringSplitOptions.RemoveEmptyEntries).FirstOrDefault()
+            If r.ExitCode = 0 AndAlso Not String.IsNullOrWhiteSpace(id) Then Return id.Trim()
+            If sw.Elapsed.TotalSeconds > timeoutSeconds Then Throw New TimeoutException("no window '" & title & "'" & vbLf & X.AppOutput())
+            Thread.Sleep(200)
+        Loop
+    End Function
+
+    ''' <summary>Types text into whatever has the keyboard focus, then presses Return.</summary>
+    Public Sub TypeAndEnter(text As String)
+        X.XDo("type", "--delay", "30", text)
+        Thread.Sleep(200)
+        X.XDo("key", "Return")
+        Thread.Sleep(200)
+    End Sub
+
     ''' <summary>The app's stdout lines so far.</summary>
     Public Function Lines() As String()
         Dim all = X.AppOutput()

@@ -195,4 +195,32 @@ Public Class ClassroomGuiTests
             Assert.True(b.H >= 34, $"buttons grow with large fonts (pause is {b.H} px high)")
         End Using
     End Sub
+
+    <GuiFact>
+    Public Sub SaveThenOpen_ThroughTheFileDialogs()
+        Dim path = IO.Path.Combine(IO.Path.GetTempPath(), "gui-scene-" & Guid.NewGuid().ToString("N") & ".json")
+        Try
+            Using app As New AppDriver()
+                app.PauseAndClear()
+                app.PlaceCircle("0.4", "3", 4.0, 2.0)
+                app.Click("save")
+                app.WaitForWindow("Save the scene")
+                Dim from = app.Mark()
+                app.TypeAndEnter(path)
+                app.WaitFor("^saved " & IO.Path.GetFileName(path) & ": 1 bodies$", skip:=from)
+                Assert.Contains("""physics-scene/1""", IO.File.ReadAllText(path), StringComparison.Ordinal)
+                app.ClickAndWait("reset", "^reset: 0 bodies")
+                app.Click("open")
+                app.WaitForWindow("Open a scene")
+                from = app.Mark()
+                app.TypeAndEnter(path)
+                app.WaitFor("^opened " & IO.Path.GetFileName(path) & ": 1 bodies$", skip:=from)
+                Thread.Sleep(300)
+                Dim p = app.Screen(4.0, 2.0)
+                Assert.True(ColouredAround(app.X.Shoot("opened"), p.X + 12, p.Y + 12) > 0.8, "the opened ball is drawn")
+            End Using
+        Finally
+            IO.File.Delete(path)
+        End Try
+    End Sub
 End Class
