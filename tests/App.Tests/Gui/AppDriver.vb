@@ -13,6 +13,7 @@ Public NotInheritable Class AppDriver
 
     Private Shared ReadOnly NewLine As Char() = {ChrW(10)}
     Private ReadOnly _controls As New Dictionary(Of String, (X As Integer, Y As Integer, W As Integer, H As Integer))(StringComparer.Ordinal)
+    Private _pointer As (X As Integer, Y As Integer)?
     Private _scale As Double
     Private _originX As Double
     Private _originY As Double
@@ -24,6 +25,10 @@ Public NotInheritable Class AppDriver
         X = New XSession("--trace")
         WaitFor("ready", TimeSpan.FromSeconds(30))
         ReadLayout()
+        ' A known starting point for the pointer (see MoveTo), outside every control.
+        X.XDo("mousemove", "1", "1")
+        _pointer = (1, 1)
+        Thread.Sleep(100)
     End Sub
 
     ''' <summary>Reads the last layout the app printed (it prints one after each re-layout).</summary>
@@ -69,27 +74,31 @@ Public NotInheritable Class AppDriver
 
     ''' <summary>Clicks a screen point.</summary>
     Public Sub ClickAt(sx As Integer, sy As Integer, Optional button As Integer = 1)
-        X.XDo("mousemove", "--sync", S(sx), S(sy))
-        Thread.Sleep(80)
+        MoveTo(sx, sy)
+        Thread.Sleep(20)
         X.XDo("click", S(button))
         Thread.Sleep(150)
     End Sub
 
-    ''' <summary>Moves the pointer to a screen point.</summary>
+    ''' <summary>
+    ''' Moves the pointer to a screen point and waits until it is there. A move to where the pointer
+    ''' already is is skipped: xdotool's --sync would wait for a motion that never comes (about 15 s).
+    ''' </summary>
     Public Sub MoveTo(sx As Integer, sy As Integer)
+        If _pointer.HasValue AndAlso _pointer.Value.X = sx AndAlso _pointer.Value.Y = sy Then Return
         X.XDo("mousemove", "--sync", S(sx), S(sy))
+        _pointer = (sx, sy)
         Thread.Sleep(60)
     End Sub
 
     ''' <summary>Presses a button at one screen point, moves in steps to another, releases there.</summary>
     Public Sub Drag(button As Integer, fromX As Integer, fromY As Integer, toX As Integer, toY As Integer, Optional steps As Integer = 8)
-        X.XDo("mousemove", "--sync", S(fromX), S(fromY))
-        Thread.Sleep(80)
+        MoveTo(fromX, fromY)
+        Thread.Sleep(20)
         X.XDo("mousedown", S(button))
         Thread.Sleep(80)
         For k = 1 To steps
-            X.XDo("mousemove", "--sync", S(fromX + (toX - fromX) * k \ steps), S(fromY + (toY - fromY) * k \ steps))
-            Thread.Sleep(50)
+            MoveTo(fromX + (toX - fromX) * k \ steps, fromY + (toY - fromY) * k \ steps)
         Next
         Thread.Sleep(80)
         X.XDo("mouseup", S(button))
