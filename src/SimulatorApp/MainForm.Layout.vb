@@ -90,9 +90,10 @@ Partial Friend NotInheritable Class MainForm
     ''' <summary>Each column as wide as its header, and the spare width shared out, so no header is clipped.</summary>
     Private Sub FitColumns(list As BufferedListView, available As Integer)
         Dim widths(list.Columns.Count - 1) As Integer
-        Dim cell = TextRenderer.MeasureText("#888888", list.Font).Width
+        ' Headers are wider than the numbers under them, except for the id and colour columns.
         For i = 0 To widths.Length - 1
-            widths(i) = Math.Max(TextRenderer.MeasureText(list.Columns(i).Text, list.Font).Width, cell) + S(14)
+            Dim sample = If(i = 0, "ball00", If(i = 1, "#888888", ""))
+            widths(i) = Math.Max(TextRenderer.MeasureText(list.Columns(i).Text, list.Font).Width, TextRenderer.MeasureText(sample, list.Font).Width) + S(10)
         Next
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
         For i = 0 To widths.Length - 1

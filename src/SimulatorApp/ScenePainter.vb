@@ -98,7 +98,7 @@ Friend NotInheritable Class ScenePainter
         DrawDraft(g, p, view, outline)
         DrawCue(g, p, view, theme)
         DrawScaleBar(g, view, theme, height)
-        DrawBanner(g, p, theme)
+        DrawBanner(g, p, theme, width, height)
     End Sub
 
     Private Sub DrawDraft(g As Graphics, p As SimulationPresenter, view As ViewTransform, outline As Pen)
@@ -131,7 +131,8 @@ Friend NotInheritable Class ScenePainter
         End If
         Dim label = p.CueLabel
         Dim sz = g.MeasureString(label, _font)
-        Dim lx = CSng(cursor.X) + 12, ly = CSng(cursor.Y) + 12
+        ' Under the ball, so that the label never hides it or the cue.
+        Dim lx = CSng(centre.X) - sz.Width / 2, ly = CSng(centre.Y + view.ToPixels(c.Radius)) + 8
         g.FillRectangle(SolidOf(theme.Background, 220), lx - 2, ly - 2, sz.Width + 4, sz.Height + 4)
         g.DrawString(label, _font, SolidOf(theme.Ink), lx, ly)
     End Sub
@@ -149,7 +150,7 @@ Friend NotInheritable Class ScenePainter
         g.DrawString(bar.Label, _font, SolidOf(theme.Ink), x1 + 8, y0 - _font.Height / 2.0F)
     End Sub
 
-    Private Sub DrawBanner(g As Graphics, p As SimulationPresenter, theme As Theme)
+    Private Sub DrawBanner(g As Graphics, p As SimulationPresenter, theme As Theme, width As Integer, height As Integer)
         Dim text As String = Nothing
         Dim colour = theme.Ink
         If p.Mode = ClickMode.Delete Then
@@ -162,9 +163,10 @@ Friend NotInheritable Class ScenePainter
             colour = &HC62828
         End If
         If text Is Nothing Then Return
+        ' In the strip under the container, on the right (the scale bar is on the left).
         Dim sz = g.MeasureString(text, _bigFont)
-        g.FillRectangle(SolidOf(theme.Background, 220), 20, 4, sz.Width + 8, sz.Height)
-        g.DrawString(text, _bigFont, SolidOf(If(theme.IsHighContrast AndAlso colour = &HC62828, &HFF5252, colour)), 24, 4)
+        Dim x = Math.Max(200.0F, width - sz.Width - 16), y = height - SimulationPresenter.ScaleStrip / 2.0F - sz.Height / 2
+        g.DrawString(text, _bigFont, SolidOf(If(theme.IsHighContrast AndAlso colour = &HC62828, &HFF5252, colour)), x, y)
     End Sub
 
     ''' <summary>An arrow as one polyline (shaft, then the two strokes of the head), so GDI+ strokes it in one call.</summary>

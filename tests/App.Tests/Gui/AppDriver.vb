@@ -105,6 +105,21 @@ Public NotInheritable Class AppDriver
         Thread.Sleep(150)
     End Sub
 
+    ''' <summary>Presses a button at a screen point (and holds it).</summary>
+    Public Sub Press(button As Integer, sx As Integer, sy As Integer)
+        MoveTo(sx, sy)
+        Thread.Sleep(20)
+        X.XDo("mousedown", S(button))
+        Thread.Sleep(80)
+    End Sub
+
+    ''' <summary>Lets go of a held button where the pointer is.</summary>
+    Public Sub Release(button As Integer)
+        Thread.Sleep(80)
+        X.XDo("mouseup", S(button))
+        Thread.Sleep(150)
+    End Sub
+
     ''' <summary>Replaces the text of a named text box, as a person would: click, select all, type.</summary>
     Public Sub TypeInto(name As String, text As String)
         Click(name)

@@ -71,7 +71,16 @@ Public Class ClassroomGuiTests
             Dim id = app.PlaceCircle("0.3", "1", 2.0, 2.5)
             Dim a = app.Screen(2.0, 2.5), back = app.Screen(1.0, 2.5)
             Dim from = app.Mark()
-            app.Drag(1, a.X, a.Y, back.X, back.Y)
+            app.Press(1, a.X, a.Y)
+            For k = 1 To 8
+                app.MoveTo(a.X + (back.X - a.X) * k \ 8, a.Y)
+            Next
+            Thread.Sleep(300)
+            ' While aiming, the cue's shot arrow (orange) points forward from the ball.
+            Dim aiming = app.X.Shoot("cue-aiming")
+            Dim cue = aiming.Fraction(a.X + 20, a.Y - 6, a.X + CInt(app.Scale * 0.9), a.Y + 7, Function(p) p = &HF57F17)
+            Assert.True(cue > 0.05, $"no cue arrow ahead of the ball while aiming ({cue:P1} orange)")
+            app.Release(1)
             Dim fired = app.WaitFor("^fired " & id & " J \((\S+), (\S+)\) N·s dv \((\S+), (\S+)\) m/s", skip:=from)
             Dim dvx = AppDriver.Dbl(fired.Groups(3).Value)
             Assert.True(dvx > 2.0, "a 1 m pull on a 1 kg ball gives about 4 m/s to the right: " & fired.Value)
