@@ -8,10 +8,10 @@ Option Strict On
 ''' which leaves the tangential velocity alone (no friction), so a ball resting on a floor can still slide.
 ''' A contact whose approach speed is below what gravity adds in about one step is a resting contact:
 ''' it is resolved with e = 0 and not reported, so a ball at rest does not jitter, sink, or flood the log.
-''' The phases: movable pairs, then fixed obstacles, then walls (last, so nothing is left outside), then,
-''' under gravity, a support pass that treats a circle held up by the floor or an obstacle as immovable
-''' for the circles resting on it (shock propagation), bottom row first, so a heavy ball resting on a
-''' light one does not sink through it.
+''' The phases: movable pairs (lowest first), then obstacles and walls (which marks the circles resting on
+''' them as supported), then under gravity a support pass in which a supported circle is immovable for the
+''' circle resting on it (shock propagation, so a heavy ball resting on a light one does not sink through
+''' it), then the walls again, so that nothing is left outside the container.
 ''' </summary>
 Friend NotInheritable Class StepContacts
     ' m/s: approach speeds at or below this are rounding noise, never a collision.
@@ -25,7 +25,10 @@ Friend NotInheritable Class StepContacts
     Private _gravity As Double
     Private _restingSpeed As Double
     Private _touched As Boolean()
-    Private _supported As Boolean() = Array.Empty(Of Boolean)()
+    ' Per circle: the sum of the normals of what holds it (obstacles, walls, circles that are held), or zero.
+    Private _support As Vector() = Array.Empty(Of Vector)()
+    Private _pairKeys As Double() = Array.Empty(Of Double)()
+    Private _pairOrder As (A As Integer, B As Integer)() = Array.Empty(Of (A As Integer, B As Integer))()
 
     ''' <summary>
     ''' Resolves every contact after a sub-step of <paramref name="h"/> s that ended at absolute time
@@ -43,23 +46,74 @@ Friend NotInheritable Class StepContacts
         _restingSpeed = 2 * _gravity * h + MinimumSpeed
         _touched = touched
         Dim circles = world.Circles
-        If _supported.Length < circles.Count Then _supported = New Boolean(circles.Count - 1) {}
-        Array.Clear(_supported, 0, circles.Count)
+        If _support.Length < circles.Count Then _support = New Vector(circles.Count - 1) {}
+        Array.Clear(_support, 0, circles.Count)
 
-        ' 1. Movable pairs, found by the broad phase.
+        ' 1. Movable pairs from the broad phase, bottom first (which the support pass relies on).
         _broadPhase.FindOverlaps(circles, _pairs)
+        If _gravity > 0 Then SortBottomUp(circles)
         For Each p In _pairs
             Dim a = circles(p.A), b = circles(p.B)
             Dim contact = Collider.CircleCircle(a.Position, a.Radius, b.Position, b.Radius)
             If contact.Depth > 0 Then Respond(p.A, a, p.B, b, contact, CollisionKind.CircleCircle, WallSide.None, False)
         Next
 
-        ' 2. Fixed obstacles (usually few, so each movable circle meets each of them).
+        ' 2. Obstacles and walls, which marks the circles resting on them as supported.
+        ResolveObstacles()
+
+        ' 3. Support (only gravity makes things rest on each other), then the walls again, since the
+        ' support pass can push a circle sideways into one: the walls have the last word.
+        If _gravity > 0 AndAlso _pairs.Count > 0 Then
+            For Each p In _pairs
+                Dim a = circles(p.A), b = circles(p.B)
+                Dim contact = Collider.CircleCircle(a.Position, a.Radius, b.Position, b.Radius)
+                If contact.Depth <= 0 Then Continue For
+                If Not RestsOn(p.A, a, p.B, b, contact) Then RestsOn(p.B, b, p.A, a, New Contact(-contact.Normal, contact.Depth))
+            Next
+            ResolveWalls()
+        End If
+    End Sub
+
+    ''' <summary>Orders the pairs by the height of their lower circle, so support spreads up a pile in one pass.</summary>
+    Private Sub SortBottomUp(circles As IReadOnlyList(Of Circle))
+        Dim count = _pairs.Count
+        If count < 2 Then Return
+        If _pairKeys.Length < count Then
+            _pairKeys = New Double(count - 1) {}
+            _pairOrder = New (A As Integer, B As Integer)(count - 1) {}
+        End If
+        For k = 0 To count - 1
+            Dim p = _pairs(k)
+            _pairKeys(k) = Math.Min(circles(p.A).Position.Y, circles(p.B).Position.Y)
+            _pairOrder(k) = p
+        Next
+        Array.Sort(_pairKeys, _pairOrder, 0, count)
+        _pairs.Clear()
+        For k = 0 To count - 1
+            _pairs.Add(_pairOrder(k))
+        Next
+    End Sub
+
+    ''' <summary>
+    ''' When circle B is held up (by an obstacle, a wall, or a circle that is) and circle A presses on it
+    ''' towards what holds it, resolves the contact with B immovable, as a resting contact, and returns True.
+    ''' This is shock propagation: a heavy ball resting on a light one is held up by the floor beneath,
+    ''' not by the light ball's inertia, so it does not sink through it.
+    ''' </summary>
+    Private Function RestsOn(ia As Integer, a As Circle, ib As Integer, b As Circle, contact As Contact) As Boolean
+        If b Is _world.DraggedCircle OrElse Vector.Dot(contact.Normal, _support(ib)) <= 0 Then Return False
+        Respond(ia, a, ib, b, contact, CollisionKind.CircleCircle, WallSide.None, True)
+        Return True
+    End Function
+
+    ''' <summary>Contacts with fixed circles, rectangles (usually few, so each movable circle meets each) and walls.</summary>
+    Private Sub ResolveObstacles()
+        Dim circles = _world.Circles
         _fixedCircles.Clear()
         For Each c In circles
             If c.IsFixed Then _fixedCircles.Add(c)
         Next
-        Dim rectangles = world.Rectangles
+        Dim rectangles = _world.Rectangles
         If _fixedCircles.Count > 0 OrElse rectangles.Count > 0 Then
             For i = 0 To circles.Count - 1
                 Dim a = circles(i)
@@ -79,30 +133,17 @@ Friend NotInheritable Class StepContacts
                 Next
             Next
         End If
+        ResolveWalls()
+    End Sub
 
-        ' 3. Walls last, so that whatever the other contacts did, nothing is left outside the container.
-        If world.Walls Then
-            For i = 0 To circles.Count - 1
-                Dim a = circles(i)
-                If a.IsFixed OrElse a Is world.DraggedCircle Then Continue For
-                ResolveWalls(i, a)
-            Next
-        End If
-
-        ' 4. Support: only gravity makes things rest on each other.
-        If _gravity > 0 Then
-            For Each p In _pairs
-                Dim a = circles(p.A), b = circles(p.B)
-                If _supported(p.A) = _supported(p.B) Then Continue For
-                Dim contact = Collider.CircleCircle(a.Position, a.Radius, b.Position, b.Radius)
-                If contact.Depth <= 0 Then Continue For
-                If _supported(p.B) Then
-                    If contact.Normal.Y > 0 Then Respond(p.A, a, p.B, b, contact, CollisionKind.CircleCircle, WallSide.None, True)
-                ElseIf -contact.Normal.Y > 0 Then
-                    Respond(p.B, b, p.A, a, New Contact(-contact.Normal, contact.Depth), CollisionKind.CircleCircle, WallSide.None, True)
-                End If
-            Next
-        End If
+    Private Sub ResolveWalls()
+        If Not _world.Walls Then Return
+        Dim circles = _world.Circles
+        For i = 0 To circles.Count - 1
+            Dim a = circles(i)
+            If a.IsFixed OrElse a Is _world.DraggedCircle Then Continue For
+            ResolveWalls(i, a)
+        Next
     End Sub
 
     Private Sub ResolveWalls(i As Integer, a As Circle)
@@ -138,13 +179,11 @@ Friend NotInheritable Class StepContacts
         Dim dragged = _world.DraggedCircle
         Dim bc = TryCast(b, Circle)
         Dim bMovable = bc IsNot Nothing AndAlso Not bc.IsFixed
+        ' Immovable for this contact: fixed bodies and walls, and in the support pass a circle held up from below.
+        Dim bImmovable = Not bMovable OrElse support
         ' The dragged circle acts as if of infinite mass: it pushes and is not pushed back.
         Dim invA = If(a Is dragged, 0.0, a.InverseMass)
-        Dim invB = If(support OrElse Not bMovable OrElse bc Is dragged, 0.0, bc.InverseMass)
-        ' Held up by something immovable (or by a circle that is): the circles resting on A can lean on it.
-        If Not bMovable OrElse support Then
-            If contact.Normal.Y > 0 AndAlso ia >= 0 Then _supported(ia) = True
-        End If
+        Dim invB = If(bImmovable OrElse bc Is dragged, 0.0, bc.InverseMass)
         Dim sumInv = invA + invB
         If sumInv = 0 Then Return ' the dragged circle against something fixed: neither gives way
         Dim n = contact.Normal
@@ -162,31 +201,41 @@ Friend NotInheritable Class StepContacts
         End If
 
         ' Dynamic resolution.
-        Dim va = a.Velocity
-        Dim vb = If(bMovable, bc.Velocity, Vector.Zero)
-        Dim approach = -Vector.Dot(va - vb, n)
-        If approach <= 0 Then Return
-        Dim arrival = approach
-        If (support OrElse Not bMovable) AndAlso _gravity > 0 Then
+        Dim before = a.Velocity
+        Dim va = before
+        ' A circle held up from below moves at no more than the resting speed; taking it as still keeps the
+        ' support pass from handing that jitter (as energy) to the circles resting on it.
+        Dim vb = If(bMovable AndAlso Not support, bc.Velocity, Vector.Zero)
+        Dim separation = Vector.Dot(va - vb, n) ' m/s, > 0 when moving apart
+        If bImmovable AndAlso _gravity > 0 AndAlso shiftA <> 0 Then
             ' Pushing A out of something immovable lifts it by shiftA·n_y: m g shiftA n_y of potential energy
-            ' that the step never paid for. Take it from the approach speed (v² = u² − 2 g s, the speed A
-            ' had when it reached the surface), so that a bounce with e = 1 never gains energy.
-            arrival = Math.Sqrt(Math.Max(0.0, approach * approach - 2 * _gravity * shiftA * n.Y))
+            ' that the step never paid for. Pay it from the normal speed (w² = w₀² − 2 g s, the suvat relation:
+            ' an approaching ball had that speed when it reached the surface; a separating one would have that
+            ' speed at the height it is moved to), so a bounce with e = 1 never gains energy.
+            Dim squared = separation * separation - 2 * _gravity * shiftA * n.Y
+            Dim corrected = Math.Sign(separation) * Math.Sqrt(Math.Max(0.0, squared))
+            va += n * (corrected - separation)
+            separation = corrected
         End If
-        Dim resting = support OrElse arrival <= _restingSpeed
-        Dim e = If(resting, 0.0, _world.Restitution)
-        Dim arriving = va + n * (approach - arrival)
-        Dim result = Impulse.Resolve(arriving, invA, vb, invB, n, e)
-        a.Velocity = result.A
-        MarkTouched(ia)
-        If invB > 0 Then
-            bc.Velocity = result.B
-            MarkTouched(ib)
+        If separation < 0 Then
+            Dim resting = support OrElse -separation <= _restingSpeed
+            Dim result = Impulse.Resolve(va, invA, vb, invB, n, If(resting, 0.0, _world.Restitution))
+            va = result.A
+            If invB > 0 Then
+                bc.Velocity = result.B
+                MarkTouched(ib)
+            End If
+            If Not resting Then
+                _world.ReportCollision(New CollisionRecord(_time, a, b, side, kind, before, va, vb,
+                                                           If(bMovable, bc.Velocity, Vector.Zero)))
+            End If
         End If
-        If Not resting Then
-            _world.ReportCollision(New CollisionRecord(_time, a, b, side, kind, va, result.A, vb,
-                                                       If(bMovable, bc.Velocity, Vector.Zero)))
+        If va <> before Then
+            a.Velocity = va
+            MarkTouched(ia)
         End If
+        ' Resting on something immovable (or on a circle that is): the circles resting on A can lean on it.
+        If bImmovable AndAlso Math.Abs(Vector.Dot(va - vb, n)) <= _restingSpeed Then _support(ia) += n
     End Sub
 
     Private Sub MarkTouched(i As Integer)
