@@ -14,8 +14,15 @@ Friend NotInheritable Class BroadPhase
     Private _fill As Integer() = Array.Empty(Of Integer)()
 
     ''' <summary>
+    ''' Pairs are kept when their gap is under this fraction of their radii's sum: the later contact phases
+    ''' of the same step (the floor pushing a ball up into the one resting on it, say) may close a gap that
+    ''' was a rounding error wide when the pairs were found.
+    ''' </summary>
+    Friend Const Margin As Double = 0.05
+
+    ''' <summary>
     ''' Fills <paramref name="pairs"/> with the index pairs (into <paramref name="circles"/>, smaller first)
-    ''' of movable circles that overlap or touch now.
+    ''' of movable circles that overlap, touch, or nearly touch (see <see cref="Margin"/>) now.
     ''' </summary>
     Friend Sub FindOverlaps(circles As IReadOnlyList(Of Circle), pairs As List(Of (A As Integer, B As Integer)))
         pairs.Clear()
@@ -39,7 +46,7 @@ Friend NotInheritable Class BroadPhase
 
         ' A sparse scene (a few circles far apart) would need a huge grid: widen the cells instead, which
         ' stays correct because wider cells still hold every touching pair in neighbouring cells.
-        Dim cell = 2 * maxR
+        Dim cell = 2 * maxR * (1 + Margin)
         Dim maxCells = 4.0 * m + 16
         Do While (Math.Floor((maxX - minX) / cell) + 1) * (Math.Floor((maxY - minY) / cell) + 1) > maxCells
             cell *= 2
@@ -101,7 +108,7 @@ Friend NotInheritable Class BroadPhase
         Dim a = circles(i), b = circles(j)
         Dim dx = a.Position.X - b.Position.X
         Dim dy = a.Position.Y - b.Position.Y
-        Dim reach = a.Radius + b.Radius
+        Dim reach = (a.Radius + b.Radius) * (1 + Margin)
         If dx * dx + dy * dy <= reach * reach Then pairs.Add(If(i < j, (i, j), (j, i)))
     End Sub
 End Class

@@ -87,7 +87,7 @@ Friend NotInheritable Class StepContacts
             _pairKeys(k) = Math.Min(circles(p.A).Position.Y, circles(p.B).Position.Y)
             _pairOrder(k) = p
         Next
-        Array.Sort(_pairKeys, _pairOrder, 0, count)
+        Array.Sort(Of Double, (A As Integer, B As Integer))(_pairKeys, _pairOrder, 0, count)
         _pairs.Clear()
         For k = 0 To count - 1
             _pairs.Add(_pairOrder(k))
