@@ -81,4 +81,22 @@ Public Class RandomSceneInvariantTests
             Assert.True((w.Momentum() - p0).Length <= 1.0E-9 * scale, $"e = {e}: momentum moved from {p0} to {w.Momentum()}")
         Next
     End Sub
+
+    <Theory>
+    <MemberData(NameOf(TestSolvers.All), MemberType:=GetType(TestSolvers))>
+    Public Sub AppPresets_StayFiniteAndInside(solver As String)
+        For Each w In {Scenarios.Demo(), Scenarios.Pile(100, 0.3), Scenarios.NewtonsCradle(), Scenarios.ElasticGas(300, 0.2)}
+            TestSolvers.Run(w, solver)
+            Dim e0 = RandomScenes.Energy(w)
+            TestSolvers.Frames(w, 3.0, 1.0 / 60, Sub()
+                                                      For Each c In w.Circles
+                                                          If Not (c.Position.IsFinite AndAlso c.Velocity.IsFinite) Then Assert.Fail($"circle {c.Id} is not finite at t = {w.Time}")
+                                                          If c.IsFixed OrElse Not w.Walls Then Continue For
+                                                          Assert.InRange(c.Position.X, c.Radius - 1.0E-9, w.Width - c.Radius + 1.0E-9)
+                                                          Assert.InRange(c.Position.Y, c.Radius - 1.0E-9, w.Height - c.Radius + 1.0E-9)
+                                                      Next
+                                                  End Sub)
+            Assert.InRange(RandomScenes.Energy(w), Double.NegativeInfinity, e0 * (1 + EnergyTolerance) + 1.0E-12)
+        Next
+    End Sub
 End Class

@@ -171,4 +171,24 @@ Public Class HardCaseTests
         Next
         Assert.InRange(big.Position.Y, 2.0 - 1.0E-3, 2.0 + 1.0E-6)
     End Sub
+
+    <Theory>
+    <MemberData(NameOf(TestSolvers.Stepping), MemberType:=GetType(TestSolvers))>
+    Public Sub ColumnOfBalls_RestsWithoutSinking(solver As String)
+        ' Four equal balls stacked one above the other on the floor, e = 0.5.
+        Dim w As New World(1.0, 2.0, 9.81, 0.5)
+        For i = 0 To 3
+            w.Add(New Circle(New Vector(0.5, 0.1 + 0.2 * i), 0.1, 1.0))
+        Next
+        TestSolvers.Run(w, solver)
+        TestSolvers.Frames(w, 2.0, 1.0 / 60)
+        Dim logged = w.CollisionCount
+        TestSolvers.Frames(w, 1.0, 1.0 / 60, Sub() Assert.InRange(SceneChecks.MaxOverlap(w), Double.NegativeInfinity, 1.0E-6))
+        For i = 0 To 3
+            Dim c = w.Circles(i)
+            Assert.InRange(c.Position.Y, 0.1 + 0.2 * i - 1.0E-6, 0.1 + 0.2 * i + 1.0E-6)
+            Assert.InRange(c.Velocity.Length, 0.0, 1.0E-6)
+        Next
+        Assert.Equal(logged, w.CollisionCount)
+    End Sub
 End Class
