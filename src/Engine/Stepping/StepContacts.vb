@@ -49,29 +49,34 @@ Friend NotInheritable Class StepContacts
         If _support.Length < circles.Count Then _support = New Vector(circles.Count - 1) {}
         Array.Clear(_support, 0, circles.Count)
 
-        ' 1. Movable pairs from the broad phase, bottom first (which the support pass relies on).
         _broadPhase.FindOverlaps(circles, _pairs)
         If _gravity > 0 Then SortBottomUp(circles)
+
+        ResolvePairs()       ' 1. movable pairs, lowest first, with their real masses
+        ResolveObstacles()   ' 2. fixed circles, rectangles, walls; marks who rests on them
+        If _gravity > 0 Then ' only gravity makes things rest on each other
+            ResolveSupport() ' 3. a circle resting on a supported one treats it as immovable
+            ResolveWalls()   ' 4. the support pass may push a circle into a wall: walls have the last word
+        End If
+    End Sub
+
+    Private Sub ResolvePairs()
+        Dim circles = _world.Circles
         For Each p In _pairs
             Dim a = circles(p.A), b = circles(p.B)
             Dim contact = Collider.CircleCircle(a.Position, a.Radius, b.Position, b.Radius)
             If contact.Depth > 0 Then Respond(p.A, a, p.B, b, contact, CollisionKind.CircleCircle, WallSide.None, False)
         Next
+    End Sub
 
-        ' 2. Obstacles and walls, which marks the circles resting on them as supported.
-        ResolveObstacles()
-
-        ' 3. Support (only gravity makes things rest on each other), then the walls again, since the
-        ' support pass can push a circle sideways into one: the walls have the last word.
-        If _gravity > 0 AndAlso _pairs.Count > 0 Then
-            For Each p In _pairs
-                Dim a = circles(p.A), b = circles(p.B)
-                Dim contact = Collider.CircleCircle(a.Position, a.Radius, b.Position, b.Radius)
-                If contact.Depth <= 0 Then Continue For
-                If Not RestsOn(p.A, a, p.B, b, contact) Then RestsOn(p.B, b, p.A, a, New Contact(-contact.Normal, contact.Depth))
-            Next
-            ResolveWalls()
-        End If
+    Private Sub ResolveSupport()
+        Dim circles = _world.Circles
+        For Each p In _pairs
+            Dim a = circles(p.A), b = circles(p.B)
+            Dim contact = Collider.CircleCircle(a.Position, a.Radius, b.Position, b.Radius)
+            If contact.Depth <= 0 Then Continue For
+            If Not RestsOn(p.A, a, p.B, b, contact) Then RestsOn(p.B, b, p.A, a, New Contact(-contact.Normal, contact.Depth))
+        Next
     End Sub
 
     ''' <summary>Orders the pairs by the height of their lower circle, so support spreads up a pile in one pass.</summary>
