@@ -16,6 +16,8 @@ Option Strict On
 Friend NotInheritable Class StepContacts
     ' m/s: approach speeds at or below this are rounding noise, never a collision.
     Private Const MinimumSpeed As Double = 1.0E-9
+    ' Support passes per step at most: each is one sweep over the pairs.
+    Private Const MaxSupportPasses As Integer = 8
 
     Private ReadOnly _broadPhase As New BroadPhase()
     Private ReadOnly _pairs As New List(Of (A As Integer, B As Integer))
@@ -55,7 +57,12 @@ Friend NotInheritable Class StepContacts
         ResolvePairs()       ' 1. movable pairs, lowest first, with their real masses
         ResolveObstacles()   ' 2. fixed circles, rectangles, walls; marks who rests on them
         If _gravity > 0 Then ' only gravity makes things rest on each other
-            ResolveSupport() ' 3. a circle resting on a supported one treats it as immovable
+            ' 3. A circle resting on a supported one treats it as immovable. Lowest pair first lets support
+            ' climb a stack in one pass; in an irregular pile height is not quite the order of support, so
+            ' passes repeat (a few at most) until one finds nothing left to resolve.
+            For pass = 1 To MaxSupportPasses
+                If Not ResolveSupport() Then Exit For
+            Next
             ResolveWalls()   ' 4. the support pass may push a circle into a wall: walls have the last word
         End If
     End Sub
@@ -69,15 +76,18 @@ Friend NotInheritable Class StepContacts
         Next
     End Sub
 
-    Private Sub ResolveSupport()
+    ''' <summary>One support pass over the pairs; True when it resolved any contact.</summary>
+    Private Function ResolveSupport() As Boolean
         Dim circles = _world.Circles
+        Dim any = False
         For Each p In _pairs
             Dim a = circles(p.A), b = circles(p.B)
             Dim contact = Collider.CircleCircle(a.Position, a.Radius, b.Position, b.Radius)
             If contact.Depth <= 0 Then Continue For
-            If Not RestsOn(p.A, a, p.B, b, contact) Then RestsOn(p.B, b, p.A, a, New Contact(-contact.Normal, contact.Depth))
+            If RestsOn(p.A, a, p.B, b, contact) OrElse RestsOn(p.B, b, p.A, a, New Contact(-contact.Normal, contact.Depth)) Then any = True
         Next
-    End Sub
+        Return any
+    End Function
 
     ''' <summary>Orders the pairs by the height of their lower circle, so support spreads up a pile in one pass.</summary>
     Private Sub SortBottomUp(circles As IReadOnlyList(Of Circle))
