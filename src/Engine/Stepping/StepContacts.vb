@@ -116,7 +116,8 @@ Friend NotInheritable Class StepContacts
     ''' not by the light ball's inertia, so it does not sink through it.
     ''' </summary>
     Private Function RestsOn(ia As Integer, a As Circle, ib As Integer, b As Circle, contact As Contact) As Boolean
-        If b Is _world.DraggedCircle OrElse Vector.Dot(contact.Normal, _support(ib)) <= 0 Then Return False
+        Dim dragged = _world.DraggedCircle
+        If a Is dragged OrElse b Is dragged OrElse Vector.Dot(contact.Normal, _support(ib)) <= 0 Then Return False
         Respond(ia, a, ib, b, contact, CollisionKind.CircleCircle, WallSide.None, True)
         Return True
     End Function
