@@ -56,7 +56,8 @@ Public Class WorldTests
             w.DragTo(New Vector(1.0 + 0.05 * i, 0.2))
             w.Advance(1.0 / 60)
             ' Infinite mass: the dragged circle is exactly where it was led, however heavy the ball it pushes.
-            Assert.Equal(New Vector(1.0 + 0.05 * i, 0.2), hand.Position)
+            Assert.Equal(1.0 + 0.05 * i, hand.Position.X, 12)
+            Assert.Equal(0.2, hand.Position.Y, 12)
             Assert.True(SceneChecks.AllFinite(w))
         Next
         Assert.True(heavy.Position.X >= hand.Position.X + 0.4 - 1.0E-9, $"the pushed ball is at {heavy.Position.X}, inside the hand at {hand.Position.X}")
