@@ -232,4 +232,15 @@ Public Class ClassroomGuiTests
             IO.File.Delete(path)
         End Try
     End Sub
+
+    <GuiFact>
+    Public Sub HelpButtons_OpenTheTutorialAndTheMathsWindows()
+        Using app As New AppDriver()
+            app.ClickAndWait("tutorial", "^help Tutorial$")
+            app.WaitForWindow("^Tutorial")
+            app.ClickAndWait("maths", "^help Maths used$")
+            app.WaitForWindow("^Maths used")
+            Assert.True(app.X.AppIsRunning)
+        End Using
+    End Sub
 End Class
