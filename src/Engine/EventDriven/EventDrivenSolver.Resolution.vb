@@ -4,9 +4,11 @@ Option Strict On
 ' report it, apply the resting and sleeping rules, and reschedule the bodies involved.
 Partial Public NotInheritable Class EventDrivenSolver
     Private Sub ProcessEvent(i As Integer)
+        If _cellTime(i) <= _colTime(i) Then
+            CrossCell(i)
+            Return
+        End If
         Select Case _evKind(i)
-            Case EventKind.Cell
-                CrossCell(i)
             Case EventKind.Circle
                 Dim j = _evOther(i)
                 If _count(j) <> _evOtherCount(i) Then
@@ -41,21 +43,6 @@ Partial Public NotInheritable Class EventDrivenSolver
         _py(i) += (_vy(i) + 0.5 * ay * tau) * tau
         _vy(i) += ay * tau
         _t0(i) = _now
-    End Sub
-
-    Private Sub CrossCell(i As Integer)
-        Dim cell = _cell(i)
-        Dim target = cell
-        Select Case _evFeature(i)
-            Case 0 : target = cell - 1
-            Case 1 : target = cell + 1
-            Case 2 : target = cell - _grid.Nx
-            Case 3 : target = cell + _grid.Nx
-        End Select
-        _grid.Remove(i, cell)
-        _grid.Insert(i, target)
-        _cell(i) = target
-        Reschedule(i)
     End Sub
 
     Private Sub CollideWall(i As Integer, side As WallSide)

@@ -18,6 +18,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         LayoutGrid()
         For i = 0 To _n - 1
             _evTime(i) = Double.PositiveInfinity
+            _colTime(i) = Double.PositiveInfinity
+            _cellTime(i) = Double.PositiveInfinity
         Next
         _queue.Reset(_evTime, _n)
         For i = 0 To _n - 1
@@ -127,6 +129,9 @@ Partial Public NotInheritable Class EventDrivenSolver
         ReDim _support(capacity - 1)
         ReDim _lastHit(capacity - 1)
         ReDim _evTime(capacity - 1)
+        ReDim _colTime(capacity - 1)
+        ReDim _cellTime(capacity - 1)
+        ReDim _cellDir(capacity - 1)
         ReDim _evKind(capacity - 1)
         ReDim _evOther(capacity - 1)
         ReDim _evOtherCount(capacity - 1)
@@ -165,7 +170,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             End If
         Next
         Dim gridded = Math.Max(1, _n - _nOversized)
-        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(0.7 * _width * _height / gridded))
+        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(2.0 * _width * _height / gridded))
         _grid.Layout(_width, _height, cell, _n, 4 * _n + 64)
         For i = 0 To _n - 1
             If _r(i) > limit Then

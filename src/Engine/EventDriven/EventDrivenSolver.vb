@@ -35,6 +35,9 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     ' The next event of each body (one slot per body, kept in the indexed heap).
     Private _evTime As Double() = Array.Empty(Of Double)()
+    Private _colTime As Double() = Array.Empty(Of Double)()
+    Private _cellTime As Double() = Array.Empty(Of Double)()
+    Private _cellDir As Integer() = Array.Empty(Of Integer)()
     Private _evKind As EventKind() = Array.Empty(Of EventKind)()
     Private _evOther As Integer() = Array.Empty(Of Integer)()
     Private _evOtherCount As Integer() = Array.Empty(Of Integer)()

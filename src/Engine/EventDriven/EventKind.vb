@@ -12,8 +12,6 @@ Friend Enum EventKind As Byte
     Rectangle
     ''' <summary>A movable circle touches a side of the container.</summary>
     Wall
-    ''' <summary>The centre leaves its grid cell (direction in the feature).</summary>
-    Cell
     ''' <summary>A resting circle's centre reaches the edge of the rectangle it rests on.</summary>
     EdgeLeave
     ''' <summary>A circle sliding over a corner leaves it.</summary>
