@@ -167,10 +167,13 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim speedScale = Math.Sqrt(_g * r)
         ' Resting rule: the rest of the bounce series is a geometric series of flight times.
         Dim restSpeed = Math.Sqrt(2 * _g * RestHeight(r))
-        If n.Y >= 1 - 1.0E-12 AndAlso vn < restSpeed AndAlso (support <> SupportOther OrElse Math.Abs(_vx(i)) < 0.02 * speedScale) Then
+        Dim level = n.Y >= 1 - 1.0E-12 AndAlso support <> SupportNone
+        If level AndAlso vn < restSpeed AndAlso (support <> SupportOther OrElse Math.Abs(_vx(i)) < 0.02 * speedScale) Then
             EnterRest(i, support, vn)
             Return
         End If
+        ' On a level support the bounce series is followed exactly down to restSpeed.
+        If level AndAlso support <> SupportOther Then Return
         ' Sleeping rule: slow and held from below (one level support, or supports on both sides).
         Dim speed = Math.Sqrt(_vx(i) * _vx(i) + _vy(i) * _vy(i))
         If speed < 0.02 * speedScale AndAlso IsHeld(i) Then
@@ -333,8 +336,11 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim theta = _slideAngle(i)
         Dim s = _slideDir(i)
         Dim speed = CornerSlide.SpeedAt(_slideV0(i), _g, _r(i), 0, theta)
-        _px(i) = _slideCx(i) + s * _r(i) * Math.Sin(theta)
-        _py(i) = _slideCy(i) + _r(i) * Math.Cos(theta)
+        ' It leaves tangentially, touching the corner with zero normal speed; start it a hair (far
+        ' below any physical scale) outside, so rounding cannot turn the tangent into a collision.
+        Dim arc = _r(i) + 10 * _slop + 1.0E-9 * _r(i)
+        _px(i) = _slideCx(i) + s * arc * Math.Sin(theta)
+        _py(i) = _slideCy(i) + arc * Math.Cos(theta)
         _vx(i) = s * speed * Math.Cos(theta)
         _vy(i) = -speed * Math.Sin(theta)
         _t0(i) = _now

@@ -160,7 +160,7 @@ Partial Public NotInheritable Class EventDrivenSolver
                                 Else
                                     Dim a = dvx * dvx + dvy * dvy
                                     Dim disc = b * b - a * c
-                                    t = If(disc < 0, Double.PositiveInfinity, c / (-b + Math.Sqrt(disc)))
+                                    t = If(disc <= TimeOfImpact.GrazeFraction * b * b, Double.PositiveInfinity, c / (-b + Math.Sqrt(disc)))
                                 End If
                                 If t < best Then
                                     best = t

@@ -7,6 +7,9 @@ Option Strict On
 ''' that approach collide now (0); touching bodies that separate never do.
 ''' </summary>
 Public Module TimeOfImpact
+    ''' <summary>Discriminants below this fraction of b² count as a tangent graze, not a hit.</summary>
+    Public Const GrazeFraction As Double = 1.0E-14
+
     ''' <summary>
     ''' Two circles whose centres are (dx, dy) apart (A − B), with relative velocity (dvx, dvy) and
     ''' relative vertical acceleration dAy (A − B), touching at distance <paramref name="sumRadii"/>.
@@ -24,7 +27,9 @@ Public Module TimeOfImpact
             If c1 >= 0 Then Return Double.PositiveInfinity
             Dim a = dvx * dvx + dvy * dvy
             Dim disc = c1 * c1 - 4 * a * c0
-            If disc < 0 Then Return Double.PositiveInfinity
+            ' A (near-)double root is a graze: the path touches the circle without entering it. The
+            ' deepest overlap a graze this close could hide is ~1e-14 of the distance: nothing.
+            If disc <= GrazeFraction * c1 * c1 Then Return Double.PositiveInfinity
             ' Smaller root c/q with q = −½(b − √disc) > 0: no cancellation.
             Return 2 * c0 / (-c1 + Math.Sqrt(disc))
         End If
@@ -56,13 +61,13 @@ Public Module TimeOfImpact
         Dim t As Double
         ' Faces: x is linear, y quadratic in t.
         t = GapCloses(x0 - r - px, -vx, 0, slop)
-        If t < best AndAlso WithinSpan(py + (vy + 0.5 * ay * t) * t, y0, y1, slop) Then best = t : feature = 0
+        If t < best AndAlso WithinFace(py + (vy + 0.5 * ay * t) * t, vy + ay * t, y0, y1, slop) Then best = t : feature = 0
         t = GapCloses(px - x1 - r, vx, 0, slop)
-        If t < best AndAlso WithinSpan(py + (vy + 0.5 * ay * t) * t, y0, y1, slop) Then best = t : feature = 1
+        If t < best AndAlso WithinFace(py + (vy + 0.5 * ay * t) * t, vy + ay * t, y0, y1, slop) Then best = t : feature = 1
         t = GapCloses(y0 - r - py, -vy, -ay, slop)
-        If t < best AndAlso WithinSpan(px + vx * t, x0, x1, slop) Then best = t : feature = 2
+        If t < best AndAlso WithinFace(px + vx * t, vx, x0, x1, slop) Then best = t : feature = 2
         t = GapCloses(py - y1 - r, vy, ay, slop)
-        If t < best AndAlso WithinSpan(px + vx * t, x0, x1, slop) Then best = t : feature = 3
+        If t < best AndAlso WithinFace(px + vx * t, vx, x0, x1, slop) Then best = t : feature = 3
         ' Corners: a parabola against a circle of radius r.
         For k = 0 To 3
             Dim cx = If((k And 1) = 0, x0, x1)
@@ -79,7 +84,14 @@ Public Module TimeOfImpact
         Return best
     End Function
 
-    Private Function WithinSpan(v As Double, lo As Double, hi As Double, slop As Double) As Boolean
-        Return v >= lo - slop AndAlso v <= hi + slop
+    ''' <summary>
+    ''' Whether a hit at coordinate h along a face [lo, hi] lands on the face. A hit exactly at an end
+    ''' while moving outwards belongs to the corner (the body is leaving the face there).
+    ''' </summary>
+    Private Function WithinFace(h As Double, rate As Double, lo As Double, hi As Double, slop As Double) As Boolean
+        If h < lo - slop OrElse h > hi + slop Then Return False
+        If h >= hi AndAlso rate > 0 Then Return False
+        If h <= lo AndAlso rate < 0 Then Return False
+        Return True
     End Function
 End Module
