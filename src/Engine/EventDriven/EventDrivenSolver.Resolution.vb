@@ -90,7 +90,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             _lastHit(i) = _now
         End If
         If _mode(i) = BodyMode.Resting AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then MakeFree(i)
-        If _mode(i) = BodyMode.Free Then AfterSupportContact(i, n, support, -approach)
+        If _mode(i) = BodyMode.Free Then AfterSupportContact(i, n, support, 0, 0)
         _count(i) += 1
         Reschedule(i)
     End Sub
@@ -119,21 +119,38 @@ Partial Public NotInheritable Class EventDrivenSolver
         ' Whoever moved leaves rest; a body still asleep stays a support.
         If result.A <> vi AndAlso _mode(i) <> BodyMode.Dragged Then WakeFrom(i)
         If result.B <> vj AndAlso _mode(j) <> BodyMode.Dragged Then WakeFrom(j)
-        If _mode(i) = BodyMode.Free AndAlso invJ = 0 AndAlso _mode(j) <> BodyMode.Dragged Then AfterSupportContact(i, n, SupportOther, -approach)
-        If _mode(j) = BodyMode.Free AndAlso invI = 0 AndAlso _mode(i) <> BodyMode.Dragged Then AfterSupportContact(j, -n, SupportOther, -approach)
+        If _mode(i) = BodyMode.Free AndAlso invJ = 0 AndAlso _mode(j) <> BodyMode.Dragged Then
+            AfterSupportContact(i, n, SupportOther, _vx(j), _vy(j))
+        ElseIf _mode(i) = BodyMode.Free Then
+            SleepIfSettled(i)
+        End If
+        If _mode(j) = BodyMode.Free AndAlso invI = 0 AndAlso _mode(i) <> BodyMode.Dragged Then
+            AfterSupportContact(j, -n, SupportOther, _vx(i), _vy(i))
+        ElseIf _mode(j) = BodyMode.Free Then
+            SleepIfSettled(j)
+        End If
         _count(i) += 1
         _count(j) += 1
         Reschedule(i)
         Reschedule(j)
     End Sub
 
+    ''' <summary>
+    ''' Body i's inverse mass in this collision. The dragged circle is immovable. A body at rest
+    ''' (asleep in a pile, or resting on a surface) hit by a free body from above acts as part of its
+    ''' support (the floor beneath takes the blow), and so does one touched gently from the side;
+    ''' anything else moves it and wakes it.
+    ''' </summary>
     Private Function InverseMassFor(i As Integer, mode As BodyMode, partnerMode As BodyMode, gentle As Boolean, partner As Integer) As Double
         Select Case mode
             Case BodyMode.Dragged
                 Return 0
             Case BodyMode.Sleeping, BodyMode.Resting
-                ' Stay put under a gentle touch from a free body; anything harder (or the drag) moves it.
-                If gentle AndAlso partnerMode = BodyMode.Free AndAlso _py(partner) > _py(i) Then Return 0
+                If partnerMode = BodyMode.Free Then
+                    Dim dy = _py(partner) - _py(i)
+                    Dim above = dy > 0.3 * (_r(i) + _r(partner))
+                    If above OrElse gentle Then Return 0
+                End If
                 Return _circle(i).InverseMass
             Case Else
                 Return _circle(i).InverseMass
@@ -146,7 +163,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Private Function EffectiveRestitution(i As Integer, j As Integer) As Double
         If _e >= 1 OrElse _g = 0 Then Return _e
-        Dim tc = 1.0E-6 * Math.Sqrt(Math.Min(_r(i), _r(j)) / _g)
+        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_r(i), _r(j)) / _g)
         If _now - _lastHit(i) < tc AndAlso _now - _lastHit(j) < tc Then Return 1.0
         Return _e
     End Function
@@ -158,27 +175,28 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     ''' <summary>
     ''' After a free body touched something that does not give way (floor, rectangle, fixed circle,
-    ''' a body at rest) with normal n: the resting and sleeping rules that end the Zeno series.
+    ''' a body at rest, moving at (sx, sy) m/s) with normal n: the resting and sleeping rules that end
+    ''' the Zeno series. Speeds are relative to the support.
     ''' </summary>
-    Private Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, approachSpeed As Double)
+    Private Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, sx As Double, sy As Double)
         If _g = 0 OrElse n.Y <= 0 Then Return
         Dim r = _r(i)
-        Dim vn = _vx(i) * n.X + _vy(i) * n.Y
+        Dim rx = _vx(i) - sx, ry = _vy(i) - sy
+        Dim vn = rx * n.X + ry * n.Y
         Dim speedScale = Math.Sqrt(_g * r)
         ' Resting rule: the rest of the bounce series is a geometric series of flight times.
         Dim restSpeed = Math.Sqrt(2 * _g * RestHeight(r))
         Dim level = n.Y >= 1 - 1.0E-12 AndAlso support <> SupportNone
-        If level AndAlso vn < restSpeed AndAlso (support <> SupportOther OrElse Math.Abs(_vx(i)) < 0.02 * speedScale) Then
+        If level AndAlso vn < restSpeed AndAlso (support <> SupportOther OrElse Math.Abs(rx) < 0.02 * speedScale) Then
             EnterRest(i, support, vn)
             Return
         End If
         ' On a level support the bounce series is followed exactly down to restSpeed.
         If level AndAlso support <> SupportOther Then Return
         ' Sleeping rule: slow and held from below (one level support, or supports on both sides).
-        Dim speed = Math.Sqrt(_vx(i) * _vx(i) + _vy(i) * _vy(i))
-        If speed < 0.02 * speedScale AndAlso IsHeld(i) Then
-            Sleep(i)
-            Return
+        If sx = 0 AndAlso sy = 0 Then
+            SleepIfSettled(i)
+            If _mode(i) = BodyMode.Sleeping Then Return
         End If
         ' Zeno guard on a slope: never leave a support slower than restSpeed, so a body sliding
         ' down a curved support hops down it in finitely many events instead of infinitely many.
@@ -187,6 +205,28 @@ Partial Public NotInheritable Class EventDrivenSolver
             _vy(i) += n.Y * (restSpeed - vn)
         End If
     End Sub
+
+    ''' <summary>
+    ''' After a collision between free bodies: one that is now slow and held by what it touches
+    ''' sleeps. A body caught in a burst of collisions (the start of inelastic collapse: more than
+    ''' <see cref="BurstCollisions"/> within √(r/g)/10) sleeps as soon as it is held, at any speed
+    ''' below √(g r): that chatter is a resting contact the event picture cannot end by itself.
+    ''' </summary>
+    Private Sub SleepIfSettled(i As Integer)
+        If _g = 0 Then Return
+        Dim speed2 = _vx(i) * _vx(i) + _vy(i) * _vy(i)
+        Dim scale2 = _g * _r(i)
+        Dim window = 0.1 * Math.Sqrt(_r(i) / _g)
+        If _now - _burstStart(i) > window Then
+            _burstStart(i) = _now
+            _burstCount(i) = 0
+        End If
+        _burstCount(i) += 1
+        Dim limit2 = If(_burstCount(i) > BurstCollisions, scale2, 0.0004 * scale2)
+        If speed2 < limit2 AndAlso IsHeld(i) Then Sleep(i)
+    End Sub
+
+    Private Const BurstCollisions As Integer = 20
 
     ''' <summary>Bounce height (m) below which a ball counts as resting: 10⁻⁶ of its radius.</summary>
     Private Shared Function RestHeight(r As Double) As Double
@@ -202,9 +242,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         _ay(i) = 0
         _support(i) = support
         _mode(i) = BodyMode.Resting
-        If Math.Abs(_vx(i)) < 0.02 * Math.Sqrt(_g * _r(i)) AndAlso support <> SupportNone Then
-            If support = SupportOther OrElse _vx(i) = 0 Then Sleep(i)
-        End If
+        ' Slow enough along a level support: asleep (a pile's floor layer must settle to hold the rest).
+        If Math.Abs(_vx(i)) < 0.05 * Math.Sqrt(_g * _r(i)) AndAlso support <> SupportNone Then Sleep(i)
     End Sub
 
     Private Sub Sleep(i As Integer)
@@ -231,16 +270,18 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     ''' <summary>Wakes every sleeping or resting body that (directly or through others) rests on body i.</summary>
     Private Sub WakeAbove(i As Integer)
-        Dim top = 0
-        _stack(top) = i
-        top += 1
-        While top > 0
-            top -= 1
-            Dim k = _stack(top)
+        Dim head = 0, tail = 0
+        _wake(tail) = i
+        tail += 1
+        While head < tail
+            Dim k = _wake(head)
+            head += 1
             Dim kx = PositionX(k), ky = PositionY(k)
-            For j = 0 To _n - 1
+            Dim count = Neighbours(k)
+            For q = 0 To count - 1
+                Dim j = _stack(q)
                 Dim mj = _mode(j)
-                If j = k OrElse (mj <> BodyMode.Sleeping AndAlso mj <> BodyMode.Resting) Then Continue For
+                If mj <> BodyMode.Sleeping AndAlso mj <> BodyMode.Resting Then Continue For
                 Dim dx = _px(j) - kx, dy = _py(j) - ky
                 If dy <= 0 Then Continue For
                 Dim reach = _r(j) + _r(k) + 1.0E-3 * Math.Min(_r(j), _r(k))
@@ -249,9 +290,9 @@ Partial Public NotInheritable Class EventDrivenSolver
                 MakeFree(j)
                 _count(j) += 1
                 Reschedule(j)
-                If top < _stack.Length Then
-                    _stack(top) = j
-                    top += 1
+                If tail < _wake.Length Then
+                    _wake(tail) = j
+                    tail += 1
                 End If
             Next
         End While
@@ -267,45 +308,81 @@ Partial Public NotInheritable Class EventDrivenSolver
     End Function
 
     ''' <summary>
-    ''' Whether body i is held against gravity by what it touches (within 10⁻³ r): a level support
-    ''' below, or supports whose normals lie on both sides of the vertical.
+    ''' Whether body i is held against gravity by what it touches (within 10⁻³ r): the upward
+    ''' vertical lies in the cone of its contact normals, so normal forces alone can balance its
+    ''' weight (one level support, or two on either side of the vertical, or a cage). Neighbours count
+    ''' whether asleep or not (a settling pile freezes as a whole); only nearby cells are searched.
     ''' </summary>
     Private Function IsHeld(i As Integer) As Boolean
-        Dim px = _px(i), py = _py(i), r = _r(i)
+        Dim px = PositionX(i), py = PositionY(i), r = _r(i)
         Dim gap = 1.0E-3 * r + _slop
-        Dim leftward = False, rightward = False
+        _nNormals = 0
         If _walls Then
             If py - r <= gap Then Return True
-            If px - r <= gap Then rightward = True
-            If _width - r - px <= gap Then leftward = True
+            If px - r <= gap Then AddNormal(1, 0)
+            If _width - r - px <= gap Then AddNormal(-1, 0)
+            If _height - r - py <= gap Then AddNormal(0, -1)
         End If
+        Dim p = New Vector(px, py)
         For k = 0 To _nRect - 1
-            Dim c = Collider.CircleRectangle(New Vector(px, py), r, New Vector(_rx0(k), _ry0(k)), New Vector(_rx1(k), _ry1(k)))
-            If c.Depth >= -gap Then Note(c.Normal, leftward, rightward)
+            Dim c = Collider.CircleRectangle(p, r, New Vector(_rx0(k), _ry0(k)), New Vector(_rx1(k), _ry1(k)))
+            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
         Next
         For k = 0 To _nFixed - 1
-            Dim c = Collider.CircleCircle(New Vector(px, py), r, New Vector(_fx(k), _fy(k)), _fr(k))
-            If c.Depth >= -gap Then Note(c.Normal, leftward, rightward)
+            Dim c = Collider.CircleCircle(p, r, New Vector(_fx(k), _fy(k)), _fr(k))
+            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
         Next
-        For j = 0 To _n - 1
-            If j = i OrElse _mode(j) <> BodyMode.Sleeping Then Continue For
-            Dim c = Collider.CircleCircle(New Vector(px, py), r, New Vector(_px(j), _py(j)), _r(j))
-            If c.Depth >= -gap Then Note(c.Normal, leftward, rightward)
+        Dim count = Neighbours(i)
+        For q = 0 To count - 1
+            Dim j = _stack(q)
+            If _mode(j) = BodyMode.Sliding OrElse _mode(j) = BodyMode.Dragged Then Continue For
+            Dim c = Collider.CircleCircle(p, r, New Vector(PositionX(j), PositionY(j)), _r(j))
+            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
         Next
-        Return leftward AndAlso rightward
+        ' Up = (0, 1) lies between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.
+        For a = 0 To _nNormals - 1
+            If _normalY(a) > 0.999 Then Return True
+            For b = 0 To _nNormals - 1
+                If _normalX(a) >= 0 AndAlso _normalX(b) <= 0 AndAlso
+                   _normalX(a) * _normalY(b) - _normalY(a) * _normalX(b) > 0 Then Return True
+            Next
+        Next
+        Return False
     End Function
 
-    Private Shared Sub Note(n As Vector, ByRef leftward As Boolean, ByRef rightward As Boolean)
-        If n.Y < -1.0E-9 Then Return
-        If n.Y > 0.999 Then
-            leftward = True
-            rightward = True
-        ElseIf n.X < 0 Then
-            leftward = True
-        Else
-            rightward = True
+    Private Sub AddNormal(x As Double, y As Double)
+        If _nNormals < _normalX.Length Then
+            _normalX(_nNormals) = x
+            _normalY(_nNormals) = y
+            _nNormals += 1
         End If
     End Sub
+
+    ''' <summary>Fills the scratch stack with the movable bodies in the 3 × 3 cells around i (all bodies if i is oversized); returns how many.</summary>
+    Private Function Neighbours(i As Integer) As Integer
+        Dim count = 0
+        If _cell(i) < 0 Then
+            For j = 0 To _n - 1
+                If j <> i Then _stack(count) = j : count += 1
+            Next
+            Return count
+        End If
+        Dim col = _cell(i) Mod _grid.Nx, row = _cell(i) \ _grid.Nx
+        For rr = Math.Max(0, row - 1) To Math.Min(_grid.Ny - 1, row + 1)
+            For cc = Math.Max(0, col - 1) To Math.Min(_grid.Nx - 1, col + 1)
+                Dim j = _grid.Head(rr * _grid.Nx + cc)
+                While j >= 0
+                    If j <> i AndAlso count < _stack.Length Then _stack(count) = j : count += 1
+                    j = _grid.NextInCell(j)
+                End While
+            Next
+        Next
+        For k = 0 To _nOversized - 1
+            If _oversized(k) <> i AndAlso count < _stack.Length Then _stack(count) = _oversized(k) : count += 1
+        Next
+        Return count
+    End Function
+
 
     ''' <summary>
     ''' A resting body's centre reached the edge of its rectangle: fast enough (v² ≥ g r) it flies off

@@ -80,6 +80,8 @@ Partial Public NotInheritable Class EventDrivenSolver
             LoadBody(i, c)
             _count(i) = 0
             _lastHit(i) = Double.NegativeInfinity
+            _burstStart(i) = Double.NegativeInfinity
+            _burstCount(i) = 0
             If _restTimes.ContainsKey(c) AndAlso _mode(i) = BodyMode.Free AndAlso c.Velocity.Y = 0 Then stillResting.Add(c)
             i += 1
         Next
@@ -128,6 +130,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         ReDim _cell(capacity - 1)
         ReDim _support(capacity - 1)
         ReDim _lastHit(capacity - 1)
+        ReDim _burstStart(capacity - 1)
+        ReDim _burstCount(capacity - 1)
         ReDim _evTime(capacity - 1)
         ReDim _colTime(capacity - 1)
         ReDim _cellTime(capacity - 1)
@@ -144,6 +148,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         ReDim _slideStart(capacity - 1)
         ReDim _oversized(capacity - 1)
         ReDim _stack(capacity - 1)
+        ReDim _wake(capacity - 1)
     End Sub
 
     ''' <summary>

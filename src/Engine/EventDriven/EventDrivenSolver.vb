@@ -32,6 +32,9 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private _support As Integer() = Array.Empty(Of Integer)()
     ''' <summary>Time of the body's last collision, s (for the inelastic-collapse guard).</summary>
     Private _lastHit As Double() = Array.Empty(Of Double)()
+    ''' <summary>Start (s) and size of the body's current burst of collisions (for the sleeping rule).</summary>
+    Private _burstStart As Double() = Array.Empty(Of Double)()
+    Private _burstCount As Integer() = Array.Empty(Of Integer)()
 
     ' The next event of each body (one slot per body, kept in the indexed heap).
     Private _evTime As Double() = Array.Empty(Of Double)()
@@ -69,6 +72,12 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private _nOversized As Integer
     ''' <summary>Scratch stack for waking a column of sleeping circles (no allocation per event).</summary>
     Private _stack As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Contact normals gathered by IsHeld (scratch, fixed size).</summary>
+    Private ReadOnly _normalX As Double() = New Double(15) {}
+    Private ReadOnly _normalY As Double() = New Double(15) {}
+    Private _nNormals As Integer
+    ''' <summary>Scratch queue of bodies being woken.</summary>
+    Private _wake As Integer() = Array.Empty(Of Integer)()
 
     Private ReadOnly _grid As New UniformGrid()
     Private ReadOnly _queue As New EventQueue()
