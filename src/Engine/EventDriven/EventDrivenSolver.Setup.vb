@@ -175,7 +175,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             End If
         Next
         Dim gridded = Math.Max(1, _n - _nOversized)
-        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(2.0 * _width * _height / gridded))
+        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(1.2 * _width * _height / gridded))
         _grid.Layout(_width, _height, cell, _n, 4 * _n + 64)
         For i = 0 To _n - 1
             If _r(i) > limit Then
