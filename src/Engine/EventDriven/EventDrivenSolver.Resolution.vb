@@ -82,7 +82,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private Sub CollideStatic(i As Integer, n As Vector, b As Shape, side As WallSide, kind As CollisionKind, support As Integer)
         Dim before = New Vector(_vx(i), _vy(i))
         Dim approach = Vector.Dot(before, n)
-        Dim after = Impulse.Resolve(before, 1.0, Vector.Zero, 0.0, n, EffectiveRestitution(i, i)).A
+        Dim after = Impulse.Resolve(before, 1.0, Vector.Zero, 0.0, n, _e).A
         _vx(i) = after.X
         _vy(i) = after.Y
         If approach < 0 Then
@@ -136,10 +136,9 @@ Partial Public NotInheritable Class EventDrivenSolver
     End Sub
 
     ''' <summary>
-    ''' Body i's inverse mass in this collision. The dragged circle is immovable. A body at rest
-    ''' (asleep in a pile, or resting on a surface) hit by a free body from above acts as part of its
-    ''' support (the floor beneath takes the blow), and so does one touched gently from the side;
-    ''' anything else moves it and wakes it.
+    ''' Body i's inverse mass in this collision. The dragged circle is immovable. A sleeping body hit
+    ''' by a free body from above acts as part of its support (the floor beneath takes the blow); a
+    ''' body at rest touched gently also stays put; anything else moves it and wakes it.
     ''' </summary>
     Private Function InverseMassFor(i As Integer, mode As BodyMode, partnerMode As BodyMode, gentle As Boolean, partner As Integer) As Double
         Select Case mode
@@ -147,8 +146,10 @@ Partial Public NotInheritable Class EventDrivenSolver
                 Return 0
             Case BodyMode.Sleeping, BodyMode.Resting
                 If partnerMode = BodyMode.Free Then
+                    ' Only a sleeper (which never moves) may take a blow from above as the ground does:
+                    ' treating a moving body as immovable can trap a ball in a cycle of instantaneous hits.
                     Dim dy = _py(partner) - _py(i)
-                    Dim above = dy > 0.3 * (_r(i) + _r(partner))
+                    Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (_r(i) + _r(partner))
                     If above OrElse gentle Then Return 0
                 End If
                 Return _circle(i).InverseMass

@@ -156,7 +156,8 @@ Partial Public NotInheritable Class EventDrivenSolver
                                 Dim c = dx * dx + dy * dy - sumR * sumR
                                 Dim t As Double
                                 If c <= 2 * sumR * slop Then
-                                    t = 0
+                                    ' Touching: a collision now only if really approaching (not rounding after e = 0).
+                                    t = If(b < -TimeOfImpact.ApproachFraction * sumR * Math.Sqrt(dvx * dvx + dvy * dvy), 0, Double.PositiveInfinity)
                                 Else
                                     Dim a = dvx * dvx + dvy * dvy
                                     Dim disc = b * b - a * c

@@ -120,7 +120,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' process. When reached, the rest of the advance is done ballistically, overlaps are pushed
     ''' apart and <see cref="GuardTripped"/> is set.
     ''' </summary>
-    Public Property MaxEventsPerAdvance As Long = 500_000_000
+    Public Property MaxEventsPerAdvance As Long = 100_000_000
 
     ''' <summary>True once an advance hit <see cref="MaxEventsPerAdvance"/> or looped without time moving.</summary>
     Public ReadOnly Property GuardTripped As Boolean

@@ -10,6 +10,9 @@ Public Module TimeOfImpact
     ''' <summary>Discriminants below this fraction of b² count as a tangent graze, not a hit.</summary>
     Public Const GrazeFraction As Double = 1.0E-14
 
+    ''' <summary>Normal approach speeds below this fraction of the relative speed count as zero.</summary>
+    Public Const ApproachFraction As Double = 1.0E-12
+
     ''' <summary>
     ''' Two circles whose centres are (dx, dy) apart (A − B), with relative velocity (dvx, dvy) and
     ''' relative vertical acceleration dAy (A − B), touching at distance <paramref name="sumRadii"/>.
@@ -21,9 +24,12 @@ Public Module TimeOfImpact
         Dim c0 = dx * dx + dy * dy - sumRadii * sumRadii
         Dim c1 = 2 * (dx * dvx + dy * dvy)
         Dim tol = 2 * sumRadii * slop
+        ' Touching bodies approaching at less than 10⁻¹² of their relative speed are not approaching:
+        ' that is what rounding leaves after a perfectly inelastic (e = 0) collision.
+        Dim slopeTol = ApproachFraction * 2 * sumRadii * Math.Sqrt(dvx * dvx + dvy * dvy)
         If dAy = 0 Then
             ' Straight-line relative motion, inlined for the elastic gas: the hot path of the solver.
-            If c0 <= tol Then Return If(c1 < 0, 0.0, Double.PositiveInfinity)
+            If c0 <= tol Then Return If(c1 < -slopeTol, 0.0, Double.PositiveInfinity)
             If c1 >= 0 Then Return Double.PositiveInfinity
             Dim a = dvx * dvx + dvy * dvy
             Dim disc = c1 * c1 - 4 * a * c0
@@ -34,6 +40,7 @@ Public Module TimeOfImpact
             Return 2 * c0 / (-c1 + Math.Sqrt(disc))
         End If
         Dim alpha = 0.5 * dAy
+        If Math.Abs(c1) <= slopeTol AndAlso c0 <= tol Then c1 = 0
         Return RootFinding.EarliestEntry(alpha * alpha, 2 * alpha * dvy, dvx * dvx + dvy * dvy + 2 * alpha * dy, c1, c0, tol)
     End Function
 
