@@ -80,6 +80,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' towards i). <paramref name="support"/> names what it would rest on if n points straight up.
     ''' </summary>
     Private Sub CollideStatic(i As Integer, n As Vector, b As Shape, side As WallSide, kind As CollisionKind, support As Integer)
+        If Jammed(i) Then Return
         Dim before = New Vector(_vx(i), _vy(i))
         Dim approach = Vector.Dot(before, n)
         Dim after = Impulse.Resolve(before, 1.0, Vector.Zero, 0.0, n, _e).A
@@ -98,6 +99,8 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private Sub CollideCircles(i As Integer, j As Integer)
         Sync(i)
         Sync(j)
+        If _mode(j) = BodyMode.Sleeping AndAlso Jammed(i) Then Return
+        If _mode(i) = BodyMode.Sleeping AndAlso Jammed(j) Then Return
         Dim n = New Vector(_px(i) - _px(j), _py(i) - _py(j)).Normalized(New Vector(0, 1))
         Dim vi = New Vector(_vx(i), _vy(i)), vj = New Vector(_vx(j), _vy(j))
         Dim approach = Vector.Dot(vi - vj, n)
@@ -168,6 +171,35 @@ Partial Public NotInheritable Class EventDrivenSolver
         If _now - _lastHit(i) < tc AndAlso _now - _lastHit(j) < tc Then Return 1.0
         Return _e
     End Function
+
+    ''' <summary>
+    ''' A free body wedged between supports that do not give way (a ball falling into a gap slightly
+    ''' narrower than itself) is hit by each of them in turn at the same instant, and pairwise impulses
+    ''' only shave a little off its speed each time. After <see cref="JamHits"/> hits at one instant the
+    ''' contacts are resolved together: the supports block every direction it could move in, so it
+    ''' stops (and, under gravity, sleeps). Returns True when that happened and the event is done.
+    ''' </summary>
+    Private Function Jammed(i As Integer) As Boolean
+        If _mode(i) <> BodyMode.Free Then Return False
+        If _sameTime(i) = _now Then
+            _sameCount(i) += 1
+        Else
+            _sameTime(i) = _now
+            _sameCount(i) = 0
+        End If
+        If _sameCount(i) < JamHits Then Return False
+        _vx(i) = 0
+        _vy(i) = 0
+        ' Wedged under gravity it goes to sleep where it is (even if the wedge is not quite a held
+        ' position, it cannot move at this instant, and a sleeper wakes again when hit).
+        If _g > 0 Then Sleep(i)
+        _count(i) += 1
+        _sameCount(i) = 0
+        Reschedule(i)
+        Return True
+    End Function
+
+    Private Const JamHits As Integer = 16
 
     ''' <summary>Normal speed (m/s) below which a touch on a resting body does not wake it: 10 % of √(g r).</summary>
     Private Function GentleSpeed(i As Integer, j As Integer) As Double

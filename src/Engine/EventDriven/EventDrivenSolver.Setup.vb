@@ -82,6 +82,8 @@ Partial Public NotInheritable Class EventDrivenSolver
             _lastHit(i) = Double.NegativeInfinity
             _burstStart(i) = Double.NegativeInfinity
             _burstCount(i) = 0
+            _sameTime(i) = Double.NaN
+            _sameCount(i) = 0
             If _restTimes.ContainsKey(c) AndAlso _mode(i) = BodyMode.Free AndAlso c.Velocity.Y = 0 Then stillResting.Add(c)
             i += 1
         Next
@@ -132,6 +134,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         ReDim _lastHit(capacity - 1)
         ReDim _burstStart(capacity - 1)
         ReDim _burstCount(capacity - 1)
+        ReDim _sameTime(capacity - 1)
+        ReDim _sameCount(capacity - 1)
         ReDim _evTime(capacity - 1)
         ReDim _colTime(capacity - 1)
         ReDim _cellTime(capacity - 1)

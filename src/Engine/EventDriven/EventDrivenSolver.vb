@@ -35,6 +35,9 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' <summary>Start (s) and size of the body's current burst of collisions (for the sleeping rule).</summary>
     Private _burstStart As Double() = Array.Empty(Of Double)()
     Private _burstCount As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Instant (s) of the body's last collision and how many it had at that instant (jam detection).</summary>
+    Private _sameTime As Double() = Array.Empty(Of Double)()
+    Private _sameCount As Integer() = Array.Empty(Of Integer)()
 
     ' The next event of each body (one slot per body, kept in the indexed heap).
     Private _evTime As Double() = Array.Empty(Of Double)()
