@@ -84,6 +84,10 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim before = New Vector(_vx(i), _vy(i))
         Dim approach = Vector.Dot(before, n)
         Dim after = Impulse.Resolve(before, 1.0, Vector.Zero, 0.0, n, _e).A
+        If approach < 0 AndAlso after = before Then
+            _px(i) += n.X * 4 * _slop ' see CollideCircles: an approach too small to resolve
+            _py(i) += n.Y * 4 * _slop
+        End If
         _vx(i) = after.X
         _vy(i) = after.Y
         If approach < 0 Then
@@ -110,6 +114,16 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim invI = InverseMassFor(i, mi, mj, gentle, j)
         Dim invJ = InverseMassFor(j, mj, mi, gentle, i)
         Dim result = Impulse.Resolve(vi, invI, vj, invJ, n, EffectiveRestitution(i, j))
+        If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then
+            ' The approach was below what the velocities can resolve in floating point (after an
+            ' e = 0 contact): part them by a few slops instead, so the pair stops being "touching".
+            Dim wi = If(invI > 0 OrElse invJ = 0, 0.5, 0.0), wj = If(invJ > 0 OrElse invI = 0, 0.5, 0.0)
+            Dim sep = 4 * _slop / Math.Max(wi + wj, 0.5)
+            _px(i) += n.X * sep * wi
+            _py(i) += n.Y * sep * wi
+            _px(j) -= n.X * sep * wj
+            _py(j) -= n.Y * sep * wj
+        End If
         _vx(i) = result.A.X
         _vy(i) = result.A.Y
         _vx(j) = result.B.X
