@@ -13,6 +13,12 @@ Partial Public NotInheritable Class EventDrivenSolver
                 Dim j = _evOther(i)
                 If _count(j) <> _evOtherCount(i) Then
                     Reschedule(i) ' stale: the partner's motion changed since this was predicted
+                ElseIf _mode(i) = BodyMode.Sliding OrElse _mode(j) = BodyMode.Sliding Then
+                    ' Something reached a sliding ball's corner: stop following the slide exactly.
+                    If _mode(i) = BodyMode.Sliding Then Materialize(i)
+                    If _mode(j) = BodyMode.Sliding Then Materialize(j)
+                    Reschedule(i)
+                    Reschedule(j)
                 Else
                     CollideCircles(i, j)
                 End If
@@ -63,10 +69,10 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim n As Vector
         Dim support = SupportNone
         Select Case feature
-            Case 0 : n = New Vector(-1, 0) : _px(i) = _rx0(k) - _r(i)
-            Case 1 : n = New Vector(1, 0) : _px(i) = _rx1(k) + _r(i)
-            Case 2 : n = New Vector(0, -1) : _py(i) = _ry0(k) - _r(i)
-            Case 3 : n = New Vector(0, 1) : _py(i) = _ry1(k) + _r(i) : support = k
+            Case 0 : n = New Vector(-1, 0) : _px(i) = Math.Min(_px(i), _rx0(k) - _r(i))
+            Case 1 : n = New Vector(1, 0) : _px(i) = Math.Max(_px(i), _rx1(k) + _r(i))
+            Case 2 : n = New Vector(0, -1) : _py(i) = Math.Min(_py(i), _ry0(k) - _r(i))
+            Case 3 : n = New Vector(0, 1) : _py(i) = Math.Max(_py(i), _ry1(k) + _r(i)) : support = k
             Case Else
                 Dim cx = If(((feature - 4) And 1) = 0, _rx0(k), _rx1(k))
                 Dim cy = If(((feature - 4) And 2) = 0, _ry0(k), _ry1(k))
@@ -456,6 +462,35 @@ Partial Public NotInheritable Class EventDrivenSolver
         Reschedule(i)
     End Sub
 
+    ''' <summary>
+    ''' Ends a slide early (a neighbour came within reach): the ball becomes free at its exact place
+    ''' and velocity on the arc. If it is still pressed against the corner, the contact rules take
+    ''' over (it hops round the rest of the corner).
+    ''' </summary>
+    Private Sub Materialize(i As Integer)
+        Dim v0 = _slideV0(i), r = _r(i), s = _slideDir(i)
+        Dim theta = CornerSlide.AngleAfter(v0, _g, r, 0, _slideAngle(i), _now - _slideStart(i))
+        Dim speed = CornerSlide.SpeedAt(v0, _g, r, 0, theta)
+        _px(i) = _slideCx(i) + s * r * Math.Sin(theta)
+        _py(i) = _slideCy(i) + r * Math.Cos(theta)
+        _vx(i) = s * speed * Math.Cos(theta)
+        _vy(i) = -speed * Math.Sin(theta)
+        _t0(i) = _now
+        MakeFree(i)
+        _count(i) += 1
+        MoveToCellOfPosition(i)
+    End Sub
+
+    Private Sub MoveToCellOfPosition(i As Integer)
+        If _cell(i) < 0 Then Return
+        Dim cell = _grid.CellOf(_px(i), _py(i))
+        If cell <> _cell(i) Then
+            _grid.Remove(i, _cell(i))
+            _grid.Insert(i, cell)
+            _cell(i) = cell
+        End If
+    End Sub
+
     Private Sub EndSlide(i As Integer)
         Dim theta = _slideAngle(i)
         Dim s = _slideDir(i)
@@ -470,14 +505,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         _t0(i) = _now
         MakeFree(i)
         _count(i) += 1
-        If _cell(i) >= 0 Then
-            Dim cell = _grid.CellOf(_px(i), _py(i))
-            If cell <> _cell(i) Then
-                _grid.Remove(i, _cell(i))
-                _grid.Insert(i, cell)
-                _cell(i) = cell
-            End If
-        End If
+        MoveToCellOfPosition(i)
         Reschedule(i)
     End Sub
 

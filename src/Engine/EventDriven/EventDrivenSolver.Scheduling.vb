@@ -12,8 +12,16 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim feature = 0
         Dim m = _mode(i)
         If m = BodyMode.Sliding Then
-            best = CornerSlide.Duration(_slideV0(i), _g, _r(i), 0, _slideAngle(i)) - (_now - _slideStart(i))
-            FileEvent(i, Math.Max(0, best), EventKind.SlideEnd, -1, 0, Double.PositiveInfinity, 0)
+            ' Its slide ends, or a neighbour reaches the disc the sliding ball sweeps round the corner.
+            best = Math.Max(0, CornerSlide.Duration(_slideV0(i), _g, _r(i), 0, _slideAngle(i)) - (_now - _slideStart(i)))
+            kind = EventKind.SlideEnd
+            Dim count = Neighbours(i)
+            For q = 0 To count - 1
+                Dim k = _stack(q)
+                Dim ts = SweptDiscContact(i, k)
+                If ts < best Then best = ts : kind = EventKind.Circle : other = k
+            Next
+            FileEvent(i, best, kind, other, 0, Double.PositiveInfinity, 0)
             Return
         End If
         Dim tau = _now - _t0(i)
@@ -210,7 +218,15 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private Sub CheckPair(i As Integer, j As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
                           ay As Double, r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim mj = _mode(j)
-        If mj = BodyMode.Sliding Then Return
+        If mj = BodyMode.Sliding Then
+            Dim ts = SweptDiscContact(j, i)
+            If ts < best Then
+                best = ts
+                kind = EventKind.Circle
+                other = j
+            End If
+            Return
+        End If
         If asleep AndAlso mj = BodyMode.Sleeping Then Return
         Dim tj = _now - _t0(j)
         Dim ayj = _ay(j)
@@ -223,6 +239,21 @@ Partial Public NotInheritable Class EventDrivenSolver
             other = j
         End If
     End Sub
+
+    ''' <summary>
+    ''' When body k first comes within reach of sliding body j: j's centre stays within r_j of its
+    ''' corner, so k can touch it only inside the disc of radius r_k + 2 r_j about the corner. Reaching
+    ''' that disc ends the exact slide early (see <c>Materialize</c>); +∞ if k never gets there.
+    ''' </summary>
+    Private Function SweptDiscContact(j As Integer, k As Integer) As Double
+        Dim mk = _mode(k)
+        If mk = BodyMode.Sliding OrElse mk = BodyMode.Sleeping Then Return Double.PositiveInfinity
+        Dim tk = _now - _t0(k)
+        Dim ayk = _ay(k)
+        Dim dx = _px(k) + _vx(k) * tk - _slideCx(j)
+        Dim dy = _py(k) + (_vy(k) + 0.5 * ayk * tk) * tk - _slideCy(j)
+        Return TimeOfImpact.CircleCircle(dx, dy, _vx(k), _vy(k) + ayk * tk, ayk, _r(k) + 2 * _r(j), _slop)
+    End Function
 
     ''' <summary>
     ''' When the centre leaves its cell: x is linear and y quadratic in t, each against the cell's two
