@@ -175,9 +175,9 @@ Partial Public NotInheritable Class EventDrivenSolver
                     Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (_r(i) + _r(partner))
                     If above OrElse gentle Then Return 0
                 End If
-                Return _circle(i).InverseMass
+                Return _invMass(i)
             Case Else
-                Return _circle(i).InverseMass
+                Return _invMass(i)
         End Select
     End Function
 
