@@ -63,7 +63,7 @@ Public Module Scenarios
     ''' <summary>
     ''' "π from collisions": a light block (1 kg) between a wall on the left and a heavy block
     ''' (100^k kg) moving towards it, g = 0, e = 1. The number of collisions (block–block and
-    ''' block–wall) is the first k + 1 digits of π: 3, 31, 314, 3141, …
+    ''' block–wall) is the first k + 1 digits of π: 31, 314, 3141, 31415 for k = 1 to 4.
     ''' </summary>
     Public Function PiCollisions(k As Integer) As World
         Dim w As New World(1000.0, 2.0, 0.0, 1.0)

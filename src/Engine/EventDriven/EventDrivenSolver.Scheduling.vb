@@ -165,7 +165,9 @@ Partial Public NotInheritable Class EventDrivenSolver
                                 Dim t As Double
                                 If c <= 2 * sumR * slop Then
                                     ' Touching: a collision now only if really approaching (not rounding after e = 0).
-                                    t = If(b < -TimeOfImpact.ApproachFraction * sumR * Math.Sqrt(dvx * dvx + dvy * dvy), 0, Double.PositiveInfinity)
+                                    ' The tolerance scales with the bodies' own speeds, which is what rounding errs by.
+                                    Dim speeds = Math.Sqrt(dvx * dvx + dvy * dvy) + Math.Abs(vx) + Math.Abs(vy) + Math.Abs(vxs(j)) + Math.Abs(vys(j) + ay * tj)
+                                    t = If(b < -TimeOfImpact.ApproachFraction * sumR * speeds, 0, Double.PositiveInfinity)
                                 Else
                                     Dim a = dvx * dvx + dvy * dvy
                                     Dim disc = b * b - a * c
@@ -232,7 +234,9 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim ayj = _ay(j)
         Dim dx = px - (_px(j) + _vx(j) * tj)
         Dim dy = py - (_py(j) + (_vy(j) + 0.5 * ayj * tj) * tj)
-        Dim t = TimeOfImpact.CircleCircle(dx, dy, vx - _vx(j), vy - (_vy(j) + ayj * tj), ay - ayj, r + _r(j), _slop)
+        Dim vyj = _vy(j) + ayj * tj
+        Dim t = TimeOfImpact.CircleCircle(dx, dy, vx - _vx(j), vy - vyj, ay - ayj, r + _r(j), _slop,
+                                          Math.Abs(vx) + Math.Abs(vy) + Math.Abs(_vx(j)) + Math.Abs(vyj))
         If t < best Then
             best = t
             kind = EventKind.Circle

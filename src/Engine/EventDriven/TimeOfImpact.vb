@@ -18,15 +18,18 @@ Public Module TimeOfImpact
     ''' relative vertical acceleration dAy (A − B), touching at distance <paramref name="sumRadii"/>.
     ''' |Δp + Δv t + ½ Δa t²|² = R² is a quadratic when both feel the same gravity (their relative
     ''' motion is a straight line) and a quartic otherwise (a parabola against a circle).
+    ''' <paramref name="speedScale"/> (m/s) is the size of the bodies' own speeds, |v_A| + |v_B|: rounding
+    ''' errs in proportion to it, so an approach slower than 10⁻¹² of it is not an approach.
     ''' </summary>
     Public Function CircleCircle(dx As Double, dy As Double, dvx As Double, dvy As Double, dAy As Double,
-                                 sumRadii As Double, slop As Double) As Double
+                                 sumRadii As Double, slop As Double, Optional speedScale As Double = 0) As Double
         Dim c0 = dx * dx + dy * dy - sumRadii * sumRadii
         Dim c1 = 2 * (dx * dvx + dy * dvy)
         Dim tol = 2 * sumRadii * slop
-        ' Touching bodies approaching at less than 10⁻¹² of their relative speed are not approaching:
-        ' that is what rounding leaves after a perfectly inelastic (e = 0) collision.
-        Dim slopeTol = ApproachFraction * 2 * sumRadii * Math.Sqrt(dvx * dvx + dvy * dvy)
+        ' Touching bodies approaching at less than 10⁻¹² of their speeds are not approaching: that is
+        ' what rounding leaves after a perfectly inelastic (e = 0) collision, where the relative
+        ' velocity should be exactly zero but is a few ulps of the bodies' own speeds.
+        Dim slopeTol = ApproachFraction * 2 * sumRadii * (Math.Sqrt(dvx * dvx + dvy * dvy) + speedScale)
         If dAy = 0 Then
             ' Straight-line relative motion, inlined for the elastic gas: the hot path of the solver.
             If c0 <= tol Then Return If(c1 < -slopeTol, 0.0, Double.PositiveInfinity)

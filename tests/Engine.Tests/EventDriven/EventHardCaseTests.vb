@@ -3,7 +3,7 @@ Imports PhysicsEngine
 Imports Xunit
 
 ''' <summary>The shared hard cases: coincident centres, spawn overlaps, mixed sizes, extreme gravity.</summary>
-Public Class HardCaseTests
+Public Class EventHardCaseTests
     <Fact>
     Public Sub CoincidentCentres_ArePushedApart_WithoutNaN()
         Dim w As New World(4, 4, 9.81, 0.8)

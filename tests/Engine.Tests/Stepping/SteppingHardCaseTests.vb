@@ -4,7 +4,7 @@ Imports Xunit
 Imports System.Linq
 
 ''' <summary>The cases that break naive stepping: coincident centres, overlapping spawns, extreme masses, g and sizes.</summary>
-Public Class HardCaseTests
+Public Class SteppingHardCaseTests
     <Theory>
     <MemberData(NameOf(TestSolvers.Stepping), MemberType:=GetType(TestSolvers))>
     Public Sub CoincidentCentres_SeparateWithoutNaN(solver As String)
