@@ -168,6 +168,42 @@ Public Class CliRunTests
     End Sub
 
     <Fact>
+    Public Sub EventSolver_PredictsTheHitTimeExactly_AndHasNoTimeStep()
+        Using t As New TempFolder()
+            Dim scene = t.Write("head-on.json", HeadOn)
+            Dim events = t.File("events.csv")
+            Dim r = RunCli("run", scene, "--time", "2", "--solver", "event", "--events", events, "--json")
+            Assert.True(r.ExitCode = 0, r.ToString())
+            Dim rows = Lines(events)
+            Assert.Equal(2, rows.Length)
+            ' Predicted, not detected: the time is the closed form to rounding, not to a step.
+            Assert.Equal(HeadOnHit, D(rows(1).Split(","c)(0)), 12)
+            Using doc = JsonDocument.Parse(r.StdOut)
+                Dim s = doc.RootElement
+                Assert.Equal("event", s.GetProperty("solver").GetString())
+                Assert.Equal(JsonValueKind.Null, s.GetProperty("dt").ValueKind)
+                Assert.Equal(-1.0, s.GetProperty("momentum")(0).GetDouble(), 12)
+            End Using
+        End Using
+    End Sub
+
+    <Fact>
+    Public Sub VerletSolver_RunsWithItsTimeStep_AndConservesMomentum()
+        Using t As New TempFolder()
+            Dim scene = t.Write("head-on.json", HeadOn)
+            Dim r = RunCli("run", scene, "--time", "2", "--solver", "verlet", "--dt", "0.0005", "--json")
+            Assert.True(r.ExitCode = 0, r.ToString())
+            Using doc = JsonDocument.Parse(r.StdOut)
+                Dim s = doc.RootElement
+                Assert.Equal("verlet", s.GetProperty("solver").GetString())
+                Assert.Equal(0.0005, s.GetProperty("dt").GetDouble(), 15)
+                Assert.Equal(1, s.GetProperty("collisions").GetInt64())
+                Assert.Equal(-1.0, s.GetProperty("momentum")(0).GetDouble(), 9)
+            End Using
+        End Using
+    End Sub
+
+    <Fact>
     Public Sub AutoSolver_RunsAndReportsItself()
         Using t As New TempFolder()
             Dim scene = t.Write("head-on.json", HeadOn)
