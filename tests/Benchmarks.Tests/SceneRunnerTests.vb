@@ -1,0 +1,61 @@
+Option Strict On
+Imports PhysicsEngine
+Imports PhysicsEngine.Benchmarks
+Imports Xunit
+
+''' <summary>
+''' The measuring harness on real scenes with the semi-implicit Euler solver. Errors are checked for
+''' the behaviour a first-order method must show; costs are only checked to exist (never timed).
+''' </summary>
+Public Class SceneRunnerTests
+    <Fact>
+    Public Sub Run_ReportsASolverTheFactoryDoesNotKnowAsNotAvailable_InsteadOfThrowing()
+        Dim r = SceneRunner.Run(New ProjectileScene(), "no-such-solver", Nothing, 1, 10)
+        Assert.False(r.Available)
+        Assert.Contains("not available", r.Note)
+        Assert.True(Double.IsNaN(r.Error))
+    End Sub
+
+    <Fact>
+    Public Sub Run_Projectile_ErrorShrinksWithTheStep_AndCostIsMeasured()
+        Dim coarse = SceneRunner.Run(New ProjectileScene(), "euler", 1 / 60.0, 1, 30)
+        Dim fine = SceneRunner.Run(New ProjectileScene(), "euler", 1 / 1000.0, 1, 30)
+        Assert.True(coarse.Available)
+        Assert.Equal("position error at landing (m)", coarse.ErrorMetric)
+        Assert.True(coarse.Error > 0, "semi-implicit Euler is first order: it cannot land exactly")
+        Assert.True(fine.Error < coarse.Error / 5, $"error at 1/1000 ({fine.Error}) should be well below error at 1/60 ({coarse.Error})")
+        Assert.False(Double.IsNaN(coarse.MsPerSimulatedSecond))
+        Assert.Equal(1, coarse.Runs)
+        Assert.Equal(1 / 60.0, coarse.TimeStep)
+    End Sub
+
+    <Fact>
+    Public Sub BouncingApex_WithASmallStep_FindsFiveApexesCloseToTheClosedForm()
+        Dim scene As New BouncingApexScene()
+        Dim world = scene.Build()
+        world.Solver = SolverFactory.Create("euler", 1 / 2000.0)
+        Dim m = scene.Measure(world, 1 / 2000.0)
+        Assert.Equal("", m.Note) ' all five apexes were found
+        Assert.InRange(m.Error, 1.0E-6, 0.01)
+    End Sub
+
+    <Fact>
+    Public Sub BouncingRest_NotesTheBouncesAndTheLastOne()
+        Dim scene As New BouncingRestScene()
+        Dim world = scene.Build()
+        world.Solver = SolverFactory.Create("euler", 1 / 1000.0)
+        Dim m = scene.Measure(world, 1 / 1000.0)
+        Assert.Matches("^\d+ bounces, last at \d+\.\d{3} s$", m.Note)
+        Assert.InRange(m.Error, 0.0, BouncingRestScene.RestTime)
+    End Sub
+
+    <Fact>
+    Public Sub DeepestOverlap_FindsCircleAndWallOverlaps()
+        Dim w As New World(2, 2, 0, 1, walls:=False)
+        w.Add(New Circle(New Vector(0.5, 1), 0.2, 1))
+        w.Add(New Circle(New Vector(0.8, 1), 0.2, 1)) ' centres 0.3 apart: overlap 0.1
+        Assert.Equal(0.1, PileScene.DeepestOverlap(w), 12)
+        w.Add(New Circle(New Vector(1.9, 1), 0.25, 1)) ' 0.15 past the right side
+        Assert.Equal(0.15, PileScene.DeepestOverlap(w), 12)
+    End Sub
+End Class
