@@ -87,7 +87,7 @@ Friend NotInheritable Class BenchmarkOptions
     ''' <summary>Simulated seconds of the gas-energy scene.</summary>
     Public ReadOnly Property GasSeconds As Double
         Get
-            Return If(Quick, 2.0, 5.0)
+            Return If(Quick, 2.0, 4.0)
         End Get
     End Property
 

@@ -18,6 +18,10 @@ Friend Module FrameBenchmark
         If mono Is Nothing Then result.Note = "mono is not installed." : Return result
         If xvfb Is Nothing Then result.Note = "Xvfb is not installed." : Return result
         If Not File.Exists(appPath) Then result.Note = "the app is not built at " & appPath & "." : Return result
+        If Not KnowsOption(appPath, "--frame-benchmark") Then
+            result.Note = "this build of the app has no --frame-benchmark option."
+            Return result
+        End If
 
         Dim display = FreeDisplay()
         If display < 0 Then result.Note = "no free X display number." : Return result
@@ -120,6 +124,16 @@ Friend Module FrameBenchmark
         Dim t = text.Trim()
         Dim nl = t.IndexOf(vbLf, StringComparison.Ordinal)
         Return If(nl >= 0, t.Substring(0, nl), t)
+    End Function
+
+    ''' <summary>
+    ''' Whether the assembly holds the option as a string literal (.NET stores them UTF-16), so an app
+    ''' that does not know it is not started: it would open its window and never exit.
+    ''' </summary>
+    Friend Function KnowsOption(assemblyPath As String, name As String) As Boolean
+        Dim bytes = File.ReadAllBytes(assemblyPath)
+        Dim pattern = Text.Encoding.Unicode.GetBytes(name)
+        Return bytes.AsSpan().IndexOf(pattern) >= 0
     End Function
 
     Private Function FreeDisplay() As Integer

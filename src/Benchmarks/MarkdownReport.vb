@@ -58,7 +58,8 @@ Friend Module MarkdownReport
         sb.Append("- **Error** is measured against the closed form named under each scene, in one separate run (looking at the state ").
            Append("does not slow the timed runs).").Append(ControlChars.Lf)
         sb.Append("- **Cost** is wall-clock milliseconds per simulated second: one warm-up run, then the median of up to ").
-           Append(repeats.ToString(CultureInfo.InvariantCulture)).Append(" timed runs (Release build, each (scene, solver) in its own process).").Append(ControlChars.Lf)
+           Append(repeats.ToString(CultureInfo.InvariantCulture)).Append(" timed runs (three when one run takes a second or more). Release build, ").
+           Append("tiered compilation off (fully optimised code from the first call), each (scene, solver) in its own process.").Append(ControlChars.Lf)
         sb.Append("- **Collisions/s** counts collisions the solver reported per wall-clock second. A stepping solver does not report resting contacts.").Append(ControlChars.Lf)
         sb.Append("- The event solver has no time step: it is a single point on each plot. Stepping solvers are one curve over dt.").Append(ControlChars.Lf)
         sb.Append("- A solver that `SolverFactory` does not know in this build is listed as *not available*.").Append(ControlChars.Lf).Append(ControlChars.Lf)
