@@ -73,14 +73,22 @@ Friend NotInheritable Class BenchmarkOptions
     ''' <summary>Wall-clock budget of one case, s.</summary>
     Public ReadOnly Property CaseBudgetSeconds As Double
         Get
-            Return If(Quick, 8.0, 60.0)
+            Return If(Quick, 8.0, 30.0)
         End Get
     End Property
 
-    ''' <summary>How long a child may run before it is stopped.</summary>
-    Public ReadOnly Property ChildTimeout As TimeSpan
+    ''' <summary>
+    ''' How long a child that runs <paramref name="cases"/> cases may take before it is stopped: each
+    ''' case keeps to its budget between slices, so this only catches a solver stuck inside one call.
+    ''' </summary>
+    Public Function ChildTimeout(cases As Integer) As TimeSpan
+        Return TimeSpan.FromSeconds(cases * CaseBudgetSeconds * 1.25 + 30)
+    End Function
+
+    ''' <summary>How long one gas-scaling child may take before it is stopped.</summary>
+    Public ReadOnly Property GasChildTimeout As TimeSpan
         Get
-            Return TimeSpan.FromSeconds(If(Quick, 40, 300))
+            Return TimeSpan.FromSeconds(If(Quick, 40, 240))
         End Get
     End Property
 

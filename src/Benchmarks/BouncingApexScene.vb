@@ -31,11 +31,11 @@ Friend NotInheritable Class BouncingApexScene
         Return Scenarios.BouncingBall(DropHeight, Restitution, Gravity, Radius)
     End Function
 
-    Public Function Measure(world As World, sampleStep As Double) As SceneMeasurement Implements IBenchScene.Measure
+    Public Function Measure(world As World, sampleStep As Double, budget As RunBudget) As SceneMeasurement Implements IBenchScene.Measure
         Dim ball = world.Circles(0)
         Dim found As New List(Of Double)
         Dim y0 = Double.NaN, y1 = Double.NaN
-        Sampling.Run(world, SimulatedSeconds, sampleStep,
+        Dim finished = Sampling.Run(world, SimulatedSeconds, sampleStep,
             Function(t)
                 Dim y2 = ball.Position.Y - Radius
                 ' A local maximum well above the floor is an apex; low ones would be contact jitter.
@@ -43,7 +43,8 @@ Friend NotInheritable Class BouncingApexScene
                 y0 = y1
                 y1 = y2
                 Return found.Count < Apexes
-            End Function)
+            End Function, budget)
+        If Not finished Then Return SceneMeasurement.Stopped(world, budget)
         If found.Count = 0 Then Return New SceneMeasurement(DropHeight, "no apex found")
         Dim worst = 0.0
         For n = 1 To found.Count

@@ -28,7 +28,7 @@ Friend NotInheritable Class BouncingRestScene
         Return Scenarios.BouncingBall(DropHeight, Restitution, Gravity, Radius)
     End Function
 
-    Public Function Measure(world As World, sampleStep As Double) As SceneMeasurement Implements IBenchScene.Measure
+    Public Function Measure(world As World, sampleStep As Double, budget As RunBudget) As SceneMeasurement Implements IBenchScene.Measure
         Dim ball = world.Circles(0)
         Dim lastBounce = Double.NaN
         Dim bounces = 0
@@ -38,9 +38,9 @@ Friend NotInheritable Class BouncingRestScene
                                           bounces += 1
                                       End If
                                   End Sub
-        ' One long advance: the sample step does not matter here, and the event solver is not slowed by looking.
-        Sampling.Run(world, SimulatedSeconds, 0.5, Function(t) True)
+        Dim finished = Sampling.Advance(world, SimulatedSeconds, sampleStep, budget)
         world.CollisionListener = Nothing
+        If Not finished Then Return SceneMeasurement.Stopped(world, budget)
         Dim height = ball.Position.Y - Radius
         Dim note = bounces.ToString(CultureInfo.InvariantCulture) & " bounces, last at " &
                    lastBounce.ToString("0.000", CultureInfo.InvariantCulture) & " s"

@@ -20,8 +20,8 @@ Friend NotInheritable Class CradleScene
         Return Scenarios.NewtonsCradle(Speed, Count)
     End Function
 
-    Public Function Measure(world As World, sampleStep As Double) As SceneMeasurement Implements IBenchScene.Measure
-        world.Advance(SimulatedSeconds)
+    Public Function Measure(world As World, sampleStep As Double, budget As RunBudget) As SceneMeasurement Implements IBenchScene.Measure
+        If Not Sampling.Advance(world, SimulatedSeconds, sampleStep, budget) Then Return SceneMeasurement.Stopped(world, budget)
         Dim last = world.Find("ball" & Count.ToString(CultureInfo.InvariantCulture))
         Dim worst = 0.0
         Dim moving = 0

@@ -41,9 +41,9 @@ Friend NotInheritable Class GasEnergyScene
         Return Scenarios.ElasticGas(_count, PackingFraction)
     End Function
 
-    Public Function Measure(world As World, sampleStep As Double) As SceneMeasurement Implements IBenchScene.Measure
+    Public Function Measure(world As World, sampleStep As Double, budget As RunBudget) As SceneMeasurement Implements IBenchScene.Measure
         Dim before = world.KineticEnergy()
-        world.Advance(_seconds)
+        If Not Sampling.Advance(world, _seconds, sampleStep, budget) Then Return SceneMeasurement.Stopped(world, budget)
         Dim after = world.KineticEnergy()
         Dim escaped = world.Circles.Where(Function(c) Not c.Position.IsFinite OrElse c.Position.X < 0 OrElse c.Position.Y < 0 OrElse
                                                        c.Position.X > world.Width OrElse c.Position.Y > world.Height).Count()

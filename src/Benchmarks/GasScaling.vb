@@ -23,15 +23,19 @@ Friend Module GasScaling
         world.Solver = solver
         Dim result As New BenchResult With {.Scene = SceneName, .Solver = solverName, .TimeStep = timeStep, .BodyCount = count}
 
-        ' Warm-up: double the slice until one slice takes long enough to time well.
+        ' Warm-up: double the slice until one slice takes long enough to time well. At least three
+        ' slices, because the first one also pays for compiling the code and building the solver's tables.
         Dim slice = If(timeStep, 0.001)
         Dim clock As New Stopwatch
+        Dim warmups = 0
         Do
             clock.Restart()
             world.Advance(slice)
             clock.Stop()
-            If clock.Elapsed.TotalSeconds >= targetWallSeconds / 2 Then Exit Do
-            slice *= 2
+            warmups += 1
+            Dim longEnough = clock.Elapsed.TotalSeconds >= targetWallSeconds / 2
+            If longEnough AndAlso warmups >= 3 Then Exit Do
+            If Not longEnough Then slice *= 2
         Loop
         Dim ms As New List(Of Double)
         Dim perSecond As New List(Of Double)

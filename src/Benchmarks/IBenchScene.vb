@@ -27,6 +27,7 @@ Friend Interface IBenchScene
     ''' Runs <paramref name="world"/> (solver attached, time 0) for <see cref="SimulatedSeconds"/> and
     ''' measures its error. <paramref name="sampleStep"/> (s) is how often the scene may look at the
     ''' state: one step for a stepping solver (it has no state in between), finer for the event solver.
+    ''' A run that outlasts <paramref name="budget"/> returns <see cref="SceneMeasurement.Stopped"/>.
     ''' </summary>
-    Function Measure(world As World, sampleStep As Double) As SceneMeasurement
+    Function Measure(world As World, sampleStep As Double, budget As RunBudget) As SceneMeasurement
 End Interface

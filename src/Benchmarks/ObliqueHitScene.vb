@@ -21,10 +21,10 @@ Friend NotInheritable Class ObliqueHitScene
         Return Scenarios.ObliqueHit(Speed, ImpactParameter, Radius)
     End Function
 
-    Public Function Measure(world As World, sampleStep As Double) As SceneMeasurement Implements IBenchScene.Measure
+    Public Function Measure(world As World, sampleStep As Double, budget As RunBudget) As SceneMeasurement Implements IBenchScene.Measure
         Dim striker = DirectCast(world.Find("a"), Circle)
         Dim target = DirectCast(world.Find("b"), Circle)
-        world.Advance(SimulatedSeconds)
+        If Not Sampling.Advance(world, SimulatedSeconds, sampleStep, budget) Then Return SceneMeasurement.Stopped(world, budget)
         Dim exact = ClosedForms.ObliqueExitVelocities(Speed, ImpactParameter, Radius)
         Dim err = Math.Max((striker.Velocity - exact.Striker).Length, (target.Velocity - exact.Target).Length)
         Return New SceneMeasurement(err)

@@ -9,7 +9,7 @@ Friend NotInheritable Class PileScene
     Private Const Restitution As Double = 0.3
     ''' <summary>Below this total kinetic energy (J) the pile counts as at rest: about 5 mm/s per body.</summary>
     Private Const RestEnergy As Double = 0.001
-    ''' <summary>How often the pile's energy is looked at, s (rounded to whole steps).</summary>
+    ''' <summary>How often the pile's energy is looked at, s (rounded to whole sample steps).</summary>
     Private Const LookEvery As Double = 0.01
 
     Public ReadOnly Property Name As String = "pile" Implements IBenchScene.Name
@@ -25,10 +25,9 @@ Friend NotInheritable Class PileScene
         Return Scenarios.Pile(Count, Restitution)
     End Function
 
-    Public Function Measure(world As World, sampleStep As Double) As SceneMeasurement Implements IBenchScene.Measure
-        Dim slice = Math.Max(1, Math.Round(LookEvery / sampleStep)) * sampleStep
+    Public Function Measure(world As World, sampleStep As Double, budget As RunBudget) As SceneMeasurement Implements IBenchScene.Measure
         Dim restSince = Double.NaN
-        Sampling.Run(world, SimulatedSeconds, slice,
+        Dim finished = Sampling.Run(world, SimulatedSeconds, Sampling.SliceOf(sampleStep, LookEvery),
             Function(t)
                 If world.KineticEnergy() >= RestEnergy Then
                     restSince = Double.NaN
@@ -36,7 +35,8 @@ Friend NotInheritable Class PileScene
                     restSince = t
                 End If
                 Return True
-            End Function)
+            End Function, budget)
+        If Not finished Then Return SceneMeasurement.Stopped(world, budget)
         Dim note As String
         If Double.IsNaN(restSince) Then
             note = "not at rest after " & SimulatedSeconds.ToString("0.#", CultureInfo.InvariantCulture) & " s (KE " &

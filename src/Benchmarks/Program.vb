@@ -77,12 +77,13 @@ Public NotInheritable Class Program
         Dim expected As IEnumerable(Of Double?) = If(probe.TimeStep.HasValue, options.TimeSteps.Select(Function(t) CType(t, Double?)), {CType(Nothing, Double?)})
         Dim args = options.ChildArguments()
         args.AddRange({"--child-scene", scene.Name, "--child-solver", solver})
-        Dim outcome = ChildProcess.Run(args, options.ChildTimeout)
+        Dim timeout = options.ChildTimeout(expected.Count())
+        Dim outcome = ChildProcess.Run(args, timeout)
         Dim results As New List(Of BenchResult)
         For Each dt In expected
             Dim r = outcome.Results.FirstOrDefault(Function(x) Nullable.Equals(x.TimeStep, dt))
             If r Is Nothing Then
-                Dim why = If(outcome.TimedOut, "timed out: the child was stopped after " & options.ChildTimeout.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s",
+                Dim why = If(outcome.TimedOut, "timed out: the child was stopped after " & timeout.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s",
                              "failed (exit " & outcome.ExitCode.ToString(CultureInfo.InvariantCulture) & "): " & FirstLine(outcome.ErrorText))
                 r = SceneRunner.NotAvailable(scene.Name, solver, dt, why)
                 r.ErrorMetric = scene.ErrorMetric
@@ -113,11 +114,11 @@ Public NotInheritable Class Program
                 Else
                     Dim args = options.ChildArguments()
                     args.AddRange({"--child-gas", n.ToString(CultureInfo.InvariantCulture), "--child-solver", solver})
-                    Dim outcome = ChildProcess.Run(args, options.ChildTimeout)
+                    Dim outcome = ChildProcess.Run(args, options.GasChildTimeout)
                     r = outcome.Results.FirstOrDefault()
                     If r Is Nothing Then
                         r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt,
-                            If(outcome.TimedOut, "timed out after " & options.ChildTimeout.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s",
+                            If(outcome.TimedOut, "timed out after " & options.GasChildTimeout.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s",
                                "failed (exit " & outcome.ExitCode.ToString(CultureInfo.InvariantCulture) & "): " & FirstLine(outcome.ErrorText)))
                         r.BodyCount = n
                     End If

@@ -5,18 +5,37 @@ Friend Module Sampling
     ''' <summary>
     ''' Advances <paramref name="world"/> by <paramref name="duration"/> seconds in slices of
     ''' <paramref name="slice"/> seconds (the last one shorter if need be) and calls
-    ''' <paramref name="look"/> with the simulated time after each slice. Stops early when it returns False.
+    ''' <paramref name="look"/> with the simulated time after each slice; stops early when it returns
+    ''' False. Returns False when the budget ran out first.
     ''' </summary>
-    Public Sub Run(world As World, duration As Double, slice As Double, look As Func(Of Double, Boolean))
+    Public Function Run(world As World, duration As Double, slice As Double, look As Func(Of Double, Boolean), budget As RunBudget) As Boolean
+        If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
+        If look Is Nothing Then Throw New ArgumentNullException(NameOf(look))
+        If budget Is Nothing Then Throw New ArgumentNullException(NameOf(budget))
         Dim count = CLng(Math.Ceiling(duration / slice - 1.0E-9))
         Dim start = world.Time
         For k = 1L To count
             ' Aim at k·slice from the start rather than adding slices, so rounding never piles up.
             Dim target = If(k = count, start + duration, start + k * slice)
             world.Advance(target - world.Time)
-            If Not look(world.Time) Then Return
+            If Not look(world.Time) Then Return True
+            If budget.Expired Then Return False
         Next
-    End Sub
+        Return True
+    End Function
+
+    ''' <summary>Advances by <paramref name="duration"/> in slices of about 50 ms; False when the budget ran out first.</summary>
+    Public Function Advance(world As World, duration As Double, sampleStep As Double, budget As RunBudget) As Boolean
+        Return Run(world, duration, SliceOf(sampleStep, 0.05), Function(t) True, budget)
+    End Function
+
+    ''' <summary>
+    ''' A whole number of sample steps close to <paramref name="target"/> seconds: a stepping solver
+    ''' must not be made to take a partial step in the middle of a run, or it would not be the run timed.
+    ''' </summary>
+    Public Function SliceOf(sampleStep As Double, target As Double) As Double
+        Return Math.Max(1, Math.Round(target / sampleStep)) * sampleStep
+    End Function
 
     ''' <summary>
     ''' Height of the vertex of the parabola through three equally spaced samples y0, y1, y2 (y1 the

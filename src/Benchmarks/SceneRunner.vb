@@ -47,9 +47,11 @@ Friend Module SceneRunner
         Dim world = scene.Build()
         world.Solver = SolverFactory.Create(solverName, timeStep)
         result.BodyCount = world.Circles.Count
-        Dim measured = scene.Measure(world, If(world.Solver.TimeStep, EventSampleStep))
+        Dim measured = scene.Measure(world, If(world.Solver.TimeStep, EventSampleStep), New RunBudget(budgetSeconds))
         result.Error = measured.Error
         result.Note = measured.Note
+        ' A run the budget stopped has no error to report, and timing it again would only repeat that.
+        If Not measured.Completed Then Return result
 
         ' Warm-up, then the timed runs; fewer of them when one run is slow, so the case fits its budget.
         Dim warm = TimedRun(scene, solverName, timeStep, budgetSeconds - clock.Elapsed.TotalSeconds)

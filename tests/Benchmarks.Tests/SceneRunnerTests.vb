@@ -34,7 +34,7 @@ Public Class SceneRunnerTests
         Dim scene As New BouncingApexScene()
         Dim world = scene.Build()
         world.Solver = SolverFactory.Create("euler", 1 / 2000.0)
-        Dim m = scene.Measure(world, 1 / 2000.0)
+        Dim m = scene.Measure(world, 1 / 2000.0, New RunBudget(60))
         Assert.Equal("", m.Note) ' all five apexes were found
         Assert.InRange(m.Error, 1.0E-6, 0.01)
     End Sub
@@ -44,9 +44,33 @@ Public Class SceneRunnerTests
         Dim scene As New BouncingRestScene()
         Dim world = scene.Build()
         world.Solver = SolverFactory.Create("euler", 1 / 1000.0)
-        Dim m = scene.Measure(world, 1 / 1000.0)
+        Dim m = scene.Measure(world, 1 / 1000.0, New RunBudget(60))
         Assert.Matches("^\d+ bounces, last at \d+\.\d{3} s$", m.Note)
         Assert.InRange(m.Error, 0.0, BouncingRestScene.RestTime)
+    End Sub
+
+    <Fact>
+    Public Sub Measure_StopsWhenTheBudgetIsSpent_AndSaysHowFarItGot()
+        Dim scene As New PileScene()
+        Dim world = scene.Build()
+        world.Solver = SolverFactory.Create("euler", 1 / 1000.0)
+        Dim m = scene.Measure(world, 1 / 1000.0, New RunBudget(0))
+        Assert.False(m.Completed)
+        Assert.True(Double.IsNaN(m.Error))
+        Assert.Matches("^stopped at 0\.01 s simulated: over the 0 s wall-clock budget$", m.Note)
+        Assert.True(world.Time < scene.SimulatedSeconds)
+    End Sub
+
+    <Fact>
+    Public Sub Projectile_MeasuresWhereTheSolverLanded_InTwoRuns()
+        Dim scene As New ProjectileScene()
+        Dim world = scene.Build()
+        world.Solver = SolverFactory.Create("euler", 1 / 1000.0)
+        Dim m = scene.Measure(world, 1 / 1000.0, New RunBudget(60))
+        Assert.True(m.Completed)
+        Assert.Matches("^landed at 1\.44\d\d s \(closed form 1\.4416 s\)$", m.Note)
+        ' Landing is found at the end of a step: within one step (1 ms at ~7 m/s) plus Euler's own O(dt) drift.
+        Assert.InRange(m.Error, 0.0, 0.05)
     End Sub
 
     <Fact>
