@@ -101,12 +101,10 @@ Friend Module SceneRunner
         GC.Collect()
         GC.WaitForPendingFinalizers()
         GC.Collect()
-        Dim total = scene.SimulatedSeconds
+        Dim budget As New RunBudget(budgetSeconds)
+        Dim slice = Sampling.SliceOf(If(timeStep, EventSampleStep), Chunk)
         Dim clock = Stopwatch.StartNew()
-        Do While world.Time < total - 1.0E-12
-            world.Advance(Math.Min(Chunk, total - world.Time))
-            If clock.Elapsed.TotalSeconds > budgetSeconds Then Exit Do
-        Loop
+        Sampling.Run(world, scene.SimulatedSeconds, slice, Function(t) True, budget)
         clock.Stop()
         Return New RunTiming With {.WallSeconds = clock.Elapsed.TotalSeconds, .Simulated = world.Time, .Collisions = world.CollisionCount}
     End Function
