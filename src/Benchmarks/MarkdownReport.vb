@@ -94,7 +94,7 @@ Friend Module MarkdownReport
         If scaling.Count > 0 Then
             Dim series = scaling.GroupBy(Function(r) r.Solver).Select(
                 Function(g) New PlotSeries(SeriesName(g.Key, g.First().TimeStep.HasValue), SolverColor(g.Key),
-                                           g.OrderBy(Function(r) r.BodyCount).Select(Function(r) New PlotPoint(r.BodyCount, r.MicrosecondsPerCollision, Whole(r.BodyCount))),
+                                           g.OrderBy(Function(r) r.BodyCount).Select(Function(r) New PlotPoint(r.BodyCount, r.MicrosecondsPerCollision)),
                                            SolverMarker(g.Key))).ToList()
             files(PlotFileName(GasScaling.SceneName)) = SvgPlot.Render("Elastic gas: cost per collision against N", "N (circles) — log scale",
                                                                      "wall-clock µs per collision — log scale", series)
@@ -199,8 +199,9 @@ Friend Module MarkdownReport
                Append("Xvfb and the built app are present.").Append(ControlChars.Lf)
             Return
         End If
-        sb.Append(Whole(frame.Circles)).Append(" circles: step ").Append(Fixed2(frame.StepMs)).Append(" ms + paint ").Append(Fixed2(frame.PaintMs)).
-           Append(" ms, target < 16 ms").Append(If(frame.StepMs + frame.PaintMs < 16, " (met).", " (missed).")).Append(ControlChars.Lf).Append(ControlChars.Lf)
+        sb.Append(frame.Circles.ToString(CultureInfo.InvariantCulture)).Append(" circles: step ").Append(Fixed2(frame.StepMs)).Append(" ms + paint ").Append(Fixed2(frame.PaintMs)).
+           Append(" ms, target < 16 ms").Append(If(frame.StepMs + frame.PaintMs < 16, " (met).", " (missed).")).
+           Append(" Median times per frame, as the app reports them.").Append(ControlChars.Lf).Append(ControlChars.Lf)
         sb.Append("Measured with `mono src/SimulatorApp/bin/Release/net48/SimulatorApp.exe --frame-benchmark ").Append(frame.Circles.ToString(CultureInfo.InvariantCulture)).
            Append("` on Xvfb (software rendering). The app printed:").Append(ControlChars.Lf).Append(ControlChars.Lf)
         sb.Append("```json").Append(ControlChars.Lf).Append(frame.RawJson).Append(ControlChars.Lf).Append("```").Append(ControlChars.Lf)

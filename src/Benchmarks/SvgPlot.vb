@@ -14,6 +14,7 @@ Friend Module SvgPlot
     Private Const Right As Double = 190
     Private Const Top As Double = 48
     Private Const Bottom As Double = 64
+    Private Const Margin As Double = 0.25
 
     ''' <summary>
     ''' Values at or below this are drawn at it, so an exact result (error 0) still appears on a log
@@ -33,8 +34,10 @@ Friend Module SvgPlot
 
         Dim plotW = Width - Left - Right
         Dim plotH = Height - Top - Bottom
-        Dim px = Function(x As Double) Left + (Math.Log10(x) - xr.Lo) / (xr.Hi - xr.Lo) * plotW
-        Dim py = Function(y As Double) Top + plotH - (Math.Log10(y) - yr.Lo) / (yr.Hi - yr.Lo) * plotH
+        ' A quarter of a decade of margin inside the frame, so no marker sits on an edge.
+        Dim xLo = xr.Lo - Margin, xHi = xr.Hi + Margin, yLo = yr.Lo - Margin, yHi = yr.Hi + Margin
+        Dim px = Function(x As Double) Left + (Math.Log10(x) - xLo) / (xHi - xLo) * plotW
+        Dim py = Function(y As Double) Top + plotH - (Math.Log10(y) - yLo) / (yHi - yLo) * plotH
 
         Dim sb As New StringBuilder
         sb.Append("<svg xmlns=""http://www.w3.org/2000/svg"" width=""").Append(N(Width)).Append(""" height=""").Append(N(Height)).
