@@ -47,7 +47,10 @@ Friend NotInheritable Class GasEnergyScene
         Dim after = world.KineticEnergy()
         Dim escaped = world.Circles.Where(Function(c) Not c.Position.IsFinite OrElse c.Position.X < 0 OrElse c.Position.Y < 0 OrElse
                                                        c.Position.X > world.Width OrElse c.Position.Y > world.Height).Count()
-        Dim note = If(escaped > 0, escaped.ToString(CultureInfo.InvariantCulture) & " circle(s) outside the box", "")
+        ' Energy alone does not tell the solvers apart (an elastic impulse conserves it exactly), so the
+        ' note also gives what stepping leaves behind: circles sunk into each other.
+        Dim note = "deepest overlap " & NumberText.Sci(Overlap.Deepest(world)) & " m"
+        If escaped > 0 Then note &= "; " & escaped.ToString(CultureInfo.InvariantCulture) & " circle(s) outside the box"
         Return New SceneMeasurement(Math.Abs(after - before) / before, note)
     End Function
 End Class

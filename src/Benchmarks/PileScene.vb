@@ -44,24 +44,7 @@ Friend NotInheritable Class PileScene
         Else
             note = "at rest from " & restSince.ToString("0.00", CultureInfo.InvariantCulture) & " s"
         End If
-        Return New SceneMeasurement(DeepestOverlap(world), note)
+        Return New SceneMeasurement(Overlap.Deepest(world), note)
     End Function
 
-    ''' <summary>The deepest overlap between two circles or a circle and a wall, m (0 when none).</summary>
-    Friend Shared Function DeepestOverlap(world As World) As Double
-        Dim worst = 0.0
-        Dim cs = world.Circles
-        For i = 0 To cs.Count - 1
-            Dim a = cs(i)
-            worst = Math.Max(worst, a.Radius - a.Position.X)
-            worst = Math.Max(worst, a.Radius - a.Position.Y)
-            worst = Math.Max(worst, a.Position.X + a.Radius - world.Width)
-            worst = Math.Max(worst, a.Position.Y + a.Radius - world.Height)
-            For j = i + 1 To cs.Count - 1
-                Dim b = cs(j)
-                worst = Math.Max(worst, a.Radius + b.Radius - (a.Position - b.Position).Length)
-            Next
-        Next
-        Return worst
-    End Function
 End Class
