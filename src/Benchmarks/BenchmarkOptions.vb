@@ -107,12 +107,13 @@ Friend NotInheritable Class BenchmarkOptions
     End Property
 
     ''' <summary>
-    ''' Largest gas given to a stepping solver: their contact search tests every pair, so one step at
-    ''' N = 100 000 would take minutes.
+    ''' Longest predicted wall-clock time of one step, s, for which a stepping solver is given the next
+    ''' gas size. The prediction assumes the worst (cost growing as N²), so a solver whose contact
+    ''' search tests every pair is stopped before a step takes minutes, and one with a broad phase is not.
     ''' </summary>
-    Public ReadOnly Property StepperGasLimit As Integer
+    Public ReadOnly Property StepBudgetSeconds As Double
         Get
-            Return If(Quick, 1000, 10000)
+            Return If(Quick, 1.0, 5.0)
         End Get
     End Property
 

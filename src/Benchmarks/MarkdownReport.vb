@@ -60,7 +60,10 @@ Friend Module MarkdownReport
         sb.Append("- **Cost** is wall-clock milliseconds per simulated second: one warm-up run, then the median of up to ").
            Append(repeats.ToString(CultureInfo.InvariantCulture)).Append(" timed runs (three when one run takes a second or more). Release build, ").
            Append("tiered compilation off (fully optimised code from the first call), each (scene, solver) in its own process.").Append(ControlChars.Lf)
-        sb.Append("- **Collisions/s** counts collisions the solver reported per wall-clock second. A stepping solver does not report resting contacts.").Append(ControlChars.Lf)
+        sb.Append("- **Collisions/s** counts collisions the solver reported per wall-clock second. A stepping solver does not report resting contacts ").
+           Append("and finds a collision only at the end of a step, so compare solvers by cost per simulated second; collisions/s compares sizes of one solver.").Append(ControlChars.Lf)
+        sb.Append("- Timings are wall-clock on a machine that may be running other work; the median damps that but does not remove it. ").
+           Append("Differences under about 30 % between neighbouring rows are noise.").Append(ControlChars.Lf)
         sb.Append("- The event solver has no time step: it is a single point on each plot. Stepping solvers are one curve over dt.").Append(ControlChars.Lf)
         sb.Append("- A solver that `SolverFactory` does not know in this build is listed as *not available*.").Append(ControlChars.Lf).Append(ControlChars.Lf)
 
@@ -172,7 +175,8 @@ Friend Module MarkdownReport
         sb.Append("Scenarios.ElasticGas(N, packing fraction 0.1, r = 0.01 m): the box grows with N so the density stays the same. ").
            Append("Each row runs in its own process, so peak memory (working set) is that run's alone. ").
            Append("After a warm-up the same gas is timed over several equal slices of simulated time (median). ").
-           Append("If the cost per collision is flat, the µs per collision column stays level as N grows.").Append(ControlChars.Lf).Append(ControlChars.Lf)
+           Append("If the cost per collision is flat, the µs per collision column stays level as N grows. ").
+           Append("Stepping solvers run at dt = 1/1000 s; a size is skipped when one step could take more than a few seconds if the cost grew as N².").Append(ControlChars.Lf).Append(ControlChars.Lf)
         If rows.Any(Function(r) r.Available AndAlso Not Double.IsNaN(r.MicrosecondsPerCollision)) Then
             sb.Append("![Cost per collision against N](").Append(PlotFileName(GasScaling.SceneName)).Append(")"c).Append(ControlChars.Lf).Append(ControlChars.Lf)
         End If

@@ -106,10 +106,14 @@ Public NotInheritable Class Program
             End If
             ' Stepping solvers run the gas at one everyday step, 1/1000 s.
             Dim dt = If(probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
-            For Each n In options.GasSizes
+            Dim previous As BenchResult = Nothing
+            For Each n In options.GasSizes.OrderBy(Function(x) x)
                 Dim r As BenchResult
-                If dt.HasValue AndAlso n > options.StepperGasLimit Then
-                    r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt, "skipped: the stepping solvers test every pair each step (O(N²)), too slow at this N")
+                Dim predicted = PredictedStepSeconds(previous, n, dt)
+                If predicted > options.StepBudgetSeconds Then
+                    r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt,
+                        "skipped: one step could take " & predicted.ToString("0", CultureInfo.InvariantCulture) & " s if the cost grows as N² (from N = " &
+                        previous.BodyCount.ToString(CultureInfo.InvariantCulture) & ")")
                     r.BodyCount = n
                 Else
                     Dim args = options.ChildArguments()
@@ -125,9 +129,21 @@ Public NotInheritable Class Program
                 End If
                 Print(r)
                 results.Add(r)
+                If r.Available Then previous = r
             Next
         Next
         Return results
+    End Function
+
+    ''' <summary>
+    ''' Worst-case wall-clock seconds of one step at N = <paramref name="n"/>, from the last measured
+    ''' size, assuming the cost grows as N²; 0 for the event solver or when nothing was measured yet.
+    ''' </summary>
+    Friend Shared Function PredictedStepSeconds(previous As BenchResult, n As Integer, timeStep As Double?) As Double
+        If previous Is Nothing OrElse Not timeStep.HasValue OrElse Double.IsNaN(previous.MsPerSimulatedSecond) Then Return 0
+        Dim stepSeconds = previous.MsPerSimulatedSecond / 1000 * timeStep.Value
+        Dim ratio = n / CDbl(previous.BodyCount)
+        Return stepSeconds * ratio * ratio
     End Function
 
     Private Shared Function RunChildScene(options As BenchmarkOptions) As Integer

@@ -55,3 +55,20 @@ Public Class BenchmarkOptionsTests
         Assert.Equal(2, child.Repeats)
     End Sub
 End Class
+
+''' <summary>When the scaling run stops giving a stepping solver bigger gases.</summary>
+Public Class ScalingGuardTests
+    <Fact>
+    Public Sub PredictedStep_AssumesNSquared_FromTheLastMeasuredSize()
+        ' 2 800 ms per simulated second at 1/1000 s steps: 2.8 ms a step at N = 10 000; ×100 at ten times N.
+        Dim previous As New BenchResult With {.BodyCount = 10000, .MsPerSimulatedSecond = 2800}
+        Assert.Equal(0.28, Program.PredictedStepSeconds(previous, 100000, 0.001), 12)
+    End Sub
+
+    <Fact>
+    Public Sub PredictedStep_IsZero_ForTheEventSolverOrTheFirstSize()
+        Dim previous As New BenchResult With {.BodyCount = 100, .MsPerSimulatedSecond = 5}
+        Assert.Equal(0.0, Program.PredictedStepSeconds(previous, 1000, Nothing))
+        Assert.Equal(0.0, Program.PredictedStepSeconds(Nothing, 1000, 0.001))
+    End Sub
+End Class
