@@ -130,11 +130,13 @@ Friend Module MarkdownReport
         Dim lines As New List(Of String)
         For Each scene In scenes
             Dim rows = results.Where(Function(r) r.Scene = scene.Name AndAlso r.Available AndAlso Not Double.IsNaN(r.Error)).ToList()
-            Dim ev = rows.FirstOrDefault(Function(r) Not r.TimeStep.HasValue)
+            Dim ev = rows.FirstOrDefault(Function(r) r.Solver = "event")
+            Dim evAny = results.FirstOrDefault(Function(r) r.Scene = scene.Name AndAlso r.Solver = "event")
             Dim best = rows.Where(Function(r) r.TimeStep.HasValue).OrderBy(Function(r) r.Error).ThenBy(Function(r) r.MsPerSimulatedSecond).FirstOrDefault()
-            If ev Is Nothing AndAlso best Is Nothing Then Continue For
-            lines.Add("| " & scene.Title & " | " & scene.ErrorMetric & " | " &
-                      If(ev Is Nothing, "not available", Sci(ev.Error) & " at " & Ms(ev.MsPerSimulatedSecond) & " ms/s") & " | " &
+            If evAny Is Nothing AndAlso best Is Nothing Then Continue For
+            Dim evText = If(ev IsNot Nothing, Sci(ev.Error) & " at " & Ms(ev.MsPerSimulatedSecond) & " ms/s",
+                            If(evAny Is Nothing, "not run", "no result: " & Cell(evAny.Note)))
+            lines.Add("| " & scene.Title & " | " & scene.ErrorMetric & " | " & evText & " | " &
                       If(best Is Nothing, "not available", Sci(best.Error) & " (" & best.Solver & ", dt = " & TimeStepText.Format(best.TimeStep) & ") at " &
                          Ms(best.MsPerSimulatedSecond) & " ms/s") & " |")
         Next

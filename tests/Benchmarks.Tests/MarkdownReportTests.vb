@@ -23,6 +23,15 @@ Public Class MarkdownReportTests
     End Sub
 
     <Fact>
+    Public Sub Render_Headline_SaysWhyTheEventSolverHasNoResult()
+        Dim results = SampleResults.Results()
+        results(0) = New BenchResult With {.Scene = "projectile", .Solver = "event", .Runs = 0,
+                                           .Note = "stopped at 0.5 s simulated: over the 30 s wall-clock budget"}
+        Dim md = MarkdownReport.Render(SampleResults.Machine(), "full", 5, SampleResults.Scenes(), results, New FrameResult)
+        Assert.Contains("| no result: stopped at 0.5 s simulated: over the 30 s wall-clock budget | 3.0e-3 (euler, dt = 1/1000)", md)
+    End Sub
+
+    <Fact>
     Public Sub Render_NamesTheMachine()
         Dim md = Render()
         Assert.Contains("| CPU | Test CPU 3000 |", md)
