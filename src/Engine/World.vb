@@ -138,7 +138,9 @@ Partial Public NotInheritable Class World
     ''' </summary>
     Public Sub Add(body As Shape)
         If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
-        If _bodies.Contains(body) Then Throw New ArgumentException("this body is already in the world", NameOf(body))
+        ' Only a body without an id, or whose id is taken, can already be here: checking that first keeps
+        ' Add O(1) for bodies with fresh ids, so loading a scene of 100 000 circles is not O(N²).
+        If (String.IsNullOrEmpty(body.Id) OrElse _ids.Contains(body.Id)) AndAlso _bodies.Contains(body) Then Throw New ArgumentException("this body is already in the world", NameOf(body))
         If String.IsNullOrEmpty(body.Id) Then
             Do
                 body.Id = _nextId.ToString(Globalization.CultureInfo.InvariantCulture)

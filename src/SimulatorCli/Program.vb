@@ -6,21 +6,39 @@ Public NotInheritable Class Program
     End Sub
 
     Public Shared Function Main(args As String()) As Integer
+        If args Is Nothing Then Throw New ArgumentNullException(NameOf(args))
         Try
             If args.Length = 0 OrElse args(0) = "--help" OrElse args(0) = "-h" Then
                 Dim usageOut = If(args.Length = 0, Console.Error, Console.Out)
                 usageOut.WriteLine(Usage)
                 Return If(args.Length = 0, ExitCodes.BadInput, ExitCodes.Ok)
             End If
+            Dim rest = args.Skip(1).ToList()
+            If rest.Contains("--help") OrElse rest.Contains("-h") Then
+                Console.Out.WriteLine(Usage)
+                Return ExitCodes.Ok
+            End If
             Select Case args(0)
+                Case "validate"
+                    Return ValidateCommand.Execute(rest)
+                Case "run"
+                    Return RunCommand.Execute(RunOptions.Parse(rest))
                 Case Else
                     Console.Error.WriteLine("unknown verb '" & args(0) & "' (expected validate or run)")
                     Return ExitCodes.BadInput
             End Select
+        Catch ex As BadInputException
+            Console.Error.WriteLine(OneLine(ex.Message))
+            Return ExitCodes.BadInput
         Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
-            Console.Error.WriteLine("internal error: " & ex.Message)
+            Console.Error.WriteLine("internal error: " & OneLine(ex.Message))
             Return ExitCodes.Failure
         End Try
+    End Function
+
+    ''' <summary>Messages promise one line on standard error.</summary>
+    Private Shared Function OneLine(message As String) As String
+        Return String.Join(" ", message.Split({ChrW(13), ChrW(10)}, StringSplitOptions.RemoveEmptyEntries))
     End Function
 
     Private Const Usage As String =

@@ -1,0 +1,238 @@
+Option Strict On
+Imports System.Globalization
+Imports System.Runtime.Serialization.Json
+Imports System.Text
+Imports System.Text.RegularExpressions
+Imports System.Xml
+Imports System.Xml.Linq
+
+Namespace Scenes
+    ''' <summary>
+    ''' Reads a physics-scene/1 document: parse, check every field, check ids, walls and overlaps, and
+    ''' only then build the world, so an error never leaves anything half-loaded.
+    ''' </summary>
+    Friend Module SceneReader
+        ''' <summary>The only format this reader knows.</summary>
+        Friend Const FormatName As String = "physics-scene/1"
+
+        ''' <summary>How far a movable circle may stick out of a walled container, m: rounding in hand-typed sums (0.1 + 0.2).</summary>
+        Private Const WallTolerance As Double = 0.000000001
+
+        Private ReadOnly ColorPattern As New Regex("^#[0-9a-fA-F]{6}$", RegexOptions.CultureInvariant)
+
+        Friend Function Read(text As String) As World
+            If text Is Nothing Then Throw New ArgumentNullException(NameOf(text))
+            Dim root = New JsonFields(ParseJson(text), "")
+            CheckFormat(root)
+            Dim settings = ReadWorld(root)
+            Dim bodies = ReadBodies(root)
+            If settings.Walls Then CheckInside(bodies, settings)
+            OverlapCheck.Check(bodies)
+            Return Build(settings, bodies)
+        End Function
+
+        ''' <summary>"bodies[3]": 0-based, as in a JSON path.</summary>
+        Friend Function BodyPlace(index As Integer) As String
+            Return "bodies[" & index.ToString(CultureInfo.InvariantCulture) & "]"
+        End Function
+
+        Private Function ParseJson(text As String) As XElement
+            If text.Length > 0 AndAlso text(0) = ChrW(&HFEFF) Then text = text.Substring(1)
+            If text.Trim().Length = 0 Then Throw New SceneFormatException("document", "is empty, not JSON")
+            Dim element As XElement
+            Try
+                Using reader = JsonReaderWriterFactory.CreateJsonReader(Encoding.UTF8.GetBytes(text), XmlDictionaryReaderQuotas.Max)
+                    element = XElement.Load(reader)
+                End Using
+            Catch ex As XmlException
+                Throw New SceneFormatException("document", "is not valid JSON (" & OneLine(ex.Message) & ")", ex)
+            Catch ex As InvalidOperationException
+                Throw New SceneFormatException("document", "is not valid JSON (" & OneLine(ex.Message) & ")", ex)
+            End Try
+            If JsonFields.JsonType(element) <> "object" Then Throw JsonFields.WrongType(element, "document", "a JSON object")
+            CheckComplete(text)
+            Return element
+        End Function
+
+        ''' <summary>
+        ''' The BCL reader closes open objects silently when the text ends after a number, and stops
+        ''' reading at the root's end: a truncated file (a crash while saving) or trailing text would
+        ''' pass. This is not a parser, only a count of brackets outside strings: the root object must
+        ''' close exactly at the last non-blank character.
+        ''' </summary>
+        Private Sub CheckComplete(text As String)
+            Dim depth = 0
+            Dim inString = False
+            Dim escaped = False
+            Dim closedAt = -1
+            For i = 0 To text.Length - 1
+                Dim ch = text(i)
+                If inString Then
+                    If escaped Then
+                        escaped = False
+                    ElseIf ch = "\"c Then
+                        escaped = True
+                    ElseIf ch = """"c Then
+                        inString = False
+                    End If
+                    Continue For
+                End If
+                If closedAt >= 0 Then
+                    If Not Char.IsWhiteSpace(ch) Then Throw New SceneFormatException("document", "is not valid JSON (there is more text after its closing '}', at character " & (i + 1).ToString(CultureInfo.InvariantCulture) & ")")
+                    Continue For
+                End If
+                Select Case ch
+                    Case """"c : inString = True
+                    Case "{"c, "["c : depth += 1
+                    Case "}"c, "]"c
+                        depth -= 1
+                        If depth = 0 Then closedAt = i
+                End Select
+            Next
+            If closedAt < 0 Then Throw New SceneFormatException("document", "is not valid JSON (it ends before its closing '}': is the file complete?)")
+        End Sub
+
+        Private Function OneLine(message As String) As String
+            Return String.Join(" ", message.Split({ChrW(13), ChrW(10)}, StringSplitOptions.RemoveEmptyEntries)).Trim()
+        End Function
+
+        Private Sub CheckFormat(root As JsonFields)
+            Dim e = root.Find("format")
+            If e Is Nothing Then Throw New SceneFormatException("format", "is required (""" & FormatName & """)")
+            If JsonFields.JsonType(e) <> "string" Then Throw JsonFields.WrongType(e, "format", """" & FormatName & """")
+            If e.Value <> FormatName Then Throw New SceneFormatException("format", "must be """ & FormatName & """, not """ & e.Value & """")
+        End Sub
+
+        Private Function ReadWorld(root As JsonFields) As WorldSettings
+            Dim e = root.Require("world")
+            If JsonFields.JsonType(e) <> "object" Then Throw JsonFields.WrongType(e, "world", "an object")
+            Dim f As New JsonFields(e, "world")
+            Dim s As New WorldSettings With {
+                .Width = Positive(f, "width", f.RequiredNumber("width")),
+                .Height = Positive(f, "height", f.RequiredNumber("height")),
+                .Gravity = f.OptionalNumber("gravity", 9.81),
+                .Restitution = f.OptionalNumber("restitution", 1.0),
+                .Walls = f.OptionalBoolean("walls", True)}
+            If s.Gravity < 0 Then Throw New SceneFormatException("world.gravity", "must be 0 or greater")
+            If s.Restitution < 0 OrElse s.Restitution > 1 Then Throw New SceneFormatException("world.restitution", "must be between 0 and 1")
+            Return s
+        End Function
+
+        Private Function Positive(f As JsonFields, name As String, value As Double) As Double
+            If Not (value > 0) Then Throw New SceneFormatException(f.PlaceOf(name), "must be greater than 0")
+            Return value
+        End Function
+
+        Private Function ReadBodies(root As JsonFields) As List(Of BodySpec)
+            Dim e = root.Require("bodies")
+            If JsonFields.JsonType(e) <> "array" Then Throw JsonFields.WrongType(e, "bodies", "an array")
+            Dim bodies As New List(Of BodySpec)
+            ' id -> index of the body that has it
+            Dim owners As New Dictionary(Of String, Integer)(StringComparer.Ordinal)
+            Dim index = 0
+            For Each item In e.Elements()
+                Dim place = BodyPlace(index)
+                If JsonFields.JsonType(item) <> "object" Then Throw JsonFields.WrongType(item, place, "an object")
+                Dim body = ReadBody(New JsonFields(item, place), index, owners)
+                owners.Add(body.Id, index)
+                bodies.Add(body)
+                index += 1
+            Next
+            Return bodies
+        End Function
+
+        Private Function ReadBody(f As JsonFields, index As Integer, owners As Dictionary(Of String, Integer)) As BodySpec
+            Dim kind = f.RequiredString("type")
+            If kind <> "circle" AndAlso kind <> "rectangle" Then
+                Throw New SceneFormatException(f.PlaceOf("type"), "unknown type """ & kind & """ (expected ""circle"" or ""rectangle"")")
+            End If
+            Dim body As New BodySpec With {.Index = index, .IsRectangle = (kind = "rectangle"), .Id = ReadId(f, index, owners)}
+            body.X = f.RequiredNumber("x")
+            body.Y = f.RequiredNumber("y")
+            If body.IsRectangle Then
+                body.Width = Positive(f, "width", f.RequiredNumber("width"))
+                body.Height = Positive(f, "height", f.RequiredNumber("height"))
+                body.IsFixed = True
+            Else
+                body.Radius = Positive(f, "radius", f.RequiredNumber("radius"))
+                body.IsFixed = f.OptionalBoolean("fixed", False)
+                ' A fixed circle's mass and velocity mean nothing, but a wrong one is still a mistake worth naming.
+                If body.IsFixed Then
+                    If f.Find("mass") IsNot Nothing Then Positive(f, "mass", f.RequiredNumber("mass"))
+                Else
+                    body.Mass = Positive(f, "mass", f.RequiredNumber("mass"))
+                End If
+                Dim vx = f.OptionalNumber("vx", 0.0)
+                Dim vy = f.OptionalNumber("vy", 0.0)
+                If Not body.IsFixed Then
+                    body.Vx = vx
+                    body.Vy = vy
+                End If
+            End If
+            body.Color = f.OptionalString("color")
+            If body.Color IsNot Nothing AndAlso Not ColorPattern.IsMatch(body.Color) Then
+                Throw New SceneFormatException(f.PlaceOf("color"), "must be a colour ""#rrggbb"" such as ""#e53935"", not """ & body.Color & """")
+            End If
+            Return body
+        End Function
+
+        Private Function ReadId(f As JsonFields, index As Integer, owners As Dictionary(Of String, Integer)) As String
+            Dim e = f.Find("id")
+            Dim other As Integer
+            If e Is Nothing Then
+                Dim id = (index + 1).ToString(CultureInfo.InvariantCulture)
+                If owners.TryGetValue(id, other) Then
+                    Throw New SceneFormatException(BodyPlace(index), "has no id, so it is named """ & id & """ by its position, but " & BodyPlace(other) & " already has that id")
+                End If
+                Return id
+            End If
+            Dim given = f.OptionalString("id")
+            If given.Length = 0 Then Throw New SceneFormatException(f.PlaceOf("id"), "must not be empty")
+            If owners.TryGetValue(given, other) Then
+                Throw New SceneFormatException(f.PlaceOf("id"), """" & given & """ is already the id of " & BodyPlace(other))
+            End If
+            Return given
+        End Function
+
+        Private Sub CheckInside(bodies As List(Of BodySpec), s As WorldSettings)
+            For Each b In bodies
+                If Not b.IsMovableCircle Then Continue For
+                Dim where As String = Nothing
+                If b.X - b.Radius < -WallTolerance Then
+                    where = "on the left (x - radius = " & Brief(b.X - b.Radius) & " m < 0)"
+                ElseIf b.X + b.Radius > s.Width + WallTolerance Then
+                    where = "on the right (x + radius = " & Brief(b.X + b.Radius) & " m > width = " & Brief(s.Width) & " m)"
+                ElseIf b.Y - b.Radius < -WallTolerance Then
+                    where = "at the bottom (y - radius = " & Brief(b.Y - b.Radius) & " m < 0)"
+                ElseIf b.Y + b.Radius > s.Height + WallTolerance Then
+                    where = "at the top (y + radius = " & Brief(b.Y + b.Radius) & " m > height = " & Brief(s.Height) & " m)"
+                End If
+                If where IsNot Nothing Then
+                    Throw New SceneFormatException(b.Place, "is not wholly inside the container: it sticks out " & where)
+                End If
+            Next
+        End Sub
+
+        ''' <summary>A number for a message: short, invariant.</summary>
+        Friend Function Brief(value As Double) As String
+            Return value.ToString("G6", CultureInfo.InvariantCulture)
+        End Function
+
+        Private Function Build(s As WorldSettings, bodies As List(Of BodySpec)) As World
+            Dim w As New World(s.Width, s.Height, s.Gravity, s.Restitution, s.Walls)
+            For Each b In bodies
+                Dim body As Shape
+                If b.IsRectangle Then
+                    body = New Rectangle(New Vector(b.X, b.Y), b.Width, b.Height, b.Id)
+                ElseIf b.IsFixed Then
+                    body = Circle.CreateFixed(New Vector(b.X, b.Y), b.Radius, b.Id)
+                Else
+                    body = New Circle(New Vector(b.X, b.Y), b.Radius, b.Mass, New Vector(b.Vx, b.Vy), b.Id)
+                End If
+                body.Color = b.Color
+                w.Add(body)
+            Next
+            Return w
+        End Function
+    End Module
+End Namespace

@@ -1,0 +1,100 @@
+Option Strict On
+Imports System.IO
+Imports System.Text
+
+''' <summary>
+''' An output file written to a temporary file beside it and moved into place only by
+''' <see cref="Commit"/>, so a failed or interrupted run never leaves a half-written file.
+''' </summary>
+Friend NotInheritable Class OutputFile
+    Implements IDisposable
+
+    Private ReadOnly _target As String
+    Private ReadOnly _temp As String
+    Private _writer As StreamWriter
+    Private _committed As Boolean
+
+    Private Sub New(target As String, temp As String, writer As StreamWriter)
+        _target = target
+        _temp = temp
+        _writer = writer
+    End Sub
+
+    ''' <summary>
+    ''' Checks, before anything is written, that <paramref name="path"/> can be an output file: its
+    ''' folder exists and it is not itself a folder. <paramref name="optionName"/> names it in messages.
+    ''' </summary>
+    Friend Shared Sub CheckTarget(optionName As String, path As String)
+        Dim full As String
+        Try
+            full = IO.Path.GetFullPath(path)
+        Catch ex As ArgumentException
+            Throw New BadInputException(optionName & ": '" & path & "' is not a valid file name", ex)
+        Catch ex As NotSupportedException
+            Throw New BadInputException(optionName & ": '" & path & "' is not a valid file name", ex)
+        End Try
+        If Directory.Exists(full) Then Throw New BadInputException(optionName & ": '" & path & "' is a folder, not a file")
+        Dim folder = IO.Path.GetDirectoryName(full)
+        If Not Directory.Exists(folder) Then Throw New BadInputException(optionName & ": folder '" & folder & "' does not exist")
+    End Sub
+
+    ''' <summary>Starts writing (UTF-8 without BOM, "\n" line ends) to a temporary file beside <paramref name="path"/>.</summary>
+    Friend Shared Function Create(optionName As String, path As String) As OutputFile
+        Dim target = IO.Path.GetFullPath(path)
+        Dim temp = IO.Path.Combine(IO.Path.GetDirectoryName(target), "." & IO.Path.GetFileName(target) & "." & Guid.NewGuid().ToString("N") & ".tmp")
+        Try
+            Dim stream As New FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1 << 16)
+            Dim writer As New StreamWriter(stream, New UTF8Encoding(False)) With {.NewLine = vbLf}
+            Return New OutputFile(target, temp, writer)
+        Catch ex As IOException
+            Throw New BadInputException(optionName & ": cannot write in '" & IO.Path.GetDirectoryName(target) & "' (" & ex.Message & ")", ex)
+        Catch ex As UnauthorizedAccessException
+            Throw New BadInputException(optionName & ": cannot write in '" & IO.Path.GetDirectoryName(target) & "' (" & ex.Message & ")", ex)
+        End Try
+    End Function
+
+    Friend ReadOnly Property Writer As TextWriter
+        Get
+            Return _writer
+        End Get
+    End Property
+
+    ''' <summary>Finishes the file and moves it over the target.</summary>
+    Friend Sub Commit()
+        _writer.Flush()
+        DirectCast(_writer.BaseStream, FileStream).Flush(True)
+        _writer.Dispose()
+        _writer = Nothing
+        File.Move(_temp, _target, overwrite:=True)
+        _committed = True
+    End Sub
+
+    ''' <summary>Without <see cref="Commit"/>, throws the temporary file away.</summary>
+    Public Sub Dispose() Implements IDisposable.Dispose
+        If _committed Then Return
+        ' Delete first: on Linux and macOS that works while the file is still open, which matters when a
+        ' signal arrives while the main thread is writing; on Windows the second try does it.
+        TryDelete()
+        Try
+            _writer?.Dispose()
+        Catch ex As IOException
+            ' the file is thrown away anyway; a failed flush must not hide the first error
+        Catch ex As ObjectDisposedException
+            ' disposed already, by a signal handler
+        Catch ex As InvalidOperationException
+            ' the main thread was writing when a signal arrived
+        End Try
+        _writer = Nothing
+        TryDelete()
+    End Sub
+
+    Private Sub TryDelete()
+        Try
+            If File.Exists(_temp) Then File.Delete(_temp)
+        Catch ex As IOException
+            ' still open (Windows): the caller tries again after closing it
+        Catch ex As UnauthorizedAccessException
+            ' nothing more can be done; the target file was never touched
+        End Try
+    End Sub
+End Class

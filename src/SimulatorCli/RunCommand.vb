@@ -1,0 +1,117 @@
+Option Strict On
+Imports System.Diagnostics
+Imports System.Runtime.InteropServices
+
+''' <summary>
+''' run SCENE --time T: checks every argument and the scene before any output file exists, then
+''' runs, sampling states at t = 0, S, 2S, … and T, logging every collision, and prints the summary.
+''' </summary>
+Friend Module RunCommand
+    Friend Const StatesHeader As String = "t,id,x,y,vx,vy"
+    Friend Const EventsHeader As String = "t,a,b,kind,a_vx_before,a_vy_before,a_vx_after,a_vy_after,b_vx_before,b_vy_before,b_vx_after,b_vy_after"
+
+    Friend Function Execute(o As RunOptions) As Integer
+        ' Everything that can be bad input is checked here, before any file is created.
+        Dim world = SceneInput.Load(o.ScenePath)
+        If o.StatesPath IsNot Nothing Then OutputFile.CheckTarget("--states", o.StatesPath)
+        If o.EventsPath IsNot Nothing Then OutputFile.CheckTarget("--events", o.EventsPath)
+        world.Solver = CreateSolver(o)
+
+        Dim states As OutputFile = Nothing
+        Dim events As OutputFile = Nothing
+        ' Ctrl+C and SIGTERM end the process without unwinding: throw the temporary files away first.
+        Dim discard = Sub()
+                          states?.Dispose()
+                          events?.Dispose()
+                      End Sub
+        Dim cancel As ConsoleCancelEventHandler = Sub(sender, e) discard()
+        AddHandler Console.CancelKeyPress, cancel
+        Dim terminate = PosixSignalRegistration.Create(PosixSignal.SIGTERM, Sub(context) discard())
+        Try
+            If o.StatesPath IsNot Nothing Then states = OutputFile.Create("--states", o.StatesPath)
+            If o.EventsPath IsNot Nothing Then events = OutputFile.Create("--events", o.EventsPath)
+            Dim summary = Simulate(world, o, states, events)
+            states?.Commit()
+            events?.Commit()
+            Console.Out.WriteLine(If(o.Json, summary.ToJson(), summary.ToText()))
+            Return ExitCodes.Ok
+        Finally
+            RemoveHandler Console.CancelKeyPress, cancel
+            terminate.Dispose()
+            states?.Dispose()
+            events?.Dispose()
+        End Try
+    End Function
+
+    Private Function CreateSolver(o As RunOptions) As ISolver
+        Try
+            Return SolverFactory.Create(o.SolverName, o.TimeStep)
+        Catch ex As ArgumentException
+            If SolverFactory.Names.Contains(o.SolverName) Then
+                Throw New BadInputException("--solver: '" & o.SolverName & "' is not available in this build", ex)
+            End If
+            Throw New BadInputException("--solver: unknown solver '" & o.SolverName & "' (expected one of: " & String.Join(", ", SolverFactory.Names) & ")", ex)
+        End Try
+    End Function
+
+    Private Function Simulate(world As World, o As RunOptions, states As OutputFile, events As OutputFile) As RunSummary
+        Dim movable = world.Circles.Where(Function(c) Not c.IsFixed).ToList()
+        If events IsNot Nothing Then
+            events.Writer.WriteLine(EventsHeader)
+            world.CollisionListener = Sub(r) WriteCollision(events.Writer, r)
+        End If
+        states?.Writer.WriteLine(StatesHeader)
+        Dim clock = Stopwatch.StartNew()
+        For Each t In SampleTimes(o.Time, o.Sample)
+            Try
+                world.Advance(t - world.Time)
+            Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
+                Throw New InvalidOperationException("the " & world.Solver.Name & " solver failed between t = " & CsvText.Number(world.Time) & " s and t = " & CsvText.Number(t) & " s: " & ex.Message, ex)
+            End Try
+            If states IsNot Nothing Then WriteStates(states.Writer, t, movable)
+        Next
+        clock.Stop()
+        Return New RunSummary(o, world, movable.Count, clock.Elapsed.TotalSeconds)
+    End Function
+
+    ''' <summary>
+    ''' t = 0, S, 2S, … (each k·S, not a running sum, so no drift) and T last; a k·S within 1e-9·S of T
+    ''' is T itself, so there is no near-duplicate row when T is a multiple of S.
+    ''' </summary>
+    Friend Iterator Function SampleTimes(total As Double, sample As Double) As IEnumerable(Of Double)
+        Dim k = 0L
+        Do
+            Dim t = k * sample
+            If t >= total - sample * 0.000000001 Then Exit Do
+            Yield t
+            k += 1
+        Loop
+        Yield total
+    End Function
+
+    Private Sub WriteStates(w As IO.TextWriter, t As Double, movable As List(Of Circle))
+        Dim time = CsvText.Number(t)
+        For Each c In movable
+            w.Write(time)
+            w.Write(","c)
+            w.Write(CsvText.Field(c.Id))
+            w.Write(","c)
+            w.Write(CsvText.Number(c.Position.X))
+            w.Write(","c)
+            w.Write(CsvText.Number(c.Position.Y))
+            w.Write(","c)
+            w.Write(CsvText.Number(c.Velocity.X))
+            w.Write(","c)
+            w.WriteLine(CsvText.Number(c.Velocity.Y))
+        Next
+    End Sub
+
+    Private Sub WriteCollision(w As IO.TextWriter, r As CollisionRecord)
+        w.WriteLine(String.Join(",",
+            CsvText.Number(r.Time), CsvText.Field(r.A.Id), CsvText.Field(r.BName), r.KindName,
+            CsvText.Number(r.AVelocityBefore.X), CsvText.Number(r.AVelocityBefore.Y),
+            CsvText.Number(r.AVelocityAfter.X), CsvText.Number(r.AVelocityAfter.Y),
+            CsvText.Number(r.BVelocityBefore.X), CsvText.Number(r.BVelocityBefore.Y),
+            CsvText.Number(r.BVelocityAfter.X), CsvText.Number(r.BVelocityAfter.Y)))
+    End Sub
+End Module

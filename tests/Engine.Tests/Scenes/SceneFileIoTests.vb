@@ -1,0 +1,90 @@
+Option Strict On
+Imports System.IO
+Imports PhysicsEngine.Scenes
+Imports Xunit
+
+''' <summary>Files on disk: atomic saving, clear errors for missing files, the example scenes.</summary>
+Public Class SceneFileIoTests
+    Implements IDisposable
+
+    Private ReadOnly _folder As String = Path.Combine(Path.GetTempPath(), "scene-tests-" & Guid.NewGuid().ToString("N"))
+
+    Public Sub New()
+        Directory.CreateDirectory(_folder)
+    End Sub
+
+    Public Sub Dispose() Implements IDisposable.Dispose
+        Directory.Delete(_folder, True)
+        GC.SuppressFinalize(Me)
+    End Sub
+
+    <Fact>
+    Public Sub SaveFile_ThenLoadFile_GivesTheSameScene_AndLeavesNoTemporaryFile()
+        Dim target = Path.Combine(_folder, "demo.json")
+        SceneFile.SaveFile(Scenarios.Demo(), target)
+        SceneRoundTripTests.AssertSameScene(Scenarios.Demo(), SceneFile.LoadFile(target), "demo")
+        Assert.Equal("demo.json", Path.GetFileName(Assert.Single(Directory.GetFiles(_folder))))
+        Assert.Equal(SceneFile.Save(Scenarios.Demo()), File.ReadAllText(target))
+    End Sub
+
+    <Fact>
+    Public Sub SaveFile_ReplacesAnExistingFile()
+        Dim target = Path.Combine(_folder, "scene.json")
+        File.WriteAllText(target, "old and much longer text than the new scene could ever be ......................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................")
+        SceneFile.SaveFile(Scenarios.BouncingBall(), target)
+        SceneRoundTripTests.AssertSameScene(Scenarios.BouncingBall(), SceneFile.LoadFile(target), "ball")
+        Assert.Single(Directory.GetFiles(_folder))
+    End Sub
+
+    <Fact>
+    Public Sub SaveFile_IntoAMissingFolder_Throws_AndWritesNothing()
+        Dim target = Path.Combine(_folder, "no-such-folder", "scene.json")
+        Assert.ThrowsAny(Of IOException)(Sub() SceneFile.SaveFile(Scenarios.Demo(), target))
+        Assert.Empty(Directory.GetFileSystemEntries(_folder))
+    End Sub
+
+    <Fact>
+    Public Sub LoadFile_OfAMissingFile_NamesThePath()
+        Dim missing = Path.Combine(_folder, "nope.json")
+        Dim ex = Assert.Throws(Of SceneFormatException)(Function() SceneFile.LoadFile(missing))
+        Assert.Equal(missing & ": file not found", ex.Message)
+        Assert.Equal(missing, ex.Place)
+    End Sub
+
+    <Fact>
+    Public Sub LoadFile_OfABadFile_SaysPlaceAndProblem()
+        Dim target = Path.Combine(_folder, "bad.json")
+        File.WriteAllText(target, "{""format"":""physics-scene/1"",""world"":{""width"":8,""height"":5},""bodies"":[{""type"":""circle"",""x"":1,""y"":1,""radius"":-1,""mass"":1}]}")
+        Dim ex = Assert.Throws(Of SceneFormatException)(Function() SceneFile.LoadFile(target))
+        Assert.Equal("bodies[0].radius: must be greater than 0", ex.Message)
+    End Sub
+
+    Public Shared ReadOnly Property ExampleScenes As TheoryData(Of String)
+        Get
+            Return New TheoryData(Of String)(Directory.GetFiles(Path.Combine(RepoRoot(), "scenes"), "*.json").Select(Function(f) Path.GetFileName(f)))
+        End Get
+    End Property
+
+    <Theory>
+    <MemberData(NameOf(ExampleScenes))>
+    Public Sub ExampleScenes_AreValid_AndSurviveARoundTrip(name As String)
+        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "scenes", name))
+        Assert.NotEmpty(w.Bodies)
+        SceneRoundTripTests.AssertSameScene(w, SceneFile.Load(SceneFile.Save(w)), name)
+    End Sub
+
+    <Fact>
+    Public Sub TheExampleScenesFolder_HoldsTheNamedExamples()
+        Dim names = Directory.GetFiles(Path.Combine(RepoRoot(), "scenes"), "*.json").Select(Function(f) Path.GetFileName(f)).ToList()
+        For Each expected In {"demo.json", "bouncing-ball.json", "newtons-cradle.json", "pool-break.json", "peg-board.json"}
+            Assert.Contains(expected, names)
+        Next
+    End Sub
+
+    Private Shared Function RepoRoot() As String
+        For Each a In GetType(SceneFileIoTests).Assembly.GetCustomAttributes(GetType(Reflection.AssemblyMetadataAttribute), False).Cast(Of Reflection.AssemblyMetadataAttribute)()
+            If a.Key = "RepoRoot" Then Return a.Value
+        Next
+        Throw New InvalidOperationException("no RepoRoot metadata")
+    End Function
+End Class
