@@ -1,18 +1,5 @@
 Option Strict On
 
-''' <summary>One point of a plot, with an optional short label drawn beside it (e.g. "1/60").</summary>
-Friend Structure PlotPoint
-    Public ReadOnly Property X As Double
-    Public ReadOnly Property Y As Double
-    Public ReadOnly Property Label As String
-
-    Public Sub New(x As Double, y As Double, Optional label As String = "")
-        Me.X = x
-        Me.Y = y
-        Me.Label = If(label, "")
-    End Sub
-End Structure
-
 ''' <summary>
 ''' One curve of a plot: a name for the legend, a colour ("#rrggbb"), a marker shape (0 diamond,
 ''' 1 circle, 2 square; the same solver keeps its shape in every plot) and its points in order.
