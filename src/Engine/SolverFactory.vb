@@ -13,6 +13,8 @@ Public Module SolverFactory
         Select Case name
             Case "auto", "euler"
                 Return New SemiImplicitEulerSolver(If(timeStep, SemiImplicitEulerSolver.DefaultTimeStep))
+            Case "verlet"
+                Return New VerletSolver(If(timeStep, VerletSolver.DefaultTimeStep))
             Case Else
                 Throw New ArgumentException("unknown solver '" & name & "' (expected one of: " & String.Join(", ", Names) & ")", NameOf(name))
         End Select

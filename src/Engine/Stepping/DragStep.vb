@@ -1,11 +1,21 @@
 Option Strict On
 
-''' <summary>How a stepping solver moves the dragged circle: straight towards the target, reaching it at the end of the advance.</summary>
+''' <summary>
+''' How a stepping solver moves the dragged circle: in a straight line at constant speed, reaching
+''' <see cref="World.DragTarget"/> exactly at the end of the advance. Moving it gradually (rather than
+''' jumping there in the first sub-step) lets it push what is in the way instead of teleporting through it.
+''' </summary>
 Friend Module DragStep
-    ''' <summary>Moves the dragged circle by one sub-step of h seconds, at the speed that reaches the target on time.</summary>
-    Friend Sub Move(world As World, c As Circle, h As Double)
-        Dim toGo = world.DragTarget - c.Position
-        c.Velocity = toGo / Math.Max(h, 1.0E-12)
-        c.Position = world.DragTarget
+    ''' <summary>Moves the dragged circle through one sub-step of <paramref name="h"/> s, with <paramref name="remaining"/> s (≥ h) left in the advance.</summary>
+    Friend Sub Move(world As World, c As Circle, h As Double, remaining As Double)
+        Dim target = world.DragTarget
+        If remaining <= h OrElse remaining <= 0 Then
+            c.Velocity = If(h > 0, (target - c.Position) / h, Vector.Zero)
+            c.Position = target
+            Return
+        End If
+        Dim v = (target - c.Position) / remaining
+        c.Velocity = v
+        c.Position += v * h
     End Sub
 End Module
