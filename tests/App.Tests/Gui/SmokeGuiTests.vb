@@ -2,6 +2,7 @@ Option Strict On
 Imports Xunit
 
 ''' <summary>The real window comes up and draws: a canvas with bodies on it and the controls beside it.</summary>
+<Collection(RealWindow.Name)>
 Public Class SmokeGuiTests
     <GuiFact>
     Public Sub App_StartsAndDrawsItsCanvasAndControls()

@@ -1,0 +1,51 @@
+Option Strict On
+Imports System.Globalization
+
+''' <summary>The outcome of reading one number that the teacher typed.</summary>
+Public Structure NumberInput
+    ''' <summary>True when the text held a usable number (possibly clamped).</summary>
+    Public ReadOnly Property IsValid As Boolean
+    ''' <summary>The value to use, clamped to the bound; 0 when not valid.</summary>
+    Public ReadOnly Property Value As Double
+    ''' <summary>True when the typed value was above the bound and was brought down to it.</summary>
+    Public ReadOnly Property WasClamped As Boolean
+    ''' <summary>Why the text was refused, naming the field, or "" when valid.</summary>
+    Public ReadOnly Property Problem As String
+
+    Private Sub New(isValid As Boolean, value As Double, wasClamped As Boolean, problem As String)
+        Me.IsValid = isValid
+        Me.Value = value
+        Me.WasClamped = wasClamped
+        Me.Problem = problem
+    End Sub
+
+    ''' <summary>
+    ''' Reads a number that must be greater than 0 and at most <paramref name="maximum"/>: empty,
+    ''' non-numeric, zero or negative text is refused; a value over the bound is clamped to it.
+    ''' Accepts the invariant form (0.5) and the current culture's (0,5 in many European locales).
+    ''' </summary>
+    ''' <param name="text">what was typed</param>
+    ''' <param name="label">the field's name with its unit, for the message, e.g. "radius (m)"</param>
+    ''' <param name="maximum">upper bound, in the field's unit</param>
+    Public Shared Function ReadPositive(text As String, label As String, maximum As Double) As NumberInput
+        Dim t = If(text, "").Trim()
+        If t.Length = 0 Then Return Refuse(label & " is empty")
+        Dim v As Double
+        If Not TryParse(t, v) Then Return Refuse(label & " '" & t & "' is not a number")
+        If Double.IsNaN(v) OrElse Double.IsInfinity(v) Then Return Refuse(label & " '" & t & "' is not a finite number")
+        If v <= 0 Then Return Refuse(label & " must be greater than 0, not " & t)
+        If v > maximum Then Return New NumberInput(True, maximum, True, "")
+        Return New NumberInput(True, v, False, "")
+    End Function
+
+    Private Shared Function Refuse(problem As String) As NumberInput
+        Return New NumberInput(False, 0, False, problem)
+    End Function
+
+    ''' <summary>Parses invariant text first (what the app itself writes), then the current culture's.</summary>
+    Public Shared Function TryParse(text As String, ByRef value As Double) As Boolean
+        Const styles = NumberStyles.Float
+        If Double.TryParse(text, styles, CultureInfo.InvariantCulture, value) Then Return True
+        Return Double.TryParse(text, styles, CultureInfo.CurrentCulture, value)
+    End Function
+End Structure

@@ -1,0 +1,91 @@
+Option Strict On
+
+
+' Opening and saving scene files (physics-scene/1) through the ISceneStore.
+Partial Public NotInheritable Class SimulationPresenter
+    ''' <summary>True when Open and Save can work (a scene store is present).</summary>
+    Public ReadOnly Property CanOpenAndSave As Boolean
+        Get
+            Return SceneStore IsNot Nothing
+        End Get
+    End Property
+
+    ''' <summary>Opens the scene file at <paramref name="path"/>; on any problem shows a message and keeps the current scene.</summary>
+    Public Sub OpenScene(path As String)
+        If SceneStore Is Nothing Then
+            ShowMessage("Opening scene files is not available in this build.")
+            Return
+        End If
+        Dim loaded As World
+        Try
+            loaded = SceneStore.Load(path)
+        Catch ex As Exception When IsFileProblem(ex)
+            ShowMessage("Could not open " & SafeName(path) & ": " & Reason(ex, path))
+            Return
+        End Try
+        EndGestures()
+        _Draft = Nothing
+        Attach(loaded)
+        Emit("opened " & SafeName(path) & ": " & loaded.Bodies.Count & " bodies")
+        ShowMessage("Opened " & SafeName(path) & ".")
+        _window.ShowSettings()
+        _window.ShowBodies()
+    End Sub
+
+    ''' <summary>Saves the scene to <paramref name="path"/>; on any problem shows a message.</summary>
+    Public Sub SaveScene(path As String)
+        If SceneStore Is Nothing Then
+            ShowMessage("Saving scene files is not available in this build.")
+            Return
+        End If
+        Try
+            SceneStore.Save(World, path)
+        Catch ex As Exception When IsFileProblem(ex)
+            ShowMessage("Could not save " & SafeName(path) & ": " & Reason(ex, path))
+            Return
+        End Try
+        Emit("saved " & SafeName(path) & ": " & World.Bodies.Count & " bodies")
+        ShowMessage("Saved " & SafeName(path) & ".")
+    End Sub
+
+    ''' <summary>Every exception a bad file or path can raise; programming errors (null references) still surface.</summary>
+    Private Shared Function IsFileProblem(ex As Exception) As Boolean
+        Return Not (TypeOf ex Is NullReferenceException OrElse TypeOf ex Is OutOfMemoryException OrElse TypeOf ex Is StackOverflowException)
+    End Function
+
+    Private Shared Function SafeName(path As String) As String
+        If String.IsNullOrEmpty(path) Then Return "(no file)"
+        Try
+            Return IO.Path.GetFileName(path)
+        Catch ex As ArgumentException
+            Return path
+        End Try
+    End Function
+
+    ''' <summary>The exception's one-line message without a leading "path: " (the file is already named).</summary>
+    Private Shared Function Reason(ex As Exception, path As String) As String
+        Dim text = OneLine(ex.Message)
+        For Each prefix In {path, TryFullPath(path)}
+            If Not String.IsNullOrEmpty(prefix) AndAlso text.StartsWith(prefix & ": ", StringComparison.Ordinal) Then Return text.Substring(prefix.Length + 2)
+        Next
+        Return text
+    End Function
+
+    Private Shared Function TryFullPath(path As String) As String
+        Try
+            Return IO.Path.GetFullPath(path)
+        Catch ex As ArgumentException
+            Return Nothing
+        Catch ex As NotSupportedException
+            Return Nothing
+        Catch ex As IO.PathTooLongException
+            Return Nothing
+        Catch ex As Security.SecurityException
+            Return Nothing
+        End Try
+    End Function
+
+    Private Shared Function OneLine(text As String) As String
+        Return If(text, "").Replace(vbCr, " ").Replace(vbLf, " ").Trim()
+    End Function
+End Class

@@ -1,0 +1,246 @@
+Option Strict On
+Imports System.Drawing
+Imports System.Drawing.Drawing2D
+Imports PhysicsEngine.Presentation
+
+''' <summary>
+''' Draws the presenter's scene with GDI+: the window's canvas and the frame benchmark's offscreen
+''' bitmap use this same code. Pens, brushes and fonts are cached, and nothing is allocated per body
+''' per frame except what GDI+ itself needs.
+''' </summary>
+Friend NotInheritable Class ScenePainter
+    Implements IDisposable
+
+    ''' <summary>Drawn velocity per speed: an arrow is this many metres long per m/s.</summary>
+    Private Const ArrowMetresPerMps As Double = 0.25
+    ''' <summary>Shorter arrows (px) are not drawn: they would be a blob on the ball.</summary>
+    Private Const MinArrowPx As Single = 8
+    ''' <summary>With more balls than this, drawing turns off anti-aliasing, labels and arrows to keep the frame rate.</summary>
+    Private Const BusyScene As Integer = 80
+
+    Private ReadOnly _brushes As New Dictionary(Of String, SolidBrush)(StringComparer.Ordinal)
+    Private ReadOnly _solid As New Dictionary(Of Integer, SolidBrush)
+    Private ReadOnly _pens As New Dictionary(Of Long, Pen)
+    Private _font As Font
+    Private _bigFont As Font
+    Private _fontsLarge As Boolean = True ' forces the first build
+    Private ReadOnly _arrowPoints(2) As PointF
+    Private ReadOnly _pullPen As New Pen(Color.Gray, 2) With {.DashStyle = DashStyle.Dash}
+
+    ''' <summary>Paints the whole canvas of <paramref name="width"/> × <paramref name="height"/> px.</summary>
+    Public Sub Paint(g As Graphics, p As SimulationPresenter, width As Integer, height As Integer)
+        Dim theme = p.Theme
+        Dim view = p.View
+        Dim world = p.World
+        Dim busy = world.Circles.Count > BusyScene
+        EnsureFonts(p.LargeFonts)
+        g.SmoothingMode = If(busy, SmoothingMode.HighSpeed, SmoothingMode.AntiAlias)
+        g.TextRenderingHint = Text.TextRenderingHint.AntiAlias
+        g.Clear(Rgb(theme.Background))
+        Dim thick = If(theme.IsHighContrast, 3.0F, 2.0F)
+        Dim ink = PenOf(theme.Ink, thick)
+        Dim outline = PenOf(theme.Ink, If(theme.IsHighContrast, 2.0F, 1.0F))
+
+        ' The container.
+        Dim tl = view.ToScreen(New Vector(0, world.Height))
+        g.DrawRectangle(ink, CSng(tl.X), CSng(tl.Y), CSng(view.ToPixels(world.Width)), CSng(view.ToPixels(world.Height)))
+
+        For Each r In world.Rectangles
+            Dim c = view.ToScreen(New Vector(r.Min.X, r.Max.Y))
+            Dim w = CSng(view.ToPixels(r.Width)), h = CSng(view.ToPixels(r.Height))
+            g.FillRectangle(BrushOf(r.Color), CSng(c.X), CSng(c.Y), w, h)
+            g.DrawRectangle(outline, CSng(c.X), CSng(c.Y), w, h)
+        Next
+
+        Dim labels = Not busy AndAlso world.Circles.Count <= 60
+        For Each c In world.Circles
+            Dim s = view.ToScreen(c.Position)
+            Dim rad = CSng(view.ToPixels(c.Radius))
+            Dim x = CSng(s.X) - rad, y = CSng(s.Y) - rad, d = 2 * rad
+            g.FillEllipse(BrushOf(c.Color), x, y, d, d)
+            If Not busy OrElse rad >= 3 Then g.DrawEllipse(outline, x, y, d, d)
+            If c.IsFixed AndAlso rad > 6 Then
+                ' A cross marks a fixed ball: it is pinned where it is.
+                Dim k = rad * 0.5F
+                g.DrawLine(ink, CSng(s.X) - k, CSng(s.Y) - k, CSng(s.X) + k, CSng(s.Y) + k)
+                g.DrawLine(ink, CSng(s.X) - k, CSng(s.Y) + k, CSng(s.X) + k, CSng(s.Y) - k)
+            End If
+            If labels AndAlso rad >= 12 Then
+                Dim sz = g.MeasureString(c.Id, _font)
+                If sz.Width < 2 * rad - 2 Then g.DrawString(c.Id, _font, SolidOf(&HFFFFFF), CSng(s.X) - sz.Width / 2, CSng(s.Y) - sz.Height / 2)
+            End If
+        Next
+
+        If p.ShowArrows AndAlso Not busy Then
+            Dim scale = view.ToPixels(ArrowMetresPerMps)
+            Dim main = PenOf(theme.Arrow, 3)
+            Dim xPen = PenOf(theme.ArrowX, 2)
+            Dim yPen = PenOf(theme.ArrowY, 2)
+            For Each c In world.Circles
+                If c.IsFixed Then Continue For
+                Dim s = view.ToScreen(c.Position)
+                Dim vx = CSng(c.Velocity.X * scale), vy = CSng(-c.Velocity.Y * scale)
+                If vx * vx + vy * vy < MinArrowPx * MinArrowPx Then Continue For
+                Dim sx = CSng(s.X), sy = CSng(s.Y)
+                If Math.Abs(vx) >= MinArrowPx Then Arrow(g, xPen, sx, sy, sx + vx, sy)
+                If Math.Abs(vy) >= MinArrowPx Then Arrow(g, yPen, sx, sy, sx, sy + vy)
+                Arrow(g, main, sx, sy, sx + vx, sy + vy)
+            Next
+        End If
+
+        Dim carried = TryCast(p.DraggedBody, Circle)
+        If carried IsNot Nothing Then
+            Dim s = view.ToScreen(carried.Position)
+            Dim rad = CSng(view.ToPixels(carried.Radius)) + 5
+            g.DrawEllipse(PenOf(theme.Cue, 3), CSng(s.X) - rad, CSng(s.Y) - rad, 2 * rad, 2 * rad)
+        End If
+
+        DrawDraft(g, p, view, outline)
+        DrawCue(g, p, view, theme)
+        DrawScaleBar(g, view, theme, height)
+        DrawBanner(g, p, theme, width, height)
+    End Sub
+
+    Private Sub DrawDraft(g As Graphics, p As SimulationPresenter, view As ViewTransform, outline As Pen)
+        Dim d = p.Draft
+        If d Is Nothing OrElse Not d.HasCentre Then Return
+        Dim s = view.ToScreen(d.Centre)
+        Dim w = CSng(view.ToPixels(d.Width)), h = CSng(view.ToPixels(d.Height))
+        Dim ghost = SolidOf(BodyColours.Parse(d.Colour, &H808080), 140)
+        If d.IsCircle Then
+            g.FillEllipse(ghost, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
+            g.DrawEllipse(outline, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
+        Else
+            g.FillRectangle(ghost, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
+            g.DrawRectangle(outline, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
+        End If
+    End Sub
+
+    Private Sub DrawCue(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme)
+        Dim c = p.AimedCircle
+        If c Is Nothing Then Return
+        Dim centre = view.ToScreen(c.Position)
+        Dim cursor = view.ToScreen(p.AimCursor)
+        _pullPen.Color = Rgb(theme.Ink)
+        g.DrawLine(_pullPen, CSng(cursor.X), CSng(cursor.Y), CSng(centre.X), CSng(centre.Y))
+        ' The shot: from the ball's centre along the impulse, as long as the pull.
+        Dim j = p.CueImpulse
+        If j.Length > 0 Then
+            Dim tip = view.ToScreen(c.Position + j / CueShot.ImpulsePerMetre)
+            Arrow(g, PenOf(theme.Cue, 4), CSng(centre.X), CSng(centre.Y), CSng(tip.X), CSng(tip.Y))
+        End If
+        Dim label = p.CueLabel
+        Dim sz = g.MeasureString(label, _font)
+        ' Under the ball, so that the label never hides it or the cue.
+        Dim lx = CSng(centre.X) - sz.Width / 2, ly = CSng(centre.Y + view.ToPixels(c.Radius)) + 8
+        g.FillRectangle(SolidOf(theme.Background, 220), lx - 2, ly - 2, sz.Width + 4, sz.Height + 4)
+        g.DrawString(label, _font, SolidOf(theme.Ink), lx, ly)
+    End Sub
+
+    Private Sub DrawScaleBar(g As Graphics, view As ViewTransform, theme As Theme, height As Integer)
+        Dim bar = ScaleBar.Choose(view.Scale, 160)
+        If bar.Pixels <= 0 Then Return
+        ' In the strip under the container, the label to the right of the bar.
+        Dim x0 = CSng(Math.Max(16, view.OffsetX)), y0 = height - SimulationPresenter.ScaleStrip / 2.0F
+        Dim x1 = x0 + CSng(bar.Pixels)
+        Dim pen = PenOf(theme.Ink, 3)
+        g.DrawLine(pen, x0, y0, x1, y0)
+        g.DrawLine(pen, x0, y0 - 6, x0, y0 + 6)
+        g.DrawLine(pen, x1, y0 - 6, x1, y0 + 6)
+        g.DrawString(bar.Label, _font, SolidOf(theme.Ink), x1 + 8, y0 - _font.Height / 2.0F)
+    End Sub
+
+    Private Sub DrawBanner(g As Graphics, p As SimulationPresenter, theme As Theme, width As Integer, height As Integer)
+        Dim text As String = Nothing
+        Dim colour = theme.Ink
+        If p.Mode = ClickMode.Delete Then
+            text = "DELETE MODE: click a body to remove it"
+            colour = &HC62828
+        ElseIf p.Draft IsNot Nothing Then
+            text = "Click to place the " & p.Draft.KindName & "  (Esc cancels)"
+        ElseIf p.IsPaused Then
+            text = "PAUSED"
+            colour = &HC62828
+        End If
+        If text Is Nothing Then Return
+        ' In the strip under the container, on the right (the scale bar is on the left).
+        Dim sz = g.MeasureString(text, _bigFont)
+        Dim x = Math.Max(200.0F, width - sz.Width - 16), y = height - SimulationPresenter.ScaleStrip / 2.0F - sz.Height / 2
+        g.DrawString(text, _bigFont, SolidOf(If(theme.IsHighContrast AndAlso colour = &HC62828, &HFF5252, colour)), x, y)
+    End Sub
+
+    ''' <summary>An arrow as one polyline (shaft, then the two strokes of the head), so GDI+ strokes it in one call.</summary>
+    Private Sub Arrow(g As Graphics, pen As Pen, x0 As Single, y0 As Single, x1 As Single, y1 As Single)
+        Dim dx = x1 - x0, dy = y1 - y0
+        Dim len = CSng(Math.Sqrt(dx * dx + dy * dy))
+        If len < 1 Then Return
+        Dim head = Math.Min(10.0F, len * 0.4F)
+        Dim ux = dx / len, uy = dy / len
+        ' Wings at ±30° back from the tip; the path goes wing → tip → start, then tip → other wing.
+        Dim pts = _arrowPoints
+        pts(0) = New PointF(x1 - head * (ux * 0.866F - uy * 0.5F), y1 - head * (uy * 0.866F + ux * 0.5F))
+        pts(1) = New PointF(x1, y1)
+        pts(2) = New PointF(x1 - head * (ux * 0.866F + uy * 0.5F), y1 - head * (uy * 0.866F - ux * 0.5F))
+        g.DrawLines(pen, pts)
+        g.DrawLine(pen, x0, y0, x1, y1)
+    End Sub
+
+    Private Sub EnsureFonts(large As Boolean)
+        If _font IsNot Nothing AndAlso large = _fontsLarge Then Return
+        _font?.Dispose()
+        _bigFont?.Dispose()
+        _font = New Font(FontFamily.GenericSansSerif, If(large, 14.0F, 10.0F), FontStyle.Bold)
+        _bigFont = New Font(FontFamily.GenericSansSerif, If(large, 20.0F, 14.0F), FontStyle.Bold)
+        _fontsLarge = large
+    End Sub
+
+    Private Function BrushOf(hex As String) As SolidBrush
+        Dim key = If(hex, "")
+        Dim b As SolidBrush = Nothing
+        If _brushes.TryGetValue(key, b) Then Return b
+        b = New SolidBrush(Rgb(BodyColours.Parse(hex, &H808080)))
+        _brushes(key) = b
+        Return b
+    End Function
+
+    Private Function SolidOf(colour As Integer, Optional alpha As Integer = 255) As SolidBrush
+        Dim key = (alpha << 24) Or (colour And &HFFFFFF)
+        Dim b As SolidBrush = Nothing
+        If _solid.TryGetValue(key, b) Then Return b
+        b = New SolidBrush(Color.FromArgb(alpha, Rgb(colour)))
+        _solid(key) = b
+        Return b
+    End Function
+
+    Private Function PenOf(colour As Integer, width As Single) As Pen
+        Dim key = (CLng(colour And &HFFFFFF) << 16) Or CLng(width * 16)
+        Dim p As Pen = Nothing
+        If _pens.TryGetValue(key, p) Then Return p
+        p = New Pen(Rgb(colour), width)
+        _pens(key) = p
+        Return p
+    End Function
+
+    ''' <summary>&amp;HRRGGBB to an opaque GDI+ colour.</summary>
+    Public Shared Function Rgb(value As Integer) As Color
+        Return Color.FromArgb(255, (value >> 16) And 255, (value >> 8) And 255, value And 255)
+    End Function
+
+    Public Sub Dispose() Implements IDisposable.Dispose
+        For Each b In _brushes.Values
+            b.Dispose()
+        Next
+        For Each b In _solid.Values
+            b.Dispose()
+        Next
+        For Each p In _pens.Values
+            p.Dispose()
+        Next
+        _brushes.Clear()
+        _solid.Clear()
+        _pens.Clear()
+        _pullPen.Dispose()
+        _font?.Dispose()
+        _bigFont?.Dispose()
+    End Sub
+End Class

@@ -1,0 +1,222 @@
+Option Strict On
+Imports System.Globalization
+Imports System.Text.RegularExpressions
+Imports System.Threading
+
+''' <summary>
+''' Drives the real window as a person would, through an <see cref="XSession"/> started with
+''' --trace: finds controls from the rectangles the app prints, clicks, drags and types with
+''' xdotool, and waits for the trace lines that prove an action had its effect.
+''' </summary>
+Public NotInheritable Class AppDriver
+    Implements IDisposable
+
+    Private Shared ReadOnly NewLine As Char() = {ChrW(10)}
+    Private ReadOnly _controls As New Dictionary(Of String, (X As Integer, Y As Integer, W As Integer, H As Integer))(StringComparer.Ordinal)
+    Private _pointer As (X As Integer, Y As Integer)?
+    Private _scale As Double
+    Private _originX As Double
+    Private _originY As Double
+
+    ''' <summary>The X session the app runs in.</summary>
+    Public ReadOnly Property X As XSession
+
+    Public Sub New()
+        X = New XSession("--trace")
+        WaitFor("ready", TimeSpan.FromSeconds(30))
+        ReadLayout()
+        ' A known starting point for the pointer (see MoveTo), outside every control.
+        X.XDo("mousemove", "1", "1")
+        _pointer = (1, 1)
+        Thread.Sleep(100)
+    End Sub
+
+    ''' <summary>Reads the last layout the app printed (it prints one after each re-layout).</summary>
+    Public Sub ReadLayout()
+        For Each line In Lines()
+            Dim m = Regex.Match(line, "^control (\S+) (-?\d+) (-?\d+) (\d+) (\d+)$")
+            If m.Success Then _controls(m.Groups(1).Value) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value), Int(m.Groups(4).Value), Int(m.Groups(5).Value))
+            m = Regex.Match(line, "^view scale (\S+) origin (\S+) (\S+)$")
+            If m.Success Then
+                _scale = Dbl(m.Groups(1).Value)
+                _originX = Dbl(m.Groups(2).Value)
+                _originY = Dbl(m.Groups(3).Value)
+            End If
+        Next
+        If Not _controls.ContainsKey("canvas") OrElse _scale <= 0 Then Throw New InvalidOperationException("the app printed no layout" & vbLf & X.AppOutput())
+    End Sub
+
+    ''' <summary>The screen rectangle of a named control.</summary>
+    Public Function Control(name As String) As (X As Integer, Y As Integer, W As Integer, H As Integer)
+        Dim r As (X As Integer, Y As Integer, W As Integer, H As Integer) = Nothing
+        If Not _controls.TryGetValue(name, r) Then Throw New KeyNotFoundException("no control '" & name & "' in the layout" & vbLf & X.AppOutput())
+        Return r
+    End Function
+
+    ''' <summary>The screen pixel of a model point (m) on the canvas.</summary>
+    Public Function Screen(worldX As Double, worldY As Double) As (X As Integer, Y As Integer)
+        Dim c = Control("canvas")
+        Return (c.X + CInt(Math.Round(_originX + worldX * _scale)), c.Y + CInt(Math.Round(_originY - worldY * _scale)))
+    End Function
+
+    ''' <summary>Pixels per metre on the canvas.</summary>
+    Public ReadOnly Property Scale As Double
+        Get
+            Return _scale
+        End Get
+    End Property
+
+    ''' <summary>Clicks the middle of a named control with the left button.</summary>
+    Public Sub Click(name As String)
+        Dim r = Control(name)
+        ClickAt(r.X + r.W \ 2, r.Y + r.H \ 2)
+    End Sub
+
+    ''' <summary>Clicks a screen point.</summary>
+    Public Sub ClickAt(sx As Integer, sy As Integer, Optional button As Integer = 1)
+        MoveTo(sx, sy)
+        Thread.Sleep(20)
+        X.XDo("click", S(button))
+        Thread.Sleep(150)
+    End Sub
+
+    ''' <summary>
+    ''' Moves the pointer to a screen point and waits until it is there. A move to where the pointer
+    ''' already is is skipped: xdotool's --sync would wait for a motion that never comes (about 15 s).
+    ''' </summary>
+    Public Sub MoveTo(sx As Integer, sy As Integer)
+        If _pointer.HasValue AndAlso _pointer.Value.X = sx AndAlso _pointer.Value.Y = sy Then Return
+        X.XDo("mousemove", "--sync", S(sx), S(sy))
+        _pointer = (sx, sy)
+        Thread.Sleep(60)
+    End Sub
+
+    ''' <summary>Presses a button at one screen point, moves in steps to another, releases there.</summary>
+    Public Sub Drag(button As Integer, fromX As Integer, fromY As Integer, toX As Integer, toY As Integer, Optional steps As Integer = 8)
+        MoveTo(fromX, fromY)
+        Thread.Sleep(20)
+        X.XDo("mousedown", S(button))
+        Thread.Sleep(80)
+        For k = 1 To steps
+            MoveTo(fromX + (toX - fromX) * k \ steps, fromY + (toY - fromY) * k \ steps)
+        Next
+        Thread.Sleep(80)
+        X.XDo("mouseup", S(button))
+        Thread.Sleep(150)
+    End Sub
+
+    ''' <summary>Presses a button at a screen point (and holds it).</summary>
+    Public Sub Press(button As Integer, sx As Integer, sy As Integer)
+        MoveTo(sx, sy)
+        Thread.Sleep(20)
+        X.XDo("mousedown", S(button))
+        Thread.Sleep(80)
+    End Sub
+
+    ''' <summary>Lets go of a held button where the pointer is.</summary>
+    Public Sub Release(button As Integer)
+        Thread.Sleep(80)
+        X.XDo("mouseup", S(button))
+        Thread.Sleep(150)
+    End Sub
+
+    ''' <summary>Replaces the text of a named text box, as a person would: click, select all, type.</summary>
+    Public Sub TypeInto(name As String, text As String)
+        Click(name)
+        X.XDo("key", "ctrl+a")
+        X.XDo("key", "BackSpace")
+        If text.Length > 0 Then X.XDo("type", "--delay", "30", text)
+        Thread.Sleep(100)
+    End Sub
+
+    ''' <summary>Waits for a visible window with this title (a dialog) and returns its X id.</summary>
+    Public Function WaitForWindow(title As String, Optional timeoutSeconds As Double = 10) As String
+        Dim sw = Diagnostics.Stopwatch.StartNew()
+        Do
+            Dim r = X.Tool("xdotool", "search", "--onlyvisible", "--name", title)
+            Dim id = r.StdOut.Split(NewLine, StringSplitOptions.RemoveEmptyEntries).FirstOrDefault()
+            If r.ExitCode = 0 AndAlso Not String.IsNullOrWhiteSpace(id) Then Return id.Trim()
+            If sw.Elapsed.TotalSeconds > timeoutSeconds Then Throw New TimeoutException("no window '" & title & "'" & vbLf & X.AppOutput())
+            Thread.Sleep(200)
+        Loop
+    End Function
+
+    ''' <summary>Types text into whatever has the keyboard focus, then presses Return.</summary>
+    Public Sub TypeAndEnter(text As String)
+        X.XDo("type", "--delay", "30", text)
+        Thread.Sleep(200)
+        X.XDo("key", "Return")
+        Thread.Sleep(200)
+    End Sub
+
+    ''' <summary>The app's stdout lines so far.</summary>
+    Public Function Lines() As String()
+        Dim all = X.AppOutput()
+        Dim cut = all.IndexOf("--- app stderr ---", StringComparison.Ordinal)
+        Dim outPart = If(cut >= 0, all.Substring(0, cut), all)
+        Return outPart.Split(NewLine, StringSplitOptions.RemoveEmptyEntries).Select(Function(l) l.TrimEnd(ChrW(13))).ToArray()
+    End Function
+
+    ''' <summary>Waits until a stdout line (after the first <paramref name="skip"/> lines) matches the pattern; returns the match.</summary>
+    Public Function WaitFor(pattern As String, Optional timeout As TimeSpan = Nothing, Optional skip As Integer = 0) As Match
+        Dim limit = If(timeout = TimeSpan.Zero, TimeSpan.FromSeconds(8), timeout)
+        Dim sw = Diagnostics.Stopwatch.StartNew()
+        Dim re As New Regex(pattern)
+        Do
+            Dim ls = Lines()
+            For i = skip To ls.Length - 1
+                Dim m = re.Match(ls(i))
+                If m.Success Then Return m
+            Next
+            If sw.Elapsed > limit Then Throw New TimeoutException("no trace line matching /" & pattern & "/ within " & limit.TotalSeconds & " s" & vbLf & X.AppOutput())
+            Thread.Sleep(100)
+        Loop
+    End Function
+
+    ''' <summary>How many stdout lines there are now (to wait only for what comes next).</summary>
+    Public Function Mark() As Integer
+        Return Lines().Length
+    End Function
+
+    ''' <summary>Clicks a control and waits for the trace line that shows its effect.</summary>
+    Public Function ClickAndWait(name As String, pattern As String) As Match
+        Dim from = Mark()
+        Click(name)
+        Return WaitFor(pattern, skip:=from)
+    End Function
+
+    ''' <summary>Pauses, clears the demo scene, and waits until both took effect.</summary>
+    Public Sub PauseAndClear()
+        ClickAndWait("pause", "^paused t=")
+        ClickAndWait("reset", "^reset: 0 bodies")
+    End Sub
+
+    ''' <summary>Asks for a circle and places it at a model point; returns the new circle's id.</summary>
+    Public Function PlaceCircle(radius As String, mass As String, worldX As Double, worldY As Double) As String
+        TypeInto("radius", radius)
+        TypeInto("mass", mass)
+        ClickAndWait("add-circle", "^adding circle r ")
+        Dim p = Screen(worldX, worldY)
+        Dim from = Mark()
+        MoveTo(p.X - 30, p.Y - 20)
+        MoveTo(p.X, p.Y)
+        ClickAt(p.X, p.Y)
+        Return WaitFor("^placed circle (\S+) at", skip:=from).Groups(1).Value
+    End Function
+
+    Public Shared Function Dbl(text As String) As Double
+        Return Double.Parse(text, CultureInfo.InvariantCulture)
+    End Function
+
+    Private Shared Function Int(text As String) As Integer
+        Return Integer.Parse(text, CultureInfo.InvariantCulture)
+    End Function
+
+    Private Shared Function S(value As Integer) As String
+        Return value.ToString(CultureInfo.InvariantCulture)
+    End Function
+
+    Public Sub Dispose() Implements IDisposable.Dispose
+        X.Dispose()
+    End Sub
+End Class

@@ -1,0 +1,145 @@
+Option Strict On
+Imports PhysicsEngine.Presentation
+Imports Xunit
+
+''' <summary>Objectives 6 and 7: carrying with the right button, the cue with the left.</summary>
+Public Class DragAndCueTests
+    <Fact>
+    Public Sub RightDrag_CarriesTheBall_AndDropsItFromRest()
+        Dim h As New PresenterHarness()
+        Dim ball = h.Ball(2, 2)
+        Dim a = h.Px(2, 2), b = h.Px(4, 3)
+        h.P.PointerDown(PointerButton.Right, a.X, a.Y)
+        Assert.Same(ball, h.P.World.DraggedCircle)
+        h.P.PointerMove(b.X, b.Y)
+        h.P.Tick(0.02)
+        Assert.Equal(4.0, ball.Position.X, 3)
+        Assert.Equal(3.0, ball.Position.Y, 3)
+        h.P.PointerUp(PointerButton.Right, b.X, b.Y)
+        Assert.Null(h.P.World.DraggedCircle)
+        Assert.Null(h.P.DraggedBody)
+        Assert.Equal(Vector.Zero, ball.Velocity)
+        h.P.Tick(0.05)
+        Assert.True(ball.Position.Y < 3.0, "it drops back into the simulation and falls")
+        Assert.Contains(h.TraceLines, Function(l) l.StartsWith("drag end " & ball.Id, StringComparison.Ordinal))
+    End Sub
+
+    <Fact>
+    Public Sub RightDrag_KeepsTheGrabOffset()
+        Dim h As New PresenterHarness(New World(8, 5, 0.0, 1.0))
+        Dim ball = h.Ball(2, 2, radius:=0.4)
+        h.Drag(PointerButton.Right, 2.2, 2, 5.2, 2, 0.02)
+        h.P.Tick(0.02)
+        Assert.Equal(5.0, ball.Position.X, 2)
+    End Sub
+
+    <Fact>
+    Public Sub DraggedBall_KeepsColliding_AndPushesAnother()
+        Dim h As New PresenterHarness(New World(8, 5, 0.0, 1.0))
+        Dim carried = h.Ball(2, 2)
+        Dim other = h.Ball(3, 2)
+        Dim a = h.Px(2, 2)
+        h.P.PointerDown(PointerButton.Right, a.X, a.Y)
+        For k = 1 To 20
+            Dim s = h.Px(2 + 0.1 * k, 2)
+            h.P.PointerMove(s.X, s.Y)
+            h.P.Tick(1 / 60.0)
+        Next
+        Assert.True(other.Position.X > 3.05, $"the other ball was pushed to {other.Position}")
+        Assert.True((other.Position - carried.Position).Length >= 0.4 - 0.02, "they do not stay overlapped")
+    End Sub
+
+    <Fact>
+    Public Sub RightDrag_WhilePaused_MovesTheBallDirectly()
+        Dim h As New PresenterHarness()
+        Dim ball = h.Ball(2, 2)
+        h.P.TogglePause()
+        h.Drag(PointerButton.Right, 2, 2, 6, 4)
+        Assert.Equal(6.0, ball.Position.X, 6)
+        Assert.Equal(4.0, ball.Position.Y, 6)
+        Assert.Equal(0.0, h.P.World.Time)
+    End Sub
+
+    <Fact>
+    Public Sub RightDrag_MovesFixedBodies_KeepingIdAndColour()
+        Dim h As New PresenterHarness()
+        h.P.World.Add(New Rectangle(New Vector(1, 1), 2, 1, "table") With {.Color = "#336699"})
+        h.Drag(PointerButton.Right, 2, 1.5, 5, 2.5)
+        Dim r = Assert.Single(h.P.World.Rectangles)
+        Assert.Equal("table", r.Id)
+        Assert.Equal("#336699", r.Color)
+        Assert.Equal(4.0, r.Position.X, 6)
+        Assert.Equal(2.0, r.Position.Y, 6)
+    End Sub
+
+    <Fact>
+    Public Sub Cue_PullBackAndRelease_GivesDeltaVOfJOverM()
+        Dim h As New PresenterHarness(New World(8, 5, 0.0, 1.0))
+        Dim ball = h.Ball(4, 2, mass:=2)
+        Dim a = h.Px(4, 2), back = h.Px(3.5, 2)
+        h.P.PointerDown(PointerButton.Left, a.X, a.Y)
+        h.P.PointerMove(back.X, back.Y)
+        Assert.Same(ball, h.P.AimedCircle)
+        Dim j = h.P.CueImpulse
+        Assert.Equal(0.5 * CueShot.ImpulsePerMetre, j.X, 6)
+        Assert.Contains("J = 2.00 N·s", h.P.CueLabel, StringComparison.Ordinal)
+        Assert.Contains("Δv = J/m = 1.00 m/s", h.P.CueLabel, StringComparison.Ordinal)
+        h.P.PointerUp(PointerButton.Left, back.X, back.Y)
+        Assert.Null(h.P.AimedCircle)
+        Assert.Equal(1.0, ball.Velocity.X, 6)
+        Assert.Equal(0.0, ball.Velocity.Y, 6)
+        Assert.Contains(h.TraceLines, Function(l) l.StartsWith("fired " & ball.Id, StringComparison.Ordinal))
+    End Sub
+
+    <Fact>
+    Public Sub Cue_SamePull_MovesAHeavierBallLess()
+        Dim h As New PresenterHarness(New World(8, 5, 0.0, 1.0))
+        Dim light = h.Ball(2, 1, mass:=1)
+        Dim heavy = h.Ball(2, 4, mass:=4)
+        h.Drag(PointerButton.Left, 2, 1, 2, 0.6)
+        h.Drag(PointerButton.Left, 2, 4, 2, 3.6)
+        Assert.Equal(4.0 * light.Velocity.Y, 4.0 * heavy.Velocity.Y * 4, 6)
+        Assert.True(light.Velocity.Y > heavy.Velocity.Y AndAlso heavy.Velocity.Y > 0)
+    End Sub
+
+    <Fact>
+    Public Sub Cue_FiredBall_MovesInTheShotDirection()
+        Dim h As New PresenterHarness(New World(8, 5, 0.0, 1.0))
+        Dim ball = h.Ball(4, 2)
+        h.Drag(PointerButton.Left, 4, 2, 3.8, 2.1)
+        h.P.Tick(0.1)
+        Assert.True(ball.Position.X > 4.05 AndAlso ball.Position.Y < 2.0)
+    End Sub
+
+    <Fact>
+    Public Sub Cue_ImpulseIsCapped()
+        Dim j = CueShot.ImpulseFor(New Vector(0, 0), New Vector(-1000, 0))
+        Assert.Equal(CueShot.MaxImpulse, j.Length, 9)
+        Assert.True(j.X > 0)
+    End Sub
+
+    <Fact>
+    Public Sub Cue_OnFixedBodiesOrEmptySpace_DoesNothing()
+        Dim h As New PresenterHarness()
+        h.P.World.Add(Circle.CreateFixed(New Vector(2, 2), 0.3))
+        h.P.World.Add(New Rectangle(New Vector(5, 0), 2, 1))
+        h.Drag(PointerButton.Left, 2, 2, 1, 2)
+        h.Drag(PointerButton.Left, 6, 0.5, 5, 0.5)
+        h.Drag(PointerButton.Left, 4, 4, 3, 4)
+        Assert.DoesNotContain(h.TraceLines, Function(l) l.StartsWith("fired", StringComparison.Ordinal))
+        Assert.Null(h.P.AimedCircle)
+    End Sub
+
+    <Fact>
+    Public Sub Cue_WorksWhilePaused_AndTheBallMovesOnResume()
+        Dim h As New PresenterHarness(New World(8, 5, 0.0, 1.0))
+        Dim ball = h.Ball(4, 2)
+        h.P.TogglePause()
+        h.Drag(PointerButton.Left, 4, 2, 3.5, 2)
+        Assert.Equal(4.0, ball.Position.X, 9)
+        Assert.Equal(2.0, ball.Velocity.X, 6)
+        h.P.TogglePause()
+        h.P.Tick(0.1)
+        Assert.Equal(4.2, ball.Position.X, 3)
+    End Sub
+End Class
