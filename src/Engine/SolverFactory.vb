@@ -11,7 +11,9 @@ Public Module SolverFactory
     ''' </summary>
     Public Function Create(name As String, Optional timeStep As Double? = Nothing) As ISolver
         Select Case name
-            Case "auto", "euler"
+            Case "auto", "event"
+                Return New EventDrivenSolver()
+            Case "euler"
                 Return New SemiImplicitEulerSolver(If(timeStep, SemiImplicitEulerSolver.DefaultTimeStep))
             Case "verlet"
                 Return New VerletSolver(If(timeStep, VerletSolver.DefaultTimeStep))

@@ -1,0 +1,548 @@
+Option Strict On
+
+' Resolving one event: bring the bodies to the event time, apply the impulse (Impulse.Resolve),
+' report it, apply the resting and sleeping rules, and reschedule the bodies involved.
+Partial Public NotInheritable Class EventDrivenSolver
+    Private Sub ProcessEvent(i As Integer)
+        If _cellTime(i) <= _colTime(i) Then
+            CrossCell(i)
+            Return
+        End If
+        Select Case _evKind(i)
+            Case EventKind.Circle
+                Dim j = _evOther(i)
+                If _count(j) <> _evOtherCount(i) Then
+                    Reschedule(i) ' stale: the partner's motion changed since this was predicted
+                ElseIf _mode(i) = BodyMode.Sliding OrElse _mode(j) = BodyMode.Sliding Then
+                    ' Something reached a sliding ball's corner: stop following the slide exactly.
+                    If _mode(i) = BodyMode.Sliding Then Materialize(i)
+                    If _mode(j) = BodyMode.Sliding Then Materialize(j)
+                    Reschedule(i)
+                    Reschedule(j)
+                Else
+                    CollideCircles(i, j)
+                End If
+            Case EventKind.FixedCircle
+                Dim k = _evOther(i)
+                Sync(i)
+                Dim n = New Vector(_px(i) - _fx(k), _py(i) - _fy(k)).Normalized(New Vector(0, 1))
+                CollideStatic(i, n, _fixed(k), WallSide.None, CollisionKind.CircleFixed, SupportOther)
+            Case EventKind.Rectangle
+                CollideRectangle(i, _evOther(i), _evFeature(i))
+            Case EventKind.Wall
+                CollideWall(i, CType(_evFeature(i), WallSide))
+            Case EventKind.EdgeLeave
+                LeaveEdge(i, _evOther(i))
+            Case EventKind.SlideEnd
+                EndSlide(i)
+            Case Else
+                Reschedule(i)
+        End Select
+    End Sub
+
+    ''' <summary>Moves body i's reference point to the solver's clock (exactly along its path).</summary>
+    Private Sub Sync(i As Integer)
+        Dim tau = _now - _t0(i)
+        If tau = 0 Then Return
+        Dim ay = _ay(i)
+        _px(i) += _vx(i) * tau
+        _py(i) += (_vy(i) + 0.5 * ay * tau) * tau
+        _vy(i) += ay * tau
+        _t0(i) = _now
+    End Sub
+
+    Private Sub CollideWall(i As Integer, side As WallSide)
+        Sync(i)
+        Dim n As Vector
+        ' Snap onto the wall: the contact is exact, so rounding never accumulates over many bounces.
+        Select Case side
+            Case WallSide.Left : n = New Vector(1, 0) : _px(i) = _r(i)
+            Case WallSide.Right : n = New Vector(-1, 0) : _px(i) = _width - _r(i)
+            Case WallSide.Bottom : n = New Vector(0, 1) : _py(i) = _r(i)
+            Case Else : n = New Vector(0, -1) : _py(i) = _height - _r(i)
+        End Select
+        CollideStatic(i, n, Nothing, side, CollisionKind.CircleWall, If(side = WallSide.Bottom, SupportFloor, SupportNone))
+    End Sub
+
+    Private Sub CollideRectangle(i As Integer, k As Integer, feature As Integer)
+        Sync(i)
+        Dim n As Vector
+        Dim support = SupportNone
+        Select Case feature
+            Case 0 : n = New Vector(-1, 0) : _px(i) = Math.Min(_px(i), _rx0(k) - _r(i))
+            Case 1 : n = New Vector(1, 0) : _px(i) = Math.Max(_px(i), _rx1(k) + _r(i))
+            Case 2 : n = New Vector(0, -1) : _py(i) = Math.Min(_py(i), _ry0(k) - _r(i))
+            Case 3 : n = New Vector(0, 1) : _py(i) = Math.Max(_py(i), _ry1(k) + _r(i)) : support = k
+            Case Else
+                Dim cx = If(((feature - 4) And 1) = 0, _rx0(k), _rx1(k))
+                Dim cy = If(((feature - 4) And 2) = 0, _ry0(k), _ry1(k))
+                n = New Vector(_px(i) - cx, _py(i) - cy).Normalized(New Vector(0, 1))
+        End Select
+        CollideStatic(i, n, _rect(k), WallSide.None, CollisionKind.CircleRectangle, support)
+    End Sub
+
+    ''' <summary>
+    ''' Body i (already at the clock) hits something of infinite mass along unit normal n (pointing
+    ''' towards i). <paramref name="support"/> names what it would rest on if n points straight up.
+    ''' </summary>
+    Private Sub CollideStatic(i As Integer, n As Vector, b As Shape, side As WallSide, kind As CollisionKind, support As Integer)
+        If Jammed(i) Then Return
+        Dim before = New Vector(_vx(i), _vy(i))
+        Dim approach = Vector.Dot(before, n)
+        Dim after = Impulse.Resolve(before, 1.0, Vector.Zero, 0.0, n, _e).A
+        If approach < 0 AndAlso after = before Then
+            _px(i) += n.X * 4 * _slop ' see CollideCircles: an approach too small to resolve
+            _py(i) += n.Y * 4 * _slop
+        End If
+        _vx(i) = after.X
+        _vy(i) = after.Y
+        If approach < 0 Then
+            _world.ReportCollision(New CollisionRecord(_now, _circle(i), b, side, kind, before, after, Vector.Zero, Vector.Zero))
+            _lastHit(i) = _now
+        End If
+        If _mode(i) = BodyMode.Resting AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then MakeFree(i)
+        If _mode(i) = BodyMode.Free Then AfterSupportContact(i, n, support, 0, 0)
+        _count(i) += 1
+        Reschedule(i)
+    End Sub
+
+    Private Sub CollideCircles(i As Integer, j As Integer)
+        Sync(i)
+        Sync(j)
+        If _mode(j) = BodyMode.Sleeping AndAlso Jammed(i) Then Return
+        If _mode(i) = BodyMode.Sleeping AndAlso Jammed(j) Then Return
+        Dim n = New Vector(_px(i) - _px(j), _py(i) - _py(j)).Normalized(New Vector(0, 1))
+        Dim vi = New Vector(_vx(i), _vy(i)), vj = New Vector(_vx(j), _vy(j))
+        Dim approach = Vector.Dot(vi - vj, n)
+        Dim gentle = -approach < GentleSpeed(i, j)
+        Dim mi = _mode(i), mj = _mode(j)
+        ' A gentle touch on a body at rest treats it as a support (infinite mass); a real hit wakes it.
+        Dim invI = InverseMassFor(i, mi, mj, gentle, j)
+        Dim invJ = InverseMassFor(j, mj, mi, gentle, i)
+        Dim result = Impulse.Resolve(vi, invI, vj, invJ, n, EffectiveRestitution(i, j))
+        If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then
+            ' The approach was below what the velocities can resolve in floating point (after an
+            ' e = 0 contact): part them by a few slops instead, so the pair stops being "touching".
+            Dim wi = If(invI > 0 OrElse invJ = 0, 0.5, 0.0), wj = If(invJ > 0 OrElse invI = 0, 0.5, 0.0)
+            Dim sep = 4 * _slop / Math.Max(wi + wj, 0.5)
+            _px(i) += n.X * sep * wi
+            _py(i) += n.Y * sep * wi
+            _px(j) -= n.X * sep * wj
+            _py(j) -= n.Y * sep * wj
+        End If
+        _vx(i) = result.A.X
+        _vy(i) = result.A.Y
+        _vx(j) = result.B.X
+        _vy(j) = result.B.Y
+        If approach < 0 AndAlso (invI > 0 OrElse invJ > 0) Then
+            _world.ReportCollision(New CollisionRecord(_now, _circle(i), _circle(j), WallSide.None, CollisionKind.CircleCircle, vi, result.A, vj, result.B))
+            _lastHit(i) = _now
+            _lastHit(j) = _now
+        End If
+        ' Whoever moved leaves rest; a body still asleep stays a support.
+        If result.A <> vi AndAlso _mode(i) <> BodyMode.Dragged Then WakeFrom(i)
+        If result.B <> vj AndAlso _mode(j) <> BodyMode.Dragged Then WakeFrom(j)
+        If _mode(i) = BodyMode.Free AndAlso invJ = 0 AndAlso _mode(j) <> BodyMode.Dragged Then
+            AfterSupportContact(i, n, SupportOther, _vx(j), _vy(j))
+        ElseIf _mode(i) = BodyMode.Free Then
+            SleepIfSettled(i)
+        End If
+        If _mode(j) = BodyMode.Free AndAlso invI = 0 AndAlso _mode(i) <> BodyMode.Dragged Then
+            AfterSupportContact(j, -n, SupportOther, _vx(i), _vy(i))
+        ElseIf _mode(j) = BodyMode.Free Then
+            SleepIfSettled(j)
+        End If
+        _count(i) += 1
+        _count(j) += 1
+        Reschedule(i)
+        Reschedule(j)
+    End Sub
+
+    ''' <summary>
+    ''' Body i's inverse mass in this collision. The dragged circle is immovable. A sleeping body hit
+    ''' by a free body from above acts as part of its support (the floor beneath takes the blow); a
+    ''' body at rest touched gently also stays put; anything else moves it and wakes it.
+    ''' </summary>
+    Private Function InverseMassFor(i As Integer, mode As BodyMode, partnerMode As BodyMode, gentle As Boolean, partner As Integer) As Double
+        Select Case mode
+            Case BodyMode.Dragged
+                Return 0
+            Case BodyMode.Sleeping, BodyMode.Resting
+                If partnerMode = BodyMode.Free Then
+                    ' Only a sleeper (which never moves) may take a blow from above as the ground does:
+                    ' treating a moving body as immovable can trap a ball in a cycle of instantaneous hits.
+                    Dim dy = _py(partner) - _py(i)
+                    Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (_r(i) + _r(partner))
+                    If above OrElse gentle Then Return 0
+                End If
+                Return _invMass(i)
+            Case Else
+                Return _invMass(i)
+        End Select
+    End Function
+
+    ''' <summary>
+    ''' Inelastic-collapse guard (the "TC model"): two bodies that both collided within the last
+    ''' microsecond-scale interval collide elastically, so an infinite cascade cannot form in finite time.
+    ''' </summary>
+    Private Function EffectiveRestitution(i As Integer, j As Integer) As Double
+        If _e >= 1 OrElse _g = 0 Then Return _e
+        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_r(i), _r(j)) / _g)
+        If _now - _lastHit(i) < tc AndAlso _now - _lastHit(j) < tc Then Return 1.0
+        Return _e
+    End Function
+
+    ''' <summary>
+    ''' A free body wedged between supports that do not give way (a ball falling into a gap slightly
+    ''' narrower than itself) is hit by each of them in turn at the same instant, and pairwise impulses
+    ''' only shave a little off its speed each time. After <see cref="JamHits"/> hits at one instant the
+    ''' contacts are resolved together: the supports block every direction it could move in, so it
+    ''' stops (and, under gravity, sleeps). Returns True when that happened and the event is done.
+    ''' </summary>
+    Private Function Jammed(i As Integer) As Boolean
+        If _mode(i) <> BodyMode.Free Then Return False
+        If _sameTime(i) = _now Then
+            _sameCount(i) += 1
+        Else
+            _sameTime(i) = _now
+            _sameCount(i) = 0
+        End If
+        If _sameCount(i) < JamHits Then Return False
+        _vx(i) = 0
+        _vy(i) = 0
+        ' Wedged under gravity it goes to sleep where it is (even if the wedge is not quite a held
+        ' position, it cannot move at this instant, and a sleeper wakes again when hit).
+        If _g > 0 Then Sleep(i)
+        _count(i) += 1
+        _sameCount(i) = 0
+        Reschedule(i)
+        Return True
+    End Function
+
+    Private Const JamHits As Integer = 16
+
+    ''' <summary>Normal speed (m/s) below which a touch on a resting body does not wake it: 10 % of √(g r).</summary>
+    Private Function GentleSpeed(i As Integer, j As Integer) As Double
+        Return 0.1 * Math.Sqrt(_g * Math.Min(_r(i), _r(j)))
+    End Function
+
+    ''' <summary>
+    ''' After a free body touched something that does not give way (floor, rectangle, fixed circle,
+    ''' a body at rest, moving at (sx, sy) m/s) with normal n: the resting and sleeping rules that end
+    ''' the Zeno series. Speeds are relative to the support.
+    ''' </summary>
+    Private Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, sx As Double, sy As Double)
+        If _g = 0 OrElse n.Y <= 0 Then Return
+        Dim r = _r(i)
+        Dim rx = _vx(i) - sx, ry = _vy(i) - sy
+        Dim vn = rx * n.X + ry * n.Y
+        Dim speedScale = Math.Sqrt(_g * r)
+        ' Resting rule: the rest of the bounce series is a geometric series of flight times.
+        Dim restSpeed = Math.Sqrt(2 * _g * RestHeight(r))
+        Dim level = n.Y >= 1 - 1.0E-12 AndAlso support <> SupportNone
+        If level AndAlso vn < restSpeed AndAlso (support <> SupportOther OrElse Math.Abs(rx) < 0.02 * speedScale) Then
+            EnterRest(i, support, vn)
+            Return
+        End If
+        ' On a level support the bounce series is followed exactly down to restSpeed.
+        If level AndAlso support <> SupportOther Then Return
+        ' Sleeping rule: slow and held from below (one level support, or supports on both sides).
+        If sx = 0 AndAlso sy = 0 Then
+            SleepIfSettled(i)
+            If _mode(i) = BodyMode.Sleeping Then Return
+        End If
+        ' Zeno guard on a slope: never leave a support slower than restSpeed, so a body sliding
+        ' down a curved support hops down it in finitely many events instead of infinitely many.
+        If vn < restSpeed Then
+            _vx(i) += n.X * (restSpeed - vn)
+            _vy(i) += n.Y * (restSpeed - vn)
+        End If
+    End Sub
+
+    ''' <summary>
+    ''' After a collision between free bodies: one that is now slow and held by what it touches
+    ''' sleeps. A body caught in a burst of collisions (the start of inelastic collapse: more than
+    ''' <see cref="BurstCollisions"/> within √(r/g)/10) sleeps as soon as it is held, at any speed
+    ''' below √(g r): that chatter is a resting contact the event picture cannot end by itself.
+    ''' </summary>
+    Private Sub SleepIfSettled(i As Integer)
+        If _g = 0 Then Return
+        Dim speed2 = _vx(i) * _vx(i) + _vy(i) * _vy(i)
+        Dim scale2 = _g * _r(i)
+        Dim window = 0.1 * Math.Sqrt(_r(i) / _g)
+        If _now - _burstStart(i) > window Then
+            _burstStart(i) = _now
+            _burstCount(i) = 0
+        End If
+        _burstCount(i) += 1
+        Dim limit2 = If(_burstCount(i) > BurstCollisions, scale2, 0.0004 * scale2)
+        If speed2 < limit2 AndAlso IsHeld(i) Then Sleep(i)
+    End Sub
+
+    Private Const BurstCollisions As Integer = 20
+
+    ''' <summary>Bounce height (m) below which a ball counts as resting: 10⁻⁶ of its radius.</summary>
+    Private Shared Function RestHeight(r As Double) As Double
+        Return Math.Max(1.0E-6 * r, 1.0E-12)
+    End Function
+
+    Private Sub EnterRest(i As Integer, support As Integer, vn As Double)
+        Dim c = _circle(i)
+        Dim flight = If(_e < 1, 2 * vn / (_g * (1 - _e)), 0.0)
+        Dim known As Double
+        If Not (vn = 0 AndAlso _restTimes.TryGetValue(c, known)) Then _restTimes(c) = _now + flight
+        _vy(i) = 0
+        _ay(i) = 0
+        _support(i) = support
+        _mode(i) = BodyMode.Resting
+        ' Slow enough along a level support: asleep (a pile's floor layer must settle to hold the rest).
+        If Math.Abs(_vx(i)) < 0.05 * Math.Sqrt(_g * _r(i)) AndAlso support <> SupportNone Then Sleep(i)
+    End Sub
+
+    Private Sub Sleep(i As Integer)
+        _vx(i) = 0
+        _vy(i) = 0
+        _ay(i) = 0
+        _mode(i) = BodyMode.Sleeping
+    End Sub
+
+    ''' <summary>A resting or sleeping body that was moved by a hit flies again, and so does what rests on it.</summary>
+    Private Sub WakeFrom(i As Integer)
+        Dim m = _mode(i)
+        If m <> BodyMode.Sleeping AndAlso m <> BodyMode.Resting Then Return
+        MakeFree(i)
+        WakeAbove(i)
+    End Sub
+
+    Private Sub MakeFree(i As Integer)
+        _mode(i) = BodyMode.Free
+        _ay(i) = -_g
+        _support(i) = SupportNone
+        _restTimes.Remove(_circle(i))
+    End Sub
+
+    ''' <summary>Wakes every sleeping or resting body that (directly or through others) rests on body i.</summary>
+    Private Sub WakeAbove(i As Integer)
+        Dim head = 0, tail = 0
+        _wake(tail) = i
+        tail += 1
+        While head < tail
+            Dim k = _wake(head)
+            head += 1
+            Dim kx = PositionX(k), ky = PositionY(k)
+            Dim count = Neighbours(k)
+            For q = 0 To count - 1
+                Dim j = _stack(q)
+                Dim mj = _mode(j)
+                If mj <> BodyMode.Sleeping AndAlso mj <> BodyMode.Resting Then Continue For
+                Dim dx = _px(j) - kx, dy = _py(j) - ky
+                If dy <= 0 Then Continue For
+                Dim reach = _r(j) + _r(k) + 1.0E-3 * Math.Min(_r(j), _r(k))
+                If dx * dx + dy * dy > reach * reach Then Continue For
+                Sync(j)
+                MakeFree(j)
+                _count(j) += 1
+                Reschedule(j)
+                If tail < _wake.Length Then
+                    _wake(tail) = j
+                    tail += 1
+                End If
+            Next
+        End While
+    End Sub
+
+    Private Function PositionX(k As Integer) As Double
+        Return _px(k) + _vx(k) * (_now - _t0(k))
+    End Function
+
+    Private Function PositionY(k As Integer) As Double
+        Dim tau = _now - _t0(k)
+        Return _py(k) + (_vy(k) + 0.5 * _ay(k) * tau) * tau
+    End Function
+
+    ''' <summary>
+    ''' Whether body i is held against gravity by what it touches (within 10⁻³ r): the upward
+    ''' vertical lies in the cone of its contact normals, so normal forces alone can balance its
+    ''' weight (one level support, or two on either side of the vertical, or a cage). Neighbours count
+    ''' whether asleep or not (a settling pile freezes as a whole); only nearby cells are searched.
+    ''' </summary>
+    Private Function IsHeld(i As Integer) As Boolean
+        Dim px = PositionX(i), py = PositionY(i), r = _r(i)
+        Dim gap = 1.0E-3 * r + _slop
+        _nNormals = 0
+        If _walls Then
+            If py - r <= gap Then Return True
+            If px - r <= gap Then AddNormal(1, 0)
+            If _width - r - px <= gap Then AddNormal(-1, 0)
+            If _height - r - py <= gap Then AddNormal(0, -1)
+        End If
+        Dim p = New Vector(px, py)
+        For k = 0 To _nRect - 1
+            Dim c = Collider.CircleRectangle(p, r, New Vector(_rx0(k), _ry0(k)), New Vector(_rx1(k), _ry1(k)))
+            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
+        Next
+        For k = 0 To _nFixed - 1
+            Dim c = Collider.CircleCircle(p, r, New Vector(_fx(k), _fy(k)), _fr(k))
+            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
+        Next
+        Dim count = Neighbours(i)
+        For q = 0 To count - 1
+            Dim j = _stack(q)
+            If _mode(j) = BodyMode.Sliding OrElse _mode(j) = BodyMode.Dragged Then Continue For
+            Dim c = Collider.CircleCircle(p, r, New Vector(PositionX(j), PositionY(j)), _r(j))
+            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
+        Next
+        ' Up = (0, 1) lies between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.
+        For a = 0 To _nNormals - 1
+            If _normalY(a) > 0.999 Then Return True
+            For b = 0 To _nNormals - 1
+                If _normalX(a) >= 0 AndAlso _normalX(b) <= 0 AndAlso
+                   _normalX(a) * _normalY(b) - _normalY(a) * _normalX(b) > 0 Then Return True
+            Next
+        Next
+        Return False
+    End Function
+
+    Private Sub AddNormal(x As Double, y As Double)
+        If _nNormals < _normalX.Length Then
+            _normalX(_nNormals) = x
+            _normalY(_nNormals) = y
+            _nNormals += 1
+        End If
+    End Sub
+
+    ''' <summary>Fills the scratch stack with the movable bodies in the 3 × 3 cells around i (all bodies if i is oversized); returns how many.</summary>
+    Private Function Neighbours(i As Integer) As Integer
+        Dim count = 0
+        If _cell(i) < 0 Then
+            For j = 0 To _n - 1
+                If j <> i Then _stack(count) = j : count += 1
+            Next
+            Return count
+        End If
+        Dim col = _cell(i) Mod _grid.Nx, row = _cell(i) \ _grid.Nx
+        For rr = Math.Max(0, row - 1) To Math.Min(_grid.Ny - 1, row + 1)
+            For cc = Math.Max(0, col - 1) To Math.Min(_grid.Nx - 1, col + 1)
+                Dim j = _grid.Head(rr * _grid.Nx + cc)
+                While j >= 0
+                    If j <> i AndAlso count < _stack.Length Then _stack(count) = j : count += 1
+                    j = _grid.NextInCell(j)
+                End While
+            Next
+        Next
+        For k = 0 To _nOversized - 1
+            If _oversized(k) <> i AndAlso count < _stack.Length Then _stack(count) = _oversized(k) : count += 1
+        Next
+        Return count
+    End Function
+
+
+    ''' <summary>
+    ''' A resting body's centre reached the edge of its rectangle: fast enough (v² ≥ g r) it flies off
+    ''' on a parabola; slower, it slides round the corner until the normal force vanishes.
+    ''' </summary>
+    Private Sub LeaveEdge(i As Integer, k As Integer)
+        Sync(i)
+        Dim vx = _vx(i)
+        Dim edge = If(vx > 0, _rx1(k), _rx0(k))
+        _px(i) = edge
+        _py(i) = _ry1(k) + _r(i)
+        MakeFree(i)
+        _count(i) += 1
+        If vx * vx < _g * _r(i) Then
+            _mode(i) = BodyMode.Sliding
+            _ay(i) = 0
+            _slideCx(i) = edge
+            _slideCy(i) = _ry1(k)
+            _slideDir(i) = Math.Sign(vx)
+            _slideV0(i) = Math.Abs(vx)
+            _slideAngle(i) = CornerSlide.LeaveAngle(Math.Abs(vx), _g, _r(i), 0)
+            _slideStart(i) = _now
+        End If
+        Reschedule(i)
+    End Sub
+
+    ''' <summary>
+    ''' Ends a slide early (a neighbour came within reach): the ball becomes free at its exact place
+    ''' and velocity on the arc. If it is still pressed against the corner, the contact rules take
+    ''' over (it hops round the rest of the corner).
+    ''' </summary>
+    Private Sub Materialize(i As Integer)
+        Dim v0 = _slideV0(i), r = _r(i), s = _slideDir(i)
+        Dim theta = CornerSlide.AngleAfter(v0, _g, r, 0, _slideAngle(i), _now - _slideStart(i))
+        Dim speed = CornerSlide.SpeedAt(v0, _g, r, 0, theta)
+        _px(i) = _slideCx(i) + s * r * Math.Sin(theta)
+        _py(i) = _slideCy(i) + r * Math.Cos(theta)
+        _vx(i) = s * speed * Math.Cos(theta)
+        _vy(i) = -speed * Math.Sin(theta)
+        _t0(i) = _now
+        MakeFree(i)
+        _count(i) += 1
+        MoveToCellOfPosition(i)
+    End Sub
+
+    Private Sub MoveToCellOfPosition(i As Integer)
+        If _cell(i) < 0 Then Return
+        Dim cell = _grid.CellOf(_px(i), _py(i))
+        If cell <> _cell(i) Then
+            _grid.Remove(i, _cell(i))
+            _grid.Insert(i, cell)
+            _cell(i) = cell
+        End If
+    End Sub
+
+    Private Sub EndSlide(i As Integer)
+        Dim theta = _slideAngle(i)
+        Dim s = _slideDir(i)
+        Dim speed = CornerSlide.SpeedAt(_slideV0(i), _g, _r(i), 0, theta)
+        ' It leaves tangentially, touching the corner with zero normal speed; start it a hair (far
+        ' below any physical scale) outside, so rounding cannot turn the tangent into a collision.
+        Dim arc = _r(i) + 10 * _slop + 1.0E-9 * _r(i)
+        _px(i) = _slideCx(i) + s * arc * Math.Sin(theta)
+        _py(i) = _slideCy(i) + arc * Math.Cos(theta)
+        _vx(i) = s * speed * Math.Cos(theta)
+        _vy(i) = -speed * Math.Sin(theta)
+        _t0(i) = _now
+        MakeFree(i)
+        _count(i) += 1
+        MoveToCellOfPosition(i)
+        Reschedule(i)
+    End Sub
+
+    ''' <summary>The dragged circle moves in a straight line to its target over this advance, with no gravity.</summary>
+    Private Sub StartDrag(duration As Double)
+        Dim c = _world.DraggedCircle
+        Dim i As Integer
+        If c Is Nothing OrElse Not _index.TryGetValue(c, i) Then Return
+        Sync(i)
+        Dim target = _world.DragTarget
+        _mode(i) = BodyMode.Dragged
+        _ay(i) = 0
+        _invMass(i) = 0
+        _vx(i) = (target.X - _px(i)) / duration
+        _vy(i) = (target.Y - _py(i)) / duration
+        _count(i) += 1
+        Reschedule(i)
+    End Sub
+
+    ''' <summary>Writes every movable circle's exact state at <paramref name="t"/> back to the model.</summary>
+    Private Sub WriteBack(t As Double)
+        Dim dragged = _world.DraggedCircle
+        For i = 0 To _n - 1
+            Dim c = _circle(i)
+            If _mode(i) = BodyMode.Sliding Then
+                Dim v0 = _slideV0(i), r = _r(i), s = _slideDir(i)
+                Dim theta = CornerSlide.AngleAfter(v0, _g, r, 0, _slideAngle(i), t - _slideStart(i))
+                Dim speed = CornerSlide.SpeedAt(v0, _g, r, 0, theta)
+                c.Position = New Vector(_slideCx(i) + s * r * Math.Sin(theta), _slideCy(i) + r * Math.Cos(theta))
+                c.Velocity = New Vector(s * speed * Math.Cos(theta), -speed * Math.Sin(theta))
+                Continue For
+            End If
+            Dim tau = t - _t0(i)
+            Dim ay = _ay(i)
+            c.Position = New Vector(_px(i) + _vx(i) * tau, _py(i) + (_vy(i) + 0.5 * ay * tau) * tau)
+            c.Velocity = New Vector(_vx(i), _vy(i) + ay * tau)
+            If c Is dragged Then c.Position = _world.DragTarget
+        Next
+    End Sub
+End Class

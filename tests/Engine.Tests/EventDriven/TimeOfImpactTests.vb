@@ -1,0 +1,169 @@
+Option Strict On
+Imports PhysicsEngine
+Imports Xunit
+
+''' <summary>Time-of-impact maths against closed forms: roots, tangents, touching cases.</summary>
+Public Class TimeOfImpactTests
+    Private Const Slop As Double = 1.0E-12
+
+    <Fact>
+    Public Sub QuadraticRoots_AreStable_WhenOneRootIsTiny()
+        ' x² − 1e8 x + 1 = 0: the naive formula loses the small root 1e-8 entirely.
+        Dim x1 As Double, x2 As Double
+        Assert.Equal(2, RootFinding.QuadraticRoots(1, -100000000.0, 1, x1, x2))
+        Assert.Equal(1.0E-8, x1, 1.0E-20)
+        Assert.Equal(100000000.0, x2, 1.0E-6)
+    End Sub
+
+    <Fact>
+    Public Sub QuadraticRoots_DoubleRootCountsOnce_AndLinearFallsBack()
+        Dim x1 As Double, x2 As Double
+        Assert.Equal(1, RootFinding.QuadraticRoots(1, -4, 4, x1, x2))
+        Assert.Equal(2.0, x1, 15)
+        Assert.Equal(1, RootFinding.QuadraticRoots(0, 2, -3, x1, x2))
+        Assert.Equal(1.5, x1, 15)
+        Assert.Equal(0, RootFinding.QuadraticRoots(1, 0, 1, x1, x2))
+    End Sub
+
+    <Fact>
+    Public Sub CubicRootsIn_FindsAllThreeRoots()
+        ' (t − 1)(t − 2)(t − 3) = t³ − 6t² + 11t − 6
+        Dim a As Double, b As Double, c As Double
+        Assert.Equal(3, RootFinding.CubicRootsIn(1, -6, 11, -6, 0, 10, a, b, c))
+        Assert.Equal(1.0, a, 12)
+        Assert.Equal(2.0, b, 12)
+        Assert.Equal(3.0, c, 12)
+    End Sub
+
+    <Fact>
+    Public Sub CubicRootsIn_FindsADoubleRootOnce()
+        ' (t − 1)²(t − 3) = t³ − 5t² + 7t − 3
+        Dim a As Double, b As Double, c As Double
+        Assert.Equal(2, RootFinding.CubicRootsIn(1, -5, 7, -3, 0, 10, a, b, c))
+        Assert.Equal(1.0, a, 12)
+        Assert.Equal(3.0, b, 12)
+    End Sub
+
+    <Fact>
+    Public Sub EarliestEntry_Quartic_FindsTheFirstDownwardCrossing()
+        ' (t − 1)(t − 2)(t − 3)(t − 4): positive before 1, negative on (1, 2): enters at 1.
+        Dim t = RootFinding.EarliestEntry(1, -10, 35, -50, 24, 0)
+        Assert.Equal(1.0, t, 12)
+        ' Shifted so it starts inside (negative) on (0, 1): next entry is at 3.
+        ' (t + 1)(t − 1)(t − 3)(t − 4) = t⁴ − 7t³ + 11t² + 7t − 12, f(0) < 0 with tolerance 0: a start
+        ' inside counts as touching; it is increasing, so the next downward crossing (t = 3) is the entry.
+        Assert.Equal(3.0, RootFinding.EarliestEntry(1, -7, 11, 7, -12, 0), 12)
+    End Sub
+
+    <Fact>
+    Public Sub EarliestEntry_Quartic_TangentIsNoCollision()
+        ' (t − 2)² (t² + 1): touches zero at t = 2 without going below: a graze, not an entry.
+        ' = (t² − 4t + 4)(t² + 1) = t⁴ − 4t³ + 5t² − 4t + 4
+        Assert.Equal(Double.PositiveInfinity, RootFinding.EarliestEntry(1, -4, 5, -4, 4, 0))
+    End Sub
+
+    <Fact>
+    Public Sub CircleCircle_HeadOn_MatchesGapOverClosingSpeed()
+        ' Centres 1 m apart, radii sum 0.2, closing at 2 m/s: contact after 0.8 / 2 = 0.4 s.
+        Dim t = TimeOfImpact.CircleCircle(-1, 0, 2, 0, 0, 0.2, Slop)
+        Assert.Equal(0.4, t, 15)
+    End Sub
+
+    <Fact>
+    Public Sub CircleCircle_Oblique_MatchesClosedForm()
+        ' A moves along +x with impact parameter b: contact when (x)² + b² = R² → x = −√(R² − b²).
+        Dim b = 0.1, r = 0.2, x0 = -1.0, v = 3.0
+        Dim expected = (-x0 - Math.Sqrt(r * r - b * b)) / v
+        Assert.Equal(expected, TimeOfImpact.CircleCircle(x0, b, v, 0, 0, r, Slop), 14)
+    End Sub
+
+    <Fact>
+    Public Sub CircleCircle_GrazingMiss_IsNever()
+        Assert.Equal(Double.PositiveInfinity, TimeOfImpact.CircleCircle(-1, 0.2000001, 1, 0, 0, 0.2, Slop))
+    End Sub
+
+    <Fact>
+    Public Sub CircleCircle_TouchingAndApproaching_IsNow()
+        Assert.Equal(0.0, TimeOfImpact.CircleCircle(-0.2, 0, 1, 0, 0, 0.2, Slop))
+        ' Rounding left a tiny overlap: still a contact now, not a missed collision.
+        Assert.Equal(0.0, TimeOfImpact.CircleCircle(-0.2 + 1.0E-15, 0, 1, 0, 0, 0.2, Slop))
+    End Sub
+
+    <Fact>
+    Public Sub CircleCircle_TouchingAndSeparating_IsNever()
+        Assert.Equal(Double.PositiveInfinity, TimeOfImpact.CircleCircle(-0.2, 0, -1, 0, 0, 0.2, Slop))
+        Assert.Equal(Double.PositiveInfinity, TimeOfImpact.CircleCircle(-0.2, 0, 0, 0, 0, 0.2, Slop))
+    End Sub
+
+    <Fact>
+    Public Sub ParabolaOntoFixedCircle_MatchesFreeFall()
+        ' A ball dropped from rest 1 m above the top of a fixed circle (sum of radii R): it falls
+        ' d = ½gt² = 1 m, so t = √(2/g). Quartic path (relative acceleration −g).
+        Dim g = 9.81, sumR = 0.5
+        Dim t = TimeOfImpact.CircleCircle(0, sumR + 1.0, 0, 0, -g, sumR, Slop)
+        Assert.Equal(Math.Sqrt(2 / g), t, 12)
+    End Sub
+
+    <Fact>
+    Public Sub ParabolaOntoFixedCircle_OffCentre_MatchesGeometry()
+        ' Dropped at horizontal offset b: contact when the centre is at height √(R² − b²) above.
+        Dim g = 9.81, sumR = 0.5, b = 0.3, h = 2.0
+        Dim drop = h - Math.Sqrt(sumR * sumR - b * b)
+        Dim t = TimeOfImpact.CircleCircle(b, h, 0, 0, -g, sumR, Slop)
+        Assert.Equal(Math.Sqrt(2 * drop / g), t, 12)
+    End Sub
+
+    <Fact>
+    Public Sub ParabolaOverACorner_FastEnough_NeverTouchesAgain()
+        ' Leaving the edge of a table with v² ≥ g r: |Δ|² = r² + t²(v² − g r) + ¼g²t⁴ ≥ r².
+        Dim g = 9.81, r = 0.05
+        Dim v = Math.Sqrt(g * r) * 1.01
+        Assert.Equal(Double.PositiveInfinity, TimeOfImpact.CircleCircle(0, r, v, 0, -g, r, Slop))
+    End Sub
+
+    <Fact>
+    Public Sub ParabolaOverACorner_TooSlow_CutsIntoTheCornerNow()
+        Dim g = 9.81, r = 0.05
+        Dim v = Math.Sqrt(g * r) * 0.5
+        Assert.Equal(0.0, TimeOfImpact.CircleCircle(0, r, v, 0, -g, r, Slop))
+    End Sub
+
+    <Fact>
+    Public Sub GapCloses_Floor_MatchesSuvat_AndReturnsAfterABounce()
+        Dim g = 9.81
+        ' From 1 m at rest: t = √(2h/g).
+        Assert.Equal(Math.Sqrt(2 / g), TimeOfImpact.GapCloses(1.0, 0, -g, Slop), 14)
+        ' Just bounced (touching) going up at u: back after 2u/g.
+        Assert.Equal(2 * 3.0 / g, TimeOfImpact.GapCloses(0, 3.0, -g, Slop), 14)
+        ' Touching and moving down: now.
+        Assert.Equal(0.0, TimeOfImpact.GapCloses(0, -1.0, -g, Slop))
+        ' Touching, no gravity, moving away: never.
+        Assert.Equal(Double.PositiveInfinity, TimeOfImpact.GapCloses(0, 1.0, 0, Slop))
+    End Sub
+
+    <Fact>
+    Public Sub CircleRectangle_HitsTheTopFace_AndTheCorner()
+        Dim f As Integer
+        ' Falling from rest onto the top face (y1 = 1) from centre height 2, r = 0.1: drop 0.9 m.
+        Dim t = TimeOfImpact.CircleRectangle(0.5, 2, 0, 0, -9.81, 0.1, 0, 0, 1, 1, Slop, f)
+        Assert.Equal(3, f)
+        Assert.Equal(Math.Sqrt(2 * 0.9 / 9.81), t, 12)
+        ' Moving left at y = 1.05 towards the upper-right corner (1, 1), no gravity:
+        ' contact when (x − 1)² + 0.05² = 0.1² → x = 1 + √0.0075.
+        t = TimeOfImpact.CircleRectangle(2, 1.05, -1, 0, 0, 0.1, 0, 0, 1, 1, Slop, f)
+        Assert.Equal(7, f)
+        Assert.Equal(1 - Math.Sqrt(0.0075), t, 12)
+        ' Level with the face, beside it: the side face.
+        t = TimeOfImpact.CircleRectangle(2, 0.5, -1, 0, 0, 0.1, 0, 0, 1, 1, Slop, f)
+        Assert.Equal(1, f)
+        Assert.Equal(0.9, t, 12)
+    End Sub
+
+    <Fact>
+    Public Sub CornerSlide_LeaveAngle_FromRestAtTheTop_IsTheTextbookAngle()
+        ' Starting from (almost) rest at the top: cos θ* = 2/3.
+        Assert.Equal(Math.Acos(2.0 / 3.0), CornerSlide.LeaveAngle(0, 9.81, 0.05, 0), 12)
+        ' v² ≥ g r: leaves at once.
+        Assert.Equal(0.0, CornerSlide.LeaveAngle(Math.Sqrt(9.81 * 0.05), 9.81, 0.05, 0))
+    End Sub
+End Class
