@@ -15,7 +15,8 @@ Friend NotInheritable Class BouncingRestScene
     Public ReadOnly Property Description As String =
         "Scenarios.BouncingBall(h0 = 1 m, e = 0.9). Closed form: the bounces form a geometric series that ends at " &
         "T = t0 (1 + e) / (1 − e), t0 = √(2 h0 / g) (T = 8.579 s). Error = |time of the last reported floor bounce − T|; " &
-        "a solver that stops bouncing early (a resting threshold) or late shows it here." Implements IBenchScene.Description
+        "a solver that stops bouncing early or late shows it here. Every solver ends the infinite series with a resting rule, " &
+        "so the bounces it no longer reports (below its threshold) are part of this error." Implements IBenchScene.Description
     Public ReadOnly Property ErrorMetric As String = "rest-time error (s)" Implements IBenchScene.ErrorMetric
 
     ''' <summary>The closed-form rest time T, s.</summary>
