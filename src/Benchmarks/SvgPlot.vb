@@ -90,7 +90,7 @@ Friend Module SvgPlot
         Next
         If clamped Then
             sb.Append("<text x=""").Append(N(Left)).Append(""" y=""").Append(N(Height - 6)).Append(""" font-size=""10"" fill=""#555"">").
-               Append(Escape("values of 0 (exact to rounding) are drawn at 1e-16")).Append("</text>").Append(ControlChars.Lf)
+               Append(Escape("values at or below 1e-16 (exact to rounding) are drawn at 1e-16")).Append("</text>").Append(ControlChars.Lf)
         End If
         If all.Count = 0 Then
             sb.Append("<text x=""").Append(N(Left + plotW / 2)).Append(""" y=""").Append(N(Top + plotH / 2)).Append(""" text-anchor=""middle"">no data</text>").Append(ControlChars.Lf)

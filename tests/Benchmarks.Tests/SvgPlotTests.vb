@@ -47,7 +47,7 @@ Public Class SvgPlotTests
         Dim doc = Plot()
         ' Markers: 1 event + 3 euler + 1 finite verlet point, plus one legend marker per series.
         Assert.Equal(5 + 3, doc.Descendants().Count(Function(e) e.Attribute("class")?.Value = "marker"))
-        Assert.Contains("values of 0 (exact to rounding) are drawn at 1e-16", Texts(doc))
+        Assert.Contains("values at or below 1e-16 (exact to rounding) are drawn at 1e-16", Texts(doc))
         Assert.Contains("1e-16", Texts(doc))
     End Sub
 
