@@ -1,0 +1,66 @@
+Option Strict On
+Imports System.Diagnostics
+Imports System.Globalization
+
+''' <summary>
+''' The elastic gas at growing N and a fixed packing fraction: ms per simulated second, collisions per
+''' wall-clock second, µs per collision (flat when the cost per event does not grow with N) and peak
+''' memory. Each N runs in its own child process so the peak working set belongs to that run alone.
+''' </summary>
+Friend Module GasScaling
+    ''' <summary>Scene name of the scaling rows.</summary>
+    Public Const SceneName As String = "gas-scaling"
+
+    ''' <summary>
+    ''' In the child: builds the gas, warms up while finding a slice of simulated time that takes about
+    ''' <paramref name="targetWallSeconds"/>, then times <paramref name="repeats"/> such slices of the same
+    ''' gas (it is in equilibrium, so slices are alike) and reports the medians.
+    ''' </summary>
+    Public Function Measure(count As Integer, solverName As String, timeStep As Double?, repeats As Integer, targetWallSeconds As Double) As BenchResult
+        Dim world = Scenarios.ElasticGas(count, GasEnergyScene.PackingFraction)
+        Dim solver = SceneRunner.TryCreateSolver(solverName, timeStep)
+        If solver Is Nothing Then Return SceneRunner.NotAvailable(SceneName, solverName, timeStep, "not available in this build")
+        world.Solver = solver
+        Dim result As New BenchResult With {.Scene = SceneName, .Solver = solverName, .TimeStep = timeStep, .BodyCount = count}
+
+        ' Warm-up: double the slice until one slice takes long enough to time well. At least three
+        ' slices, because the first one also pays for compiling the code and building the solver's tables.
+        Dim slice = If(timeStep, 0.001)
+        Dim clock As New Stopwatch
+        Dim warmups = 0
+        Do
+            clock.Restart()
+            world.Advance(slice)
+            clock.Stop()
+            warmups += 1
+            Dim longEnough = clock.Elapsed.TotalSeconds >= targetWallSeconds / 2
+            If longEnough AndAlso warmups >= 3 Then Exit Do
+            If Not longEnough Then slice *= 2
+        Loop
+        Dim ms As New List(Of Double)
+        Dim perSecond As New List(Of Double)
+        For k = 1 To repeats
+            Dim before = world.CollisionCount
+            GC.Collect()
+            clock.Restart()
+            world.Advance(slice)
+            clock.Stop()
+            Dim wall = clock.Elapsed.TotalSeconds
+            ms.Add(wall * 1000 / slice)
+            perSecond.Add((world.CollisionCount - before) / wall)
+        Next
+        result.Runs = repeats
+        result.SimulatedSeconds = slice
+        result.MsPerSimulatedSecond = Statistics.Median(ms)
+        result.CollisionsPerSecond = Statistics.Median(perSecond)
+        If result.CollisionsPerSecond > 0 Then result.MicrosecondsPerCollision = 1000000.0 / result.CollisionsPerSecond
+        result.Error = Double.NaN
+        result.ErrorMetric = ""
+        Using self = Process.GetCurrentProcess()
+            self.Refresh()
+            result.PeakMegabytes = self.PeakWorkingSet64 / 1048576.0
+        End Using
+        result.Note = "slice " & slice.ToString("0.####", CultureInfo.InvariantCulture) & " s simulated per timed run"
+        Return result
+    End Function
+End Module

@@ -1,0 +1,224 @@
+Option Strict On
+Imports System.Globalization
+Imports System.IO
+Imports System.Text
+
+''' <summary>
+''' Entry point. The parent run reads like its pipeline: scenes → gas scaling → frame budget → write
+''' the report. Hidden --child-* options run one piece of that in a child process of this program.
+''' Exit 0 on success, 2 on bad input, 1 on any other failure.
+''' </summary>
+Public NotInheritable Class Program
+    Private Sub New()
+    End Sub
+
+    Public Shared Function Main(args As String()) As Integer
+        Dim options As BenchmarkOptions
+        Try
+            options = BenchmarkOptions.Parse(args)
+        Catch ex As OptionsException
+            Console.Error.WriteLine("benchmarks: " & ex.Message)
+            Return 2
+        End Try
+        If options.Help Then
+            Console.Out.WriteLine(BenchmarkOptions.Usage)
+            Return 0
+        End If
+        Try
+            If options.ChildScene IsNot Nothing Then Return RunChildScene(options)
+            If options.ChildGas > 0 Then Return RunChildGas(options)
+            Return RunAll(options)
+        Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
+            Console.Error.WriteLine("benchmarks: internal error: " & ex.Message)
+            Return 1
+        End Try
+    End Function
+
+    Private Shared Function RunAll(options As BenchmarkOptions) As Integer
+        Dim clock = Diagnostics.Stopwatch.StartNew()
+        Dim machine = MachineInfo.Current()
+        Console.Out.WriteLine("benchmarks: " & If(options.Quick, "quick", "full") & " run on " & machine.ToString())
+        Dim scenes = options.Scenes.Where(Function(s) s <> GasScaling.SceneName).Select(Function(s) SceneCatalog.Create(s, options)).ToList()
+        Dim results As New List(Of BenchResult)
+
+        For Each scene In scenes
+            For Each solver In options.Solvers
+                results.AddRange(RunSceneInChild(scene, solver, options))
+            Next
+        Next
+        If options.Scenes.Contains(GasScaling.SceneName) Then results.AddRange(RunScaling(options))
+
+        Dim frame As FrameResult
+        If options.Quick Then
+            frame = New FrameResult With {.Note = "the quick run skips it."}
+        ElseIf options.NoFrame Then
+            frame = New FrameResult With {.Note = "skipped (--no-frame)."}
+        Else
+            Console.Out.WriteLine("frame benchmark: " & options.AppPath)
+            frame = FrameBenchmark.TryRun(options.AppPath, 1000)
+            Console.Out.WriteLine("  " & If(frame.Ran, "step " & NumberText.Fixed2(frame.StepMs) & " ms + paint " & NumberText.Fixed2(frame.PaintMs) & " ms", "skipped: " & frame.Note))
+        End If
+
+        WriteOutputs(options, machine, scenes, results, frame)
+        Console.Out.WriteLine("benchmarks: done in " & clock.Elapsed.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s; wrote " &
+                              Path.Combine(options.OutDir, "benchmarks.md") & If(options.JsonPath Is Nothing, "", " and " & options.JsonPath))
+        Return 0
+    End Function
+
+    ''' <summary>One scene, one solver, every time step, in a child process; a hang or a crash becomes a note.</summary>
+    Private Shared Function RunSceneInChild(scene As IBenchScene, solver As String, options As BenchmarkOptions) As List(Of BenchResult)
+        Dim probe = SceneRunner.TryCreateSolver(solver, options.TimeSteps(0))
+        If probe Is Nothing Then
+            Dim missing = SceneRunner.NotAvailable(scene.Name, solver, Nothing, "not available in this build (SolverFactory does not know '" & solver & "')")
+            missing.ErrorMetric = scene.ErrorMetric
+            Print(missing)
+            Return New List(Of BenchResult) From {missing}
+        End If
+        Dim expected As IEnumerable(Of Double?) = If(probe.TimeStep.HasValue, options.TimeSteps.Select(Function(t) CType(t, Double?)), {CType(Nothing, Double?)})
+        Dim args = options.ChildArguments()
+        args.AddRange({"--child-scene", scene.Name, "--child-solver", solver})
+        Dim timeout = options.ChildTimeout(expected.Count())
+        Dim outcome = ChildProcess.Run(args, timeout)
+        Dim results As New List(Of BenchResult)
+        For Each dt In expected
+            Dim r = outcome.Results.FirstOrDefault(Function(x) Nullable.Equals(x.TimeStep, dt))
+            If r Is Nothing Then
+                Dim why = If(outcome.TimedOut, "timed out: the child was stopped after " & timeout.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s",
+                             "failed (exit " & outcome.ExitCode.ToString(CultureInfo.InvariantCulture) & "): " & FirstLine(outcome.ErrorText))
+                r = SceneRunner.NotAvailable(scene.Name, solver, dt, why)
+                r.ErrorMetric = scene.ErrorMetric
+            End If
+            Print(r)
+            results.Add(r)
+        Next
+        Return results
+    End Function
+
+    Private Shared Function RunScaling(options As BenchmarkOptions) As List(Of BenchResult)
+        Dim results As New List(Of BenchResult)
+        For Each solver In options.Solvers
+            Dim probe = SceneRunner.TryCreateSolver(solver, 0.001)
+            If probe Is Nothing Then
+                Dim missing = SceneRunner.NotAvailable(GasScaling.SceneName, solver, Nothing, "not available in this build")
+                Print(missing)
+                results.Add(missing)
+                Continue For
+            End If
+            ' Stepping solvers run the gas at one everyday step, 1/1000 s.
+            Dim dt = If(probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
+            Dim previous As BenchResult = Nothing
+            For Each n In options.GasSizes.OrderBy(Function(x) x)
+                Dim r As BenchResult
+                Dim predicted = PredictedStepSeconds(previous, n, dt)
+                If predicted > options.StepBudgetSeconds Then
+                    r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt,
+                        "skipped: one step could take " & predicted.ToString("0", CultureInfo.InvariantCulture) & " s if the cost grows as N² (from N = " &
+                        previous.BodyCount.ToString(CultureInfo.InvariantCulture) & ")")
+                    r.BodyCount = n
+                Else
+                    Dim args = options.ChildArguments()
+                    args.AddRange({"--child-gas", n.ToString(CultureInfo.InvariantCulture), "--child-solver", solver})
+                    Dim outcome = ChildProcess.Run(args, options.GasChildTimeout)
+                    r = outcome.Results.FirstOrDefault()
+                    If r Is Nothing Then
+                        r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt,
+                            If(outcome.TimedOut, "timed out after " & options.GasChildTimeout.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s",
+                               "failed (exit " & outcome.ExitCode.ToString(CultureInfo.InvariantCulture) & "): " & FirstLine(outcome.ErrorText)))
+                        r.BodyCount = n
+                    End If
+                End If
+                Print(r)
+                results.Add(r)
+                If r.Available Then previous = r
+            Next
+        Next
+        Return results
+    End Function
+
+    ''' <summary>
+    ''' Worst-case wall-clock seconds of one step at N = <paramref name="n"/>, from the last measured
+    ''' size, assuming the cost grows as N²; 0 for the event solver or when nothing was measured yet.
+    ''' </summary>
+    Friend Shared Function PredictedStepSeconds(previous As BenchResult, n As Integer, timeStep As Double?) As Double
+        If previous Is Nothing OrElse Not timeStep.HasValue OrElse Double.IsNaN(previous.MsPerSimulatedSecond) Then Return 0
+        Dim stepSeconds = previous.MsPerSimulatedSecond / 1000 * timeStep.Value
+        Dim ratio = n / CDbl(previous.BodyCount)
+        Return stepSeconds * ratio * ratio
+    End Function
+
+    Private Shared Function RunChildScene(options As BenchmarkOptions) As Integer
+        Dim scene = SceneCatalog.Create(options.ChildScene, options)
+        Dim solver = options.ChildSolver
+        Dim probe = SceneRunner.TryCreateSolver(solver, options.TimeSteps(0))
+        If probe Is Nothing Then
+            ChildProcess.Report(SceneRunner.NotAvailable(scene.Name, solver, Nothing, "not available in this build"))
+            Return 0
+        End If
+        Dim steps As IEnumerable(Of Double?) = If(probe.TimeStep.HasValue, options.TimeSteps.Select(Function(t) CType(t, Double?)), {CType(Nothing, Double?)})
+        For Each dt In steps
+            Dim r As BenchResult
+            Try
+                r = SceneRunner.Run(scene, solver, dt, options.Repeats, options.CaseBudgetSeconds)
+            Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
+                ' A solver that throws on a hard case is a finding, not the end of the benchmark.
+                r = SceneRunner.NotAvailable(scene.Name, solver, dt, "failed: " & ex.GetType().Name & ": " & ex.Message)
+            End Try
+            ChildProcess.Report(r)
+        Next
+        Return 0
+    End Function
+
+    Private Shared Function RunChildGas(options As BenchmarkOptions) As Integer
+        Dim solver = options.ChildSolver
+        Dim probe = SceneRunner.TryCreateSolver(solver, 0.001)
+        Dim dt = If(probe IsNot Nothing AndAlso probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
+        Dim r As BenchResult
+        Try
+            r = GasScaling.Measure(options.ChildGas, solver, dt, options.Repeats, options.GasSliceSeconds)
+        Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
+            r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt, "failed: " & ex.GetType().Name & ": " & ex.Message)
+            r.BodyCount = options.ChildGas
+        End Try
+        ChildProcess.Report(r)
+        Return 0
+    End Function
+
+    Private Shared Sub WriteOutputs(options As BenchmarkOptions, machine As MachineInfo, scenes As List(Of IBenchScene), results As List(Of BenchResult), frame As FrameResult)
+        Directory.CreateDirectory(options.OutDir)
+        Dim mode = If(options.Quick, "quick", "full")
+        For Each kv In MarkdownReport.Plots(scenes, results)
+            WriteAtomically(Path.Combine(options.OutDir, kv.Key), kv.Value)
+        Next
+        WriteAtomically(Path.Combine(options.OutDir, "benchmarks.md"), MarkdownReport.Render(machine, mode, options.Repeats, scenes, results, frame))
+        If options.JsonPath IsNot Nothing Then
+            Dim dir = Path.GetDirectoryName(Path.GetFullPath(options.JsonPath))
+            Directory.CreateDirectory(dir)
+            WriteAtomically(options.JsonPath, JsonReport.ToJson(machine, mode, results))
+        End If
+    End Sub
+
+    ''' <summary>Writes to a temporary file beside the target, then moves it into place: never half a file.</summary>
+    Private Shared Sub WriteAtomically(target As String, text As String)
+        Dim temp = target & ".tmp"
+        File.WriteAllText(temp, text, New UTF8Encoding(False))
+        File.Move(temp, target, True)
+    End Sub
+
+    Private Shared Sub Print(r As BenchResult)
+        Dim text = "  " & r.Scene & " " & r.Solver & " dt=" & TimeStepText.Format(r.TimeStep) &
+                   If(r.BodyCount > 0 AndAlso r.Scene = GasScaling.SceneName, " N=" & r.BodyCount.ToString(CultureInfo.InvariantCulture), "") & ": "
+        If r.Available Then
+            text &= If(Double.IsNaN(r.Error), "", "error " & NumberText.Sci(r.Error) & ", ") & NumberText.Ms(r.MsPerSimulatedSecond) & " ms/sim s, " &
+                    NumberText.Whole(r.CollisionsPerSecond) & " collisions/s" &
+                    If(Double.IsNaN(r.PeakMegabytes), "", ", peak " & NumberText.Fixed2(r.PeakMegabytes) & " MB")
+        End If
+        If r.Note.Length > 0 Then text &= If(r.Available, "; ", "") & r.Note
+        Console.Out.WriteLine(text)
+    End Sub
+
+    Private Shared Function FirstLine(text As String) As String
+        Dim t = If(text, "").Trim()
+        Dim nl = t.IndexOf(vbLf, StringComparison.Ordinal)
+        Return If(nl >= 0, t.Substring(0, nl), t)
+    End Function
+End Class

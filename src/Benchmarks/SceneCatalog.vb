@@ -1,0 +1,19 @@
+Option Strict On
+
+''' <summary>The benchmark's scenes by name.</summary>
+Friend Module SceneCatalog
+    ''' <summary>The scene called <paramref name="name"/>, sized for the run mode.</summary>
+    Public Function Create(name As String, options As BenchmarkOptions) As IBenchScene
+        If options Is Nothing Then Throw New ArgumentNullException(NameOf(options))
+        Select Case name
+            Case "bouncing-apex" : Return New BouncingApexScene()
+            Case "bouncing-rest" : Return New BouncingRestScene()
+            Case "projectile" : Return New ProjectileScene()
+            Case "oblique-hit" : Return New ObliqueHitScene()
+            Case "cradle" : Return New CradleScene()
+            Case "gas-energy" : Return New GasEnergyScene(100, options.GasSeconds)
+            Case "pile" : Return New PileScene()
+            Case Else : Throw New ArgumentException("unknown scene '" & name & "'", NameOf(name))
+        End Select
+    End Function
+End Module

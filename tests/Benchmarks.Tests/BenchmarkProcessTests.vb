@@ -1,0 +1,67 @@
+Option Strict On
+Imports System.IO
+Imports System.Text.Json
+Imports System.Xml.Linq
+Imports Xunit
+
+''' <summary>
+''' The benchmark run as a real process on a tiny configuration, the way scripts/bench.sh runs it:
+''' child processes, files written, JSON readable. Nothing here depends on how fast it ran.
+''' </summary>
+Public Class BenchmarkProcessTests
+    Private Shared ReadOnly Property BenchmarkDll As String
+        Get
+            Return Path.Combine(ProcessRunner.RepoRoot, "src", "Benchmarks", "bin", ProcessRunner.Configuration, "net10.0", "Benchmarks.dll")
+        End Get
+    End Property
+
+    Private Shared Function RunBenchmark(ParamArray args As String()) As ProcessResult
+        Dim all As New List(Of String) From {BenchmarkDll}
+        all.AddRange(args)
+        Return ProcessRunner.Run("dotnet", all, Nothing, TimeSpan.FromMinutes(3))
+    End Function
+
+    <Fact>
+    Public Sub TinyRun_WritesTheReportThePlotAndTheJson_AndListsAnUnknownSolverAsNotAvailable()
+        Dim dir = Path.Combine(Path.GetTempPath(), "bench-smoke-" & Guid.NewGuid().ToString("N"))
+        Try
+            Dim json = Path.Combine(dir, "out", "results.json")
+            Dim r = RunBenchmark("--quick", "--scenes", "projectile,gas-scaling", "--solvers", "euler,no-such-solver", "--dts", "1/60",
+                                 "--gas-sizes", "50", "--repeats", "1", "--out", dir, "--json", json)
+            Assert.True(r.ExitCode = 0, r.ToString())
+
+            Dim md = File.ReadAllText(Path.Combine(dir, "benchmarks.md"))
+            Assert.Contains("## Headline", md)
+            Assert.Contains("## Projectile: position at landing", md)
+            Assert.Contains("| euler | 1/60 |", md)
+            Assert.Contains("| no-such-solver | — | — | — | — | not available in this build", md)
+            Assert.Contains("## Scaling: elastic gas at packing fraction 0.1", md)
+            Assert.False(File.Exists(Path.Combine(dir, "benchmarks.md.tmp")), "no temporary file is left behind")
+
+            Dim svg = XDocument.Load(Path.Combine(dir, "benchmark-projectile.svg"))
+            Assert.Equal("svg", svg.Root.Name.LocalName)
+
+            Using doc = JsonDocument.Parse(File.ReadAllText(json))
+                Dim results = doc.RootElement.GetProperty("results").EnumerateArray().ToList()
+                Dim projectile = results.Single(Function(e) e.GetProperty("scene").GetString() = "projectile" AndAlso e.GetProperty("solver").GetString() = "euler")
+                Assert.True(projectile.GetProperty("available").GetBoolean())
+                Assert.Equal(1 / 60.0, projectile.GetProperty("dt").GetDouble(), 12)
+                Assert.True(projectile.GetProperty("error").GetDouble() > 0)
+                Assert.True(projectile.GetProperty("msPerSimulatedSecond").GetDouble() > 0)
+                Dim gas = results.Single(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "euler")
+                Assert.Equal(50, gas.GetProperty("n").GetInt32())
+                Assert.True(gas.GetProperty("peakMB").GetDouble() > 0, "peak memory comes from the child process")
+                Assert.Contains(results, Function(e) e.GetProperty("solver").GetString() = "no-such-solver" AndAlso Not e.GetProperty("available").GetBoolean())
+            End Using
+        Finally
+            If Directory.Exists(dir) Then Directory.Delete(dir, True)
+        End Try
+    End Sub
+
+    <Fact>
+    Public Sub BadOption_ExitsWith2AndOneLineOnStandardError()
+        Dim r = RunBenchmark("--dts", "fast")
+        Assert.Equal(2, r.ExitCode)
+        Assert.Equal("benchmarks: --dts: 'fast' is not a time step greater than 0 (write 1/60 or 0.001)", r.StdErr.Trim())
+    End Sub
+End Class

@@ -1,0 +1,72 @@
+Option Strict On
+Imports PhysicsEngine.Benchmarks
+Imports Xunit
+
+''' <summary>docs/benchmarks.md as written from a known set of results.</summary>
+Public Class MarkdownReportTests
+    Private Shared Function Render(Optional frame As FrameResult = Nothing) As String
+        Return MarkdownReport.Render(SampleResults.Machine(), "full", 5, SampleResults.Scenes(), SampleResults.Results(),
+                                     If(frame, New FrameResult With {.Note = "mono is not installed."}))
+    End Function
+
+    <Fact>
+    Public Sub Render_StartsWithTheHeadline_GivingEventGasCollisionsPerSecondAtBothSizes()
+        Dim md = Render()
+        Dim headline = md.IndexOf("## Headline", StringComparison.Ordinal)
+        Dim machine = md.IndexOf("## Machine", StringComparison.Ordinal)
+        Assert.True(headline > 0 AndAlso headline < machine, "the headline comes before the machine section")
+        Dim head = md.Substring(headline, machine - headline)
+        Assert.Contains("N = 1,000: **1,234,567 collisions per second**", head)
+        Assert.Contains("N = 10,000: **987,654 collisions per second**", head)
+        ' The accuracy line compares the event solver with the most accurate stepping run (1/1000, not 1/60).
+        Assert.Contains("| Projectile: position at landing | position error at landing (m) | 0 at 0.020 ms/s | 3.0e-3 (euler, dt = 1/1000) at 2.5 ms/s |", head)
+    End Sub
+
+    <Fact>
+    Public Sub Render_Headline_SaysWhyTheEventSolverHasNoResult()
+        Dim results = SampleResults.Results()
+        results(0) = New BenchResult With {.Scene = "projectile", .Solver = "event", .Runs = 0,
+                                           .Note = "stopped at 0.5 s simulated: over the 30 s wall-clock budget"}
+        Dim md = MarkdownReport.Render(SampleResults.Machine(), "full", 5, SampleResults.Scenes(), results, New FrameResult)
+        Assert.Contains("| no result: stopped at 0.5 s simulated: over the 30 s wall-clock budget | 3.0e-3 (euler, dt = 1/1000)", md)
+    End Sub
+
+    <Fact>
+    Public Sub Render_NamesTheMachine()
+        Dim md = Render()
+        Assert.Contains("| CPU | Test CPU 3000 |", md)
+        Assert.Contains("| Cores | 2 |", md)
+        Assert.Contains("| Memory | 23.5 GB |", md)
+        Assert.Contains("| .NET | .NET 10.0.0 |", md)
+        Assert.Contains("| Date | 2026-01-02 03:04 UTC |", md)
+    End Sub
+
+    <Fact>
+    Public Sub Render_WritesOneTableRowPerCase_AndListsAMissingSolverAsNotAvailable()
+        Dim md = Render()
+        Assert.Contains("| euler | 1/60 | 5.0e-2 | 0.100 | 10 |  |", md)
+        Assert.Contains("| event | — | 0 | 0.020 | 50 |  |", md)
+        Assert.Contains("| verlet | — | — | — | — | not available in this build |", md)
+        Assert.Contains("![Projectile: position at landing](benchmark-projectile.svg)", md)
+    End Sub
+
+    <Fact>
+    Public Sub Render_WritesTheScalingTableWithMicrosecondsPerCollisionAndPeakMemory()
+        Dim md = Render()
+        Assert.Contains("| 1,000 | event | — | 40.0 | 1,234,567 | 0.81 | 40.50 |", md)
+        Assert.Contains("| 10,000 | event | — | 450 | 987,654 | 1.01 | 60.25 |", md)
+    End Sub
+
+    <Fact>
+    Public Sub Render_SaysWhyTheFrameBudgetWasNotMeasured_OrGivesIt()
+        Assert.Contains("Not measured in this run: mono is not installed.", Render())
+        Dim ran = Render(New FrameResult With {.Ran = True, .Circles = 1000, .StepMs = 3.25, .PaintMs = 9.5, .RawJson = "{""stepMs"":3.25}"})
+        Assert.Contains("1000 circles: step 3.25 ms + paint 9.50 ms, target < 16 ms (met).", ran)
+    End Sub
+
+    <Fact>
+    Public Sub Plots_MakesOneWorkPrecisionPlotPerSceneAndOneScalingPlot()
+        Dim files = MarkdownReport.Plots(SampleResults.Scenes(), SampleResults.Results())
+        Assert.Equal(Values("benchmark-gas-scaling.svg", "benchmark-projectile.svg"), files.Keys.OrderBy(Function(k) k, StringComparer.Ordinal))
+    End Sub
+End Class
