@@ -1,15 +1,20 @@
 Option Strict On
 
 ''' <summary>
-''' How a stepping solver splits an advance into sub-steps: whole steps of dt, then one shorter last
-''' step so the state lands on the exact requested time.
+''' How a stepping solver splits an advance into sub-steps: whole steps of dt, then one last step
+''' (shorter, or longer by under a millionth of dt to absorb rounding) so the state lands on the exact
+''' requested time.
 ''' </summary>
 Friend Module SubSteps
-    ''' <summary>The number of sub-steps for <paramref name="duration"/> s with steps of at most <paramref name="dt"/> s.</summary>
+    ''' <summary>A remainder below this fraction of a step is folded into the last step.</summary>
+    Friend Const SliverFraction As Double = 0.000001
+
+    ''' <summary>The number of sub-steps for <paramref name="duration"/> s with steps of about <paramref name="dt"/> s.</summary>
     Friend Function Count(duration As Double, dt As Double) As Long
-        ' The factor just below 1 stops a duration that is a whole number of steps give or take a rounding
-        ' error from adding a last sliver step of ~1e-16 s (which would wreck Verlet's step ratio).
-        Dim n = CLng(Math.Ceiling(duration / dt * (1 - 1.0E-12)))
+        ' A remainder under a millionth of a step is rounding (an advance to k·S − t computed in floating
+        ' point), not time to simulate: it is folded into the last whole step. A separate sliver step of
+        ' ~1e-15 s would divide position rounding by 1e-15 in Verlet's velocity and wreck its step ratio.
+        Dim n = CLng(Math.Ceiling(duration / dt - SliverFraction))
         Return Math.Max(1L, n)
     End Function
 
