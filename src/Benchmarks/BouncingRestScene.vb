@@ -46,6 +46,14 @@ Friend NotInheritable Class BouncingRestScene
         Dim note = bounces.ToString(CultureInfo.InvariantCulture) & " bounces, last at " &
                    lastBounce.ToString("0.000", CultureInfo.InvariantCulture) & " s"
         If height > 0.001 OrElse ball.Velocity.Length > 0.01 Then note &= "; still moving at the end"
+        ' The event solver knows when the ball came to rest: the end of the geometric series of bounces
+        ' that its resting rule sums exactly. A stepping solver only shows its last reported bounce.
+        Dim eventSolver = TryCast(world.Solver, EventDrivenSolver)
+        Dim rest = If(eventSolver Is Nothing, Nothing, eventSolver.RestTime(ball))
+        If rest.HasValue Then
+            note &= "; at rest from " & rest.Value.ToString("0.000000", CultureInfo.InvariantCulture) & " s"
+            Return New SceneMeasurement(Math.Abs(rest.Value - RestTime), note)
+        End If
         If bounces = 0 Then Return New SceneMeasurement(RestTime, "no bounce reported")
         Return New SceneMeasurement(Math.Abs(lastBounce - RestTime), note)
     End Function
