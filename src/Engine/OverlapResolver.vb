@@ -71,9 +71,17 @@ Public Module OverlapResolver
     End Function
 
     Private Function BucketKey(p As Vector, cell As Double, ox As Integer, oy As Integer) As Long
-        Dim ix = CLng(Math.Floor(p.X / cell)) + ox
-        Dim iy = CLng(Math.Floor(p.Y / cell)) + oy
-        Return ix * 73856093L Xor iy * 19349663L
+        Dim ix = CellIndex(p.X, cell) + ox
+        Dim iy = CellIndex(p.Y, cell) + oy
+        ' Two 32-bit halves: no multiplication, so no overflow however far away a body is.
+        Return (ix << 32) Or (iy And &HFFFFFFFFL)
+    End Function
+
+    ''' <summary>The cell index, clamped to ±10⁹ so a body 10¹² m away (walls off) cannot overflow it.</summary>
+    Private Function CellIndex(v As Double, cell As Double) As Long
+        Dim q = Math.Floor(v / cell)
+        If Double.IsNaN(q) Then Return 0
+        Return CLng(Math.Max(-1000000000.0, Math.Min(1000000000.0, q)))
     End Function
 
     Private Function Separate(a As Circle, b As Circle, dragged As Circle, tolerance As Double, i As Integer, j As Integer) As Double

@@ -78,6 +78,7 @@ Partial Public NotInheritable Class World
             Return _walls
         End Get
         Set(value As Boolean)
+            If value Then CheckEveryCircleFits(_width, _height)
             _walls = value
             If value Then BringCirclesInside()
             _solver?.Invalidate(Nothing)
@@ -153,7 +154,10 @@ Partial Public NotInheritable Class World
         If c IsNot Nothing Then
             If Not c.Position.IsFinite OrElse Not c.Velocity.IsFinite Then Throw New ArgumentException("position and velocity must be finite", NameOf(body))
             If c.IsFixed Then c.Velocity = Vector.Zero
-            If _walls AndAlso Not c.IsFixed Then c.Position = Inside(c.Position, c.Radius)
+            If _walls AndAlso Not c.IsFixed Then
+                CheckFits(c.Radius, _width, _height)
+                c.Position = Inside(c.Position, c.Radius)
+            End If
             _circles.Add(c)
         Else
             _rectangles.Add(DirectCast(body, Rectangle))
@@ -267,10 +271,12 @@ Partial Public NotInheritable Class World
 
     ''' <summary>
     ''' Changes the container's size while running. With walls on, a movable circle that the smaller
-    ''' container leaves outside is brought back inside.
+    ''' container leaves outside is brought back inside; a size too small for the largest movable circle
+    ''' is refused (ArgumentException) and nothing changes.
     ''' </summary>
     Public Sub Resize(width As Double, height As Double)
         CheckSize(width, height)
+        If _walls Then CheckEveryCircleFits(width, height)
         _width = width
         _height = height
         If _walls Then BringCirclesInside()
@@ -297,6 +303,22 @@ Partial Public NotInheritable Class World
     Private Sub BringCirclesInside()
         For Each c In _circles
             If Not c.IsFixed Then c.Position = Inside(c.Position, c.Radius)
+        Next
+    End Sub
+
+    ' A movable circle wider than a walled container could touch both of two opposite walls at once
+    ' and be pushed through one of them: such a world is refused at the boundary, with a message.
+    Private Shared Sub CheckFits(radius As Double, width As Double, height As Double)
+        If 2 * radius > width OrElse 2 * radius > height Then
+            Throw New ArgumentException("a circle of diameter " & (2 * radius).ToString("G4", Globalization.CultureInfo.InvariantCulture) &
+                " m does not fit in a container of " & width.ToString("G4", Globalization.CultureInfo.InvariantCulture) & " m × " &
+                height.ToString("G4", Globalization.CultureInfo.InvariantCulture) & " m")
+        End If
+    End Sub
+
+    Private Sub CheckEveryCircleFits(width As Double, height As Double)
+        For Each c In _circles
+            If Not c.IsFixed Then CheckFits(c.Radius, width, height)
         Next
     End Sub
 

@@ -116,7 +116,9 @@ Namespace Scenes
         End Function
 
         Private Function CellIndex(v As Double, cell As Double) As Long
-            Return CLng(Math.Max(-MaxCellIndex, Math.Min(MaxCellIndex, Math.Floor(v / cell))))
+            Dim q = Math.Floor(v / cell)
+            If Double.IsNaN(q) Then Return 0 ' ∞/∞: radii near the largest double make the cell infinite
+            Return CLng(Math.Max(-MaxCellIndex, Math.Min(MaxCellIndex, q)))
         End Function
 
         Private Function Key(ix As Long, iy As Long) As Long

@@ -48,6 +48,9 @@ Namespace Scenes
                 Throw New SceneFormatException("document", "is not valid JSON (" & OneLine(ex.Message) & ")", ex)
             Catch ex As InvalidOperationException
                 Throw New SceneFormatException("document", "is not valid JSON (" & OneLine(ex.Message) & ")", ex)
+            Catch ex As FormatException
+                ' A raw control character inside a string.
+                Throw New SceneFormatException("document", "is not valid JSON (" & OneLine(ex.Message) & ")", ex)
             End Try
             If JsonFields.JsonType(element) <> "object" Then Throw JsonFields.WrongType(element, "document", "a JSON object")
             CheckComplete(text)
@@ -65,6 +68,7 @@ Namespace Scenes
             Dim inString = False
             Dim escaped = False
             Dim closedAt = -1
+            Dim last = " "c ' the last non-blank character outside strings
             For i = 0 To text.Length - 1
                 Dim ch = text(i)
                 If inString Then
@@ -74,6 +78,7 @@ Namespace Scenes
                         escaped = True
                     ElseIf ch = """"c Then
                         inString = False
+                        last = ch
                     End If
                     Continue For
                 End If
@@ -85,9 +90,12 @@ Namespace Scenes
                     Case """"c : inString = True
                     Case "{"c, "["c : depth += 1
                     Case "}"c, "]"c
+                        ' The BCL reader lets a comma before the root's last '}' through.
+                        If last = ","c Then Throw New SceneFormatException("document", "is not valid JSON (a comma before '" & ch & "' at character " & (i + 1).ToString(CultureInfo.InvariantCulture) & ")")
                         depth -= 1
                         If depth = 0 Then closedAt = i
                 End Select
+                If Not Char.IsWhiteSpace(ch) Then last = ch
             Next
             If closedAt < 0 Then Throw New SceneFormatException("document", "is not valid JSON (it ends before its closing '}': is the file complete?)")
         End Sub

@@ -1,0 +1,56 @@
+Option Strict On
+Imports PhysicsEngine
+Imports PhysicsEngine.Scenes
+Imports Xunit
+
+''' <summary>Inputs at the edge of what makes sense: a clear refusal or a correct run, never a crash.</summary>
+Public Class BoundaryInputTests
+    <Fact>
+    Public Sub ACircleWiderThanAWalledContainer_IsRefused_AndTheWorldIsUnchanged()
+        Dim w As New World(1, 1)
+        Dim ex = Assert.Throws(Of ArgumentException)(Sub() w.Add(New Circle(New Vector(0.5, 0.5), 2.0, 1.0)))
+        Assert.Contains("does not fit", ex.Message)
+        Assert.Empty(w.Bodies)
+    End Sub
+
+    <Fact>
+    Public Sub ShrinkingBelowTheLargestCircle_IsRefused_AndTheSizeStays()
+        Dim w As New World(4, 4)
+        w.Solver = SolverFactory.Create("event")
+        w.Add(New Circle(New Vector(2, 2), 0.5, 1.0))
+        Assert.Throws(Of ArgumentException)(Sub() w.Resize(0.9, 3))
+        Assert.Equal(4.0, w.Width)
+        w.Resize(1.0, 1.0) ' exactly one diameter still fits
+        w.Advance(1.0)
+        Dim c = w.Circles(0)
+        Assert.InRange(c.Position.Y, 0.5 - 1.0E-9, 0.5 + 1.0E-9)
+    End Sub
+
+    <Theory>
+    <InlineData("{""format"":""physics-scene/1"",""world"":{""width"":2,""height"":2},""bodies"":[],""x"":""a" & vbTab & "b""}")>
+    <InlineData("{""format"":""physics-scene/1"",""world"":{""width"":2,""height"":2},""bodies"":[],}")>
+    Public Sub MalformedJsonTheBclReaderLetsThrough_IsRejectedAsNotJson(json As String)
+        Dim ex = Assert.Throws(Of SceneFormatException)(Function() SceneFile.Load(json))
+        Assert.Equal("document", ex.Place)
+        Assert.Contains("not valid JSON", ex.Message)
+    End Sub
+
+    <Fact>
+    Public Sub ABodyFarAwayWithWallsOff_RunsWithTheDefaultSolver()
+        Dim json = "{""format"":""physics-scene/1"",""world"":{""width"":2,""height"":2,""walls"":false,""gravity"":0}," &
+                   """bodies"":[{""type"":""circle"",""x"":1e12,""y"":1,""radius"":0.1,""mass"":1,""vx"":-1}," &
+                   "{""type"":""circle"",""x"":1,""y"":1,""radius"":0.1,""mass"":1}]}"
+        Dim w = SceneFile.Load(json)
+        w.Solver = SolverFactory.Create("auto")
+        w.Advance(1.0)
+        Assert.Equal(1.0E+12 - 1, w.Circles(0).Position.X, 0)
+    End Sub
+
+    <Fact>
+    Public Sub HugeRadiiWithWallsOff_AreCheckedWithoutOverflow()
+        Dim json = "{""format"":""physics-scene/1"",""world"":{""width"":2,""height"":2,""walls"":false}," &
+                   """bodies"":[{""type"":""circle"",""x"":1e308,""y"":1,""radius"":1e308,""mass"":1}]}"
+        Dim w = SceneFile.Load(json)
+        Assert.Single(w.Bodies)
+    End Sub
+End Class
