@@ -168,6 +168,10 @@ Partial Public NotInheritable Class EventDrivenSolver
                                     ' The tolerance scales with the bodies' own speeds, which is what rounding errs by.
                                     Dim speeds = Math.Sqrt(dvx * dvx + dvy * dvy) + Math.Abs(vx) + Math.Abs(vy) + Math.Abs(bodies(j).Vx) + Math.Abs(bodies(j).Vy + ay * tj)
                                     t = If(b < -TimeOfImpact.ApproachFraction * sumR * speeds, 0, Double.PositiveInfinity)
+                                ElseIf c / (-2 * b) >= best Then
+                                    ' The root c / (−b + √disc) is never earlier than c / (−2b), as √disc ≤ −b
+                                    ' (also in floating point): this pair cannot beat the best, skip the square root.
+                                    t = Double.PositiveInfinity
                                 Else
                                     Dim a = dvx * dvx + dvy * dvy
                                     Dim disc = b * b - a * c
