@@ -13,10 +13,10 @@ Partial Public NotInheritable Class EventDrivenSolver
                 Dim j = _evOther(i)
                 If _count(j) <> _evOtherCount(i) Then
                     Reschedule(i) ' stale: the partner's motion changed since this was predicted
-                ElseIf _mode(i) = BodyMode.Sliding OrElse _mode(j) = BodyMode.Sliding Then
+                ElseIf _body(i).Mode = BodyMode.Sliding OrElse _body(j).Mode = BodyMode.Sliding Then
                     ' Something reached a sliding ball's corner: stop following the slide exactly.
-                    If _mode(i) = BodyMode.Sliding Then Materialize(i)
-                    If _mode(j) = BodyMode.Sliding Then Materialize(j)
+                    If _body(i).Mode = BodyMode.Sliding Then Materialize(i)
+                    If _body(j).Mode = BodyMode.Sliding Then Materialize(j)
                     Reschedule(i)
                     Reschedule(j)
                 Else
@@ -25,7 +25,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             Case EventKind.FixedCircle
                 Dim k = _evOther(i)
                 Sync(i)
-                Dim n = New Vector(_px(i) - _fx(k), _py(i) - _fy(k)).Normalized(New Vector(0, 1))
+                Dim n = New Vector(_body(i).Px - _fx(k), _body(i).Py - _fy(k)).Normalized(New Vector(0, 1))
                 CollideStatic(i, n, _fixed(k), WallSide.None, CollisionKind.CircleFixed, SupportOther)
             Case EventKind.Rectangle
                 CollideRectangle(i, _evOther(i), _evFeature(i))
@@ -42,13 +42,13 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     ''' <summary>Moves body i's reference point to the solver's clock (exactly along its path).</summary>
     Private Sub Sync(i As Integer)
-        Dim tau = _now - _t0(i)
+        Dim tau = _now - _body(i).T0
         If tau = 0 Then Return
-        Dim ay = _ay(i)
-        _px(i) += _vx(i) * tau
-        _py(i) += (_vy(i) + 0.5 * ay * tau) * tau
-        _vy(i) += ay * tau
-        _t0(i) = _now
+        Dim ay = _body(i).Ay
+        _body(i).Px += _body(i).Vx * tau
+        _body(i).Py += (_body(i).Vy + 0.5 * ay * tau) * tau
+        _body(i).Vy += ay * tau
+        _body(i).T0 = _now
     End Sub
 
     Private Sub CollideWall(i As Integer, side As WallSide)
@@ -56,10 +56,10 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim n As Vector
         ' Snap onto the wall: the contact is exact, so rounding never accumulates over many bounces.
         Select Case side
-            Case WallSide.Left : n = New Vector(1, 0) : _px(i) = _r(i)
-            Case WallSide.Right : n = New Vector(-1, 0) : _px(i) = _width - _r(i)
-            Case WallSide.Bottom : n = New Vector(0, 1) : _py(i) = _r(i)
-            Case Else : n = New Vector(0, -1) : _py(i) = _height - _r(i)
+            Case WallSide.Left : n = New Vector(1, 0) : _body(i).Px = _body(i).R
+            Case WallSide.Right : n = New Vector(-1, 0) : _body(i).Px = _width - _body(i).R
+            Case WallSide.Bottom : n = New Vector(0, 1) : _body(i).Py = _body(i).R
+            Case Else : n = New Vector(0, -1) : _body(i).Py = _height - _body(i).R
         End Select
         CollideStatic(i, n, Nothing, side, CollisionKind.CircleWall, If(side = WallSide.Bottom, SupportFloor, SupportNone))
     End Sub
@@ -69,14 +69,14 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim n As Vector
         Dim support = SupportNone
         Select Case feature
-            Case 0 : n = New Vector(-1, 0) : _px(i) = Math.Min(_px(i), _rx0(k) - _r(i))
-            Case 1 : n = New Vector(1, 0) : _px(i) = Math.Max(_px(i), _rx1(k) + _r(i))
-            Case 2 : n = New Vector(0, -1) : _py(i) = Math.Min(_py(i), _ry0(k) - _r(i))
-            Case 3 : n = New Vector(0, 1) : _py(i) = Math.Max(_py(i), _ry1(k) + _r(i)) : support = k
+            Case 0 : n = New Vector(-1, 0) : _body(i).Px = Math.Min(_body(i).Px, _rx0(k) - _body(i).R)
+            Case 1 : n = New Vector(1, 0) : _body(i).Px = Math.Max(_body(i).Px, _rx1(k) + _body(i).R)
+            Case 2 : n = New Vector(0, -1) : _body(i).Py = Math.Min(_body(i).Py, _ry0(k) - _body(i).R)
+            Case 3 : n = New Vector(0, 1) : _body(i).Py = Math.Max(_body(i).Py, _ry1(k) + _body(i).R) : support = k
             Case Else
                 Dim cx = If(((feature - 4) And 1) = 0, _rx0(k), _rx1(k))
                 Dim cy = If(((feature - 4) And 2) = 0, _ry0(k), _ry1(k))
-                n = New Vector(_px(i) - cx, _py(i) - cy).Normalized(New Vector(0, 1))
+                n = New Vector(_body(i).Px - cx, _body(i).Py - cy).Normalized(New Vector(0, 1))
         End Select
         CollideStatic(i, n, _rect(k), WallSide.None, CollisionKind.CircleRectangle, support)
     End Sub
@@ -87,21 +87,21 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Private Sub CollideStatic(i As Integer, n As Vector, b As Shape, side As WallSide, kind As CollisionKind, support As Integer)
         If Jammed(i) Then Return
-        Dim before = New Vector(_vx(i), _vy(i))
+        Dim before = New Vector(_body(i).Vx, _body(i).Vy)
         Dim approach = Vector.Dot(before, n)
         Dim after = Impulse.Resolve(before, 1.0, Vector.Zero, 0.0, n, _e).A
         If approach < 0 AndAlso after = before Then
-            _px(i) += n.X * 4 * _slop ' see CollideCircles: an approach too small to resolve
-            _py(i) += n.Y * 4 * _slop
+            _body(i).Px += n.X * 4 * _slop ' see CollideCircles: an approach too small to resolve
+            _body(i).Py += n.Y * 4 * _slop
         End If
-        _vx(i) = after.X
-        _vy(i) = after.Y
+        _body(i).Vx = after.X
+        _body(i).Vy = after.Y
         If approach < 0 Then
             _world.ReportCollision(New CollisionRecord(_now, _circle(i), b, side, kind, before, after, Vector.Zero, Vector.Zero))
             _lastHit(i) = _now
         End If
-        If _mode(i) = BodyMode.Resting AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then MakeFree(i)
-        If _mode(i) = BodyMode.Free Then AfterSupportContact(i, n, support, 0, 0)
+        If _body(i).Mode = BodyMode.Resting AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then MakeFree(i)
+        If _body(i).Mode = BodyMode.Free Then AfterSupportContact(i, n, support, 0, 0)
         _count(i) += 1
         Reschedule(i)
     End Sub
@@ -109,13 +109,13 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private Sub CollideCircles(i As Integer, j As Integer)
         Sync(i)
         Sync(j)
-        If _mode(j) = BodyMode.Sleeping AndAlso Jammed(i) Then Return
-        If _mode(i) = BodyMode.Sleeping AndAlso Jammed(j) Then Return
-        Dim n = New Vector(_px(i) - _px(j), _py(i) - _py(j)).Normalized(New Vector(0, 1))
-        Dim vi = New Vector(_vx(i), _vy(i)), vj = New Vector(_vx(j), _vy(j))
+        If _body(j).Mode = BodyMode.Sleeping AndAlso Jammed(i) Then Return
+        If _body(i).Mode = BodyMode.Sleeping AndAlso Jammed(j) Then Return
+        Dim n = New Vector(_body(i).Px - _body(j).Px, _body(i).Py - _body(j).Py).Normalized(New Vector(0, 1))
+        Dim vi = New Vector(_body(i).Vx, _body(i).Vy), vj = New Vector(_body(j).Vx, _body(j).Vy)
         Dim approach = Vector.Dot(vi - vj, n)
         Dim gentle = -approach < GentleSpeed(i, j)
-        Dim mi = _mode(i), mj = _mode(j)
+        Dim mi = _body(i).Mode, mj = _body(j).Mode
         ' A gentle touch on a body at rest treats it as a support (infinite mass); a real hit wakes it.
         Dim invI = InverseMassFor(i, mi, mj, gentle, j)
         Dim invJ = InverseMassFor(j, mj, mi, gentle, i)
@@ -125,31 +125,31 @@ Partial Public NotInheritable Class EventDrivenSolver
             ' e = 0 contact): part them by a few slops instead, so the pair stops being "touching".
             Dim wi = If(invI > 0 OrElse invJ = 0, 0.5, 0.0), wj = If(invJ > 0 OrElse invI = 0, 0.5, 0.0)
             Dim sep = 4 * _slop / Math.Max(wi + wj, 0.5)
-            _px(i) += n.X * sep * wi
-            _py(i) += n.Y * sep * wi
-            _px(j) -= n.X * sep * wj
-            _py(j) -= n.Y * sep * wj
+            _body(i).Px += n.X * sep * wi
+            _body(i).Py += n.Y * sep * wi
+            _body(j).Px -= n.X * sep * wj
+            _body(j).Py -= n.Y * sep * wj
         End If
-        _vx(i) = result.A.X
-        _vy(i) = result.A.Y
-        _vx(j) = result.B.X
-        _vy(j) = result.B.Y
+        _body(i).Vx = result.A.X
+        _body(i).Vy = result.A.Y
+        _body(j).Vx = result.B.X
+        _body(j).Vy = result.B.Y
         If approach < 0 AndAlso (invI > 0 OrElse invJ > 0) Then
             _world.ReportCollision(New CollisionRecord(_now, _circle(i), _circle(j), WallSide.None, CollisionKind.CircleCircle, vi, result.A, vj, result.B))
             _lastHit(i) = _now
             _lastHit(j) = _now
         End If
         ' Whoever moved leaves rest; a body still asleep stays a support.
-        If result.A <> vi AndAlso _mode(i) <> BodyMode.Dragged Then WakeFrom(i)
-        If result.B <> vj AndAlso _mode(j) <> BodyMode.Dragged Then WakeFrom(j)
-        If _mode(i) = BodyMode.Free AndAlso invJ = 0 AndAlso _mode(j) <> BodyMode.Dragged Then
-            AfterSupportContact(i, n, SupportOther, _vx(j), _vy(j))
-        ElseIf _mode(i) = BodyMode.Free Then
+        If result.A <> vi AndAlso _body(i).Mode <> BodyMode.Dragged Then WakeFrom(i)
+        If result.B <> vj AndAlso _body(j).Mode <> BodyMode.Dragged Then WakeFrom(j)
+        If _body(i).Mode = BodyMode.Free AndAlso invJ = 0 AndAlso _body(j).Mode <> BodyMode.Dragged Then
+            AfterSupportContact(i, n, SupportOther, _body(j).Vx, _body(j).Vy)
+        ElseIf _body(i).Mode = BodyMode.Free Then
             SleepIfSettled(i)
         End If
-        If _mode(j) = BodyMode.Free AndAlso invI = 0 AndAlso _mode(i) <> BodyMode.Dragged Then
-            AfterSupportContact(j, -n, SupportOther, _vx(i), _vy(i))
-        ElseIf _mode(j) = BodyMode.Free Then
+        If _body(j).Mode = BodyMode.Free AndAlso invI = 0 AndAlso _body(i).Mode <> BodyMode.Dragged Then
+            AfterSupportContact(j, -n, SupportOther, _body(i).Vx, _body(i).Vy)
+        ElseIf _body(j).Mode = BodyMode.Free Then
             SleepIfSettled(j)
         End If
         _count(i) += 1
@@ -171,8 +171,8 @@ Partial Public NotInheritable Class EventDrivenSolver
                 If partnerMode = BodyMode.Free Then
                     ' Only a sleeper (which never moves) may take a blow from above as the ground does:
                     ' treating a moving body as immovable can trap a ball in a cycle of instantaneous hits.
-                    Dim dy = _py(partner) - _py(i)
-                    Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (_r(i) + _r(partner))
+                    Dim dy = _body(partner).Py - _body(i).Py
+                    Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (_body(i).R + _body(partner).R)
                     If above OrElse gentle Then Return 0
                 End If
                 Return _invMass(i)
@@ -187,7 +187,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Private Function EffectiveRestitution(i As Integer, j As Integer) As Double
         If _e >= 1 OrElse _g = 0 Then Return _e
-        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_r(i), _r(j)) / _g)
+        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_body(i).R, _body(j).R) / _g)
         If _now - _lastHit(i) < tc AndAlso _now - _lastHit(j) < tc Then Return 1.0
         Return _e
     End Function
@@ -200,7 +200,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' stops (and, under gravity, sleeps). Returns True when that happened and the event is done.
     ''' </summary>
     Private Function Jammed(i As Integer) As Boolean
-        If _mode(i) <> BodyMode.Free Then Return False
+        If _body(i).Mode <> BodyMode.Free Then Return False
         If _sameTime(i) = _now Then
             _sameCount(i) += 1
         Else
@@ -208,8 +208,8 @@ Partial Public NotInheritable Class EventDrivenSolver
             _sameCount(i) = 0
         End If
         If _sameCount(i) < JamHits Then Return False
-        _vx(i) = 0
-        _vy(i) = 0
+        _body(i).Vx = 0
+        _body(i).Vy = 0
         ' Wedged under gravity it goes to sleep where it is (even if the wedge is not quite a held
         ' position, it cannot move at this instant, and a sleeper wakes again when hit).
         If _g > 0 Then Sleep(i)
@@ -223,7 +223,7 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     ''' <summary>Normal speed (m/s) below which a touch on a resting body does not wake it: 10 % of √(g r).</summary>
     Private Function GentleSpeed(i As Integer, j As Integer) As Double
-        Return 0.1 * Math.Sqrt(_g * Math.Min(_r(i), _r(j)))
+        Return 0.1 * Math.Sqrt(_g * Math.Min(_body(i).R, _body(j).R))
     End Function
 
     ''' <summary>
@@ -233,8 +233,8 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Private Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, sx As Double, sy As Double)
         If _g = 0 OrElse n.Y <= 0 Then Return
-        Dim r = _r(i)
-        Dim rx = _vx(i) - sx, ry = _vy(i) - sy
+        Dim r = _body(i).R
+        Dim rx = _body(i).Vx - sx, ry = _body(i).Vy - sy
         Dim vn = rx * n.X + ry * n.Y
         Dim speedScale = Math.Sqrt(_g * r)
         ' Resting rule: the rest of the bounce series is a geometric series of flight times.
@@ -249,13 +249,13 @@ Partial Public NotInheritable Class EventDrivenSolver
         ' Sleeping rule: slow and held from below (one level support, or supports on both sides).
         If sx = 0 AndAlso sy = 0 Then
             SleepIfSettled(i)
-            If _mode(i) = BodyMode.Sleeping Then Return
+            If _body(i).Mode = BodyMode.Sleeping Then Return
         End If
         ' Zeno guard on a slope: never leave a support slower than restSpeed, so a body sliding
         ' down a curved support hops down it in finitely many events instead of infinitely many.
         If vn < restSpeed Then
-            _vx(i) += n.X * (restSpeed - vn)
-            _vy(i) += n.Y * (restSpeed - vn)
+            _body(i).Vx += n.X * (restSpeed - vn)
+            _body(i).Vy += n.Y * (restSpeed - vn)
         End If
     End Sub
 
@@ -267,9 +267,9 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Private Sub SleepIfSettled(i As Integer)
         If _g = 0 Then Return
-        Dim speed2 = _vx(i) * _vx(i) + _vy(i) * _vy(i)
-        Dim scale2 = _g * _r(i)
-        Dim window = 0.1 * Math.Sqrt(_r(i) / _g)
+        Dim speed2 = _body(i).Vx * _body(i).Vx + _body(i).Vy * _body(i).Vy
+        Dim scale2 = _g * _body(i).R
+        Dim window = 0.1 * Math.Sqrt(_body(i).R / _g)
         If _now - _burstStart(i) > window Then
             _burstStart(i) = _now
             _burstCount(i) = 0
@@ -291,32 +291,32 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim flight = If(_e < 1, 2 * vn / (_g * (1 - _e)), 0.0)
         Dim known As Double
         If Not (vn = 0 AndAlso _restTimes.TryGetValue(c, known)) Then _restTimes(c) = _now + flight
-        _vy(i) = 0
-        _ay(i) = 0
+        _body(i).Vy = 0
+        _body(i).Ay = 0
         _support(i) = support
-        _mode(i) = BodyMode.Resting
+        _body(i).Mode = BodyMode.Resting
         ' Slow enough along a level support: asleep (a pile's floor layer must settle to hold the rest).
-        If Math.Abs(_vx(i)) < 0.05 * Math.Sqrt(_g * _r(i)) AndAlso support <> SupportNone Then Sleep(i)
+        If Math.Abs(_body(i).Vx) < 0.05 * Math.Sqrt(_g * _body(i).R) AndAlso support <> SupportNone Then Sleep(i)
     End Sub
 
     Private Sub Sleep(i As Integer)
-        _vx(i) = 0
-        _vy(i) = 0
-        _ay(i) = 0
-        _mode(i) = BodyMode.Sleeping
+        _body(i).Vx = 0
+        _body(i).Vy = 0
+        _body(i).Ay = 0
+        _body(i).Mode = BodyMode.Sleeping
     End Sub
 
     ''' <summary>A resting or sleeping body that was moved by a hit flies again, and so does what rests on it.</summary>
     Private Sub WakeFrom(i As Integer)
-        Dim m = _mode(i)
+        Dim m = _body(i).Mode
         If m <> BodyMode.Sleeping AndAlso m <> BodyMode.Resting Then Return
         MakeFree(i)
         WakeAbove(i)
     End Sub
 
     Private Sub MakeFree(i As Integer)
-        _mode(i) = BodyMode.Free
-        _ay(i) = -_g
+        _body(i).Mode = BodyMode.Free
+        _body(i).Ay = -_g
         _support(i) = SupportNone
         _restTimes.Remove(_circle(i))
     End Sub
@@ -333,11 +333,11 @@ Partial Public NotInheritable Class EventDrivenSolver
             Dim count = Neighbours(k)
             For q = 0 To count - 1
                 Dim j = _stack(q)
-                Dim mj = _mode(j)
+                Dim mj = _body(j).Mode
                 If mj <> BodyMode.Sleeping AndAlso mj <> BodyMode.Resting Then Continue For
-                Dim dx = _px(j) - kx, dy = _py(j) - ky
+                Dim dx = _body(j).Px - kx, dy = _body(j).Py - ky
                 If dy <= 0 Then Continue For
-                Dim reach = _r(j) + _r(k) + 1.0E-3 * Math.Min(_r(j), _r(k))
+                Dim reach = _body(j).R + _body(k).R + 1.0E-3 * Math.Min(_body(j).R, _body(k).R)
                 If dx * dx + dy * dy > reach * reach Then Continue For
                 Sync(j)
                 MakeFree(j)
@@ -352,12 +352,12 @@ Partial Public NotInheritable Class EventDrivenSolver
     End Sub
 
     Private Function PositionX(k As Integer) As Double
-        Return _px(k) + _vx(k) * (_now - _t0(k))
+        Return _body(k).Px + _body(k).Vx * (_now - _body(k).T0)
     End Function
 
     Private Function PositionY(k As Integer) As Double
-        Dim tau = _now - _t0(k)
-        Return _py(k) + (_vy(k) + 0.5 * _ay(k) * tau) * tau
+        Dim tau = _now - _body(k).T0
+        Return _body(k).Py + (_body(k).Vy + 0.5 * _body(k).Ay * tau) * tau
     End Function
 
     ''' <summary>
@@ -367,7 +367,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' whether asleep or not (a settling pile freezes as a whole); only nearby cells are searched.
     ''' </summary>
     Private Function IsHeld(i As Integer) As Boolean
-        Dim px = PositionX(i), py = PositionY(i), r = _r(i)
+        Dim px = PositionX(i), py = PositionY(i), r = _body(i).R
         Dim gap = 1.0E-3 * r + _slop
         _nNormals = 0
         If _walls Then
@@ -388,8 +388,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim count = Neighbours(i)
         For q = 0 To count - 1
             Dim j = _stack(q)
-            If _mode(j) = BodyMode.Sliding OrElse _mode(j) = BodyMode.Dragged Then Continue For
-            Dim c = Collider.CircleCircle(p, r, New Vector(PositionX(j), PositionY(j)), _r(j))
+            If _body(j).Mode = BodyMode.Sliding OrElse _body(j).Mode = BodyMode.Dragged Then Continue For
+            Dim c = Collider.CircleCircle(p, r, New Vector(PositionX(j), PositionY(j)), _body(j).R)
             If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
         Next
         ' Up = (0, 1) lies between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.
@@ -443,20 +443,20 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Private Sub LeaveEdge(i As Integer, k As Integer)
         Sync(i)
-        Dim vx = _vx(i)
+        Dim vx = _body(i).Vx
         Dim edge = If(vx > 0, _rx1(k), _rx0(k))
-        _px(i) = edge
-        _py(i) = _ry1(k) + _r(i)
+        _body(i).Px = edge
+        _body(i).Py = _ry1(k) + _body(i).R
         MakeFree(i)
         _count(i) += 1
-        If vx * vx < _g * _r(i) Then
-            _mode(i) = BodyMode.Sliding
-            _ay(i) = 0
+        If vx * vx < _g * _body(i).R Then
+            _body(i).Mode = BodyMode.Sliding
+            _body(i).Ay = 0
             _slideCx(i) = edge
             _slideCy(i) = _ry1(k)
             _slideDir(i) = Math.Sign(vx)
             _slideV0(i) = Math.Abs(vx)
-            _slideAngle(i) = CornerSlide.LeaveAngle(Math.Abs(vx), _g, _r(i), 0)
+            _slideAngle(i) = CornerSlide.LeaveAngle(Math.Abs(vx), _g, _body(i).R, 0)
             _slideStart(i) = _now
         End If
         Reschedule(i)
@@ -468,14 +468,14 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' over (it hops round the rest of the corner).
     ''' </summary>
     Private Sub Materialize(i As Integer)
-        Dim v0 = _slideV0(i), r = _r(i), s = _slideDir(i)
+        Dim v0 = _slideV0(i), r = _body(i).R, s = _slideDir(i)
         Dim theta = CornerSlide.AngleAfter(v0, _g, r, 0, _slideAngle(i), _now - _slideStart(i))
         Dim speed = CornerSlide.SpeedAt(v0, _g, r, 0, theta)
-        _px(i) = _slideCx(i) + s * r * Math.Sin(theta)
-        _py(i) = _slideCy(i) + r * Math.Cos(theta)
-        _vx(i) = s * speed * Math.Cos(theta)
-        _vy(i) = -speed * Math.Sin(theta)
-        _t0(i) = _now
+        _body(i).Px = _slideCx(i) + s * r * Math.Sin(theta)
+        _body(i).Py = _slideCy(i) + r * Math.Cos(theta)
+        _body(i).Vx = s * speed * Math.Cos(theta)
+        _body(i).Vy = -speed * Math.Sin(theta)
+        _body(i).T0 = _now
         MakeFree(i)
         _count(i) += 1
         MoveToCellOfPosition(i)
@@ -483,7 +483,7 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     Private Sub MoveToCellOfPosition(i As Integer)
         If _cell(i) < 0 Then Return
-        Dim cell = _grid.CellOf(_px(i), _py(i))
+        Dim cell = _grid.CellOf(_body(i).Px, _body(i).Py)
         If cell <> _cell(i) Then
             _grid.Remove(i, _cell(i))
             _grid.Insert(i, cell)
@@ -494,15 +494,15 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private Sub EndSlide(i As Integer)
         Dim theta = _slideAngle(i)
         Dim s = _slideDir(i)
-        Dim speed = CornerSlide.SpeedAt(_slideV0(i), _g, _r(i), 0, theta)
+        Dim speed = CornerSlide.SpeedAt(_slideV0(i), _g, _body(i).R, 0, theta)
         ' It leaves tangentially, touching the corner with zero normal speed; start it a hair (far
         ' below any physical scale) outside, so rounding cannot turn the tangent into a collision.
-        Dim arc = _r(i) + 10 * _slop + 1.0E-9 * _r(i)
-        _px(i) = _slideCx(i) + s * arc * Math.Sin(theta)
-        _py(i) = _slideCy(i) + arc * Math.Cos(theta)
-        _vx(i) = s * speed * Math.Cos(theta)
-        _vy(i) = -speed * Math.Sin(theta)
-        _t0(i) = _now
+        Dim arc = _body(i).R + 10 * _slop + 1.0E-9 * _body(i).R
+        _body(i).Px = _slideCx(i) + s * arc * Math.Sin(theta)
+        _body(i).Py = _slideCy(i) + arc * Math.Cos(theta)
+        _body(i).Vx = s * speed * Math.Cos(theta)
+        _body(i).Vy = -speed * Math.Sin(theta)
+        _body(i).T0 = _now
         MakeFree(i)
         _count(i) += 1
         MoveToCellOfPosition(i)
@@ -516,11 +516,11 @@ Partial Public NotInheritable Class EventDrivenSolver
         If c Is Nothing OrElse Not _index.TryGetValue(c, i) Then Return
         Sync(i)
         Dim target = _world.DragTarget
-        _mode(i) = BodyMode.Dragged
-        _ay(i) = 0
+        _body(i).Mode = BodyMode.Dragged
+        _body(i).Ay = 0
         _invMass(i) = 0
-        _vx(i) = (target.X - _px(i)) / duration
-        _vy(i) = (target.Y - _py(i)) / duration
+        _body(i).Vx = (target.X - _body(i).Px) / duration
+        _body(i).Vy = (target.Y - _body(i).Py) / duration
         _count(i) += 1
         Reschedule(i)
     End Sub
@@ -530,18 +530,18 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim dragged = _world.DraggedCircle
         For i = 0 To _n - 1
             Dim c = _circle(i)
-            If _mode(i) = BodyMode.Sliding Then
-                Dim v0 = _slideV0(i), r = _r(i), s = _slideDir(i)
+            If _body(i).Mode = BodyMode.Sliding Then
+                Dim v0 = _slideV0(i), r = _body(i).R, s = _slideDir(i)
                 Dim theta = CornerSlide.AngleAfter(v0, _g, r, 0, _slideAngle(i), t - _slideStart(i))
                 Dim speed = CornerSlide.SpeedAt(v0, _g, r, 0, theta)
                 c.Position = New Vector(_slideCx(i) + s * r * Math.Sin(theta), _slideCy(i) + r * Math.Cos(theta))
                 c.Velocity = New Vector(s * speed * Math.Cos(theta), -speed * Math.Sin(theta))
                 Continue For
             End If
-            Dim tau = t - _t0(i)
-            Dim ay = _ay(i)
-            c.Position = New Vector(_px(i) + _vx(i) * tau, _py(i) + (_vy(i) + 0.5 * ay * tau) * tau)
-            c.Velocity = New Vector(_vx(i), _vy(i) + ay * tau)
+            Dim tau = t - _body(i).T0
+            Dim ay = _body(i).Ay
+            c.Position = New Vector(_body(i).Px + _body(i).Vx * tau, _body(i).Py + (_body(i).Vy + 0.5 * ay * tau) * tau)
+            c.Velocity = New Vector(_body(i).Vx, _body(i).Vy + ay * tau)
             If c Is dragged Then c.Position = _world.DragTarget
         Next
     End Sub

@@ -10,10 +10,10 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim kind = EventKind.None
         Dim other = -1
         Dim feature = 0
-        Dim m = _mode(i)
+        Dim m = _body(i).Mode
         If m = BodyMode.Sliding Then
             ' Its slide ends, or a neighbour reaches the disc the sliding ball sweeps round the corner.
-            best = Math.Max(0, CornerSlide.Duration(_slideV0(i), _g, _r(i), 0, _slideAngle(i)) - (_now - _slideStart(i)))
+            best = Math.Max(0, CornerSlide.Duration(_slideV0(i), _g, _body(i).R, 0, _slideAngle(i)) - (_now - _slideStart(i)))
             kind = EventKind.SlideEnd
             Dim count = Neighbours(i)
             For q = 0 To count - 1
@@ -24,13 +24,13 @@ Partial Public NotInheritable Class EventDrivenSolver
             FileEvent(i, best, kind, other, 0, Double.PositiveInfinity, 0)
             Return
         End If
-        Dim tau = _now - _t0(i)
-        Dim ay = _ay(i)
-        Dim px = _px(i) + _vx(i) * tau
-        Dim py = _py(i) + (_vy(i) + 0.5 * ay * tau) * tau
-        Dim vx = _vx(i)
-        Dim vy = _vy(i) + ay * tau
-        Dim r = _r(i)
+        Dim tau = _now - _body(i).T0
+        Dim ay = _body(i).Ay
+        Dim px = _body(i).Px + _body(i).Vx * tau
+        Dim py = _body(i).Py + (_body(i).Vy + 0.5 * ay * tau) * tau
+        Dim vx = _body(i).Vx
+        Dim vy = _body(i).Vy + ay * tau
+        Dim r = _body(i).R
         Dim slop = _slop
         Dim t As Double
         Dim moving = m = BodyMode.Free OrElse m = BodyMode.Resting
@@ -110,14 +110,14 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim best = _colTime(i) - _now
         Dim other = _evOther(i)
         Dim feature = _evFeature(i)
-        Dim m = _mode(i)
-        Dim tau = _now - _t0(i)
-        Dim ay = _ay(i)
-        Dim px = _px(i) + _vx(i) * tau
-        Dim py = _py(i) + (_vy(i) + 0.5 * ay * tau) * tau
-        Dim vx = _vx(i)
-        Dim vy = _vy(i) + ay * tau
-        Dim r = _r(i)
+        Dim m = _body(i).Mode
+        Dim tau = _now - _body(i).T0
+        Dim ay = _body(i).Ay
+        Dim px = _body(i).Px + _body(i).Vx * tau
+        Dim py = _body(i).Py + (_body(i).Vy + 0.5 * ay * tau) * tau
+        Dim vx = _body(i).Vx
+        Dim vy = _body(i).Vy + ay * tau
+        Dim r = _body(i).R
         If m = BodyMode.Free OrElse m = BodyMode.Resting Then
             For s = _grid.StaticStart(target) To _grid.StaticStart(target + 1) - 1
                 CheckStatic(_grid.StaticItems(s), px, py, vx, vy, ay, r, best, kind, other, feature)
@@ -142,7 +142,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim nx = _grid.Nx
         Dim head = _grid.Head
         Dim nextInCell = _grid.NextInCell
-        Dim pxs = _px, pys = _py, vxs = _vx, vys = _vy, ays = _ay, t0s = _t0, radii = _r, modes = _mode
+        Dim bodies = _body
         Dim now = _now
         Dim slop = _slop
         For rr = Math.Max(0, row0) To Math.Min(_grid.Ny - 1, row1)
@@ -150,24 +150,28 @@ Partial Public NotInheritable Class EventDrivenSolver
                 Dim j = head(rr * nx + cc)
                 While j >= 0
                     If j <> i Then
-                        If ays(j) = ay AndAlso modes(j) = BodyMode.Free AndAlso Not asleep Then
+                        If bodies(j).Ay = ay AndAlso bodies(j).Mode = BodyMode.Free AndAlso Not asleep Then
                             ' Hot path (the elastic gas): same gravity, so the relative motion is a
                             ' straight line and the contact time is the smaller root of a quadratic.
-                            Dim tj = now - t0s(j)
-                            Dim dx = px - (pxs(j) + vxs(j) * tj)
-                            Dim dy = py - (pys(j) + (vys(j) + 0.5 * ay * tj) * tj)
-                            Dim dvx = vx - vxs(j)
-                            Dim dvy = vy - (vys(j) + ay * tj)
+                            Dim tj = now - bodies(j).T0
+                            Dim dx = px - (bodies(j).Px + bodies(j).Vx * tj)
+                            Dim dy = py - (bodies(j).Py + (bodies(j).Vy + 0.5 * ay * tj) * tj)
+                            Dim dvx = vx - bodies(j).Vx
+                            Dim dvy = vy - (bodies(j).Vy + ay * tj)
                             Dim b = dx * dvx + dy * dvy
                             If b < 0 Then
-                                Dim sumR = r + radii(j)
+                                Dim sumR = r + bodies(j).R
                                 Dim c = dx * dx + dy * dy - sumR * sumR
                                 Dim t As Double
                                 If c <= 2 * sumR * slop Then
                                     ' Touching: a collision now only if really approaching (not rounding after e = 0).
                                     ' The tolerance scales with the bodies' own speeds, which is what rounding errs by.
-                                    Dim speeds = Math.Sqrt(dvx * dvx + dvy * dvy) + Math.Abs(vx) + Math.Abs(vy) + Math.Abs(vxs(j)) + Math.Abs(vys(j) + ay * tj)
+                                    Dim speeds = Math.Sqrt(dvx * dvx + dvy * dvy) + Math.Abs(vx) + Math.Abs(vy) + Math.Abs(bodies(j).Vx) + Math.Abs(bodies(j).Vy + ay * tj)
                                     t = If(b < -TimeOfImpact.ApproachFraction * sumR * speeds, 0, Double.PositiveInfinity)
+                                ElseIf c / (-2 * b) >= best Then
+                                    ' The root c / (−b + √disc) is never earlier than c / (−2b), as √disc ≤ −b
+                                    ' (also in floating point): this pair cannot beat the best, skip the square root.
+                                    t = Double.PositiveInfinity
                                 Else
                                     Dim a = dvx * dvx + dvy * dvy
                                     Dim disc = b * b - a * c
@@ -219,7 +223,7 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     Private Sub CheckPair(i As Integer, j As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
                           ay As Double, r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim mj = _mode(j)
+        Dim mj = _body(j).Mode
         If mj = BodyMode.Sliding Then
             Dim ts = SweptDiscContact(j, i)
             If ts < best Then
@@ -230,13 +234,13 @@ Partial Public NotInheritable Class EventDrivenSolver
             Return
         End If
         If asleep AndAlso mj = BodyMode.Sleeping Then Return
-        Dim tj = _now - _t0(j)
-        Dim ayj = _ay(j)
-        Dim dx = px - (_px(j) + _vx(j) * tj)
-        Dim dy = py - (_py(j) + (_vy(j) + 0.5 * ayj * tj) * tj)
-        Dim vyj = _vy(j) + ayj * tj
-        Dim t = TimeOfImpact.CircleCircle(dx, dy, vx - _vx(j), vy - vyj, ay - ayj, r + _r(j), _slop,
-                                          Math.Abs(vx) + Math.Abs(vy) + Math.Abs(_vx(j)) + Math.Abs(vyj))
+        Dim tj = _now - _body(j).T0
+        Dim ayj = _body(j).Ay
+        Dim dx = px - (_body(j).Px + _body(j).Vx * tj)
+        Dim dy = py - (_body(j).Py + (_body(j).Vy + 0.5 * ayj * tj) * tj)
+        Dim vyj = _body(j).Vy + ayj * tj
+        Dim t = TimeOfImpact.CircleCircle(dx, dy, vx - _body(j).Vx, vy - vyj, ay - ayj, r + _body(j).R, _slop,
+                                          Math.Abs(vx) + Math.Abs(vy) + Math.Abs(_body(j).Vx) + Math.Abs(vyj))
         If t < best Then
             best = t
             kind = EventKind.Circle
@@ -250,13 +254,13 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' that disc ends the exact slide early (see <c>Materialize</c>); +∞ if k never gets there.
     ''' </summary>
     Private Function SweptDiscContact(j As Integer, k As Integer) As Double
-        Dim mk = _mode(k)
+        Dim mk = _body(k).Mode
         If mk = BodyMode.Sliding OrElse mk = BodyMode.Sleeping Then Return Double.PositiveInfinity
-        Dim tk = _now - _t0(k)
-        Dim ayk = _ay(k)
-        Dim dx = _px(k) + _vx(k) * tk - _slideCx(j)
-        Dim dy = _py(k) + (_vy(k) + 0.5 * ayk * tk) * tk - _slideCy(j)
-        Return TimeOfImpact.CircleCircle(dx, dy, _vx(k), _vy(k) + ayk * tk, ayk, _r(k) + 2 * _r(j), _slop)
+        Dim tk = _now - _body(k).T0
+        Dim ayk = _body(k).Ay
+        Dim dx = _body(k).Px + _body(k).Vx * tk - _slideCx(j)
+        Dim dy = _body(k).Py + (_body(k).Vy + 0.5 * ayk * tk) * tk - _slideCy(j)
+        Return TimeOfImpact.CircleCircle(dx, dy, _body(k).Vx, _body(k).Vy + ayk * tk, ayk, _body(k).R + 2 * _body(j).R, _slop)
     End Function
 
     ''' <summary>

@@ -84,7 +84,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             _burstCount(i) = 0
             _sameTime(i) = Double.NaN
             _sameCount(i) = 0
-            If _restTimes.ContainsKey(c) AndAlso _mode(i) = BodyMode.Free AndAlso c.Velocity.Y = 0 Then stillResting.Add(c)
+            If _restTimes.ContainsKey(c) AndAlso _body(i).Mode = BodyMode.Free AndAlso c.Velocity.Y = 0 Then stillResting.Add(c)
             i += 1
         Next
         ' A rest time survives a rebuild only while the circle still sits still vertically.
@@ -99,35 +99,28 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     ''' <summary>Reads circle c into slot i at the solver's clock, as a free body (or the dragged one).</summary>
     Private Sub LoadBody(i As Integer, c As Circle)
-        _t0(i) = _now
-        _px(i) = c.Position.X
-        _py(i) = c.Position.Y
-        _vx(i) = c.Velocity.X
-        _vy(i) = c.Velocity.Y
-        _r(i) = c.Radius
+        _body(i).T0 = _now
+        _body(i).Px = c.Position.X
+        _body(i).Py = c.Position.Y
+        _body(i).Vx = c.Velocity.X
+        _body(i).Vy = c.Velocity.Y
+        _body(i).R = c.Radius
         _support(i) = SupportNone
         If c Is _world.DraggedCircle Then
-            _mode(i) = BodyMode.Dragged
-            _ay(i) = 0
+            _body(i).Mode = BodyMode.Dragged
+            _body(i).Ay = 0
             _invMass(i) = 0
         Else
-            _mode(i) = BodyMode.Free
-            _ay(i) = -_g
+            _body(i).Mode = BodyMode.Free
+            _body(i).Ay = -_g
             _invMass(i) = c.InverseMass
         End If
     End Sub
 
     Private Sub Allocate(capacity As Integer)
         ReDim _circle(capacity - 1)
-        ReDim _t0(capacity - 1)
-        ReDim _px(capacity - 1)
-        ReDim _py(capacity - 1)
-        ReDim _vx(capacity - 1)
-        ReDim _vy(capacity - 1)
-        ReDim _ay(capacity - 1)
-        ReDim _r(capacity - 1)
+        ReDim _body(capacity - 1)
         ReDim _invMass(capacity - 1)
-        ReDim _mode(capacity - 1)
         ReDim _count(capacity - 1)
         ReDim _cell(capacity - 1)
         ReDim _support(capacity - 1)
@@ -164,28 +157,30 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim limit = Double.PositiveInfinity
         If _n > 0 Then
             Dim radii = New Double(_n - 1) {}
-            Array.Copy(_r, radii, _n)
+            For k = 0 To _n - 1
+                radii(k) = _body(k).R
+            Next
             Array.Sort(radii)
             limit = 4 * radii(_n \ 2)
         End If
         Dim rMax = 0.0
         _nOversized = 0
         For i = 0 To _n - 1
-            If _r(i) > limit Then
+            If _body(i).R > limit Then
                 _oversized(_nOversized) = i
                 _nOversized += 1
             Else
-                rMax = Math.Max(rMax, _r(i))
+                rMax = Math.Max(rMax, _body(i).R)
             End If
         Next
         Dim gridded = Math.Max(1, _n - _nOversized)
         Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(1.2 * _width * _height / gridded))
         _grid.Layout(_width, _height, cell, _n, 4 * _n + 64)
         For i = 0 To _n - 1
-            If _r(i) > limit Then
+            If _body(i).R > limit Then
                 _cell(i) = -1
             Else
-                _cell(i) = _grid.CellOf(_px(i), _py(i))
+                _cell(i) = _grid.CellOf(_body(i).Px, _body(i).Py)
                 _grid.Insert(i, _cell(i))
             End If
         Next

@@ -11,19 +11,12 @@ Option Strict On
 Partial Public NotInheritable Class EventDrivenSolver
     Implements ISolver
 
-    ' Per movable circle (struct of arrays). Body i is at _px/_py with velocity _vx/_vy and vertical
-    ' acceleration _ay at time _t0; its position at t is p + v (t − t0) + ½ a (t − t0)².
+    ' Per movable circle. The motion (what every prediction reads) is packed in one struct per body,
+    ' one cache line, see BodyState; the rest is kept in parallel arrays.
     Private _n As Integer
     Private _circle As Circle() = Array.Empty(Of Circle)()
-    Private _t0 As Double() = Array.Empty(Of Double)()
-    Private _px As Double() = Array.Empty(Of Double)()
-    Private _py As Double() = Array.Empty(Of Double)()
-    Private _vx As Double() = Array.Empty(Of Double)()
-    Private _vy As Double() = Array.Empty(Of Double)()
-    Private _ay As Double() = Array.Empty(Of Double)()
-    Private _r As Double() = Array.Empty(Of Double)()
+    Private _body As BodyState() = Array.Empty(Of BodyState)()
     Private _invMass As Double() = Array.Empty(Of Double)()
-    Private _mode As BodyMode() = Array.Empty(Of BodyMode)()
     ''' <summary>Bumped whenever a body's motion changes; events remember it to detect staleness.</summary>
     Private _count As Integer() = Array.Empty(Of Integer)()
     ''' <summary>Cell in the grid, or −1 for an oversized circle.</summary>
@@ -153,7 +146,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     Public Function IsAsleep(circle As Circle) As Boolean
         If circle Is Nothing OrElse _dirty Then Return False
         Dim i As Integer
-        Return _index.TryGetValue(circle, i) AndAlso _mode(i) = BodyMode.Sleeping
+        Return _index.TryGetValue(circle, i) AndAlso _body(i).Mode = BodyMode.Sleeping
     End Function
 
     ''' <summary>
@@ -207,7 +200,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         _restTimes.Remove(c)
         LoadBody(i, c)
         _count(i) += 1
-        Dim cell = If(_cell(i) >= 0, _grid.CellOf(_px(i), _py(i)), -1)
+        Dim cell = If(_cell(i) >= 0, _grid.CellOf(_body(i).Px, _body(i).Py), -1)
         If cell <> _cell(i) Then
             _grid.Remove(i, _cell(i))
             _grid.Insert(i, cell)

@@ -1,5 +1,7 @@
 Option Strict On
 
+Imports System.Runtime.CompilerServices
+
 ''' <summary>
 ''' Times of impact as pure functions: values in, the time (s, from now) of the first contact out,
 ''' +∞ when there is none. Every body moves on x(t) = x + vx t, y(t) = y + vy t + ½ ay t² (ay = −g for
@@ -51,7 +53,11 @@ Public Module TimeOfImpact
     ''' A gap that changes as gap + rate t + ½ accel t² (a wall, a cell boundary, a rectangle face):
     ''' the first time it closes while closing.
     ''' </summary>
+    <MethodImpl(MethodImplOptions.AggressiveInlining)>
     Public Function GapCloses(gap As Double, rate As Double, accel As Double, slop As Double) As Double
+        ' Fast path for the common case (no gravity, clearly apart): the same answer the general
+        ' routine gives for a = 0 and c > tolerance, without the call. Walls and cell exits of the gas.
+        If accel = 0 AndAlso gap > slop Then Return If(rate >= 0, Double.PositiveInfinity, -gap / rate)
         Return RootFinding.EarliestEntryQuadratic(0.5 * accel, rate, gap, slop)
     End Function
 
