@@ -58,8 +58,8 @@ Partial Public NotInheritable Class SimulationPresenter
             ShowMessage(InputLimits.CircleMessage & " " & Problems(r, m))
             Return
         End If
-        Inputs.RadiusText = Units.Num(r.Value, 3).TrimEnd("0"c).TrimEnd("."c)
-        If Not isFixed Then Inputs.MassText = Units.Num(m.Value, 3).TrimEnd("0"c).TrimEnd("."c)
+        Inputs.RadiusText = Units.Input(r.Value)
+        If Not isFixed Then Inputs.MassText = Units.Input(m.Value)
         _Draft = BodyDraft.ForCircle(r.Value, m.Value, isFixed, _colours.NextColour())
         EndGestures()
         _Mode = ClickMode.Move
@@ -81,8 +81,8 @@ Partial Public NotInheritable Class SimulationPresenter
             ShowMessage(InputLimits.RectangleMessage & " " & Problems(w, h))
             Return
         End If
-        Inputs.WidthText = Units.Num(w.Value, 3).TrimEnd("0"c).TrimEnd("."c)
-        Inputs.HeightText = Units.Num(h.Value, 3).TrimEnd("0"c).TrimEnd("."c)
+        Inputs.WidthText = Units.Input(w.Value)
+        Inputs.HeightText = Units.Input(h.Value)
         _Draft = BodyDraft.ForRectangle(w.Value, h.Value, _colours.NextColour())
         EndGestures()
         _Mode = ClickMode.Move
@@ -177,8 +177,14 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Sub Place(p As Vector)
         Dim body = Draft.Build(p)
+        Try
+            World.Add(body)
+        Catch ex As ArgumentException
+            ' For example a ball wider than the container: say so, and keep it on the cursor (Esc cancels).
+            ShowMessage("It cannot go there: " & ex.Message & ".")
+            Return
+        End Try
         _Draft = Nothing
-        World.Add(body)
         Emit("placed " & If(TypeOf body Is Circle, "circle", "rectangle") & " " & body.Id & " at " & Units.Pair(Centre(body), 3))
         ShowMessage("")
         _window.ShowBodies()

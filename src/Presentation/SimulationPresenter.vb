@@ -96,6 +96,9 @@ Partial Public NotInheritable Class SimulationPresenter
             Fail("The simulation stopped: " & ex.Message)
         Catch ex As InvalidOperationException
             Fail("The simulation stopped: " & ex.Message)
+        Catch ex As ArithmeticException
+            ' Overflow or a non-finite number from an extreme scene: pause with a message, never crash.
+            Fail("The simulation stopped: " & ex.Message)
         End Try
         Log.EndFrame()
     End Sub
@@ -201,7 +204,13 @@ Partial Public NotInheritable Class SimulationPresenter
             ShowMessage(InputLimits.ContainerMessage & " Each side must be at least " & Units.Num(InputLimits.MinContainer) & " m.")
             Return
         End If
-        World.Resize(w.Value, h.Value)
+        Try
+            World.Resize(w.Value, h.Value)
+        Catch ex As ArgumentException
+            ' Smaller than the largest ball: the container keeps its size.
+            ShowMessage(InputLimits.ContainerMessage & " " & ex.Message & ".")
+            Return
+        End Try
         FitView()
         Inputs.ContainerWidthText = Units.Num(w.Value)
         Inputs.ContainerHeightText = Units.Num(h.Value)

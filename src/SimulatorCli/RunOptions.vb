@@ -83,6 +83,13 @@ Friend NotInheritable Class RunOptions
            String.Equals(Path.GetFullPath(o.StatesPath), Path.GetFullPath(o.EventsPath), StringComparison.Ordinal) Then
             Throw New BadInputException("--events: '" & o.EventsPath & "' is also the --states file")
         End If
+        ' An output on top of the scene would destroy the input.
+        For Each output In {("--states", o.StatesPath), ("--events", o.EventsPath)}
+            If output.Item2 IsNot Nothing AndAlso
+               String.Equals(Path.GetFullPath(output.Item2), Path.GetFullPath(o.ScenePath), StringComparison.Ordinal) Then
+                Throw New BadInputException(output.Item1 & ": '" & output.Item2 & "' is the scene file itself")
+            End If
+        Next
         Return o
     End Function
 

@@ -97,6 +97,19 @@ Public Class CliBadInputTests
         End Using
     End Sub
 
+    <Theory>
+    <InlineData("--states")>
+    <InlineData("--events")>
+    Public Sub AnOutputOnTopOfTheScene_IsBadInput_AndTheSceneSurvives(optionName As String)
+        Using t As New TempFolder()
+            Dim scenePath = t.Write("scene.json", HeadOn)
+            Dim r = RunCli("run", scenePath, "--time", "1", optionName, scenePath)
+            Assert.True(r.ExitCode = 2, r.ToString())
+            Assert.Equal(optionName & ": '" & scenePath & "' is the scene file itself", r.StdErr.TrimEnd())
+            Assert.Equal(HeadOn, File.ReadAllText(scenePath))
+        End Using
+    End Sub
+
     <Fact>
     Public Sub BadInput_LeavesAnExistingOutputFileUntouched()
         Using t As New TempFolder()

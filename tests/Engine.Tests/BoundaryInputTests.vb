@@ -54,3 +54,25 @@ Public Class BoundaryInputTests
         Assert.Single(w.Bodies)
     End Sub
 End Class
+
+''' <summary>The event solver with nothing, or only one thing, to move.</summary>
+Public Class EventSolverEmptyWorldTests
+    <Theory>
+    <InlineData(0)>
+    <InlineData(1)>
+    <InlineData(2)>
+    Public Sub AWorldWithFewMovableCircles_Advances(count As Integer)
+        Dim w As New World(4, 4, 9.81, 0.9)
+        w.Add(New Rectangle(New Vector(1, 0), 1, 1))
+        w.Add(Circle.CreateFixed(New Vector(3, 1), 0.2))
+        For i = 1 To count
+            w.Add(New Circle(New Vector(i, 3), 0.1, 1.0))
+        Next
+        w.Solver = SolverFactory.Create("event")
+        w.Advance(0.5)
+        w.Resize(3.5, 3.5)
+        w.Advance(0.5)
+        Assert.Equal(1.0, w.Time, 12)
+        Assert.Equal(count, w.Circles.Count - 1)
+    End Sub
+End Class

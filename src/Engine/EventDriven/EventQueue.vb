@@ -31,6 +31,9 @@ Friend NotInheritable Class EventQueue
             _heap(i).Body = i
             _pos(i) = i
         Next
+        ' The last parent is (n − 2) \ 4; with fewer than two entries there is none (and VB's \
+        ' truncates −2 \ 4 to 0, which would touch an empty heap).
+        If n < 2 Then Return
         For k = (n - 2) \ 4 To 0 Step -1
             SiftDown(k, _heap(k))
         Next

@@ -196,3 +196,42 @@ Public Class AddAndDeleteTests
         Assert.Equal(2.0, ball.Position.X, 9)
     End Sub
 End Class
+
+''' <summary>Sizes at the edges: small values read back as typed, too-large balls and too-small containers refused with a message.</summary>
+Public Class SizeEdgeTests
+    <Fact>
+    Public Sub ASmallAcceptedRadius_IsShownBackAsTyped_NotAsZero()
+        Dim h As New PresenterHarness()
+        h.P.BeginAddCircle("0.0004", "0.0004", False)
+        Assert.NotNull(h.P.Draft)
+        Assert.Equal("0.0004", h.P.Inputs.RadiusText)
+        Assert.Equal("0.0004", h.P.Inputs.MassText)
+    End Sub
+
+    <Fact>
+    Public Sub ABallWiderThanTheContainer_IsNotPlaced_AndTheTeacherIsTold()
+        Dim h As New PresenterHarness()
+        h.P.ResizeContainer("3", "3")
+        h.P.BeginAddCircle("2", "1", False)
+        Dim before = h.P.World.Circles.Count
+        h.LeftClick(1.5, 1.5)
+        Assert.Equal(before, h.P.World.Circles.Count)
+        Assert.Contains("does not fit", h.View.LastMessage)
+        For i = 1 To 20
+            h.P.Tick(0.05)
+        Next
+        For Each c In h.P.World.Circles
+            If Not c.IsFixed Then Assert.InRange(c.Position.Y, c.Radius - 1.0E-9, h.P.World.Height - c.Radius + 1.0E-9)
+        Next
+    End Sub
+
+    <Fact>
+    Public Sub AContainerSmallerThanTheLargestBall_IsRefused_AndKeepsItsSize()
+        Dim h As New PresenterHarness()
+        h.P.BeginAddCircle("1", "1", False)
+        h.LeftClick(2, 2)
+        h.P.ResizeContainer("1.5", "1.5")
+        Assert.Equal(8.0, h.P.World.Width)
+        Assert.Contains("does not fit", h.View.LastMessage)
+    End Sub
+End Class
