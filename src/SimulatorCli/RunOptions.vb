@@ -6,6 +6,8 @@ Imports System.IO
 Friend NotInheritable Class RunOptions
     ''' <summary>Default sampling interval of the states CSV, s.</summary>
     Friend Const DefaultSample As Double = 0.1
+    ''' <summary>The most sample times a run may ask for (T / S).</summary>
+    Friend Const MaxSamples As Double = 10000000.0
 
     Private Const Known As String = "--time, --solver, --dt, --sample, --states, --events, --json"
 
@@ -82,6 +84,11 @@ Friend NotInheritable Class RunOptions
         If o.StatesPath IsNot Nothing AndAlso o.EventsPath IsNot Nothing AndAlso
            String.Equals(Path.GetFullPath(o.StatesPath), Path.GetFullPath(o.EventsPath), StringComparison.Ordinal) Then
             Throw New BadInputException("--events: '" & o.EventsPath & "' is also the --states file")
+        End If
+        ' Every sample time is a stop of the simulation loop; a count no spreadsheet could open is a typo.
+        If o.Time / o.Sample > MaxSamples Then
+            Throw New BadInputException("--sample: " & o.Sample.ToString("R", CultureInfo.InvariantCulture) & " s would take more than " &
+                                        MaxSamples.ToString("N0", CultureInfo.InvariantCulture) & " samples over --time " & o.Time.ToString("R", CultureInfo.InvariantCulture) & " s")
         End If
         ' An output on top of the scene would destroy the input.
         For Each output In {("--states", o.StatesPath), ("--events", o.EventsPath)}

@@ -34,6 +34,7 @@ Public Class CliBadInputTests
     <InlineData("run: unexpected argument 'extra.json'", Scene, "extra.json", "--time", "1", "--states", States, "--events", Events)>
     <InlineData("--json: takes no value", Scene, "--time", "1", "--json=yes", "--states", States, "--events", Events)>
     <InlineData("--events: '", Scene, "--time", "1", "--states", States, "--events", States)>
+    <InlineData("--sample: 1E-300 s would take more than 10,000,000 samples", Scene, "--time", "1e300", "--sample", "1e-300", "--states", States, "--events", Events)>
     Public Sub BadArguments_Exit2_WithOneLine_AndWriteNothing(expectedStart As String, ParamArray args As String())
         Using t As New TempFolder()
             Dim scenePath = t.Write("scene.json", HeadOn)
