@@ -468,11 +468,19 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' over (it hops round the rest of the corner).
     ''' </summary>
     Private Sub Materialize(i As Integer)
-        Dim v0 = _slideV0(i), r = _body(i).R, s = _slideDir(i)
-        Dim theta = CornerSlide.AngleAfter(v0, _g, r, 0, _slideAngle(i), _now - _slideStart(i))
-        Dim speed = CornerSlide.SpeedAt(v0, _g, r, 0, theta)
-        _body(i).Px = _slideCx(i) + s * r * Math.Sin(theta)
-        _body(i).Py = _slideCy(i) + r * Math.Cos(theta)
+        Dim theta = CornerSlide.AngleAfter(_slideV0(i), _g, _body(i).R, 0, _slideAngle(i), _now - _slideStart(i))
+        LaunchFromCorner(i, theta, _body(i).R)
+    End Sub
+
+    ''' <summary>
+    ''' Turns a ball sliding round a corner into a free ball at angle θ from the vertical, its centre
+    ''' <paramref name="arc"/> m from the corner, moving along the tangent at the slide's speed there.
+    ''' </summary>
+    Private Sub LaunchFromCorner(i As Integer, theta As Double, arc As Double)
+        Dim s = _slideDir(i)
+        Dim speed = CornerSlide.SpeedAt(_slideV0(i), _g, _body(i).R, 0, theta)
+        _body(i).Px = _slideCx(i) + s * arc * Math.Sin(theta)
+        _body(i).Py = _slideCy(i) + arc * Math.Cos(theta)
         _body(i).Vx = s * speed * Math.Cos(theta)
         _body(i).Vy = -speed * Math.Sin(theta)
         _body(i).T0 = _now
@@ -492,20 +500,10 @@ Partial Public NotInheritable Class EventDrivenSolver
     End Sub
 
     Private Sub EndSlide(i As Integer)
-        Dim theta = _slideAngle(i)
-        Dim s = _slideDir(i)
-        Dim speed = CornerSlide.SpeedAt(_slideV0(i), _g, _body(i).R, 0, theta)
         ' It leaves tangentially, touching the corner with zero normal speed; start it a hair (far
         ' below any physical scale) outside, so rounding cannot turn the tangent into a collision.
         Dim arc = _body(i).R + 10 * _slop + 1.0E-9 * _body(i).R
-        _body(i).Px = _slideCx(i) + s * arc * Math.Sin(theta)
-        _body(i).Py = _slideCy(i) + arc * Math.Cos(theta)
-        _body(i).Vx = s * speed * Math.Cos(theta)
-        _body(i).Vy = -speed * Math.Sin(theta)
-        _body(i).T0 = _now
-        MakeFree(i)
-        _count(i) += 1
-        MoveToCellOfPosition(i)
+        LaunchFromCorner(i, _slideAngle(i), arc)
         Reschedule(i)
     End Sub
 
