@@ -8,10 +8,14 @@ Public NotInheritable Class Program
     Public Shared Function Main(args As String()) As Integer
         If args Is Nothing Then Throw New ArgumentNullException(NameOf(args))
         Try
-            If args.Length = 0 OrElse args(0) = "--help" OrElse args(0) = "-h" Then
-                Dim usageOut = If(args.Length = 0, Console.Error, Console.Out)
-                usageOut.WriteLine(Usage)
-                Return If(args.Length = 0, ExitCodes.BadInput, ExitCodes.Ok)
+            If args.Length = 0 Then
+                ' Bad input gets one line on stderr; the full usage is --help's.
+                Console.Error.WriteLine("usage: SimulatorCli validate SCENE | run SCENE --time T [options] (no verb given; --help lists the options)")
+                Return ExitCodes.BadInput
+            End If
+            If args(0) = "--help" OrElse args(0) = "-h" Then
+                Console.Out.WriteLine(Usage)
+                Return ExitCodes.Ok
             End If
             Dim rest = args.Skip(1).ToList()
             If rest.Contains("--help") OrElse rest.Contains("-h") Then

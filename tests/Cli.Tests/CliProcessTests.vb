@@ -8,6 +8,7 @@ Public Class CliProcessTests
         Dim r = RunCli()
         Assert.True(r.ExitCode = 2, r.ToString())
         Assert.Contains("usage:", r.StdErr)
+        Assert.Single(r.StdErr.TrimEnd().Split(ChrW(10)))
     End Sub
 
     <Fact>

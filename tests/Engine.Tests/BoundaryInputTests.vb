@@ -36,6 +36,15 @@ Public Class BoundaryInputTests
     End Sub
 
     <Fact>
+    Public Sub DeeplyNestedBrackets_AreNotJson()
+        Dim json = "{""format"":""physics-scene/1"",""world"":{""width"":2,""height"":2},""bodies"":[],""x"":" &
+                   New String("["c, 10000) & New String("]"c, 10000) & "}"
+        Dim ex = Assert.Throws(Of SceneFormatException)(Function() SceneFile.Load(json))
+        Assert.Equal("document", ex.Place)
+        Assert.Contains("depth", ex.Message)
+    End Sub
+
+    <Fact>
     Public Sub ABodyFarAwayWithWallsOff_RunsWithTheDefaultSolver()
         Dim json = "{""format"":""physics-scene/1"",""world"":{""width"":2,""height"":2,""walls"":false,""gravity"":0}," &
                    """bodies"":[{""type"":""circle"",""x"":1e12,""y"":1,""radius"":0.1,""mass"":1,""vx"":-1}," &

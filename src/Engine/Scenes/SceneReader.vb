@@ -41,7 +41,7 @@ Namespace Scenes
             If text.Trim().Length = 0 Then Throw New SceneFormatException("document", "is empty, not JSON")
             Dim element As XElement
             Try
-                Using reader = JsonReaderWriterFactory.CreateJsonReader(Encoding.UTF8.GetBytes(text), XmlDictionaryReaderQuotas.Max)
+                Using reader = JsonReaderWriterFactory.CreateJsonReader(Encoding.UTF8.GetBytes(text), ReaderQuotas)
                     element = XElement.Load(reader)
                 End Using
             Catch ex As XmlException
@@ -56,6 +56,14 @@ Namespace Scenes
             CheckComplete(text)
             Return element
         End Function
+
+        ''' <summary>
+        ''' No limit on text or array sizes (scenes of 100 000 bodies), but a nesting limit: a scene is a
+        ''' few levels deep, and 100 000 nested brackets would otherwise take half a minute to reject.
+        ''' </summary>
+        Private ReadOnly ReaderQuotas As New XmlDictionaryReaderQuotas() With {
+            .MaxDepth = 64, .MaxStringContentLength = Integer.MaxValue, .MaxArrayLength = Integer.MaxValue,
+            .MaxBytesPerRead = Integer.MaxValue, .MaxNameTableCharCount = Integer.MaxValue}
 
         ''' <summary>
         ''' The BCL reader closes open objects silently when the text ends after a number, and stops
