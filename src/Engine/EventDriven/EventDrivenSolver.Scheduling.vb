@@ -143,49 +143,45 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim head = _grid.Head
         Dim nextInCell = _grid.NextInCell
         Dim bodies = _body
+        Dim colTime = _colTime
         Dim now = _now
         Dim slop = _slop
         For rr = Math.Max(0, row0) To Math.Min(_grid.Ny - 1, row1)
             For cc = Math.Max(0, col0) To Math.Min(nx - 1, col1)
                 Dim j = head(rr * nx + cc)
                 While j >= 0
-                    If j <> i Then
-                        If bodies(j).Ay = ay AndAlso bodies(j).Mode = BodyMode.Free AndAlso Not asleep Then
-                            ' Hot path (the elastic gas): same gravity, so the relative motion is a
-                            ' straight line and the contact time is the smaller root of a quadratic.
-                            Dim tj = now - bodies(j).T0
-                            Dim dx = px - (bodies(j).Px + bodies(j).Vx * tj)
-                            Dim dy = py - (bodies(j).Py + (bodies(j).Vy + 0.5 * ay * tj) * tj)
-                            Dim dvx = vx - bodies(j).Vx
-                            Dim dvy = vy - (bodies(j).Vy + ay * tj)
-                            Dim b = dx * dvx + dy * dvy
-                            If b < 0 Then
-                                Dim sumR = r + bodies(j).R
-                                Dim c = dx * dx + dy * dy - sumR * sumR
-                                Dim t As Double
-                                If c <= 2 * sumR * slop Then
-                                    ' Touching: a collision now only if really approaching (not rounding after e = 0).
-                                    ' The tolerance scales with the bodies' own speeds, which is what rounding errs by.
-                                    Dim speeds = Math.Sqrt(dvx * dvx + dvy * dvy) + Math.Abs(vx) + Math.Abs(vy) + Math.Abs(bodies(j).Vx) + Math.Abs(bodies(j).Vy + ay * tj)
-                                    t = If(b < -TimeOfImpact.ApproachFraction * sumR * speeds, 0, Double.PositiveInfinity)
-                                ElseIf c / (-2 * b) >= best Then
-                                    ' The root c / (−b + √disc) is never earlier than c / (−2b), as √disc ≤ −b
-                                    ' (also in floating point): this pair cannot beat the best, skip the square root.
-                                    t = Double.PositiveInfinity
-                                Else
-                                    Dim a = dvx * dvx + dvy * dvy
-                                    Dim disc = b * b - a * c
-                                    t = If(disc <= TimeOfImpact.GrazeFraction * b * b, Double.PositiveInfinity, c / (-b + Math.Sqrt(disc)))
-                                End If
-                                If t < best Then
-                                    best = t
-                                    kind = EventKind.Circle
-                                    other = j
-                                End If
-                            End If
+                    If bodies(j).Ay = ay AndAlso bodies(j).Mode = BodyMode.Free AndAlso Not asleep Then
+                        ' Hot path (the elastic gas): same gravity, so the relative motion is a
+                        ' straight line and the contact time is the smaller root of a quadratic.
+                        ' The root is computed for every candidate and the tests combined into one
+                        ' condition: which pairs meet is random, and a mispredicted branch costs
+                        ' more than the square root it would save.
+                        Dim tj = now - bodies(j).T0
+                        Dim dx = px - (bodies(j).Px + bodies(j).Vx * tj)
+                        Dim dy = py - (bodies(j).Py + (bodies(j).Vy + 0.5 * ay * tj) * tj)
+                        Dim dvx = vx - bodies(j).Vx
+                        Dim dvy = vy - (bodies(j).Vy + ay * tj)
+                        Dim b = dx * dvx + dy * dvy
+                        Dim sumR = r + bodies(j).R
+                        Dim c = dx * dx + dy * dy - sumR * sumR
+                        If c <= 2 * sumR * slop Then
+                            If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
                         Else
-                            CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                            Dim a = dvx * dvx + dvy * dvy
+                            Dim disc = b * b - a * c
+                            Dim t = c / (-b + Math.Sqrt(disc))
+                            ' Approaching, not a graze, earlier than the best so far, and not after the
+                            ' partner's own next collision (it is rescheduled then and finds this pair
+                            ' again, so filing it here would only go stale).
+                            Dim hit = (b < 0) And (disc > TimeOfImpact.GrazeFraction * b * b) And (t < best)
+                            If hit AndAlso now + t <= colTime(j) Then
+                                best = t
+                                kind = EventKind.Circle
+                                other = j
+                            End If
                         End If
+                    ElseIf j <> i Then
+                        CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
                     End If
                     j = nextInCell(j)
                 End While
