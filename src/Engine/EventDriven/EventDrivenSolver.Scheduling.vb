@@ -165,7 +165,8 @@ Partial Public NotInheritable Class EventDrivenSolver
                         Dim sumR = r + bodies(j).R
                         Dim c = dx * dx + dy * dy - sumR * sumR
                         If c <= 2 * sumR * slop Then
-                            If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                            ' Touching (common in a pile): only an approach can be a collision now.
+                            If b < 0 AndAlso j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
                         Else
                             Dim a = dvx * dvx + dvy * dvy
                             Dim disc = b * b - a * c
