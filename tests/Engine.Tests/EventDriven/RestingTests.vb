@@ -68,18 +68,26 @@ Public Class RestingTests
         Assert.True(Math.Abs(solver.RestTime(ball).Value - t0 * (1 + e) / (1 - e)) < 0.001)
     End Sub
 
+    ''' <summary>
+    ''' A ball of radius r resting at x on a table 2 m wide and <paramref name="top"/> m high (e = 0),
+    ''' rolling towards its right edge at vx m/s: every collision in the next 3 s.
+    ''' </summary>
+    Private Shared Function CollisionsOffTable(x As Double, vx As Double, r As Double, top As Double) As List(Of CollisionRecord)
+        Dim w As New World(6, 4, G, 0.0)
+        w.Add(New Rectangle(New Vector(0, 0), 2, top, "table"))
+        w.Add(New Circle(New Vector(x, top + r), r, 1.0, New Vector(vx, 0), "ball"))
+        UseEventSolver(w)
+        Dim collisions As New List(Of CollisionRecord)
+        w.CollisionListener = Sub(rec) collisions.Add(rec)
+        w.Advance(3.0)
+        Return collisions
+    End Function
+
     <Fact>
     Public Sub RestingBall_FastEnough_FliesOffTheEdgeOnAParabola()
         Dim r = 0.05, top = 1.0
         Dim vx = 1.5 * Math.Sqrt(G * r)
-        Dim w As New World(6, 4, G, 0.0)
-        w.Add(New Rectangle(New Vector(0, 0), 2, top, "table"))
-        Dim ball As New Circle(New Vector(1, top + r), r, 1.0, New Vector(vx, 0), "ball")
-        w.Add(ball)
-        UseEventSolver(w)
-        Dim landings As New List(Of CollisionRecord)
-        w.CollisionListener = Sub(rec) landings.Add(rec)
-        w.Advance(3.0)
+        Dim landings = CollisionsOffTable(1, vx, r, top)
         Assert.NotEmpty(landings)
         Dim land = landings(0)
         Assert.Equal(WallSide.Bottom, land.Wall)
@@ -93,14 +101,7 @@ Public Class RestingTests
     Public Sub RestingBall_TooSlow_SlidesRoundTheCorner_ThenFalls()
         Dim r = 0.05, top = 1.0
         Dim vx = 0.5 * Math.Sqrt(G * r)
-        Dim w As New World(6, 4, G, 0.0)
-        w.Add(New Rectangle(New Vector(0, 0), 2, top, "table"))
-        Dim ball As New Circle(New Vector(1.9, top + r), r, 1.0, New Vector(vx, 0), "ball")
-        w.Add(ball)
-        UseEventSolver(w)
-        Dim landings As New List(Of CollisionRecord)
-        w.CollisionListener = Sub(rec) landings.Add(rec)
-        w.Advance(3.0)
+        Dim landings = CollisionsOffTable(1.9, vx, r, top)
         Assert.NotEmpty(landings)
         ' Leaves the corner where g cos θ = v²/r with v² = vx² + 2 g r (1 − cos θ).
         Dim cosT = (vx * vx + 2 * G * r) / (3 * G * r)
@@ -111,6 +112,7 @@ Public Class RestingTests
         ' Then a parabola down to y = r.
         Dim tFall = (uy + Math.Sqrt(uy * uy + 2 * G * (y0 - r))) / G
         Dim land = landings(0)
+        Dim ball = land.A
         Assert.Equal(WallSide.Bottom, land.Wall)
         Assert.Equal(ux, land.AVelocityBefore.X, 9)
         Assert.Equal(uy - G * tFall, land.AVelocityBefore.Y, 9)
