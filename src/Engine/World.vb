@@ -300,11 +300,32 @@ Partial Public NotInheritable Class World
         Return Math.Min(Math.Max(v, lo), hi)
     End Function
 
+    ''' <summary>
+    ''' After the container shrank (or its walls came on): every movable circle left outside is folded
+    ''' back in, as far inside the wall as it was beyond it (reflected again off the far wall if it
+    ''' was further out than the container is wide). Clamping them onto the wall instead would stack
+    ''' a whole strip of circles on one line, overlapping along it, and pushing overlaps apart along
+    ''' that line can never make room; folded, they keep their spread and the overlaps with the
+    ''' circles already inside are pushed apart by the next solver rebuild.
+    ''' </summary>
     Private Sub BringCirclesInside()
         For Each c In _circles
-            If Not c.IsFixed Then c.Position = Inside(c.Position, c.Radius)
+            If c.IsFixed Then Continue For
+            Dim r = c.Radius
+            c.Position = New Vector(Fold(c.Position.X, r, _width - r, _width / 2), Fold(c.Position.Y, r, _height - r, _height / 2))
         Next
     End Sub
+
+    ''' <summary>v reflected back and forth between lo and hi until it lies between them (a triangle wave).</summary>
+    Private Shared Function Fold(v As Double, lo As Double, hi As Double, middle As Double) As Double
+        If lo > hi Then Return middle ' wider than the container: centre it
+        If v >= lo AndAlso v <= hi Then Return v
+        Dim span = hi - lo
+        If Not (span > 0) OrElse Double.IsNaN(v) OrElse Double.IsInfinity(v) Then Return Math.Min(Math.Max(v, lo), hi)
+        Dim m = (v - lo) Mod (2 * span)
+        If m < 0 Then m += 2 * span
+        Return Math.Min(Math.Max(lo + span - Math.Abs(m - span), lo), hi)
+    End Function
 
     ' A movable circle wider than a walled container could touch both of two opposite walls at once
     ' and be pushed through one of them: such a world is refused at the boundary, with a message.

@@ -34,12 +34,34 @@ Public Class WorldTests
     End Sub
 
     <Fact>
-    Public Sub Resize_BringsCirclesBackInside()
+    Public Sub Resize_FoldsCirclesBackInside_AsFarInAsTheyWereOut()
         Dim w As New World(10, 10, 0)
-        Dim c As New Circle(New Vector(9, 9), 0.5, 1.0)
-        w.Add(c)
+        Dim nearWall As New Circle(New Vector(4.2, 2.8), 0.5, 1.0)
+        Dim farOut As New Circle(New Vector(9, 9), 0.5, 1.0)
+        w.Add(nearWall)
+        w.Add(farOut)
         w.Resize(4, 3)
-        Assert.Equal(New Vector(3.5, 2.5), c.Position)
+        ' Centres may range over 0.5 … 3.5 m across and 0.5 … 2.5 m up: 0.7 m beyond the right
+        ' limit comes back 0.7 m inside it, 0.3 m above the top limit 0.3 m below it.
+        Assert.Equal(2.8, nearWall.Position.X, 12)
+        Assert.Equal(2.2, nearWall.Position.Y, 12)
+        Assert.InRange(farOut.Position.X, 0.5, 3.5)
+        Assert.InRange(farOut.Position.Y, 0.5, 2.5)
+    End Sub
+
+    <Fact>
+    Public Sub Resize_AStripOfCirclesBeyondTheNewWall_CanBeSeparated()
+        ' 60 circles 4 cm wide in the strip x = 1.2 … 1.9 m: clamped onto the new wall they would
+        ' need a 2.4 m line in a 1 m high box, and no pushing along that line could part them.
+        Dim w As New World(2, 1, 0)
+        For k = 0 To 59
+            w.Add(New Circle(New Vector(1.2 + 0.7 * (k Mod 6) / 5, 0.05 + 0.09 * (k \ 6)), 0.02, 1.0))
+        Next
+        w.Resize(1.0, 1.0)
+        Assert.True(OverlapResolver.Resolve(w) <= 1.0E-12)
+        For Each c In w.Circles
+            Assert.InRange(c.Position.X, 0.02, 0.98)
+        Next
     End Sub
 
     <Theory>
