@@ -49,6 +49,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(i).Py += (_body(i).Vy + 0.5 * ay * tau) * tau
         _body(i).Vy += ay * tau
         _body(i).T0 = _now
+        Publish(i)
     End Sub
 
     Private Sub CollideWall(i As Integer, side As WallSide)
@@ -102,7 +103,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         End If
         If _body(i).Mode = BodyMode.Resting AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then MakeFree(i)
         If _body(i).Mode = BodyMode.Free Then AfterSupportContact(i, n, support, 0, 0)
-        _count(i) += 1
+        Changed(i)
         Reschedule(i)
     End Sub
 
@@ -152,8 +153,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         ElseIf _body(j).Mode = BodyMode.Free Then
             SleepIfSettled(j)
         End If
-        _count(i) += 1
-        _count(j) += 1
+        Changed(i)
+        Changed(j)
         Reschedule(i)
         Reschedule(j)
     End Sub
@@ -213,7 +214,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         ' Wedged under gravity it goes to sleep where it is (even if the wedge is not quite a held
         ' position, it cannot move at this instant, and a sleeper wakes again when hit).
         If _g > 0 Then Sleep(i)
-        _count(i) += 1
+        Changed(i)
         _sameCount(i) = 0
         Reschedule(i)
         Return True
@@ -341,7 +342,7 @@ Partial Public NotInheritable Class EventDrivenSolver
                 If dx * dx + dy * dy > reach * reach Then Continue For
                 Sync(j)
                 MakeFree(j)
-                _count(j) += 1
+                Changed(j)
                 Reschedule(j)
                 If tail < _wake.Length Then
                     _wake(tail) = j
@@ -423,10 +424,15 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim col = _cell(i) Mod _grid.Nx, row = _cell(i) \ _grid.Nx
         For rr = Math.Max(0, row - 1) To Math.Min(_grid.Ny - 1, row + 1)
             For cc = Math.Max(0, col - 1) To Math.Min(_grid.Nx - 1, col + 1)
-                Dim j = _grid.Head(rr * _grid.Nx + cc)
-                While j >= 0
+                Dim cell = rr * _grid.Nx + cc
+                For lane = cell * UniformGrid.Lanes To cell * UniformGrid.Lanes + _grid.Count(cell) - 1
+                    Dim j = _grid.LaneBody(lane)
                     If j <> i AndAlso count < _stack.Length Then _stack(count) = j : count += 1
-                    j = _grid.NextInCell(j)
+                Next
+                Dim o = _grid.OverflowHead(cell)
+                While o >= 0
+                    If o <> i AndAlso count < _stack.Length Then _stack(count) = o : count += 1
+                    o = _grid.OverflowNext(o)
                 End While
             Next
         Next
@@ -448,7 +454,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(i).Px = edge
         _body(i).Py = _ry1(k) + _body(i).R
         MakeFree(i)
-        _count(i) += 1
+        Changed(i)
         If vx * vx < _g * _body(i).R Then
             _body(i).Mode = BodyMode.Sliding
             _body(i).Ay = 0
@@ -485,18 +491,13 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(i).Vy = -speed * Math.Sin(theta)
         _body(i).T0 = _now
         MakeFree(i)
-        _count(i) += 1
+        Changed(i)
         MoveToCellOfPosition(i)
     End Sub
 
     Private Sub MoveToCellOfPosition(i As Integer)
         If _cell(i) < 0 Then Return
-        Dim cell = _grid.CellOf(_body(i).Px, _body(i).Py)
-        If cell <> _cell(i) Then
-            _grid.Remove(i, _cell(i))
-            _grid.Insert(i, cell)
-            _cell(i) = cell
-        End If
+        MoveToCell(i, _grid.CellOf(_body(i).Px, _body(i).Py))
     End Sub
 
     Private Sub EndSlide(i As Integer)
@@ -519,7 +520,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         _invMass(i) = 0
         _body(i).Vx = (target.X - _body(i).Px) / duration
         _body(i).Vy = (target.Y - _body(i).Py) / duration
-        _count(i) += 1
+        Changed(i)
         Reschedule(i)
     End Sub
 

@@ -1,5 +1,9 @@
 Option Strict On
 
+#If NET Then
+Imports System.Runtime.Intrinsics
+#End If
+
 ' Prediction: the earliest event of one body against the walls, the static obstacles and the
 ' movable circles near it, and its next grid-cell crossing. Only the 3 × 3 cells around it are
 ' searched, so the cost per event stays flat as the number of bodies grows.
@@ -99,9 +103,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             Case 2 : target = cell - _grid.Nx
             Case Else : target = cell + _grid.Nx
         End Select
-        _grid.Remove(i, cell)
-        _grid.Insert(i, target)
-        _cell(i) = target
+        MoveToCell(i, target)
         Dim kind = _evKind(i)
         If kind = EventKind.Circle AndAlso _count(_evOther(i)) <> _evOtherCount(i) Then
             Reschedule(i) ' the kept prediction went stale: start afresh
@@ -136,59 +138,161 @@ Partial Public NotInheritable Class EventDrivenSolver
         FileEvent(i, best, kind, other, feature, exitTime, exitDir)
     End Sub
 
+    ''' <summary>
+    ''' Body i against the movable bodies in cells col0 … col1 × row0 … row1: the lanes of each cell,
+    ''' four at a time where the processor has 256-bit vectors, then any overflow one by one.
+    ''' </summary>
     Private Sub ScanCells(i As Integer, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, asleep As Boolean,
                           px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                           ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim nx = _grid.Nx
-        Dim head = _grid.Head
-        Dim nextInCell = _grid.NextInCell
-        Dim bodies = _body
-        Dim colTime = _colTime
-        Dim now = _now
-        Dim slop = _slop
+        Dim c0 = Math.Max(0, col0), c1 = Math.Min(nx - 1, col1)
         For rr = Math.Max(0, row0) To Math.Min(_grid.Ny - 1, row1)
-            For cc = Math.Max(0, col0) To Math.Min(nx - 1, col1)
-                Dim j = head(rr * nx + cc)
+#If NET Then
+            If VectorScan Then
+                ScanLanesVector(i, rr * nx + c0, rr * nx + c1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+            Else
+                ScanLanesScalar(i, rr * nx + c0, rr * nx + c1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+            End If
+#Else
+            ScanLanesScalar(i, rr * nx + c0, rr * nx + c1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+#End If
+            Dim overflowHead = _grid.OverflowHead
+            For cell = rr * nx + c0 To rr * nx + c1
+                Dim j = overflowHead(cell)
                 While j >= 0
-                    If bodies(j).Ay = ay AndAlso bodies(j).Mode = BodyMode.Free AndAlso Not asleep Then
-                        ' Hot path (the elastic gas): same gravity, so the relative motion is a
-                        ' straight line and the contact time is the smaller root of a quadratic.
-                        ' The root is computed for every candidate and the tests combined into one
-                        ' condition: which pairs meet is random, and a mispredicted branch costs
-                        ' more than the square root it would save.
-                        Dim tj = now - bodies(j).T0
-                        Dim dx = px - (bodies(j).Px + bodies(j).Vx * tj)
-                        Dim dy = py - (bodies(j).Py + (bodies(j).Vy + 0.5 * ay * tj) * tj)
-                        Dim dvx = vx - bodies(j).Vx
-                        Dim dvy = vy - (bodies(j).Vy + ay * tj)
-                        Dim b = dx * dvx + dy * dvy
-                        Dim sumR = r + bodies(j).R
-                        Dim c = dx * dx + dy * dy - sumR * sumR
-                        If c <= 2 * sumR * slop Then
-                            ' Touching (common in a pile): only an approach can be a collision now.
-                            If b < 0 AndAlso j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
-                        Else
-                            Dim a = dvx * dvx + dvy * dvy
-                            Dim disc = b * b - a * c
-                            Dim t = c / (-b + Math.Sqrt(disc))
-                            ' Approaching, not a graze, earlier than the best so far, and not after the
-                            ' partner's own next collision (it is rescheduled then and finds this pair
-                            ' again, so filing it here would only go stale).
-                            Dim hit = (b < 0) And (disc > TimeOfImpact.GrazeFraction * b * b) And (t < best)
-                            If hit AndAlso now + t <= colTime(j) Then
-                                best = t
-                                kind = EventKind.Circle
-                                other = j
-                            End If
-                        End If
-                    ElseIf j <> i Then
-                        CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
-                    End If
-                    j = nextInCell(j)
+                    ScanBody(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                    j = _grid.OverflowNext(j)
                 End While
             Next
         Next
     End Sub
+
+    ''' <summary>The lanes of cells first … last (one row), one body at a time, from the bodies' own state.</summary>
+    Private Sub ScanLanesScalar(i As Integer, first As Integer, last As Integer, asleep As Boolean,
+                                px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                                ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        Dim count = _grid.Count, laneBody = _grid.LaneBody
+        For cell = first To last
+            For lane = cell * UniformGrid.Lanes To cell * UniformGrid.Lanes + count(cell) - 1
+                ScanBody(i, laneBody(lane), asleep, px, py, vx, vy, ay, r, best, kind, other)
+            Next
+        Next
+    End Sub
+
+    ''' <summary>Body i against body j: the pair test of <see cref="ScanCells"/> for one body.</summary>
+    Private Sub ScanBody(i As Integer, j As Integer, asleep As Boolean,
+                         px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                         ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        If _body(j).Ay = ay AndAlso _body(j).Mode = BodyMode.Free AndAlso Not asleep Then
+            ' Hot path (the elastic gas): same gravity, so the relative motion is a straight line
+            ' and the contact time is the smaller root of a quadratic. The root is computed for
+            ' every candidate and the tests combined into one condition: which pairs meet is
+            ' random, and a mispredicted branch costs more than the square root it would save.
+            Dim tj = _now - _body(j).T0
+            Dim dx = px - (_body(j).Px + _body(j).Vx * tj)
+            Dim dy = py - (_body(j).Py + (_body(j).Vy + 0.5 * ay * tj) * tj)
+            Dim dvx = vx - _body(j).Vx
+            Dim dvy = vy - (_body(j).Vy + ay * tj)
+            Dim b = dx * dvx + dy * dvy
+            Dim sumR = r + _body(j).R
+            Dim c = dx * dx + dy * dy - sumR * sumR
+            If c <= 2 * sumR * _slop Then
+                ' Touching (common in a pile): only an approach can be a collision now.
+                If b < 0 AndAlso j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+            Else
+                Dim a = dvx * dvx + dvy * dvy
+                Dim disc = b * b - a * c
+                Dim t = c / (Math.Sqrt(disc) - b)
+                ' Approaching, not a graze, earlier than the best so far, and not after the
+                ' partner's own next collision (it is rescheduled then and finds this pair again,
+                ' so filing it here would only go stale).
+                Dim hit = (b < 0) And (disc > TimeOfImpact.GrazeFraction * b * b) And (t < best)
+                If hit AndAlso _now + t <= _colTime(j) Then
+                    best = t
+                    kind = EventKind.Circle
+                    other = j
+                End If
+            End If
+        ElseIf j <> i Then
+            CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+        End If
+    End Sub
+
+#If NET Then
+    ''' <summary>
+    ''' The lanes of cells first … last (one row), four at a time, from the published copies: the
+    ''' pair test of <see cref="ScanBody"/> with the same arithmetic, lane by lane. Lanes whose body
+    ''' is not free under the same gravity, and touching pairs, go to <see cref="CheckPair"/>; a hit
+    ''' earlier than the best so far is taken in lane order, as the scalar loop would.
+    ''' </summary>
+    Private Sub ScanLanesVector(i As Integer, first As Integer, last As Integer, asleep As Boolean,
+                                px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                                ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        Dim data = _grid.LaneData, count = _grid.Count, laneBody = _grid.LaneBody
+        Dim vNow = Vector256.Create(_now)
+        Dim vPx = Vector256.Create(px), vPy = Vector256.Create(py)
+        Dim vVx = Vector256.Create(vx), vVy = Vector256.Create(vy)
+        Dim vAy = Vector256.Create(ay), vHalfAy = Vector256.Create(0.5 * ay)
+        ' A sleeping body takes no hot path: its gravity matches nothing.
+        Dim vMatch = Vector256.Create(If(asleep, Double.NaN, ay))
+        Dim vR = Vector256.Create(r), vTwo = Vector256.Create(2.0), vSlop = Vector256.Create(_slop)
+        Dim vGraze = Vector256.Create(TimeOfImpact.GrazeFraction)
+        Dim vZero = Vector256(Of Double).Zero, vInf = Vector256.Create(Double.PositiveInfinity)
+        Dim laneIndex = Vector256.Create(0.0, 1.0, 2.0, 3.0)
+        Dim vMargin = Vector256.Create(1 + 1.0E-6)
+        Dim bestSeen = best, vInvBest = Vector256.Create(1 / best)
+        For cell = first To last
+            Dim b0 = cell * UniformGrid.CellStride
+            Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
+            Dim hot = valid And Vector256.Equals(Vector256.Create(data, b0 + UniformGrid.FieldAy), vMatch)
+            Dim tj = vNow - Vector256.Create(data, b0 + UniformGrid.FieldT0)
+            Dim jvx = Vector256.Create(data, b0 + UniformGrid.FieldVx)
+            Dim jvy = Vector256.Create(data, b0 + UniformGrid.FieldVy)
+            Dim dx = vPx - (Vector256.Create(data, b0 + UniformGrid.FieldPx) + jvx * tj)
+            Dim dy = vPy - (Vector256.Create(data, b0 + UniformGrid.FieldPy) + (jvy + vHalfAy * tj) * tj)
+            Dim dvx = vVx - jvx
+            Dim dvy = vVy - (jvy + vAy * tj)
+            Dim b = dx * dvx + dy * dvy
+            Dim sumR = vR + Vector256.Create(data, b0 + UniformGrid.FieldR)
+            Dim c = dx * dx + dy * dy - sumR * sumR
+            Dim touching = Vector256.LessThanOrEqual(c, vTwo * sumR * vSlop)
+            Dim approaching = Vector256.LessThan(b, vZero)
+            Dim a = dvx * dvx + dvy * dvy
+            Dim disc = b * b - a * c
+            If best <> bestSeen Then
+                bestSeen = best
+                vInvBest = Vector256.Create(1 / best)
+            End If
+            ' Which lanes can hit before the best so far, without the square root and the division
+            ' (the slow part of the pair test): t = c / (√disc − b) < best exactly when
+            ' √disc > u = c / best + b, that is u < 0 or disc > u². The margin makes it a filter
+            ' that lets through every lane the exact test below accepts.
+            Dim u = c * vInvBest + b
+            Dim candidate = Vector256.AndNot(hot And approaching, touching) And
+                            Vector256.GreaterThan(disc, vGraze * b * b) And
+                            (Vector256.LessThan(u, vZero) Or Vector256.GreaterThan(disc * vMargin, u * u))
+            Dim slow = Vector256.AndNot(valid, hot) Or (hot And touching And approaching)
+            Dim special = Vector256.ExtractMostSignificantBits(slow)
+            Dim maybe = Vector256.ExtractMostSignificantBits(candidate)
+            If (maybe Or special) = 0 Then Continue For
+            Dim t = c / (Vector256.Sqrt(disc) - b)
+            Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, Vector256.Create(data, b0 + UniformGrid.FieldColTime))
+            Dim tm = Vector256.ConditionalSelect(hit, t, vInf)
+            For k = 0 To UniformGrid.Lanes - 1
+                Dim bit = 1UI << k
+                If (special And bit) <> 0 Then
+                    Dim j = laneBody(cell * UniformGrid.Lanes + k)
+                    If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                ElseIf tm.GetElement(k) < best Then
+                    best = tm.GetElement(k)
+                    kind = EventKind.Circle
+                    other = laneBody(cell * UniformGrid.Lanes + k)
+                End If
+            Next
+        Next
+    End Sub
+#End If
 
     ''' <summary>Files body i's next collision-type event and its next cell exit (times from now, s).</summary>
     Private Sub FileEvent(i As Integer, dt As Double, kind As EventKind, other As Integer, feature As Integer,
@@ -202,6 +306,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         _cellDir(i) = exitDir
         _evTime(i) = Math.Min(_colTime(i), _cellTime(i))
         _queue.Update(i)
+        Publish(i)
     End Sub
 
     Private Sub CheckStatic(s As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,

@@ -15,12 +15,12 @@ Partial Public NotInheritable Class EventDrivenSolver
         _now = w.Time
         LoadStatics(w)
         LoadMovables(w)
-        LayoutGrid()
         For i = 0 To _n - 1
             _evTime(i) = Double.PositiveInfinity
             _colTime(i) = Double.PositiveInfinity
             _cellTime(i) = Double.PositiveInfinity
         Next
+        LayoutGrid()
         _queue.Reset(_evTime, _n)
         For i = 0 To _n - 1
             Reschedule(i)
@@ -174,7 +174,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             End If
         Next
         Dim gridded = Math.Max(1, _n - _nOversized)
-        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(1.2 * _width * _height / gridded))
+        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(2.0 * _width * _height / gridded))
         _grid.Layout(_width, _height, cell, _n, 4 * _n + 64)
         For i = 0 To _n - 1
             If _body(i).R > limit Then
@@ -182,6 +182,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             Else
                 _cell(i) = _grid.CellOf(_body(i).Px, _body(i).Py)
                 _grid.Insert(i, _cell(i))
+                Publish(i)
             End If
         Next
         Dim count = _nFixed + _nRect

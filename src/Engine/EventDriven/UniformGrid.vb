@@ -3,26 +3,57 @@ Option Strict On
 ''' <summary>
 ''' A uniform grid over the container for the event-driven solver. Each cell is at least as wide as
 ''' the largest gridded circle's diameter, so two gridded circles can touch only when their cells are
-''' neighbours (3 × 3). Movable circles are kept in per-cell linked lists (arrays, O(1) moves); the
-''' static obstacles (fixed circles, rectangles) are listed in every cell they can be touched from.
-''' The outermost cells extend to infinity, so a circle outside the container still has a cell.
+''' neighbours (3 × 3). The static obstacles (fixed circles, rectangles) are listed in every cell
+''' they can be touched from. The outermost cells extend to infinity, so a circle outside the
+''' container still has a cell.
+''' <para>
+''' Movable circles sit in <see cref="Lanes"/> lanes per cell. Each lane keeps a copy of its body's
+''' motion and next collision time (published by the solver whenever they change), laid out field
+''' by field, so the solver tests a whole cell's bodies with one vector operation per field and the
+''' cells of a row lie side by side in memory. A cell holding more than <see cref="Lanes"/> bodies
+''' keeps the rest in a linked overflow list, tested one by one.
+''' </para>
 ''' Fields are Friend so the solver's hot loop reads them directly.
 ''' </summary>
 Friend NotInheritable Class UniformGrid
+    ''' <summary>Bodies per cell held in lanes (one 256-bit vector of doubles).</summary>
+    Friend Const Lanes As Integer = 4
+    ''' <summary>Doubles per cell in <see cref="LaneData"/>: <see cref="FieldCount"/> fields × <see cref="Lanes"/>.</summary>
+    Friend Const CellStride As Integer = FieldCount * Lanes
+    Friend Const FieldCount As Integer = 8
+    ' Offsets of the fields within a cell's block of LaneData (each field is Lanes doubles).
+    Friend Const FieldT0 As Integer = 0
+    Friend Const FieldPx As Integer = 4
+    Friend Const FieldPy As Integer = 8
+    Friend Const FieldVx As Integer = 12
+    Friend Const FieldVy As Integer = 16
+    ''' <summary>Vertical acceleration of a free body; NaN for any other mode (it never matches).</summary>
+    Friend Const FieldAy As Integer = 20
+    Friend Const FieldR As Integer = 24
+    Friend Const FieldColTime As Integer = 28
+
     Friend Nx As Integer
     Friend Ny As Integer
     ''' <summary>Cell width and height, m.</summary>
     Friend CellWidth As Double
     Friend CellHeight As Double
-    ''' <summary>First movable body in each cell, −1 when none.</summary>
-    Friend Head As Integer() = Array.Empty(Of Integer)()
-    Friend NextInCell As Integer() = Array.Empty(Of Integer)()
-    Friend PrevInCell As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Bodies in each cell's lanes (0 … <see cref="Lanes"/>).</summary>
+    Friend Count As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Body in lane k of cell c: LaneBody(c · Lanes + k).</summary>
+    Friend LaneBody As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Published motion: field f of lane k of cell c is LaneData(c · CellStride + f + k).</summary>
+    Friend LaneData As Double() = Array.Empty(Of Double)()
+    ''' <summary>Lane of each body (c · Lanes + k), or −1 when it is in an overflow list or not gridded.</summary>
+    Friend LaneOf As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>First body in each cell's overflow list, −1 when none.</summary>
+    Friend OverflowHead As Integer() = Array.Empty(Of Integer)()
+    Friend OverflowNext As Integer() = Array.Empty(Of Integer)()
+    Friend OverflowPrev As Integer() = Array.Empty(Of Integer)()
     ''' <summary>Static obstacles of cell c are StaticItems(StaticStart(c)) … StaticItems(StaticStart(c + 1) − 1).</summary>
     Friend StaticStart As Integer() = Array.Empty(Of Integer)()
     Friend StaticItems As Integer() = Array.Empty(Of Integer)()
 
-    ''' <summary>Lays out cells of at least <paramref name="minCell"/> metres over width × height.</summary>
+    ''' <summary>Lays out cells of at least <paramref name="minCell"/> metres over width × height, all empty.</summary>
     Friend Sub Layout(width As Double, height As Double, minCell As Double, bodyCount As Integer, maxCells As Integer)
         Nx = CInt(Math.Max(1, Math.Min(4096, Math.Floor(width / minCell))))
         Ny = CInt(Math.Max(1, Math.Min(4096, Math.Floor(height / minCell))))
@@ -32,14 +63,24 @@ Friend NotInheritable Class UniformGrid
         CellWidth = width / Nx
         CellHeight = height / Ny
         Dim cells = Nx * Ny
-        If Head.Length < cells Then Head = New Integer(cells - 1) {}
-        For c = 0 To cells - 1
-            Head(c) = -1
-        Next
-        If NextInCell.Length < bodyCount Then
-            NextInCell = New Integer(bodyCount - 1) {}
-            PrevInCell = New Integer(bodyCount - 1) {}
+        If Count.Length < cells Then
+            Count = New Integer(cells - 1) {}
+            OverflowHead = New Integer(cells - 1) {}
+            LaneBody = New Integer(cells * Lanes - 1) {}
+            LaneData = New Double(cells * CellStride - 1) {}
         End If
+        Array.Clear(Count, 0, cells)
+        For c = 0 To cells - 1
+            OverflowHead(c) = -1
+        Next
+        If LaneOf.Length < bodyCount Then
+            LaneOf = New Integer(bodyCount - 1) {}
+            OverflowNext = New Integer(bodyCount - 1) {}
+            OverflowPrev = New Integer(bodyCount - 1) {}
+        End If
+        For i = 0 To bodyCount - 1
+            LaneOf(i) = -1
+        Next
     End Sub
 
     Friend Function ColumnOf(x As Double) As Integer
@@ -60,18 +101,75 @@ Friend NotInheritable Class UniformGrid
         Return RowOf(y) * Nx + ColumnOf(x)
     End Function
 
+    ''' <summary>Puts body i in a free lane of the cell, or in its overflow list. The caller publishes it.</summary>
     Friend Sub Insert(i As Integer, cell As Integer)
-        Dim h = Head(cell)
-        NextInCell(i) = h
-        PrevInCell(i) = -1
-        If h >= 0 Then PrevInCell(h) = i
-        Head(cell) = i
+        Dim k = Count(cell)
+        If k < Lanes Then
+            Dim lane = cell * Lanes + k
+            LaneBody(lane) = i
+            LaneOf(i) = lane
+            Count(cell) = k + 1
+            Return
+        End If
+        Dim h = OverflowHead(cell)
+        OverflowNext(i) = h
+        OverflowPrev(i) = -1
+        If h >= 0 Then OverflowPrev(h) = i
+        OverflowHead(cell) = i
+        LaneOf(i) = -1
     End Sub
 
-    Friend Sub Remove(i As Integer, cell As Integer)
-        Dim p = PrevInCell(i), n = NextInCell(i)
-        If p >= 0 Then NextInCell(p) = n Else Head(cell) = n
-        If n >= 0 Then PrevInCell(n) = p
+    ''' <summary>
+    ''' Takes body i out of the cell. The cell's last lane moves into the gap (with its data); if the
+    ''' cell had an overflow, one of those bodies takes the freed lane and is returned, for the caller
+    ''' to publish. Otherwise −1.
+    ''' </summary>
+    Friend Function Remove(i As Integer, cell As Integer) As Integer
+        Dim lane = LaneOf(i)
+        If lane < 0 Then
+            Unlink(i, cell)
+            Return -1
+        End If
+        Dim last = cell * Lanes + Count(cell) - 1
+        If lane <> last Then
+            Dim moved = LaneBody(last)
+            LaneBody(lane) = moved
+            LaneOf(moved) = lane
+            Dim src = cell * CellStride + (last - cell * Lanes)
+            Dim dst = cell * CellStride + (lane - cell * Lanes)
+            For f = 0 To CellStride - 1 Step Lanes
+                LaneData(dst + f) = LaneData(src + f)
+            Next
+        End If
+        Count(cell) -= 1
+        LaneOf(i) = -1
+        Dim h = OverflowHead(cell)
+        If h < 0 Then Return -1
+        Unlink(h, cell)
+        Insert(h, cell)
+        Return h
+    End Function
+
+    Private Sub Unlink(i As Integer, cell As Integer)
+        Dim p = OverflowPrev(i), n = OverflowNext(i)
+        If p >= 0 Then OverflowNext(p) = n Else OverflowHead(cell) = n
+        If n >= 0 Then OverflowPrev(n) = p
+    End Sub
+
+    ''' <summary>Copies body i's motion (and next collision time, s) into its lane; nothing when it has none.</summary>
+    Friend Sub Publish(i As Integer, ByRef state As BodyState, colTime As Double)
+        Dim lane = LaneOf(i)
+        If lane < 0 Then Return
+        Dim cell = lane \ Lanes
+        Dim b = cell * CellStride + (lane - cell * Lanes)
+        LaneData(b + FieldT0) = state.T0
+        LaneData(b + FieldPx) = state.Px
+        LaneData(b + FieldPy) = state.Py
+        LaneData(b + FieldVx) = state.Vx
+        LaneData(b + FieldVy) = state.Vy
+        LaneData(b + FieldAy) = If(state.Mode = BodyMode.Free, state.Ay, Double.NaN)
+        LaneData(b + FieldR) = state.R
+        LaneData(b + FieldColTime) = colTime
     End Sub
 
     ''' <summary>
