@@ -51,19 +51,11 @@ Partial Public NotInheritable Class EventDrivenSolver
                lane - cell * UniformGrid.Lanes >= _grid.Count(cell) Then
                 Throw New InvalidOperationException($"body {i} has lane {lane}, which is not its own in cell {cell}")
             End If
-            Dim b = cell * UniformGrid.CellStride + (lane - cell * UniformGrid.Lanes)
-            Dim d = _grid.LaneData
-            Dim ay = If(_body(i).Mode = BodyMode.Free, _body(i).Ay, Double.NaN)
-            If Not (Same(d(b + UniformGrid.FieldT0), _body(i).T0) AndAlso Same(d(b + UniformGrid.FieldPx), _body(i).Px) AndAlso
-                    Same(d(b + UniformGrid.FieldPy), _body(i).Py) AndAlso Same(d(b + UniformGrid.FieldVx), _body(i).Vx) AndAlso
-                    Same(d(b + UniformGrid.FieldVy), _body(i).Vy) AndAlso Same(d(b + UniformGrid.FieldAy), ay) AndAlso
-                    Same(d(b + UniformGrid.FieldR), _body(i).R) AndAlso Same(d(b + UniformGrid.FieldColTime), _colTime(i))) Then
+#If NET Then
+            If Not _grid.Blocks(cell).LaneIs(lane Mod UniformGrid.Lanes, _body(i), _colTime(i)) Then
                 Throw New InvalidOperationException($"the lane of body {i} lags its motion at t = {_now} s")
             End If
+#End If
         Next
     End Sub
-
-    Private Shared Function Same(a As Double, b As Double) As Boolean
-        Return a.Equals(b)
-    End Function
 End Class

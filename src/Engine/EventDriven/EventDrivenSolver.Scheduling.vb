@@ -229,7 +229,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private Sub ScanLanesVector(i As Integer, first As Integer, last As Integer, asleep As Boolean,
                                 px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                                 ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim data = _grid.LaneData, count = _grid.Count, laneBody = _grid.LaneBody
+        Dim blocks = _grid.Blocks, count = _grid.Count, laneBody = _grid.LaneBody
         Dim vNow = Vector256.Create(_now)
         Dim vPx = Vector256.Create(px), vPy = Vector256.Create(py)
         Dim vVx = Vector256.Create(vx), vVy = Vector256.Create(vy)
@@ -243,18 +243,17 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim vMargin = Vector256.Create(1 + 1.0E-6)
         Dim bestSeen = best, vInvBest = Vector256.Create(1 / best)
         For cell = first To last
-            Dim b0 = cell * UniformGrid.CellStride
             Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
-            Dim hot = valid And Vector256.Equals(Vector256.Create(data, b0 + UniformGrid.FieldAy), vMatch)
-            Dim tj = vNow - Vector256.Create(data, b0 + UniformGrid.FieldT0)
-            Dim jvx = Vector256.Create(data, b0 + UniformGrid.FieldVx)
-            Dim jvy = Vector256.Create(data, b0 + UniformGrid.FieldVy)
-            Dim dx = vPx - (Vector256.Create(data, b0 + UniformGrid.FieldPx) + jvx * tj)
-            Dim dy = vPy - (Vector256.Create(data, b0 + UniformGrid.FieldPy) + (jvy + vHalfAy * tj) * tj)
+            Dim hot = valid And Vector256.Equals(blocks(cell).Ay, vMatch)
+            Dim tj = vNow - blocks(cell).T0
+            Dim jvx = blocks(cell).Vx
+            Dim jvy = blocks(cell).Vy
+            Dim dx = vPx - (blocks(cell).Px + jvx * tj)
+            Dim dy = vPy - (blocks(cell).Py + (jvy + vHalfAy * tj) * tj)
             Dim dvx = vVx - jvx
             Dim dvy = vVy - (jvy + vAy * tj)
             Dim b = dx * dvx + dy * dvy
-            Dim sumR = vR + Vector256.Create(data, b0 + UniformGrid.FieldR)
+            Dim sumR = vR + blocks(cell).R
             Dim c = dx * dx + dy * dy - sumR * sumR
             Dim touching = Vector256.LessThanOrEqual(c, vTwo * sumR * vSlop)
             Dim approaching = Vector256.LessThan(b, vZero)
@@ -277,7 +276,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             Dim maybe = Vector256.ExtractMostSignificantBits(candidate)
             If (maybe Or special) = 0 Then Continue For
             Dim t = c / (Vector256.Sqrt(disc) - b)
-            Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, Vector256.Create(data, b0 + UniformGrid.FieldColTime))
+            Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, blocks(cell).ColTime)
             Dim tm = Vector256.ConditionalSelect(hit, t, vInf)
             For k = 0 To UniformGrid.Lanes - 1
                 Dim bit = 1UI << k

@@ -18,19 +18,6 @@ Option Strict On
 Friend NotInheritable Class UniformGrid
     ''' <summary>Bodies per cell held in lanes (one 256-bit vector of doubles).</summary>
     Friend Const Lanes As Integer = 4
-    ''' <summary>Doubles per cell in <see cref="LaneData"/>: <see cref="FieldCount"/> fields × <see cref="Lanes"/>.</summary>
-    Friend Const CellStride As Integer = FieldCount * Lanes
-    Friend Const FieldCount As Integer = 8
-    ' Offsets of the fields within a cell's block of LaneData (each field is Lanes doubles).
-    Friend Const FieldT0 As Integer = 0
-    Friend Const FieldPx As Integer = 4
-    Friend Const FieldPy As Integer = 8
-    Friend Const FieldVx As Integer = 12
-    Friend Const FieldVy As Integer = 16
-    ''' <summary>Vertical acceleration of a free body; NaN for any other mode (it never matches).</summary>
-    Friend Const FieldAy As Integer = 20
-    Friend Const FieldR As Integer = 24
-    Friend Const FieldColTime As Integer = 28
 
     Friend Nx As Integer
     Friend Ny As Integer
@@ -41,8 +28,10 @@ Friend NotInheritable Class UniformGrid
     Friend Count As Integer() = Array.Empty(Of Integer)()
     ''' <summary>Body in lane k of cell c: LaneBody(c · Lanes + k).</summary>
     Friend LaneBody As Integer() = Array.Empty(Of Integer)()
-    ''' <summary>Published motion: field f of lane k of cell c is LaneData(c · CellStride + f + k).</summary>
-    Friend LaneData As Double() = Array.Empty(Of Double)()
+#If NET Then
+    ''' <summary>Published motion of each cell's lanes (only where the vectorised pair test exists).</summary>
+    Friend Blocks As LaneBlock() = Array.Empty(Of LaneBlock)()
+#End If
     ''' <summary>Lane of each body (c · Lanes + k), or −1 when it is in an overflow list or not gridded.</summary>
     Friend LaneOf As Integer() = Array.Empty(Of Integer)()
     ''' <summary>First body in each cell's overflow list, −1 when none.</summary>
@@ -67,7 +56,9 @@ Friend NotInheritable Class UniformGrid
             Count = New Integer(cells - 1) {}
             OverflowHead = New Integer(cells - 1) {}
             LaneBody = New Integer(cells * Lanes - 1) {}
-            LaneData = New Double(cells * CellStride - 1) {}
+#If NET Then
+            Blocks = New LaneBlock(cells - 1) {}
+#End If
         End If
         Array.Clear(Count, 0, cells)
         For c = 0 To cells - 1
@@ -135,11 +126,9 @@ Friend NotInheritable Class UniformGrid
             Dim moved = LaneBody(last)
             LaneBody(lane) = moved
             LaneOf(moved) = lane
-            Dim src = cell * CellStride + (last - cell * Lanes)
-            Dim dst = cell * CellStride + (lane - cell * Lanes)
-            For f = 0 To CellStride - 1 Step Lanes
-                LaneData(dst + f) = LaneData(src + f)
-            Next
+#If NET Then
+            Blocks(cell).CopyLane(last - cell * Lanes, lane - cell * Lanes)
+#End If
         End If
         Count(cell) -= 1
         LaneOf(i) = -1
@@ -160,16 +149,9 @@ Friend NotInheritable Class UniformGrid
     Friend Sub Publish(i As Integer, ByRef state As BodyState, colTime As Double)
         Dim lane = LaneOf(i)
         If lane < 0 Then Return
-        Dim cell = lane \ Lanes
-        Dim b = cell * CellStride + (lane - cell * Lanes)
-        LaneData(b + FieldT0) = state.T0
-        LaneData(b + FieldPx) = state.Px
-        LaneData(b + FieldPy) = state.Py
-        LaneData(b + FieldVx) = state.Vx
-        LaneData(b + FieldVy) = state.Vy
-        LaneData(b + FieldAy) = If(state.Mode = BodyMode.Free, state.Ay, Double.NaN)
-        LaneData(b + FieldR) = state.R
-        LaneData(b + FieldColTime) = colTime
+#If NET Then
+        Blocks(lane \ Lanes).SetLane(lane Mod Lanes, state, colTime)
+#End If
     End Sub
 
     ''' <summary>
