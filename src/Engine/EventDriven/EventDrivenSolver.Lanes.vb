@@ -11,11 +11,11 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     ''' <summary>Moves gridded body i to the cell (if it is not there already) and publishes it there.</summary>
     Private Sub MoveToCell(i As Integer, cell As Integer)
-        If cell = _cell(i) Then Return
-        Dim pulled = _grid.Remove(i, _cell(i))
+        If cell = _ev(i).Cell Then Return
+        Dim pulled = _grid.Remove(i, _ev(i).Cell)
         If pulled >= 0 Then Publish(pulled)
         _grid.Insert(i, cell)
-        _cell(i) = cell
+        _ev(i).Cell = cell
         Publish(i)
     End Sub
 
@@ -24,19 +24,19 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' its lane shows the new motion at once, before anything is predicted against it.
     ''' </summary>
     Private Sub Changed(i As Integer)
-        _count(i) += 1
+        _ev(i).Count += 1
         Publish(i)
     End Sub
 
     ''' <summary>Copies body i's motion and next collision time into its grid lane (see UniformGrid).</summary>
     Private Sub Publish(i As Integer)
-        _grid.Publish(i, _body(i), _colTime(i))
+        _grid.Publish(i, _body(i), _ev(i).ColTime)
     End Sub
 
     ''' <summary>Throws when a lane differs from its body or a gridded body is missing from its cell.</summary>
     Private Sub CheckLanes()
         For i = 0 To _n - 1
-            Dim cell = _cell(i)
+            Dim cell = _ev(i).Cell
             If cell < 0 Then Continue For
             Dim lane = _grid.LaneOf(i)
             If lane < 0 Then
@@ -52,7 +52,7 @@ Partial Public NotInheritable Class EventDrivenSolver
                 Throw New InvalidOperationException($"body {i} has lane {lane}, which is not its own in cell {cell}")
             End If
 #If NET Then
-            If Not _grid.Blocks(cell).LaneIs(lane Mod UniformGrid.Lanes, _body(i), _colTime(i)) Then
+            If Not _grid.Blocks(cell).LaneIs(lane Mod UniformGrid.Lanes, _body(i), _ev(i).ColTime) Then
                 Throw New InvalidOperationException($"the lane of body {i} lags its motion at t = {_now} s")
             End If
 #End If

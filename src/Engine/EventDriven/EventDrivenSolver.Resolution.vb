@@ -4,14 +4,14 @@ Option Strict On
 ' report it, apply the resting and sleeping rules, and reschedule the bodies involved.
 Partial Public NotInheritable Class EventDrivenSolver
     Private Sub ProcessEvent(i As Integer)
-        If _cellTime(i) <= _colTime(i) Then
+        If _ev(i).CellTime <= _ev(i).ColTime Then
             CrossCell(i)
             Return
         End If
-        Select Case _evKind(i)
+        Select Case _ev(i).Kind
             Case EventKind.Circle
-                Dim j = _evOther(i)
-                If _count(j) <> _evOtherCount(i) Then
+                Dim j = _ev(i).Other
+                If _ev(j).Count <> _ev(i).OtherCount Then
                     Reschedule(i) ' stale: the partner's motion changed since this was predicted
                 ElseIf _body(i).Mode = BodyMode.Sliding OrElse _body(j).Mode = BodyMode.Sliding Then
                     ' Something reached a sliding ball's corner: stop following the slide exactly.
@@ -23,16 +23,16 @@ Partial Public NotInheritable Class EventDrivenSolver
                     CollideCircles(i, j)
                 End If
             Case EventKind.FixedCircle
-                Dim k = _evOther(i)
+                Dim k = _ev(i).Other
                 Sync(i)
                 Dim n = New Vector(_body(i).Px - _fx(k), _body(i).Py - _fy(k)).Normalized(New Vector(0, 1))
                 CollideStatic(i, n, _fixed(k), WallSide.None, CollisionKind.CircleFixed, SupportOther)
             Case EventKind.Rectangle
-                CollideRectangle(i, _evOther(i), _evFeature(i))
+                CollideRectangle(i, _ev(i).Other, _ev(i).Feature)
             Case EventKind.Wall
-                CollideWall(i, CType(_evFeature(i), WallSide))
+                CollideWall(i, CType(_ev(i).Feature, WallSide))
             Case EventKind.EdgeLeave
-                LeaveEdge(i, _evOther(i))
+                LeaveEdge(i, _ev(i).Other)
             Case EventKind.SlideEnd
                 EndSlide(i)
             Case Else
@@ -415,13 +415,13 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' <summary>Fills the scratch stack with the movable bodies in the 3 × 3 cells around i (all bodies if i is oversized); returns how many.</summary>
     Private Function Neighbours(i As Integer) As Integer
         Dim count = 0
-        If _cell(i) < 0 Then
+        If _ev(i).Cell < 0 Then
             For j = 0 To _n - 1
                 If j <> i Then _stack(count) = j : count += 1
             Next
             Return count
         End If
-        Dim col = _cell(i) Mod _grid.Nx, row = _cell(i) \ _grid.Nx
+        Dim col = _ev(i).Cell Mod _grid.Nx, row = _ev(i).Cell \ _grid.Nx
         For rr = Math.Max(0, row - 1) To Math.Min(_grid.Ny - 1, row + 1)
             For cc = Math.Max(0, col - 1) To Math.Min(_grid.Nx - 1, col + 1)
                 Dim cell = rr * _grid.Nx + cc
@@ -496,7 +496,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     End Sub
 
     Private Sub MoveToCellOfPosition(i As Integer)
-        If _cell(i) < 0 Then Return
+        If _ev(i).Cell < 0 Then Return
         MoveToCell(i, _grid.CellOf(_body(i).Px, _body(i).Py))
     End Sub
 

@@ -51,9 +51,9 @@ Partial Public NotInheritable Class EventDrivenSolver
                     If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Top
                 End If
             End If
-            If _cell(i) >= 0 Then
+            If _ev(i).Cell >= 0 Then
                 ' A static obstacle is listed in every cell within half a cell of it, so the own cell suffices.
-                Dim c = _cell(i)
+                Dim c = _ev(i).Cell
                 For s = _grid.StaticStart(c) To _grid.StaticStart(c + 1) - 1
                     CheckStatic(_grid.StaticItems(s), px, py, vx, vy, ay, r, best, kind, other, feature)
                 Next
@@ -65,8 +65,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         End If
         ' Movable neighbours.
         Dim asleep = m = BodyMode.Sleeping
-        If _cell(i) >= 0 Then
-            Dim cell = _cell(i)
+        If _ev(i).Cell >= 0 Then
+            Dim cell = _ev(i).Cell
             Dim col = cell Mod _grid.Nx, row = cell \ _grid.Nx
             ScanCells(i, col - 1, col + 1, row - 1, row + 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
             For k = 0 To _nOversized - 1
@@ -94,8 +94,8 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' the statics of the new cell, are searched.
     ''' </summary>
     Private Sub CrossCell(i As Integer)
-        Dim cell = _cell(i)
-        Dim dir = _cellDir(i)
+        Dim cell = _ev(i).Cell
+        Dim dir = _ev(i).CellDir
         Dim target = cell
         Select Case dir
             Case 0 : target = cell - 1
@@ -104,14 +104,14 @@ Partial Public NotInheritable Class EventDrivenSolver
             Case Else : target = cell + _grid.Nx
         End Select
         MoveToCell(i, target)
-        Dim kind = _evKind(i)
-        If kind = EventKind.Circle AndAlso _count(_evOther(i)) <> _evOtherCount(i) Then
+        Dim kind = _ev(i).Kind
+        If kind = EventKind.Circle AndAlso _ev(_ev(i).Other).Count <> _ev(i).OtherCount Then
             Reschedule(i) ' the kept prediction went stale: start afresh
             Return
         End If
-        Dim best = _colTime(i) - _now
-        Dim other = _evOther(i)
-        Dim feature = _evFeature(i)
+        Dim best = _ev(i).ColTime - _now
+        Dim other = _ev(i).Other
+        Dim feature = _ev(i).Feature
         Dim m = _body(i).Mode
         Dim tau = _now - _body(i).T0
         Dim ay = _body(i).Ay
@@ -208,7 +208,7 @@ Partial Public NotInheritable Class EventDrivenSolver
                 ' partner's own next collision (it is rescheduled then and finds this pair again,
                 ' so filing it here would only go stale).
                 Dim hit = (b < 0) And (disc > TimeOfImpact.GrazeFraction * b * b) And (t < best)
-                If hit AndAlso _now + t <= _colTime(j) Then
+                If hit AndAlso _now + t <= _ev(j).ColTime Then
                     best = t
                     kind = EventKind.Circle
                     other = j
@@ -296,14 +296,14 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' <summary>Files body i's next collision-type event and its next cell exit (times from now, s).</summary>
     Private Sub FileEvent(i As Integer, dt As Double, kind As EventKind, other As Integer, feature As Integer,
                           exitDt As Double, exitDir As Integer)
-        _evKind(i) = kind
-        _evOther(i) = other
-        _evOtherCount(i) = If(kind = EventKind.Circle, _count(other), 0)
-        _evFeature(i) = feature
-        _colTime(i) = If(dt < Double.PositiveInfinity, _now + dt, Double.PositiveInfinity)
-        _cellTime(i) = If(exitDt < Double.PositiveInfinity, _now + exitDt, Double.PositiveInfinity)
-        _cellDir(i) = exitDir
-        _evTime(i) = Math.Min(_colTime(i), _cellTime(i))
+        _ev(i).Kind = kind
+        _ev(i).Other = other
+        _ev(i).OtherCount = If(kind = EventKind.Circle, _ev(other).Count, 0)
+        _ev(i).Feature = feature
+        _ev(i).ColTime = If(dt < Double.PositiveInfinity, _now + dt, Double.PositiveInfinity)
+        _ev(i).CellTime = If(exitDt < Double.PositiveInfinity, _now + exitDt, Double.PositiveInfinity)
+        _ev(i).CellDir = exitDir
+        _evTime(i) = Math.Min(_ev(i).ColTime, _ev(i).CellTime)
         _queue.Update(i)
         Publish(i)
     End Sub
@@ -371,7 +371,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private Function CellExit(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
                               ByRef dir As Integer) As Double
         Dim best = Double.PositiveInfinity
-        Dim cell = _cell(i)
+        Dim cell = _ev(i).Cell
         If cell < 0 OrElse asleep OrElse (vx = 0 AndAlso vy = 0 AndAlso ay = 0) Then Return best
         Dim col = cell Mod _grid.Nx, row = cell \ _grid.Nx
         Dim t As Double

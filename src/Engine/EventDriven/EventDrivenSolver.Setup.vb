@@ -17,8 +17,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         LoadMovables(w)
         For i = 0 To _n - 1
             _evTime(i) = Double.PositiveInfinity
-            _colTime(i) = Double.PositiveInfinity
-            _cellTime(i) = Double.PositiveInfinity
+            _ev(i).ColTime = Double.PositiveInfinity
+            _ev(i).CellTime = Double.PositiveInfinity
         Next
         LayoutGrid()
         _queue.Reset(_evTime, _n)
@@ -78,7 +78,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             _circle(i) = c
             _index(c) = i
             LoadBody(i, c)
-            _count(i) = 0
+            _ev(i).Count = 0
             _lastHit(i) = Double.NegativeInfinity
             _burstStart(i) = Double.NegativeInfinity
             _burstCount(i) = 0
@@ -121,8 +121,6 @@ Partial Public NotInheritable Class EventDrivenSolver
         ReDim _circle(capacity - 1)
         ReDim _body(capacity - 1)
         ReDim _invMass(capacity - 1)
-        ReDim _count(capacity - 1)
-        ReDim _cell(capacity - 1)
         ReDim _support(capacity - 1)
         ReDim _lastHit(capacity - 1)
         ReDim _burstStart(capacity - 1)
@@ -130,13 +128,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         ReDim _sameTime(capacity - 1)
         ReDim _sameCount(capacity - 1)
         ReDim _evTime(capacity - 1)
-        ReDim _colTime(capacity - 1)
-        ReDim _cellTime(capacity - 1)
-        ReDim _cellDir(capacity - 1)
-        ReDim _evKind(capacity - 1)
-        ReDim _evOther(capacity - 1)
-        ReDim _evOtherCount(capacity - 1)
-        ReDim _evFeature(capacity - 1)
+        ReDim _ev(capacity - 1)
         ReDim _slideCx(capacity - 1)
         ReDim _slideCy(capacity - 1)
         ReDim _slideDir(capacity - 1)
@@ -178,10 +170,10 @@ Partial Public NotInheritable Class EventDrivenSolver
         _grid.Layout(_width, _height, cell, _n, 4 * _n + 64)
         For i = 0 To _n - 1
             If _body(i).R > limit Then
-                _cell(i) = -1
+                _ev(i).Cell = -1
             Else
-                _cell(i) = _grid.CellOf(_body(i).Px, _body(i).Py)
-                _grid.Insert(i, _cell(i))
+                _ev(i).Cell = _grid.CellOf(_body(i).Px, _body(i).Py)
+                _grid.Insert(i, _ev(i).Cell)
                 Publish(i)
             End If
         Next

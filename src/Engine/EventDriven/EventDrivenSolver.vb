@@ -21,10 +21,6 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private _circle As Circle() = Array.Empty(Of Circle)()
     Private _body As BodyState() = Array.Empty(Of BodyState)()
     Private _invMass As Double() = Array.Empty(Of Double)()
-    ''' <summary>Bumped whenever a body's motion changes; events remember it to detect staleness.</summary>
-    Private _count As Integer() = Array.Empty(Of Integer)()
-    ''' <summary>Cell in the grid, or −1 for an oversized circle.</summary>
-    Private _cell As Integer() = Array.Empty(Of Integer)()
     ''' <summary>What a resting circle rests on: rectangle index ≥ 0, or <see cref="SupportFloor"/>/<see cref="SupportOther"/>.</summary>
     Private _support As Integer() = Array.Empty(Of Integer)()
     ''' <summary>Time of the body's last collision, s (for the inelastic-collapse guard).</summary>
@@ -36,15 +32,10 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private _sameTime As Double() = Array.Empty(Of Double)()
     Private _sameCount As Integer() = Array.Empty(Of Integer)()
 
-    ' The next event of each body (one slot per body, kept in the indexed heap).
+    ' The next event of each body (one slot per body, kept in the indexed heap): its time (the
+    ' queue's key) and the rest of it, with the body's counter and cell, in one struct (see EventSlot).
     Private _evTime As Double() = Array.Empty(Of Double)()
-    Private _colTime As Double() = Array.Empty(Of Double)()
-    Private _cellTime As Double() = Array.Empty(Of Double)()
-    Private _cellDir As Integer() = Array.Empty(Of Integer)()
-    Private _evKind As EventKind() = Array.Empty(Of EventKind)()
-    Private _evOther As Integer() = Array.Empty(Of Integer)()
-    Private _evOtherCount As Integer() = Array.Empty(Of Integer)()
-    Private _evFeature As Integer() = Array.Empty(Of Integer)()
+    Private _ev As EventSlot() = Array.Empty(Of EventSlot)()
 
     ' Sliding over a corner: centre of the arc, its radius, direction (±1), starting speed, leave angle, start and end times.
     Private _slideCx As Double() = Array.Empty(Of Double)()
