@@ -1,116 +1,244 @@
 Option Strict On
 
 ''' <summary>
-''' An indexed 4-ary min-heap of bodies keyed by the time of each body's next event: one entry per
-''' body, updated in place when the body is rescheduled, so nothing is allocated per event and the
-''' heap never fills with stale entries. Each entry carries its key, so sifting compares within the
-''' heap array (no lookup per comparison), and a node's four children share one cache line; the
-''' heap is half as deep as a binary one. Times are kept as integers that sort like the doubles
-''' (<see cref="SortKey"/>), so the earliest of four children is picked with conditional moves
-''' rather than unpredictable branches, and four padding entries that never win spare the checks
-''' for a node with fewer than four children.
+''' The event-driven solver's queue: which body has the earliest next event. One entry per body,
+''' moved in place when the body is rescheduled, so nothing is allocated per event and no stale
+''' entries pile up.
+''' <para>
+''' It is a calendar queue (R. Brown, 1988): time is cut into buckets of equal width, a "year" of
+''' <c>nb</c> buckets is laid over the near future, and each body sits in the unsorted list of the
+''' bucket its time falls in. Filing a body is O(1) (unlink, link); finding the earliest scans only
+''' the current bucket, which holds a couple of entries, and moves on to the next when it is empty.
+''' Times beyond the year wait in an overflow list that is sorted into the buckets as each new year
+''' begins; +∞ waits in a list of its own. The bucket width adapts to the traffic: it halves when
+''' buckets get crowded and doubles when most are empty. A binary heap costs O(log N) per event and
+''' touches a cache line per level; at N = 10 000 it took a sixth of the solver's time.
+''' </para>
+''' The earliest is exact whatever the width: a bucket only ever holds times of its own width of the
+''' current year (or earlier ones, filed into the current bucket), and the whole bucket is scanned.
 ''' </summary>
 Friend NotInheritable Class EventQueue
-    Private Structure Entry
-        Friend Key As Long
-        Friend Body As Integer
-    End Structure
-
-    ''' <summary>Sorts after every real time: the padding behind the last entry.</summary>
-    Private Const Padding As Long = Long.MaxValue
-
-    Private _heap As Entry() = Array.Empty(Of Entry)()
-    Private _pos As Integer() = Array.Empty(Of Integer)()
     Private _time As Double()
-    Private _count As Integer
+    Private _n As Integer
+    ''' <summary>Buckets (a power of two), then the overflow list, then the list of +∞.</summary>
+    Private _buckets As Integer
+    Private _mask As Long
+    Private _head As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Per body: the list it is in, and its neighbours there (−1 at the ends).</summary>
+    Private _list As Integer() = Array.Empty(Of Integer)()
+    Private _next As Integer() = Array.Empty(Of Integer)()
+    Private _prev As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>1 / bucket width, 1/s; 0 until the first <see cref="Top"/> after <see cref="Reset"/> measures the times.</summary>
+    Private _perSecond As Double
+    ''' <summary>The current bucket, counted from time 0 (a bucket index before the modulo).</summary>
+    Private _current As Long
+    ' Traffic since the width was last reviewed: tops answered, entries scanned, empty buckets skipped.
+    Private _tops As Long
+    Private _scanned As Long
+    Private _skipped As Long
 
-    ''' <summary>Holds bodies 0 … n − 1 keyed by <paramref name="time"/> (read, never written).</summary>
-    Friend Sub Reset(time As Double(), n As Integer)
-        _time = time
-        If _heap.Length < n + 4 Then
-            _heap = New Entry(n + 3) {}
-            _pos = New Integer(n - 1) {}
-        End If
-        _count = n
-        For i = 0 To n - 1
-            _heap(i).Key = SortKey(time(i))
-            _heap(i).Body = i
-            _pos(i) = i
-        Next
-        For i = n To _heap.Length - 1
-            _heap(i).Key = Padding
-            _heap(i).Body = -1
-        Next
-        ' The last parent is (n − 2) \ 4; with fewer than two entries there is none (and VB's \
-        ' truncates −2 \ 4 to 0, which would touch an empty heap).
-        If n < 2 Then Return
-        For k = (n - 2) \ 4 To 0 Step -1
-            SiftDown(k, _heap(k))
-        Next
-    End Sub
-
-    ''' <summary>The body with the earliest event, or −1 when empty.</summary>
-    Friend ReadOnly Property Top As Integer
+    Private ReadOnly Property OverflowList As Integer
         Get
-            Return If(_count = 0, -1, _heap(0).Body)
+            Return _buckets
         End Get
     End Property
 
-    ''' <summary>Restores heap order after body i's time changed.</summary>
-    Friend Sub Update(i As Integer)
-        Dim k = _pos(i)
-        Dim item As Entry
-        item.Key = SortKey(_time(i))
-        item.Body = i
-        If k > 0 AndAlso _heap((k - 1) >> 2).Key > item.Key Then SiftUp(k, item) Else SiftDown(k, item)
+    Private ReadOnly Property NeverList As Integer
+        Get
+            Return _buckets + 1
+        End Get
+    End Property
+
+    ''' <summary>Holds bodies 0 … n − 1 keyed by <paramref name="time"/> (s; read, never written).</summary>
+    Friend Sub Reset(time As Double(), n As Integer)
+        _time = time
+        _n = n
+        Dim nb = 16
+        While nb < 2 * n
+            nb *= 2
+        End While
+        _buckets = nb
+        _mask = nb - 1
+        If _head.Length < nb + 2 Then _head = New Integer(nb + 1) {}
+        For b = 0 To nb + 1
+            _head(b) = -1
+        Next
+        If _list.Length < n Then
+            _list = New Integer(n - 1) {}
+            _next = New Integer(n - 1) {}
+            _prev = New Integer(n - 1) {}
+        End If
+        _perSecond = 0
+        _current = 0
+        _tops = 0
+        _scanned = 0
+        _skipped = 0
+        For i = 0 To n - 1
+            Link(i, If(time(i) < Double.PositiveInfinity, OverflowList, NeverList))
+        Next
     End Sub
 
-    ''' <summary>
-    ''' An integer that orders like the time t (s): the IEEE bits of a double already order like the
-    ''' number for t ≥ 0 (and +∞); for t &lt; 0 the bits below the sign are flipped.
-    ''' </summary>
-    Private Shared Function SortKey(t As Double) As Long
-        Dim bits = BitConverter.DoubleToInt64Bits(t)
-        Return bits Xor ((bits >> 63) And Long.MaxValue)
+    ''' <summary>Files body i again after its time changed.</summary>
+    Friend Sub Update(i As Integer)
+        Dim target = ListFor(_time(i))
+        If target = _list(i) Then Return
+        Unlink(i)
+        Link(i, target)
+    End Sub
+
+    ''' <summary>The body with the earliest time (one of them, on a tie); −1 when there are no bodies.</summary>
+    Friend Function Top() As Integer
+        If _n = 0 Then Return -1
+        If _perSecond = 0 Then
+            Calibrate()
+            If _perSecond = 0 Then Return _head(NeverList) ' no finite time at all
+        ElseIf _tops >= _buckets Then
+            ReviewWidth()
+        End If
+        Dim head = _head, nextOf = _next, time = _time
+        Dim empty = 0
+        Do
+            Dim j = head(CInt(_current And _mask))
+            If j >= 0 Then
+                Dim best = j
+                Dim bestTime = time(j)
+                j = nextOf(j)
+                While j >= 0
+                    _scanned += 1
+                    If time(j) < bestTime Then
+                        best = j
+                        bestTime = time(j)
+                    End If
+                    j = nextOf(j)
+                End While
+                _tops += 1
+                Return best
+            End If
+            _skipped += 1
+            empty += 1
+            _current += 1
+            ' A new year: its overflow entries may land in buckets passed in this search.
+            If (_current And _mask) = 0 AndAlso SortOverflow() Then empty = 0
+            If empty >= _buckets Then
+                ' A whole year of empty buckets: go straight to the earliest time left over.
+                If head(OverflowList) < 0 Then Return head(NeverList)
+                JumpToOverflow()
+                empty = 0
+            End If
+        Loop
     End Function
 
-    Private Sub SiftUp(k As Integer, item As Entry)
-        Dim heap = _heap, pos = _pos
-        While k > 0
-            Dim parent = (k - 1) >> 2
-            Dim p = heap(parent)
-            If p.Key <= item.Key Then Exit While
-            heap(k) = p
-            pos(p.Body) = k
-            k = parent
+    Private Function ListFor(t As Double) As Integer
+        If Not (t < Double.PositiveInfinity) Then Return NeverList
+        If _perSecond = 0 Then Return OverflowList
+        Dim b = BucketOf(t)
+        If b < _current Then b = _current ' late: the current bucket, which is scanned whole
+        If b - _current >= _buckets Then Return OverflowList
+        Return CInt(b And _mask)
+    End Function
+
+    ''' <summary>The bucket of time t counted from 0 (clamped far beyond any year, so it cannot overflow).</summary>
+    Private Function BucketOf(t As Double) As Long
+        Const Limit = 4.0E+18
+        Dim x = t * _perSecond
+        If x >= Limit Then Return CLng(Limit)
+        If x <= -Limit Then Return CLng(-Limit)
+        Return CLng(Math.Floor(x))
+    End Function
+
+    ''' <summary>
+    ''' First width: twice the mean time ahead of the earliest, over the number of bodies, so about
+    ''' two entries share a bucket near the front.
+    ''' </summary>
+    Private Sub Calibrate()
+        Dim count = 0
+        Dim earliest = Double.PositiveInfinity, sum = 0.0
+        Dim j = _head(OverflowList)
+        While j >= 0
+            count += 1
+            earliest = Math.Min(earliest, _time(j))
+            sum += _time(j)
+            j = _next(j)
         End While
-        heap(k) = item
-        pos(item.Body) = k
+        If count = 0 Then Return
+        Dim width = 2 * (sum / count - earliest) / count
+        If Not (width > 0 AndAlso width < Double.PositiveInfinity) Then width = 1.0E-9 * Math.Max(1.0, Math.Abs(earliest))
+        _perSecond = 1 / width
+        If Double.IsInfinity(_perSecond) Then _perSecond = Double.MaxValue
+        JumpToOverflow()
     End Sub
 
-    Private Sub SiftDown(k As Integer, item As Entry)
-        Dim heap = _heap, pos = _pos
-        Dim count = _count
-        Dim key = item.Key
-        Do
-            Dim first = 4 * k + 1
-            If first >= count Then Exit Do
-            ' The earliest of the four children (padding never wins; the first one wins a tie), as
-            ' a small tournament of selects the JIT compiles to conditional moves.
-            Dim k0 = heap(first).Key, k1 = heap(first + 1).Key, k2 = heap(first + 2).Key, k3 = heap(first + 3).Key
-            Dim a = If(k1 < k0, first + 1, first)
-            Dim ka = If(k1 < k0, k1, k0)
-            Dim b = If(k3 < k2, first + 3, first + 2)
-            Dim kb = If(k3 < k2, k3, k2)
-            Dim child = If(kb < ka, b, a)
-            Dim kc = If(kb < ka, kb, ka)
-            If key <= kc Then Exit Do
-            Dim moved = heap(child)
-            heap(k) = moved
-            pos(moved.Body) = k
-            k = child
-        Loop
-        heap(k) = item
-        pos(item.Body) = k
+    ''' <summary>Every <c>nb</c> answers: halve the width if buckets are crowded, double it if they are mostly empty.</summary>
+    Private Sub ReviewWidth()
+        Dim factor = 1.0
+        If _scanned > 4 * _tops Then
+            factor = 2
+        ElseIf _skipped > 4 * _tops Then
+            factor = 0.5
+        End If
+        _tops = 0
+        _scanned = 0
+        _skipped = 0
+        If factor = 1 Then Return
+        Dim perSecond = _perSecond * factor
+        If Not (perSecond > 0 AndAlso perSecond < Double.PositiveInfinity) Then Return
+        _perSecond = perSecond
+        ' Every bucket's entry goes back to the overflow list and is sorted in again at the new width.
+        For b = 0 To _buckets - 1
+            Dim j = _head(b)
+            While j >= 0
+                Dim nx = _next(j)
+                Unlink(j)
+                Link(j, OverflowList)
+                j = nx
+            End While
+        Next
+        JumpToOverflow()
+    End Sub
+
+    ''' <summary>Makes the bucket of the earliest overflow time current and sorts the overflow in.</summary>
+    Private Sub JumpToOverflow()
+        Dim first = Long.MaxValue
+        Dim j = _head(OverflowList)
+        While j >= 0
+            first = Math.Min(first, BucketOf(_time(j)))
+            j = _next(j)
+        End While
+        If first = Long.MaxValue Then Return
+        _current = first
+        SortOverflow()
+    End Sub
+
+    ''' <summary>Moves every overflow entry that falls in the current year into its bucket; True if any moved.</summary>
+    Private Function SortOverflow() As Boolean
+        Dim moved = False
+        Dim yearEnd = (_current And Not _mask) + _buckets
+        Dim j = _head(OverflowList)
+        While j >= 0
+            Dim nx = _next(j)
+            Dim b = BucketOf(_time(j))
+            If b < yearEnd Then
+                Unlink(j)
+                Link(j, CInt(Math.Max(b, _current) And _mask))
+                moved = True
+            End If
+            j = nx
+        End While
+        Return moved
+    End Function
+
+    Private Sub Link(i As Integer, list As Integer)
+        Dim h = _head(list)
+        _next(i) = h
+        _prev(i) = -1
+        If h >= 0 Then _prev(h) = i
+        _head(list) = i
+        _list(i) = list
+    End Sub
+
+    Private Sub Unlink(i As Integer)
+        Dim p = _prev(i), n = _next(i)
+        If p >= 0 Then _next(p) = n Else _head(_list(i)) = n
+        If n >= 0 Then _prev(n) = p
     End Sub
 End Class
