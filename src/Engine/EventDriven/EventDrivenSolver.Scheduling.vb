@@ -145,39 +145,41 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private Sub ScanCells(i As Integer, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, asleep As Boolean,
                           px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                           ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim nx = _grid.Nx
-        Dim c0 = Math.Max(0, col0), c1 = Math.Min(nx - 1, col1)
-        For rr = Math.Max(0, row0) To Math.Min(_grid.Ny - 1, row1)
+        Dim c0 = Math.Max(0, col0), c1 = Math.Min(_grid.Nx - 1, col1)
+        Dim r0 = Math.Max(0, row0), r1 = Math.Min(_grid.Ny - 1, row1)
 #If NET Then
-            If VectorScan Then
-                ScanLanesVector(i, rr * nx + c0, rr * nx + c1, asleep, px, py, vx, vy, ay, r, best, kind, other)
-            Else
-                ScanLanesScalar(i, rr * nx + c0, rr * nx + c1, asleep, px, py, vx, vy, ay, r, best, kind, other)
-            End If
-#Else
-            ScanLanesScalar(i, rr * nx + c0, rr * nx + c1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+        If VectorScan Then
+            ScanLanesVector(i, c0, c1, r0, r1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+            Return
+        End If
 #End If
-            Dim overflowHead = _grid.OverflowHead
+        ScanLanesScalar(i, c0, c1, r0, r1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+    End Sub
+
+    ''' <summary>Cells c0 … c1 × r0 … r1, one body at a time, from the bodies' own state.</summary>
+    Private Sub ScanLanesScalar(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, asleep As Boolean,
+                                px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                                ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        Dim count = _grid.Count, laneBody = _grid.LaneBody, nx = _grid.Nx
+        For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
-                Dim j = overflowHead(cell)
-                While j >= 0
-                    ScanBody(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
-                    j = _grid.OverflowNext(j)
-                End While
+                If _grid.OverflowHead(cell) >= 0 Then ScanOverflow(i, cell, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                For lane = cell * UniformGrid.Lanes To cell * UniformGrid.Lanes + count(cell) - 1
+                    ScanBody(i, laneBody(lane), asleep, px, py, vx, vy, ay, r, best, kind, other)
+                Next
             Next
         Next
     End Sub
 
-    ''' <summary>The lanes of cells first … last (one row), one body at a time, from the bodies' own state.</summary>
-    Private Sub ScanLanesScalar(i As Integer, first As Integer, last As Integer, asleep As Boolean,
-                                px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
-                                ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim count = _grid.Count, laneBody = _grid.LaneBody
-        For cell = first To last
-            For lane = cell * UniformGrid.Lanes To cell * UniformGrid.Lanes + count(cell) - 1
-                ScanBody(i, laneBody(lane), asleep, px, py, vx, vy, ay, r, best, kind, other)
-            Next
-        Next
+    ''' <summary>The bodies beyond the cell's lanes, one at a time.</summary>
+    Private Sub ScanOverflow(i As Integer, cell As Integer, asleep As Boolean,
+                             px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                             ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        Dim j = _grid.OverflowHead(cell)
+        While j >= 0
+            ScanBody(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+            j = _grid.OverflowNext(j)
+        End While
     End Sub
 
     ''' <summary>Body i against body j: the pair test of <see cref="ScanCells"/> for one body.</summary>
@@ -221,15 +223,17 @@ Partial Public NotInheritable Class EventDrivenSolver
 
 #If NET Then
     ''' <summary>
-    ''' The lanes of cells first … last (one row), four at a time, from the published copies: the
+    ''' Cells c0 … c1 × r0 … r1, four lanes at a time, from the published copies (overflow first, one
+    ''' by one, as in <see cref="ScanLanesScalar"/>): the
     ''' pair test of <see cref="ScanBody"/> with the same arithmetic, lane by lane. Lanes whose body
     ''' is not free under the same gravity, and touching pairs, go to <see cref="CheckPair"/>; a hit
     ''' earlier than the best so far is taken in lane order, as the scalar loop would.
     ''' </summary>
-    Private Sub ScanLanesVector(i As Integer, first As Integer, last As Integer, asleep As Boolean,
+    Private Sub ScanLanesVector(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, asleep As Boolean,
                                 px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                                 ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim blocks = _grid.Blocks, count = _grid.Count, laneBody = _grid.LaneBody
+        Dim blocks = _grid.Blocks, count = _grid.Count, laneBody = _grid.LaneBody, overflow = _grid.OverflowHead
+        Dim nx = _grid.Nx
         Dim vNow = Vector256.Create(_now)
         Dim vPx = Vector256.Create(px), vPy = Vector256.Create(py)
         Dim vVx = Vector256.Create(vx), vVy = Vector256.Create(vy)
@@ -242,52 +246,55 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim laneIndex = Vector256.Create(0.0, 1.0, 2.0, 3.0)
         Dim vMargin = Vector256.Create(1 + 1.0E-6)
         Dim bestSeen = best, vInvBest = Vector256.Create(1 / best)
-        For cell = first To last
-            Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
-            Dim hot = valid And Vector256.Equals(blocks(cell).Ay, vMatch)
-            Dim tj = vNow - blocks(cell).T0
-            Dim jvx = blocks(cell).Vx
-            Dim jvy = blocks(cell).Vy
-            Dim dx = vPx - (blocks(cell).Px + jvx * tj)
-            Dim dy = vPy - (blocks(cell).Py + (jvy + vHalfAy * tj) * tj)
-            Dim dvx = vVx - jvx
-            Dim dvy = vVy - (jvy + vAy * tj)
-            Dim b = dx * dvx + dy * dvy
-            Dim sumR = vR + blocks(cell).R
-            Dim c = dx * dx + dy * dy - sumR * sumR
-            Dim touching = Vector256.LessThanOrEqual(c, vTwo * sumR * vSlop)
-            Dim approaching = Vector256.LessThan(b, vZero)
-            Dim a = dvx * dvx + dvy * dvy
-            Dim disc = b * b - a * c
-            If best <> bestSeen Then
-                bestSeen = best
-                vInvBest = Vector256.Create(1 / best)
-            End If
-            ' Which lanes can hit before the best so far, without the square root and the division
-            ' (the slow part of the pair test): t = c / (√disc − b) < best exactly when
-            ' √disc > u = c / best + b, that is u < 0 or disc > u². The margin makes it a filter
-            ' that lets through every lane the exact test below accepts.
-            Dim u = c * vInvBest + b
-            Dim candidate = Vector256.AndNot(hot And approaching, touching) And
-                            Vector256.GreaterThan(disc, vGraze * b * b) And
-                            (Vector256.LessThan(u, vZero) Or Vector256.GreaterThan(disc * vMargin, u * u))
-            Dim slow = Vector256.AndNot(valid, hot) Or (hot And touching And approaching)
-            Dim special = Vector256.ExtractMostSignificantBits(slow)
-            Dim maybe = Vector256.ExtractMostSignificantBits(candidate)
-            If (maybe Or special) = 0 Then Continue For
-            Dim t = c / (Vector256.Sqrt(disc) - b)
-            Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, blocks(cell).ColTime)
-            Dim tm = Vector256.ConditionalSelect(hit, t, vInf)
-            For k = 0 To UniformGrid.Lanes - 1
-                Dim bit = 1UI << k
-                If (special And bit) <> 0 Then
-                    Dim j = laneBody(cell * UniformGrid.Lanes + k)
-                    If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
-                ElseIf tm.GetElement(k) < best Then
-                    best = tm.GetElement(k)
-                    kind = EventKind.Circle
-                    other = laneBody(cell * UniformGrid.Lanes + k)
+        For rr = r0 To r1
+            For cell = rr * nx + c0 To rr * nx + c1
+                If overflow(cell) >= 0 Then ScanOverflow(i, cell, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
+                Dim hot = valid And Vector256.Equals(blocks(cell).Ay, vMatch)
+                Dim tj = vNow - blocks(cell).T0
+                Dim jvx = blocks(cell).Vx
+                Dim jvy = blocks(cell).Vy
+                Dim dx = vPx - (blocks(cell).Px + jvx * tj)
+                Dim dy = vPy - (blocks(cell).Py + (jvy + vHalfAy * tj) * tj)
+                Dim dvx = vVx - jvx
+                Dim dvy = vVy - (jvy + vAy * tj)
+                Dim b = dx * dvx + dy * dvy
+                Dim sumR = vR + blocks(cell).R
+                Dim c = dx * dx + dy * dy - sumR * sumR
+                Dim touching = Vector256.LessThanOrEqual(c, vTwo * sumR * vSlop)
+                Dim approaching = Vector256.LessThan(b, vZero)
+                Dim a = dvx * dvx + dvy * dvy
+                Dim disc = b * b - a * c
+                If best <> bestSeen Then
+                    bestSeen = best
+                    vInvBest = Vector256.Create(1 / best)
                 End If
+                ' Which lanes can hit before the best so far, without the square root and the division
+                ' (the slow part of the pair test): t = c / (√disc − b) < best exactly when
+                ' √disc > u = c / best + b, that is u < 0 or disc > u². The margin makes it a filter
+                ' that lets through every lane the exact test below accepts.
+                Dim u = c * vInvBest + b
+                Dim candidate = Vector256.AndNot(hot And approaching, touching) And
+                                Vector256.GreaterThan(disc, vGraze * b * b) And
+                                (Vector256.LessThan(u, vZero) Or Vector256.GreaterThan(disc * vMargin, u * u))
+                Dim slow = Vector256.AndNot(valid, hot) Or (hot And touching And approaching)
+                Dim special = Vector256.ExtractMostSignificantBits(slow)
+                Dim maybe = Vector256.ExtractMostSignificantBits(candidate)
+                If (maybe Or special) = 0 Then Continue For
+                Dim t = c / (Vector256.Sqrt(disc) - b)
+                Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, blocks(cell).ColTime)
+                Dim tm = Vector256.ConditionalSelect(hit, t, vInf)
+                For k = 0 To UniformGrid.Lanes - 1
+                    Dim bit = 1UI << k
+                    If (special And bit) <> 0 Then
+                        Dim j = laneBody(cell * UniformGrid.Lanes + k)
+                        If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                    ElseIf tm.GetElement(k) < best Then
+                        best = tm.GetElement(k)
+                        kind = EventKind.Circle
+                        other = laneBody(cell * UniformGrid.Lanes + k)
+                    End If
+                Next
             Next
         Next
     End Sub
