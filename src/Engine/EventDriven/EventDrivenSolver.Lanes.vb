@@ -9,13 +9,16 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' <summary>Checks every lane against its body after every event (slow: for tests).</summary>
     Friend Property CheckLanesEveryEvent As Boolean
 
-    ''' <summary>Moves gridded body i to the cell (if it is not there already) and publishes it there.</summary>
-    Private Sub MoveToCell(i As Integer, cell As Integer)
+    ''' <summary>Moves gridded body i to the cell at (col, row), if it is not there already, and publishes it there.</summary>
+    Private Sub MoveToCell(i As Integer, col As Integer, row As Integer)
+        Dim cell = row * _grid.Nx + col
         If cell = _ev(i).Cell Then Return
         Dim pulled = _grid.Remove(i, _ev(i).Cell)
         If pulled >= 0 Then Publish(pulled)
         _grid.Insert(i, cell)
         _ev(i).Cell = cell
+        _ev(i).Col = col
+        _ev(i).Row = row
         Publish(i)
     End Sub
 

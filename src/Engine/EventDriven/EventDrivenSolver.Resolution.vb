@@ -421,7 +421,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             Next
             Return count
         End If
-        Dim col = _ev(i).Cell Mod _grid.Nx, row = _ev(i).Cell \ _grid.Nx
+        Dim col = _ev(i).Col, row = _ev(i).Row
         For rr = Math.Max(0, row - 1) To Math.Min(_grid.Ny - 1, row + 1)
             For cc = Math.Max(0, col - 1) To Math.Min(_grid.Nx - 1, col + 1)
                 Dim cell = rr * _grid.Nx + cc
@@ -497,7 +497,7 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     Private Sub MoveToCellOfPosition(i As Integer)
         If _ev(i).Cell < 0 Then Return
-        MoveToCell(i, _grid.CellOf(_body(i).Px, _body(i).Py))
+        MoveToCell(i, _grid.ColumnOf(_body(i).Px), _grid.RowOf(_body(i).Py))
     End Sub
 
     Private Sub EndSlide(i As Integer)

@@ -67,7 +67,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim asleep = m = BodyMode.Sleeping
         If _ev(i).Cell >= 0 Then
             Dim cell = _ev(i).Cell
-            Dim col = cell Mod _grid.Nx, row = cell \ _grid.Nx
+            Dim col = _ev(i).Col, row = _ev(i).Row
             ScanCells(i, col - 1, col + 1, row - 1, row + 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
             For k = 0 To _nOversized - 1
                 CheckPair(i, _oversized(k), asleep, px, py, vx, vy, ay, r, best, kind, other)
@@ -94,16 +94,16 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' the statics of the new cell, are searched.
     ''' </summary>
     Private Sub CrossCell(i As Integer)
-        Dim cell = _ev(i).Cell
         Dim dir = _ev(i).CellDir
-        Dim target = cell
+        Dim col = _ev(i).Col, row = _ev(i).Row
         Select Case dir
-            Case 0 : target = cell - 1
-            Case 1 : target = cell + 1
-            Case 2 : target = cell - _grid.Nx
-            Case Else : target = cell + _grid.Nx
+            Case 0 : col -= 1
+            Case 1 : col += 1
+            Case 2 : row -= 1
+            Case Else : row += 1
         End Select
-        MoveToCell(i, target)
+        MoveToCell(i, col, row)
+        Dim target = _ev(i).Cell
         Dim kind = _ev(i).Kind
         If kind = EventKind.Circle AndAlso _ev(_ev(i).Other).Count <> _ev(i).OtherCount Then
             Reschedule(i) ' the kept prediction went stale: start afresh
@@ -126,7 +126,6 @@ Partial Public NotInheritable Class EventDrivenSolver
             Next
         End If
         Dim asleep = m = BodyMode.Sleeping
-        Dim col = target Mod _grid.Nx, row = target \ _grid.Nx
         Select Case dir
             Case 0 : ScanCells(i, col - 1, col - 1, row - 1, row + 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
             Case 1 : ScanCells(i, col + 1, col + 1, row - 1, row + 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
@@ -380,7 +379,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim best = Double.PositiveInfinity
         Dim cell = _ev(i).Cell
         If cell < 0 OrElse asleep OrElse (vx = 0 AndAlso vy = 0 AndAlso ay = 0) Then Return best
-        Dim col = cell Mod _grid.Nx, row = cell \ _grid.Nx
+        Dim col = _ev(i).Col, row = _ev(i).Row
         Dim t As Double
         dir = -1
         If col > 0 Then

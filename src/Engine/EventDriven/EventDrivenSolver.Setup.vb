@@ -172,7 +172,9 @@ Partial Public NotInheritable Class EventDrivenSolver
             If _body(i).R > limit Then
                 _ev(i).Cell = -1
             Else
-                _ev(i).Cell = _grid.CellOf(_body(i).Px, _body(i).Py)
+                _ev(i).Col = _grid.ColumnOf(_body(i).Px)
+                _ev(i).Row = _grid.RowOf(_body(i).Py)
+                _ev(i).Cell = _ev(i).Row * _grid.Nx + _ev(i).Col
                 _grid.Insert(i, _ev(i).Cell)
                 Publish(i)
             End If

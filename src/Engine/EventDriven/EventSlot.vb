@@ -21,6 +21,8 @@ Friend Structure EventSlot
     Friend Feature As Integer
     ''' <summary>Bumped whenever the body's motion changes; events remember it to detect staleness.</summary>
     Friend Count As Integer
-    ''' <summary>Cell in the grid, or −1 for an oversized circle.</summary>
+    ''' <summary>Cell in the grid, or −1 for an oversized circle; its column and row (no division to find them).</summary>
     Friend Cell As Integer
+    Friend Col As Integer
+    Friend Row As Integer
 End Structure
