@@ -141,7 +141,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     End Sub
 
     ''' <summary>
-    ''' Cells holding about 1.2 bodies each (few crossings, few neighbours), never narrower than the
+    ''' Cells holding about 2 bodies each (few crossings, few neighbours), never narrower than the
     ''' largest gridded diameter. Circles more than four times the median radius are "oversized": kept
     ''' out of the grid and checked against every body, so one giant does not make every cell huge.
     ''' </summary>

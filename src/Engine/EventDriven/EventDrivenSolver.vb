@@ -32,7 +32,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private _sameTime As Double() = Array.Empty(Of Double)()
     Private _sameCount As Integer() = Array.Empty(Of Integer)()
 
-    ' The next event of each body (one slot per body, kept in the indexed heap): its time (the
+    ' The next event of each body (one slot per body, kept in the calendar queue): its time (the
     ' queue's key) and the rest of it, with the body's counter and cell, in one struct (see EventSlot).
     Private _evTime As Double() = Array.Empty(Of Double)()
     Private _ev As EventSlot() = Array.Empty(Of EventSlot)()

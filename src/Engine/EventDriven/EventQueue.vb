@@ -11,7 +11,7 @@ Option Strict On
 ''' the current bucket, which holds a couple of entries, and moves on to the next when it is empty.
 ''' Times beyond the year wait in an overflow list that is sorted into the buckets as each new year
 ''' begins; +∞ waits in a list of its own. The bucket width adapts to the traffic: it halves when
-''' buckets get crowded and doubles when most are empty. A binary heap costs O(log N) per event and
+''' buckets get crowded and doubles when most are empty. A 4-ary heap costs O(log N) per event and
 ''' touches a cache line per level; at N = 10 000 it took a sixth of the solver's time.
 ''' </para>
 ''' The earliest is exact whatever the width: a bucket only ever holds times of its own width of the
