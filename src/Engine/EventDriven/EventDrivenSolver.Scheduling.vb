@@ -152,79 +152,77 @@ Partial Public NotInheritable Class EventDrivenSolver
             Return
         End If
 #End If
-        ScanLanesScalar(i, c0, c1, r0, r1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+        ScanBodies(i, c0, c1, r0, r1, True, asleep, px, py, vx, vy, ay, r, best, kind, other)
     End Sub
 
-    ''' <summary>Cells c0 … c1 × r0 … r1, one body at a time, from the bodies' own state.</summary>
-    Private Sub ScanLanesScalar(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, asleep As Boolean,
-                                px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
-                                ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim count = _grid.Count, laneBody = _grid.LaneBody, nx = _grid.Nx
+    ''' <summary>
+    ''' Cells c0 … c1 × r0 … r1, one body at a time, from the bodies' own state: each cell's overflow
+    ''' and then (when <paramref name="withLanes"/>) its lanes are listed, then tested in one loop.
+    ''' </summary>
+    Private Sub ScanBodies(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, withLanes As Boolean,
+                           asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                           ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        Dim count = _grid.Count, laneBody = _grid.LaneBody, nx = _grid.Nx, listed = _scanList
         For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
-                If _grid.OverflowHead(cell) >= 0 Then ScanOverflow(i, cell, asleep, px, py, vx, vy, ay, r, best, kind, other)
-                For lane = cell * UniformGrid.Lanes To cell * UniformGrid.Lanes + count(cell) - 1
-                    ScanBody(i, laneBody(lane), asleep, px, py, vx, vy, ay, r, best, kind, other)
+                Dim n = 0
+                Dim o = _grid.OverflowHead(cell)
+                While o >= 0
+                    listed(n) = o
+                    n += 1
+                    o = _grid.OverflowNext(o)
+                End While
+                If withLanes Then
+                    For lane = cell * UniformGrid.Lanes To cell * UniformGrid.Lanes + count(cell) - 1
+                        listed(n) = laneBody(lane)
+                        n += 1
+                    Next
+                End If
+                For q = 0 To n - 1
+                    Dim j = listed(q)
+                    If _body(j).Ay = ay AndAlso _body(j).Mode = BodyMode.Free AndAlso Not asleep Then
+                        ' Hot path (the elastic gas): same gravity, so the relative motion is a straight
+                        ' line and the contact time is the smaller root of a quadratic. The root is
+                        ' computed for every candidate and the tests combined into one condition: which
+                        ' pairs meet is random, and a mispredicted branch costs more than the square root.
+                        Dim tj = _now - _body(j).T0
+                        Dim dx = px - (_body(j).Px + _body(j).Vx * tj)
+                        Dim dy = py - (_body(j).Py + (_body(j).Vy + 0.5 * ay * tj) * tj)
+                        Dim dvx = vx - _body(j).Vx
+                        Dim dvy = vy - (_body(j).Vy + ay * tj)
+                        Dim b = dx * dvx + dy * dvy
+                        Dim sumR = r + _body(j).R
+                        Dim c = dx * dx + dy * dy - sumR * sumR
+                        If c <= 2 * sumR * _slop Then
+                            ' Touching (common in a pile): only an approach can be a collision now.
+                            If b < 0 AndAlso j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                        Else
+                            Dim a = dvx * dvx + dvy * dvy
+                            Dim disc = b * b - a * c
+                            Dim t = c / (Math.Sqrt(disc) - b)
+                            ' Approaching, not a graze, earlier than the best so far, and not after the
+                            ' partner's own next collision (it is rescheduled then and finds this pair
+                            ' again, so filing it here would only go stale).
+                            Dim hit = (b < 0) And (disc > TimeOfImpact.GrazeFraction * b * b) And (t < best)
+                            If hit AndAlso _now + t <= _ev(j).ColTime Then
+                                best = t
+                                kind = EventKind.Circle
+                                other = j
+                            End If
+                        End If
+                    ElseIf j <> i Then
+                        CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                    End If
                 Next
             Next
         Next
     End Sub
 
-    ''' <summary>The bodies beyond the cell's lanes, one at a time.</summary>
-    Private Sub ScanOverflow(i As Integer, cell As Integer, asleep As Boolean,
-                             px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
-                             ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim j = _grid.OverflowHead(cell)
-        While j >= 0
-            ScanBody(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
-            j = _grid.OverflowNext(j)
-        End While
-    End Sub
-
-    ''' <summary>Body i against body j: the pair test of <see cref="ScanCells"/> for one body.</summary>
-    Private Sub ScanBody(i As Integer, j As Integer, asleep As Boolean,
-                         px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
-                         ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        If _body(j).Ay = ay AndAlso _body(j).Mode = BodyMode.Free AndAlso Not asleep Then
-            ' Hot path (the elastic gas): same gravity, so the relative motion is a straight line
-            ' and the contact time is the smaller root of a quadratic. The root is computed for
-            ' every candidate and the tests combined into one condition: which pairs meet is
-            ' random, and a mispredicted branch costs more than the square root it would save.
-            Dim tj = _now - _body(j).T0
-            Dim dx = px - (_body(j).Px + _body(j).Vx * tj)
-            Dim dy = py - (_body(j).Py + (_body(j).Vy + 0.5 * ay * tj) * tj)
-            Dim dvx = vx - _body(j).Vx
-            Dim dvy = vy - (_body(j).Vy + ay * tj)
-            Dim b = dx * dvx + dy * dvy
-            Dim sumR = r + _body(j).R
-            Dim c = dx * dx + dy * dy - sumR * sumR
-            If c <= 2 * sumR * _slop Then
-                ' Touching (common in a pile): only an approach can be a collision now.
-                If b < 0 AndAlso j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
-            Else
-                Dim a = dvx * dvx + dvy * dvy
-                Dim disc = b * b - a * c
-                Dim t = c / (Math.Sqrt(disc) - b)
-                ' Approaching, not a graze, earlier than the best so far, and not after the
-                ' partner's own next collision (it is rescheduled then and finds this pair again,
-                ' so filing it here would only go stale).
-                Dim hit = (b < 0) And (disc > TimeOfImpact.GrazeFraction * b * b) And (t < best)
-                If hit AndAlso _now + t <= _ev(j).ColTime Then
-                    best = t
-                    kind = EventKind.Circle
-                    other = j
-                End If
-            End If
-        ElseIf j <> i Then
-            CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
-        End If
-    End Sub
-
 #If NET Then
     ''' <summary>
     ''' Cells c0 … c1 × r0 … r1, four lanes at a time, from the published copies (overflow first, one
-    ''' by one, as in <see cref="ScanLanesScalar"/>): the
-    ''' pair test of <see cref="ScanBody"/> with the same arithmetic, lane by lane. Lanes whose body
+    ''' by one, as in <see cref="ScanBodies"/>): the
+    ''' pair test of <see cref="ScanBodies"/> with the same arithmetic, lane by lane. Lanes whose body
     ''' is not free under the same gravity, and touching pairs, go to <see cref="CheckPair"/>; a hit
     ''' earlier than the best so far is taken in lane order, as the scalar loop would.
     ''' </summary>
@@ -247,7 +245,10 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim bestSeen = best, vInvBest = Vector256.Create(1 / best)
         For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
-                If overflow(cell) >= 0 Then ScanOverflow(i, cell, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                If overflow(cell) >= 0 Then
+                    Dim col = cell - rr * nx
+                    ScanBodies(i, col, col, rr, rr, False, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                End If
                 Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
                 Dim hot = valid And Vector256.Equals(blocks(cell).Ay, vMatch)
                 Dim tj = vNow - blocks(cell).T0

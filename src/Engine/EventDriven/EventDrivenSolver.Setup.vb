@@ -138,6 +138,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         ReDim _oversized(capacity - 1)
         ReDim _stack(capacity - 1)
         ReDim _wake(capacity - 1)
+        ReDim _scanList(capacity - 1)
     End Sub
 
     ''' <summary>
@@ -166,7 +167,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             End If
         Next
         Dim gridded = Math.Max(1, _n - _nOversized)
-        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(2.0 * _width * _height / gridded))
+        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(BodiesPerCell() * _width * _height / gridded))
         _grid.Layout(_width, _height, cell, _n, 4 * _n + 64)
         For i = 0 To _n - 1
             If _body(i).R > limit Then
@@ -195,6 +196,16 @@ Partial Public NotInheritable Class EventDrivenSolver
         Next
         _grid.SetStatics(x0, y0, x1, y1, count)
     End Sub
+
+    ''' <summary>
+    ''' How many bodies a cell should hold on average: bigger cells mean fewer crossings but more
+    ''' pairs to test. Testing a whole cell's lanes at once (vectors) makes pairs cheap, so about 2;
+    ''' one at a time (.NET Framework, Mono), about 1.2. Both measured on the elastic gas.
+    ''' </summary>
+    Private Function BodiesPerCell() As Double
+        If CellOccupancy > 0 Then Return CellOccupancy
+        Return If(_vectorScan, 2.0, 1.2)
+    End Function
 
     ''' <summary>Whether circle c (just moved or added by the user) overlaps anything beyond rounding.</summary>
     Private Function OverlapsSomething(c As Circle) As Boolean

@@ -69,6 +69,8 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private _nNormals As Integer
     ''' <summary>Scratch queue of bodies being woken.</summary>
     Private _wake As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Scratch list of the bodies of one cell being tested one by one.</summary>
+    Private _scanList As Integer() = Array.Empty(Of Integer)()
 
     Private ReadOnly _grid As New UniformGrid()
     Private ReadOnly _queue As New EventQueue()
@@ -114,13 +116,29 @@ Partial Public NotInheritable Class EventDrivenSolver
     Public Property MaxEventsPerAdvance As Long = 100_000_000
 
 #If NET Then
+    Private _vectorScan As Boolean = Vector256.IsHardwareAccelerated
+
     ''' <summary>
     ''' Whether pair tests run four lanes at a time (256-bit vectors, when the processor has them).
-    ''' Off, they run one body at a time, as on .NET Framework; the results are the same.
+    ''' Off, they run one body at a time, as on .NET Framework; the results are the same. Takes
+    ''' effect at the next rebuild (it also sets the cell size).
     ''' </summary>
-    Friend Property VectorScan As Boolean = Vector256.IsHardwareAccelerated
-
+    Friend Property VectorScan As Boolean
+        Get
+            Return _vectorScan
+        End Get
+        Set(value As Boolean)
+            _vectorScan = value
+            _dirty = True
+        End Set
+    End Property
+#Else
+    ''' <summary>.NET Framework has no 256-bit vectors: pair tests run one body at a time.</summary>
+    Private ReadOnly _vectorScan As Boolean
 #End If
+    ''' <summary>Average bodies per grid cell, when set (> 0): for tests that compare the pair tests on one grid.</summary>
+    Friend Property CellOccupancy As Double
+
     ''' <summary>True once an advance hit <see cref="MaxEventsPerAdvance"/> or looped without time moving.</summary>
     Public ReadOnly Property GuardTripped As Boolean
 

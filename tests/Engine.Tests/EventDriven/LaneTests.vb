@@ -89,6 +89,7 @@ Public Class LaneTests
             Dim w = Scenarios.ElasticGas(300, 0.3, seed:=seed)
             Dim s = UseEventSolver(w)
             s.VectorScan = pass = 0
+            s.CellOccupancy = 2.0 ' the same grid for both (each would choose its own)
             Dim index = w.Circles.Select(Function(c, k) (c, k)).ToDictionary(Function(x) x.c, Function(x) x.k)
             Dim seen As New List(Of (Double, Integer, Integer))()
             w.CollisionListener = Sub(r) If seen.Count < 3000 Then seen.Add((r.Time, index(r.A), If(r.B Is Nothing, -1, index(DirectCast(r.B, Circle)))))
