@@ -66,7 +66,6 @@ Partial Public NotInheritable Class EventDrivenSolver
         ' Movable neighbours.
         Dim asleep = m = BodyMode.Sleeping
         If _ev(i).Cell >= 0 Then
-            Dim cell = _ev(i).Cell
             Dim col = _ev(i).Col, row = _ev(i).Row
             ScanCells(i, col - 1, col + 1, row - 1, row + 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
             For k = 0 To _nOversized - 1
@@ -138,8 +137,8 @@ Partial Public NotInheritable Class EventDrivenSolver
     End Sub
 
     ''' <summary>
-    ''' Body i against the movable bodies in cells col0 … col1 × row0 … row1: the lanes of each cell,
-    ''' four at a time where the processor has 256-bit vectors, then any overflow one by one.
+    ''' Body i against the movable bodies in cells col0 … col1 × row0 … row1: in each cell, any
+    ''' overflow one by one, then the lanes, four at a time where the processor has 256-bit vectors.
     ''' </summary>
     Private Sub ScanCells(i As Integer, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, asleep As Boolean,
                           px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
