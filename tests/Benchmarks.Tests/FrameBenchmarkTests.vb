@@ -2,7 +2,7 @@ Option Strict On
 Imports PhysicsEngine.Benchmarks
 Imports Xunit
 
-''' <summary>Reading the app's frame-benchmark line.</summary>
+''' <summary>Reading the app's frame-benchmark line, and finding an X display number for it.</summary>
 Public Class FrameBenchmarkTests
     <Fact>
     Public Sub Interpret_PrefersMedianStepAndPaintTimes()
@@ -42,6 +42,29 @@ Public Class FrameBenchmarkTests
         Dim noTimes = FrameBenchmark.Interpret("{""fps"":60}", New FrameResult)
         Assert.False(noTimes.Ran)
         Assert.Contains("no step and paint times", noTimes.Note)
+    End Sub
+
+    <Fact>
+    Public Sub FreeDisplay_SkipsALiveServersLock_AndClearsADeadOnesLock()
+        Dim d = FrameBenchmark.FreeDisplay()
+        Assert.InRange(d, 91, 160)
+        Dim lockFile = "/tmp/.X" & d & "-lock"
+        Try
+            ' A lock naming a running process (this one): taken.
+            IO.File.WriteAllText(lockFile, Environment.ProcessId.ToString(Globalization.CultureInfo.InvariantCulture).PadLeft(10) & vbLf)
+            Assert.NotEqual(d, FrameBenchmark.FreeDisplay())
+            ' A lock naming a process that has exited (an Xvfb killed without cleaning up): free again.
+            Dim gone As Integer
+            Using p = Diagnostics.Process.Start("true")
+                p.WaitForExit()
+                gone = p.Id
+            End Using
+            IO.File.WriteAllText(lockFile, gone.ToString(Globalization.CultureInfo.InvariantCulture).PadLeft(10) & vbLf)
+            Assert.Equal(d, FrameBenchmark.FreeDisplay())
+            Assert.False(IO.File.Exists(lockFile))
+        Finally
+            IO.File.Delete(lockFile)
+        End Try
     End Sub
 End Class
 
