@@ -152,7 +152,7 @@ Friend Module FrameBenchmark
     Private Sub ClearIfStale(display As Integer)
         Dim s = display.ToString(CultureInfo.InvariantCulture)
         Dim lockFile = "/tmp/.X" & s & "-lock"
-        If Not File.Exists(lockFile) Then Return
+        If Not File.Exists(lockFile) OrElse Not Directory.Exists("/proc/self") Then Return ' no /proc: cannot tell, leave it
         Try
             Dim pid As Integer
             If Not Integer.TryParse(File.ReadAllText(lockFile).Trim(), NumberStyles.Integer, CultureInfo.InvariantCulture, pid) Then Return

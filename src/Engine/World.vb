@@ -305,8 +305,9 @@ Partial Public NotInheritable Class World
     ''' back in, as far inside the wall as it was beyond it (reflected again off the far wall if it
     ''' was further out than the container is wide). Clamping them onto the wall instead would stack
     ''' a whole strip of circles on one line, overlapping along it, and pushing overlaps apart along
-    ''' that line can never make room; folded, they keep their spread and the overlaps with the
-    ''' circles already inside are pushed apart by the next solver rebuild.
+    ''' that line can never make room; folded, they keep their spread, and the overlaps with the
+    ''' circles already inside are left to the solver (the event solver pushes them apart before it
+    ''' predicts anything).
     ''' </summary>
     Private Sub BringCirclesInside()
         For Each c In _circles

@@ -36,6 +36,17 @@ Partial Public NotInheritable Class EventDrivenSolver
         _grid.Publish(i, _body(i), _ev(i).ColTime)
     End Sub
 
+    ''' <summary>Gridded bodies that did not fit in their cell's lanes (for tests).</summary>
+    Friend ReadOnly Property OverflowCount As Integer
+        Get
+            Dim count = 0
+            For i = 0 To _n - 1
+                If _ev(i).Cell >= 0 AndAlso _grid.LaneOf(i) < 0 Then count += 1
+            Next
+            Return count
+        End Get
+    End Property
+
     ''' <summary>Throws when a lane differs from its body or a gridded body is missing from its cell.</summary>
     Private Sub CheckLanes()
         For i = 0 To _n - 1

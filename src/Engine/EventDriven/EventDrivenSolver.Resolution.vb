@@ -135,6 +135,9 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(i).Vy = result.A.Y
         _body(j).Vx = result.B.X
         _body(j).Vy = result.B.Y
+        ' Publish the new courses before waking anything above (which predicts against them).
+        Publish(i)
+        Publish(j)
         If approach < 0 AndAlso (invI > 0 OrElse invJ > 0) Then
             _world.ReportCollision(New CollisionRecord(_now, _circle(i), _circle(j), WallSide.None, CollisionKind.CircleCircle, vi, result.A, vj, result.B))
             _lastHit(i) = _now

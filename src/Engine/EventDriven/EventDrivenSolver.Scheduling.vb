@@ -219,9 +219,9 @@ Partial Public NotInheritable Class EventDrivenSolver
 
 #If NET Then
     ''' <summary>
-    ''' Cells c0 … c1 × r0 … r1, four lanes at a time, from the published copies (overflow first, one
-    ''' by one, as in <see cref="ScanBodies"/>): the
-    ''' pair test of <see cref="ScanBodies"/> with the same arithmetic, lane by lane. Lanes whose body
+    ''' Cells c0 … c1 × r0 … r1, four lanes at a time, from the published copies (any overflow first,
+    ''' one by one, as in <see cref="ScanBodies"/>): the pair test of <see cref="ScanBodies"/> with
+    ''' the same arithmetic, lane by lane. Lanes whose body
     ''' is not free under the same gravity, and touching pairs, go to <see cref="CheckPair"/>; a hit
     ''' earlier than the best so far is taken in lane order, as the scalar loop would.
     ''' </summary>

@@ -1,9 +1,9 @@
 Option Strict On
 
 ''' <summary>
-''' What the event-driven solver keeps about one body's next event, with the two per-body fields
-''' every event also reads (its counter and its cell): together, so an event touches one or two
-''' cache lines of it rather than one per field.
+''' What the event-driven solver keeps about one body's next event, with the per-body fields every
+''' event also reads (its counter, its cell and the cell's column and row): together, so an event
+''' touches one or two cache lines of it rather than one per field.
 ''' </summary>
 Friend Structure EventSlot
     ''' <summary>Time (s) of its next collision-type event (a collision, a slide's end, leaving an edge), +∞ if none.</summary>

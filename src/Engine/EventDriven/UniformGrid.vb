@@ -88,10 +88,6 @@ Friend NotInheritable Class UniformGrid
         Return CInt(r)
     End Function
 
-    Friend Function CellOf(x As Double, y As Double) As Integer
-        Return RowOf(y) * Nx + ColumnOf(x)
-    End Function
-
     ''' <summary>Puts body i in a free lane of the cell, or in its overflow list. The caller publishes it.</summary>
     Friend Sub Insert(i As Integer, cell As Integer)
         Dim k = Count(cell)
