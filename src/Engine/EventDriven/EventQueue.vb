@@ -20,16 +20,25 @@ Option Strict On
 ''' scanned whole; everything later in the window is in later buckets, and the overflow is later still.
 ''' </summary>
 Friend NotInheritable Class EventQueue
+    ''' <summary>
+    ''' One body's entry, in one place: scanning a bucket and moving an entry touch one small struct
+    ''' per body instead of a line of each of four arrays.
+    ''' </summary>
+    Private Structure Node
+        Friend Time As Double
+        Friend List As Integer
+        Friend NextBody As Integer
+        Friend PrevBody As Integer
+    End Structure
+
     Private _time As Double()
     Private _n As Integer
     ''' <summary>Buckets (a power of two), then the overflow list, then the list of +∞.</summary>
     Private _buckets As Integer
     Private _mask As Long
     Private _head As Integer() = Array.Empty(Of Integer)()
-    ''' <summary>Per body: the list it is in, and its neighbours there (−1 at the ends).</summary>
-    Private _list As Integer() = Array.Empty(Of Integer)()
-    Private _next As Integer() = Array.Empty(Of Integer)()
-    Private _prev As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Per body: its time as filed, the list it is in, and its neighbours there (−1 at the ends).</summary>
+    Private _node As Node() = Array.Empty(Of Node)()
     ''' <summary>1 / bucket width, 1/s; 0 until the first <see cref="Top"/> after <see cref="Reset"/> measures the times.</summary>
     Private _perSecond As Double
     ''' <summary>The current bucket, counted from time 0 (a bucket index before the modulo).</summary>
@@ -67,25 +76,24 @@ Friend NotInheritable Class EventQueue
         For b = 0 To nb + 1
             _head(b) = -1
         Next
-        If _list.Length < n Then
-            _list = New Integer(n - 1) {}
-            _next = New Integer(n - 1) {}
-            _prev = New Integer(n - 1) {}
-        End If
+        If _node.Length < n Then _node = New Node(n - 1) {}
         _perSecond = 0
         _current = 0
         _tops = 0
         _scanned = 0
         _skipped = 0
         For i = 0 To n - 1
+            _node(i).Time = time(i)
             Link(i, If(time(i) < Double.PositiveInfinity, OverflowList, NeverList))
         Next
     End Sub
 
     ''' <summary>Files body i again after its time changed.</summary>
     Friend Sub Update(i As Integer)
-        Dim target = ListFor(_time(i))
-        If target = _list(i) Then Return
+        Dim t = _time(i)
+        _node(i).Time = t
+        Dim target = ListFor(t)
+        If target = _node(i).List Then Return
         Unlink(i)
         Link(i, target)
     End Sub
@@ -99,21 +107,21 @@ Friend NotInheritable Class EventQueue
         ElseIf _tops >= _buckets Then
             ReviewWidth()
         End If
-        Dim head = _head, nextOf = _next, time = _time
+        Dim head = _head, node = _node
         Dim empty = 0
         Do
             Dim j = head(CInt(_current And _mask))
             If j >= 0 Then
                 Dim best = j
-                Dim bestTime = time(j)
-                j = nextOf(j)
+                Dim bestTime = node(j).Time
+                j = node(j).NextBody
                 While j >= 0
                     _scanned += 1
-                    If time(j) < bestTime Then
+                    If node(j).Time < bestTime Then
                         best = j
-                        bestTime = time(j)
+                        bestTime = node(j).Time
                     End If
-                    j = nextOf(j)
+                    j = node(j).NextBody
                 End While
                 _tops += 1
                 _lastTop = bestTime
@@ -161,9 +169,9 @@ Friend NotInheritable Class EventQueue
         Dim j = _head(OverflowList)
         While j >= 0
             count += 1
-            earliest = Math.Min(earliest, _time(j))
-            sum += _time(j)
-            j = _next(j)
+            earliest = Math.Min(earliest, _node(j).Time)
+            sum += _node(j).Time
+            j = _node(j).NextBody
         End While
         If count = 0 Then Return
         Dim width = 2 * (sum / count - earliest) / count
@@ -197,7 +205,7 @@ Friend NotInheritable Class EventQueue
         For b = 0 To _buckets - 1
             Dim j = _head(b)
             While j >= 0
-                Dim nx = _next(j)
+                Dim nx = _node(j).NextBody
                 Unlink(j)
                 Link(j, OverflowList)
                 j = nx
@@ -211,8 +219,8 @@ Friend NotInheritable Class EventQueue
         Dim first = Long.MaxValue
         Dim j = _head(OverflowList)
         While j >= 0
-            first = Math.Min(first, BucketOf(_time(j)))
-            j = _next(j)
+            first = Math.Min(first, BucketOf(_node(j).Time))
+            j = _node(j).NextBody
         End While
         If first = Long.MaxValue Then Return
         _current = first
@@ -225,8 +233,8 @@ Friend NotInheritable Class EventQueue
         Dim yearEnd = (_current And Not _mask) + _buckets
         Dim j = _head(OverflowList)
         While j >= 0
-            Dim nx = _next(j)
-            Dim b = BucketOf(_time(j))
+            Dim nx = _node(j).NextBody
+            Dim b = BucketOf(_node(j).Time)
             If b < yearEnd Then
                 Unlink(j)
                 Link(j, CInt(Math.Max(b, _current) And _mask))
@@ -239,16 +247,16 @@ Friend NotInheritable Class EventQueue
 
     Private Sub Link(i As Integer, list As Integer)
         Dim h = _head(list)
-        _next(i) = h
-        _prev(i) = -1
-        If h >= 0 Then _prev(h) = i
+        _node(i).NextBody = h
+        _node(i).PrevBody = -1
+        If h >= 0 Then _node(h).PrevBody = i
         _head(list) = i
-        _list(i) = list
+        _node(i).List = list
     End Sub
 
     Private Sub Unlink(i As Integer)
-        Dim p = _prev(i), n = _next(i)
-        If p >= 0 Then _next(p) = n Else _head(_list(i)) = n
-        If n >= 0 Then _prev(n) = p
+        Dim p = _node(i).PrevBody, n = _node(i).NextBody
+        If p >= 0 Then _node(p).NextBody = n Else _head(_node(i).List) = n
+        If n >= 0 Then _node(n).PrevBody = p
     End Sub
 End Class
