@@ -309,8 +309,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         _ev(i).ColTime = If(dt < Double.PositiveInfinity, _now + dt, Double.PositiveInfinity)
         _ev(i).CellTime = If(exitDt < Double.PositiveInfinity, _now + exitDt, Double.PositiveInfinity)
         _ev(i).CellDir = exitDir
-        _evTime(i) = Math.Min(_ev(i).ColTime, _ev(i).CellTime)
-        _queue.Update(i)
+        _queue.Update(i, Math.Min(_ev(i).ColTime, _ev(i).CellTime))
         Publish(i)
     End Sub
 

@@ -16,12 +16,11 @@ Partial Public NotInheritable Class EventDrivenSolver
         LoadStatics(w)
         LoadMovables(w)
         For i = 0 To _n - 1
-            _evTime(i) = Double.PositiveInfinity
             _ev(i).ColTime = Double.PositiveInfinity
             _ev(i).CellTime = Double.PositiveInfinity
         Next
         LayoutGrid()
-        _queue.Reset(_evTime, _n)
+        _queue.Reset(Enumerable.Repeat(Double.PositiveInfinity, _n).ToArray(), _n)
         For i = 0 To _n - 1
             Reschedule(i)
         Next
@@ -127,7 +126,6 @@ Partial Public NotInheritable Class EventDrivenSolver
         ReDim _burstCount(capacity - 1)
         ReDim _sameTime(capacity - 1)
         ReDim _sameCount(capacity - 1)
-        ReDim _evTime(capacity - 1)
         ReDim _ev(capacity - 1)
         ReDim _slideCx(capacity - 1)
         ReDim _slideCy(capacity - 1)

@@ -32,9 +32,8 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private _sameTime As Double() = Array.Empty(Of Double)()
     Private _sameCount As Integer() = Array.Empty(Of Integer)()
 
-    ' The next event of each body (one slot per body, kept in the calendar queue): its time (the
-    ' queue's key) and the rest of it, with the body's counter and cell, in one struct (see EventSlot).
-    Private _evTime As Double() = Array.Empty(Of Double)()
+    ' The next event of each body (one slot per body): its time is filed in the calendar queue, the
+    ' rest of it, with the body's counter and cell, is kept in one struct (see EventSlot).
     Private _ev As EventSlot() = Array.Empty(Of EventSlot)()
 
     ' Sliding over a corner: centre of the arc, its radius, direction (±1), starting speed, leave angle, start and end times.
@@ -185,13 +184,15 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim sameTimeLimit = 1000 + 50 * _n
         Do
             Dim i = _queue.Top
-            If i < 0 OrElse Not (_evTime(i) <= tEnd) Then Exit Do
+            If i < 0 Then Exit Do
+            Dim t = _queue.TimeOf(i)
+            If Not (t <= tEnd) Then Exit Do
             If processed >= MaxEventsPerAdvance OrElse sameTime > sameTimeLimit Then
                 TripGuard(tEnd)
                 Return
             End If
-            If _evTime(i) = _now Then sameTime += 1 Else sameTime = 0
-            _now = _evTime(i)
+            If t = _now Then sameTime += 1 Else sameTime = 0
+            _now = t
             ProcessEvent(i)
             If CheckLanesEveryEvent Then CheckLanes()
             processed += 1

@@ -31,7 +31,6 @@ Friend NotInheritable Class EventQueue
         Friend PrevBody As Integer
     End Structure
 
-    Private _time As Double()
     Private _n As Integer
     ''' <summary>Buckets (a power of two), then the overflow list, then the list of +∞.</summary>
     Private _buckets As Integer
@@ -62,9 +61,8 @@ Friend NotInheritable Class EventQueue
         End Get
     End Property
 
-    ''' <summary>Holds bodies 0 … n − 1 keyed by <paramref name="time"/> (s; read, never written).</summary>
+    ''' <summary>Holds bodies 0 … n − 1 at times <paramref name="time"/> (s; read, never written).</summary>
     Friend Sub Reset(time As Double(), n As Integer)
-        _time = time
         _n = n
         Dim nb = 16
         While nb < 2 * n
@@ -88,15 +86,19 @@ Friend NotInheritable Class EventQueue
         Next
     End Sub
 
-    ''' <summary>Files body i again after its time changed.</summary>
-    Friend Sub Update(i As Integer)
-        Dim t = _time(i)
+    ''' <summary>Files body i again at time t (s).</summary>
+    Friend Sub Update(i As Integer, t As Double)
         _node(i).Time = t
         Dim target = ListFor(t)
         If target = _node(i).List Then Return
         Unlink(i)
         Link(i, target)
     End Sub
+
+    ''' <summary>The time (s) body i is filed at.</summary>
+    Friend Function TimeOf(i As Integer) As Double
+        Return _node(i).Time
+    End Function
 
     ''' <summary>The body with the earliest time (one of them, on a tie); −1 when there are no bodies.</summary>
     Friend Function Top() As Integer
