@@ -42,12 +42,12 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     ''' <summary>Moves body i's reference point to the solver's clock (exactly along its path).</summary>
     Private Sub Sync(i As Integer)
-        Dim tau = _now - _body(i).T0
-        If tau = 0 Then Return
-        Dim ay = _body(i).Ay
-        _body(i).Px += _body(i).Vx * tau
-        _body(i).Py += (_body(i).Vy + 0.5 * ay * tau) * tau
-        _body(i).Vy += ay * tau
+        If _now = _body(i).T0 Then Return
+        Dim x, y, vx, vy As Double
+        _body(i).StateAt(_now, x, y, vx, vy)
+        _body(i).Px = x
+        _body(i).Py = y
+        _body(i).Vy = vy
         _body(i).T0 = _now
         Publish(i)
     End Sub
@@ -333,7 +333,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         While head < tail
             Dim k = _wake(head)
             head += 1
-            Dim kx = PositionX(k), ky = PositionY(k)
+            Dim here = PositionNow(k)
+            Dim kx = here.X, ky = here.Y
             Dim count = Neighbours(k)
             For q = 0 To count - 1
                 Dim j = _stack(q)
@@ -355,13 +356,11 @@ Partial Public NotInheritable Class EventDrivenSolver
         End While
     End Sub
 
-    Private Function PositionX(k As Integer) As Double
-        Return _body(k).Px + _body(k).Vx * (_now - _body(k).T0)
-    End Function
-
-    Private Function PositionY(k As Integer) As Double
-        Dim tau = _now - _body(k).T0
-        Return _body(k).Py + (_body(k).Vy + 0.5 * _body(k).Ay * tau) * tau
+    ''' <summary>Where body k is at the solver's clock, m.</summary>
+    Private Function PositionNow(k As Integer) As Vector
+        Dim x, y, vx, vy As Double
+        _body(k).StateAt(_now, x, y, vx, vy)
+        Return New Vector(x, y)
     End Function
 
     ''' <summary>
@@ -371,7 +370,8 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' whether asleep or not (a settling pile freezes as a whole); only nearby cells are searched.
     ''' </summary>
     Private Function IsHeld(i As Integer) As Boolean
-        Dim px = PositionX(i), py = PositionY(i), r = _body(i).R
+        Dim p = PositionNow(i)
+        Dim px = p.X, py = p.Y, r = _body(i).R
         Dim gap = 1.0E-3 * r + _slop
         _nNormals = 0
         If _walls Then
@@ -380,7 +380,6 @@ Partial Public NotInheritable Class EventDrivenSolver
             If _width - r - px <= gap Then AddNormal(-1, 0)
             If _height - r - py <= gap Then AddNormal(0, -1)
         End If
-        Dim p = New Vector(px, py)
         For k = 0 To _nRect - 1
             Dim c = Collider.CircleRectangle(p, r, New Vector(_rx0(k), _ry0(k)), New Vector(_rx1(k), _ry1(k)))
             If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
@@ -393,7 +392,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         For q = 0 To count - 1
             Dim j = _stack(q)
             If _body(j).Mode = BodyMode.Sliding OrElse _body(j).Mode = BodyMode.Dragged Then Continue For
-            Dim c = Collider.CircleCircle(p, r, New Vector(PositionX(j), PositionY(j)), _body(j).R)
+            Dim c = Collider.CircleCircle(p, r, PositionNow(j), _body(j).R)
             If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
         Next
         ' Up = (0, 1) lies between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.
@@ -540,10 +539,10 @@ Partial Public NotInheritable Class EventDrivenSolver
                 c.Velocity = New Vector(s * speed * Math.Cos(theta), -speed * Math.Sin(theta))
                 Continue For
             End If
-            Dim tau = t - _body(i).T0
-            Dim ay = _body(i).Ay
-            c.Position = New Vector(_body(i).Px + _body(i).Vx * tau, _body(i).Py + (_body(i).Vy + 0.5 * ay * tau) * tau)
-            c.Velocity = New Vector(_body(i).Vx, _body(i).Vy + ay * tau)
+            Dim x, y, vx, vy As Double
+            _body(i).StateAt(t, x, y, vx, vy)
+            c.Position = New Vector(x, y)
+            c.Velocity = New Vector(vx, vy)
             If c Is dragged Then c.Position = _world.DragTarget
         Next
     End Sub

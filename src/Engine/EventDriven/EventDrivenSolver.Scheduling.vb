@@ -28,12 +28,9 @@ Partial Public NotInheritable Class EventDrivenSolver
             FileEvent(i, best, kind, other, 0, Double.PositiveInfinity, 0)
             Return
         End If
-        Dim tau = _now - _body(i).T0
         Dim ay = _body(i).Ay
-        Dim px = _body(i).Px + _body(i).Vx * tau
-        Dim py = _body(i).Py + (_body(i).Vy + 0.5 * ay * tau) * tau
-        Dim vx = _body(i).Vx
-        Dim vy = _body(i).Vy + ay * tau
+        Dim px, py, vx, vy As Double
+        _body(i).StateAt(_now, px, py, vx, vy)
         Dim r = _body(i).R
         Dim slop = _slop
         Dim t As Double
@@ -112,12 +109,9 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim other = _ev(i).Other
         Dim feature = _ev(i).Feature
         Dim m = _body(i).Mode
-        Dim tau = _now - _body(i).T0
         Dim ay = _body(i).Ay
-        Dim px = _body(i).Px + _body(i).Vx * tau
-        Dim py = _body(i).Py + (_body(i).Vy + 0.5 * ay * tau) * tau
-        Dim vx = _body(i).Vx
-        Dim vy = _body(i).Vy + ay * tau
+        Dim px, py, vx, vy As Double
+        _body(i).StateAt(_now, px, py, vx, vy)
         Dim r = _body(i).R
         If m = BodyMode.Free OrElse m = BodyMode.Resting Then
             For s = _grid.StaticStart(target) To _grid.StaticStart(target + 1) - 1
@@ -340,13 +334,10 @@ Partial Public NotInheritable Class EventDrivenSolver
             Return
         End If
         If asleep AndAlso mj = BodyMode.Sleeping Then Return
-        Dim tj = _now - _body(j).T0
-        Dim ayj = _body(j).Ay
-        Dim dx = px - (_body(j).Px + _body(j).Vx * tj)
-        Dim dy = py - (_body(j).Py + (_body(j).Vy + 0.5 * ayj * tj) * tj)
-        Dim vyj = _body(j).Vy + ayj * tj
-        Dim t = TimeOfImpact.CircleCircle(dx, dy, vx - _body(j).Vx, vy - vyj, ay - ayj, r + _body(j).R, _slop,
-                                          Math.Abs(vx) + Math.Abs(vy) + Math.Abs(_body(j).Vx) + Math.Abs(vyj))
+        Dim xj, yj, vxj, vyj As Double
+        _body(j).StateAt(_now, xj, yj, vxj, vyj)
+        Dim t = TimeOfImpact.CircleCircle(px - xj, py - yj, vx - vxj, vy - vyj, ay - _body(j).Ay, r + _body(j).R, _slop,
+                                          Math.Abs(vx) + Math.Abs(vy) + Math.Abs(vxj) + Math.Abs(vyj))
         If t < best Then
             best = t
             kind = EventKind.Circle
@@ -362,11 +353,9 @@ Partial Public NotInheritable Class EventDrivenSolver
     Private Function SweptDiscContact(j As Integer, k As Integer) As Double
         Dim mk = _body(k).Mode
         If mk = BodyMode.Sliding OrElse mk = BodyMode.Sleeping Then Return Double.PositiveInfinity
-        Dim tk = _now - _body(k).T0
-        Dim ayk = _body(k).Ay
-        Dim dx = _body(k).Px + _body(k).Vx * tk - _slideCx(j)
-        Dim dy = _body(k).Py + (_body(k).Vy + 0.5 * ayk * tk) * tk - _slideCy(j)
-        Return TimeOfImpact.CircleCircle(dx, dy, _body(k).Vx, _body(k).Vy + ayk * tk, ayk, _body(k).R + 2 * _body(j).R, _slop)
+        Dim xk, yk, vxk, vyk As Double
+        _body(k).StateAt(_now, xk, yk, vxk, vyk)
+        Return TimeOfImpact.CircleCircle(xk - _slideCx(j), yk - _slideCy(j), vxk, vyk, _body(k).Ay, _body(k).R + 2 * _body(j).R, _slop)
     End Function
 
     ''' <summary>
