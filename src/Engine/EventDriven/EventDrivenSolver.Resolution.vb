@@ -298,16 +298,23 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(i).Vy = 0
         _body(i).Ay = 0
         _support(i) = support
-        _body(i).Mode = BodyMode.Resting
+        SetMode(i, BodyMode.Resting)
         ' Slow enough along a level support: asleep (a pile's floor layer must settle to hold the rest).
         If Math.Abs(_body(i).Vx) < 0.05 * Math.Sqrt(_g * _body(i).R) AndAlso support <> SupportNone Then Sleep(i)
+    End Sub
+
+    ''' <summary>Sets body i's mode, keeping count of the bodies sliding round a corner.</summary>
+    Private Sub SetMode(i As Integer, mode As BodyMode)
+        If _body(i).Mode = BodyMode.Sliding Then _sliding -= 1
+        If mode = BodyMode.Sliding Then _sliding += 1
+        _body(i).Mode = mode
     End Sub
 
     Private Sub Sleep(i As Integer)
         _body(i).Vx = 0
         _body(i).Vy = 0
         _body(i).Ay = 0
-        _body(i).Mode = BodyMode.Sleeping
+        SetMode(i, BodyMode.Sleeping)
     End Sub
 
     ''' <summary>A resting or sleeping body that was moved by a hit flies again, and so does what rests on it.</summary>
@@ -319,7 +326,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     End Sub
 
     Private Sub MakeFree(i As Integer)
-        _body(i).Mode = BodyMode.Free
+        SetMode(i, BodyMode.Free)
         _body(i).Ay = -_g
         _support(i) = SupportNone
         _restTimes.Remove(_circle(i))
@@ -458,7 +465,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         MakeFree(i)
         Changed(i)
         If vx * vx < _g * _body(i).R Then
-            _body(i).Mode = BodyMode.Sliding
+            SetMode(i, BodyMode.Sliding)
             _body(i).Ay = 0
             _slideCx(i) = edge
             _slideCy(i) = _ry1(k)
@@ -517,7 +524,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         If c Is Nothing OrElse Not _index.TryGetValue(c, i) Then Return
         Sync(i)
         Dim target = _world.DragTarget
-        _body(i).Mode = BodyMode.Dragged
+        SetMode(i, BodyMode.Dragged)
         _body(i).Ay = 0
         _invMass(i) = 0
         _body(i).Vx = (target.X - _body(i).Px) / duration

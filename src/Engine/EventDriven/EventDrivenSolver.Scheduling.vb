@@ -60,11 +60,14 @@ Partial Public NotInheritable Class EventDrivenSolver
                 Next
             End If
         End If
-        ' Movable neighbours.
+        ' Movable neighbours: those in the cells within reach of its path (see ReachOfPath).
         Dim asleep = m = BodyMode.Sleeping
+        Dim dir = 0
+        Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, dir)
         If _ev(i).Cell >= 0 Then
-            Dim col = _ev(i).Col, row = _ev(i).Row
-            ScanCells(i, col - 1, col + 1, row - 1, row + 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+            Dim c0, c1, r0, r1 As Integer
+            ReachOfPath(i, px, py, vx, vy, ay, r, Math.Min(exitTime, best), c0, c1, r0, r1)
+            ScanCells(i, c0, c1, r0, r1, -1, asleep, px, py, vx, vy, ay, r, best, kind, other)
             For k = 0 To _nOversized - 1
                 CheckPair(i, _oversized(k), asleep, px, py, vx, vy, ay, r, best, kind, other)
             Next
@@ -79,8 +82,6 @@ Partial Public NotInheritable Class EventDrivenSolver
             t = If(vx > 0, (_rx1(k) - px) / vx, (_rx0(k) - px) / vx)
             If t < best Then best = Math.Max(0, t) : kind = EventKind.EdgeLeave : other = k : feature = 0
         End If
-        Dim dir = 0
-        Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, dir)
         FileEvent(i, best, kind, other, feature, exitTime, dir)
     End Sub
 
@@ -98,6 +99,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             Case 2 : row -= 1
             Case Else : row += 1
         End Select
+        Dim previous = _ev(i).Cell
         MoveToCell(i, col, row)
         Dim target = _ev(i).Cell
         Dim kind = _ev(i).Kind
@@ -119,14 +121,11 @@ Partial Public NotInheritable Class EventDrivenSolver
             Next
         End If
         Dim asleep = m = BodyMode.Sleeping
-        Select Case dir
-            Case 0 : ScanCells(i, col - 1, col - 1, row - 1, row + 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
-            Case 1 : ScanCells(i, col + 1, col + 1, row - 1, row + 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
-            Case 2 : ScanCells(i, col - 1, col + 1, row - 1, row - 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
-            Case Else : ScanCells(i, col - 1, col + 1, row + 1, row + 1, asleep, px, py, vx, vy, ay, r, best, kind, other)
-        End Select
         Dim exitDir = 0
         Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, exitDir)
+        Dim c0, c1, r0, r1 As Integer
+        ReachOfPath(i, px, py, vx, vy, ay, r, Math.Min(exitTime, best), c0, c1, r0, r1)
+        ScanCells(i, c0, c1, r0, r1, previous, asleep, px, py, vx, vy, ay, r, best, kind, other)
         FileEvent(i, best, kind, other, feature, exitTime, exitDir)
     End Sub
 
@@ -134,30 +133,31 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' Body i against the movable bodies in cells col0 … col1 × row0 … row1: in each cell, any
     ''' overflow one by one, then the lanes, four at a time where the processor has 256-bit vectors.
     ''' </summary>
-    Private Sub ScanCells(i As Integer, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, asleep As Boolean,
+    Private Sub ScanCells(i As Integer, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, skip As Integer, asleep As Boolean,
                           px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                           ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim c0 = Math.Max(0, col0), c1 = Math.Min(_grid.Nx - 1, col1)
         Dim r0 = Math.Max(0, row0), r1 = Math.Min(_grid.Ny - 1, row1)
 #If NET Then
         If VectorScan Then
-            ScanLanesVector(i, c0, c1, r0, r1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+            ScanLanesVector(i, c0, c1, r0, r1, skip, asleep, px, py, vx, vy, ay, r, best, kind, other)
             Return
         End If
 #End If
-        ScanBodies(i, c0, c1, r0, r1, True, asleep, px, py, vx, vy, ay, r, best, kind, other)
+        ScanBodies(i, c0, c1, r0, r1, skip, True, asleep, px, py, vx, vy, ay, r, best, kind, other)
     End Sub
 
     ''' <summary>
     ''' Cells c0 … c1 × r0 … r1, one body at a time, from the bodies' own state: each cell's overflow
     ''' and then (when <paramref name="withLanes"/>) its lanes are listed, then tested in one loop.
     ''' </summary>
-    Private Sub ScanBodies(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, withLanes As Boolean,
+    Private Sub ScanBodies(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, withLanes As Boolean,
                            asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                            ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim count = _grid.Count, laneBody = _grid.LaneBody, nx = _grid.Nx, listed = _scanList
         For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
+                If cell = skip Then Continue For
                 Dim n = 0
                 Dim o = _grid.OverflowHead(cell)
                 While o >= 0
@@ -219,7 +219,7 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' is not free under the same gravity, and touching pairs, go to <see cref="CheckPair"/>; a hit
     ''' earlier than the best so far is taken in lane order, as the scalar loop would.
     ''' </summary>
-    Private Sub ScanLanesVector(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, asleep As Boolean,
+    Private Sub ScanLanesVector(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, asleep As Boolean,
                                 px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                                 ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim blocks = _grid.Blocks, count = _grid.Count, laneBody = _grid.LaneBody, overflow = _grid.OverflowHead
@@ -238,9 +238,10 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim bestSeen = best, vInvBest = Vector256.Create(1 / best)
         For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
+                If cell = skip Then Continue For
                 If overflow(cell) >= 0 Then
                     Dim col = cell - rr * nx
-                    ScanBodies(i, col, col, rr, rr, False, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                    ScanBodies(i, col, col, rr, rr, -1, False, asleep, px, py, vx, vy, ay, r, best, kind, other)
                 End If
                 Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
                 Dim hot = valid And Vector256.Equals(blocks(cell).Ay, vMatch)
@@ -357,6 +358,33 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(k).StateAt(_now, xk, yk, vxk, vyk)
         Return TimeOfImpact.CircleCircle(xk - _slideCx(j), yk - _slideCy(j), vxk, vyk, _body(k).Ay, _body(k).R + 2 * _body(j).R, _slop)
     End Function
+
+    ''' <summary>
+    ''' The cells (columns c0 … c1, rows r0 … r1, within its 3 × 3 block) that a partner touching body i
+    ''' in the next <paramref name="span"/> seconds could be in. Until it leaves its cell, or meets what it
+    ''' has already found, its centre stays on the stretch of its path that follows; a partner touching it
+    ''' there has its centre within r + r_max of that stretch, so only cells that near the stretch's
+    ''' bounding box can hold one. A ball moving away from a side of its cell never needs the cells
+    ''' beyond it. Every pair is still found: of the two bodies, the one that searched last searched
+    ''' with both final courses and the other's cell (docs/event-driven.md §4).
+    ''' </summary>
+    Private Sub ReachOfPath(i As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                            span As Double, ByRef c0 As Integer, ByRef c1 As Integer, ByRef r0 As Integer, ByRef r1 As Integer)
+        Dim col = _ev(i).Col, row = _ev(i).Row
+        c0 = col - 1 : c1 = col + 1 : r0 = row - 1 : r1 = row + 1
+        If vx = 0 AndAlso vy = 0 AndAlso ay = 0 Then span = 0 ' at rest: its path is a point
+        If Not (span < Double.PositiveInfinity) Then Return
+        Dim xlo, xhi, ylo, yhi As Double
+        PathBox.Bounds(px, py, vx, vy, ay, span, xlo, xhi, ylo, yhi)
+        ' A ball sliding round a corner is listed where it started the slide but can reach 3 r_max
+        ' beyond; the margin covers rounding and the touching tolerance.
+        Dim reach = r + If(_sliding > 0, 3, 1) * _rMax + 16 * _slop + 1.0E-9 * (_grid.CellWidth + _grid.CellHeight)
+        ' Written so that NaN keeps the neighbour.
+        If xlo - reach >= col * _grid.CellWidth Then c0 = col
+        If xhi + reach <= (col + 1) * _grid.CellWidth Then c1 = col
+        If ylo - reach >= row * _grid.CellHeight Then r0 = row
+        If yhi + reach <= (row + 1) * _grid.CellHeight Then r1 = row
+    End Sub
 
     ''' <summary>
     ''' When the centre leaves its cell: x is linear and y quadratic in t, each against the cell's two

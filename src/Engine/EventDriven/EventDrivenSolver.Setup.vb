@@ -15,6 +15,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         _now = w.Time
         LoadStatics(w)
         LoadMovables(w)
+        _sliding = 0 ' every body was just loaded free or dragged
         For i = 0 To _n - 1
             _ev(i).ColTime = Double.PositiveInfinity
             _ev(i).CellTime = Double.PositiveInfinity
@@ -106,11 +107,11 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(i).R = c.Radius
         _support(i) = SupportNone
         If c Is _world.DraggedCircle Then
-            _body(i).Mode = BodyMode.Dragged
+            SetMode(i, BodyMode.Dragged)
             _body(i).Ay = 0
             _invMass(i) = 0
         Else
-            _body(i).Mode = BodyMode.Free
+            SetMode(i, BodyMode.Free)
             _body(i).Ay = -_g
             _invMass(i) = c.InverseMass
         End If
@@ -164,6 +165,7 @@ Partial Public NotInheritable Class EventDrivenSolver
                 rMax = Math.Max(rMax, _body(i).R)
             End If
         Next
+        _rMax = rMax
         Dim gridded = Math.Max(1, _n - _nOversized)
         Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(BodiesPerCell() * _width * _height / gridded))
         _grid.Layout(_width, _height, cell, _n, 4 * _n + 64)

@@ -89,6 +89,11 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' <summary>Distance (m) within which bodies count as touching: rounding, never physics.</summary>
     Private _slop As Double
 
+    ''' <summary>Largest radius (m) of a circle in the grid.</summary>
+    Private _rMax As Double
+    ''' <summary>How many bodies are sliding round a corner (see <see cref="ReachOfPath"/>).</summary>
+    Private _sliding As Integer
+
     Private Const SupportNone As Integer = -1
     Private Const SupportFloor As Integer = -2
     Private Const SupportOther As Integer = -3
