@@ -32,22 +32,10 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim px, py, vx, vy As Double
         _body(i).StateAt(_now, px, py, vx, vy)
         Dim r = _body(i).R
-        Dim slop = _slop
         Dim t As Double
         Dim moving = m = BodyMode.Free OrElse m = BodyMode.Resting
         If moving Then
-            If _walls Then
-                t = TimeOfImpact.GapCloses(px - r, vx, 0, slop)
-                If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Left
-                t = TimeOfImpact.GapCloses(_width - r - px, -vx, 0, slop)
-                If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Right
-                If m = BodyMode.Free Then
-                    t = TimeOfImpact.GapCloses(py - r, vy, ay, slop)
-                    If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Bottom
-                    t = TimeOfImpact.GapCloses(_height - r - py, -vy, -ay, slop)
-                    If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Top
-                End If
-            End If
+            If _walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
             If _ev(i).Cell >= 0 Then
                 ' A static obstacle is listed in every cell within half a cell of it, so the own cell suffices.
                 Dim c = _ev(i).Cell
@@ -116,6 +104,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(i).StateAt(_now, px, py, vx, vy)
         Dim r = _body(i).R
         If m = BodyMode.Free OrElse m = BodyMode.Resting Then
+            If _walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
             For s = _grid.StaticStart(target) To _grid.StaticStart(target + 1) - 1
                 CheckStatic(_grid.StaticItems(s), px, py, vx, vy, ay, r, best, kind, other, feature)
             Next
@@ -308,6 +297,37 @@ Partial Public NotInheritable Class EventDrivenSolver
         Publish(i)
     End Sub
 
+    ''' <summary>
+    ''' Body i against the container's walls (the floor and the ceiling only when it is free). The
+    ''' cells tile the container and are wider than any gridded ball, so a gridded ball touches a wall
+    ''' only from a cell along that wall, and it crosses into one (an event) before it gets there:
+    ''' only the walls its own cell lies along are tested, on a prediction and on entering the cell.
+    ''' </summary>
+    Private Sub CheckWalls(i As Integer, free As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
+                           r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef feature As Integer)
+        Dim all = _ev(i).Cell < 0
+        Dim col = _ev(i).Col, row = _ev(i).Row
+        Dim slop = _slop
+        Dim t As Double
+        If all OrElse col = 0 Then
+            t = TimeOfImpact.GapCloses(px - r, vx, 0, slop)
+            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Left
+        End If
+        If all OrElse col = _grid.Nx - 1 Then
+            t = TimeOfImpact.GapCloses(_width - r - px, -vx, 0, slop)
+            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Right
+        End If
+        If Not free Then Return
+        If all OrElse row = 0 Then
+            t = TimeOfImpact.GapCloses(py - r, vy, ay, slop)
+            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Bottom
+        End If
+        If all OrElse row = _grid.Ny - 1 Then
+            t = TimeOfImpact.GapCloses(_height - r - py, -vy, -ay, slop)
+            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Top
+        End If
+    End Sub
+
     Private Sub CheckStatic(s As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                             ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
         Dim t As Double
@@ -389,6 +409,9 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' <summary>
     ''' When the centre leaves its cell: x is linear and y quadratic in t, each against the cell's two
     ''' boundaries (the outermost cells have no outer boundary). <paramref name="dir"/>: 0 −x, 1 +x, 2 −y, 3 +y.
+    ''' A centre that rounding left a hair beyond a boundary of its cell counts as on it, so if it moves
+    ''' on outwards it leaves at once; otherwise it would never leave, and its searches would be centred
+    ''' on the wrong cell.
     ''' </summary>
     Private Function CellExit(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
                               ByRef dir As Integer) As Double
@@ -399,19 +422,19 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim t As Double
         dir = -1
         If col > 0 Then
-            t = TimeOfImpact.GapCloses(px - col * _grid.CellWidth, vx, 0, 0)
+            t = TimeOfImpact.GapCloses(Math.Max(0, px - col * _grid.CellWidth), vx, 0, 0)
             If t < best Then best = t : dir = 0
         End If
         If col < _grid.Nx - 1 Then
-            t = TimeOfImpact.GapCloses((col + 1) * _grid.CellWidth - px, -vx, 0, 0)
+            t = TimeOfImpact.GapCloses(Math.Max(0, (col + 1) * _grid.CellWidth - px), -vx, 0, 0)
             If t < best Then best = t : dir = 1
         End If
         If row > 0 Then
-            t = TimeOfImpact.GapCloses(py - row * _grid.CellHeight, vy, ay, 0)
+            t = TimeOfImpact.GapCloses(Math.Max(0, py - row * _grid.CellHeight), vy, ay, 0)
             If t < best Then best = t : dir = 2
         End If
         If row < _grid.Ny - 1 Then
-            t = TimeOfImpact.GapCloses((row + 1) * _grid.CellHeight - py, -vy, -ay, 0)
+            t = TimeOfImpact.GapCloses(Math.Max(0, (row + 1) * _grid.CellHeight - py), -vy, -ay, 0)
             If t < best Then best = t : dir = 3
         End If
         Return best
