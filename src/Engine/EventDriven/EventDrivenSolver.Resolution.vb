@@ -463,7 +463,6 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(i).Px = edge
         _body(i).Py = _ry1(k) + _body(i).R
         MakeFree(i)
-        Changed(i)
         If vx * vx < _g * _body(i).R Then
             SetMode(i, BodyMode.Sliding)
             _body(i).Ay = 0
@@ -474,6 +473,7 @@ Partial Public NotInheritable Class EventDrivenSolver
             _slideAngle(i) = CornerSlide.LeaveAngle(Math.Abs(vx), _g, _body(i).R, 0)
             _slideStart(i) = _now
         End If
+        Changed(i)
         Reschedule(i)
     End Sub
 

@@ -1,6 +1,7 @@
 Option Strict On
 
 #If NET Then
+Imports System.Numerics
 Imports System.Runtime.Intrinsics
 #End If
 
@@ -221,7 +222,7 @@ Partial Public NotInheritable Class EventDrivenSolver
         Dim vMatch = Vector256.Create(If(asleep, Double.NaN, ay))
         Dim vR = Vector256.Create(r), vTwo = Vector256.Create(2.0), vSlop = Vector256.Create(_slop)
         Dim vGraze = Vector256.Create(TimeOfImpact.GrazeFraction)
-        Dim vZero = Vector256(Of Double).Zero, vInf = Vector256.Create(Double.PositiveInfinity)
+        Dim vZero = Vector256(Of Double).Zero
         Dim laneIndex = Vector256.Create(0.0, 1.0, 2.0, 3.0)
         Dim vMargin = Vector256.Create(1 + 1.0E-6)
         Dim bestSeen = best, vInvBest = Vector256.Create(1 / best)
@@ -265,19 +266,22 @@ Partial Public NotInheritable Class EventDrivenSolver
                 Dim maybe = Vector256.ExtractMostSignificantBits(candidate)
                 If (maybe Or special) = 0 Then Continue For
                 Dim t = c / (Vector256.Sqrt(disc) - b)
-                Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, blocks(cell).ColTime)
-                Dim tm = Vector256.ConditionalSelect(hit, t, vInf)
-                For k = 0 To UniformGrid.Lanes - 1
-                    Dim bit = 1UI << k
-                    If (special And bit) <> 0 Then
-                        Dim j = laneBody(cell * UniformGrid.Lanes + k)
+                Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, blocks(cell).ColTime) And
+                          Vector256.LessThan(t, Vector256.Create(best))
+                ' Only the lanes that need a look, in lane order (as the one-at-a-time loop takes them).
+                Dim look = special Or Vector256.ExtractMostSignificantBits(hit)
+                While look <> 0
+                    Dim k = BitOperations.TrailingZeroCount(look)
+                    look = look And (look - 1UI)
+                    Dim j = laneBody(cell * UniformGrid.Lanes + k)
+                    If ((special >> k) And 1UI) <> 0 Then
                         If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
-                    ElseIf tm.GetElement(k) < best Then
-                        best = tm.GetElement(k)
+                    ElseIf t.GetElement(k) < best Then
+                        best = t.GetElement(k)
                         kind = EventKind.Circle
-                        other = laneBody(cell * UniformGrid.Lanes + k)
+                        other = j
                     End If
-                Next
+                End While
             Next
         Next
     End Sub
@@ -294,7 +298,8 @@ Partial Public NotInheritable Class EventDrivenSolver
         _ev(i).CellTime = If(exitDt < Double.PositiveInfinity, _now + exitDt, Double.PositiveInfinity)
         _ev(i).CellDir = exitDir
         _queue.Update(i, Math.Min(_ev(i).ColTime, _ev(i).CellTime))
-        Publish(i)
+        ' Only the time: its motion was published when it last changed (see EventDrivenSolver.Lanes).
+        _grid.PublishColTime(i, _ev(i).ColTime)
     End Sub
 
     ''' <summary>

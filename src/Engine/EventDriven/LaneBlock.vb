@@ -33,6 +33,11 @@ Friend Structure LaneBlock
         Put(Me.ColTime, k, colTime)
     End Sub
 
+    ''' <summary>Writes one body's next collision time (s) into lane k (0 … 3).</summary>
+    Friend Sub SetColTime(k As Integer, value As Double)
+        Put(ColTime, k, value)
+    End Sub
+
     ''' <summary>Copies lane <paramref name="source"/> into lane <paramref name="target"/> (0 … 3).</summary>
     Friend Sub CopyLane(source As Integer, target As Integer)
         Put(T0, target, T0.GetElement(source))

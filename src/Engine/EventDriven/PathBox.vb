@@ -14,16 +14,18 @@ Friend Module PathBox
                       ByRef xlo As Double, ByRef xhi As Double, ByRef ylo As Double, ByRef yhi As Double)
         Dim x1 = px + vx * span
         Dim y1 = py + (vy + 0.5 * ay * span) * span
-        xlo = Math.Min(px, x1)
-        xhi = Math.Max(px, x1)
-        ylo = Math.Min(py, y1)
-        yhi = Math.Max(py, y1)
+        ' Plain comparisons rather than Math.Min and Math.Max, whose care for NaN and −0 costs more
+        ' than the rest of this; a NaN end still gives a NaN bound.
+        xlo = If(px < x1, px, x1)
+        xhi = If(px > x1, px, x1)
+        ylo = If(py < y1, py, y1)
+        yhi = If(py > y1, py, y1)
         If ay <> 0 Then
             Dim tv = -vy / ay ' when the vertical velocity is zero
             If tv > 0 AndAlso tv < span Then
                 Dim yv = py + 0.5 * vy * tv
-                ylo = Math.Min(ylo, yv)
-                yhi = Math.Max(yhi, yv)
+                If yv < ylo Then ylo = yv
+                If yv > yhi Then yhi = yv
             End If
         End If
     End Sub

@@ -150,6 +150,15 @@ Friend NotInheritable Class UniformGrid
 #End If
     End Sub
 
+    ''' <summary>Copies body i's next collision time (s) into its lane; nothing when it has none.</summary>
+    Friend Sub PublishColTime(i As Integer, colTime As Double)
+        Dim lane = LaneOf(i)
+        If lane < 0 Then Return
+#If NET Then
+        Blocks(lane \ Lanes).SetColTime(lane Mod Lanes, colTime)
+#End If
+    End Sub
+
     ''' <summary>
     ''' Lists static obstacle k (bounding box xmin … ymax, m) in every cell from which a gridded circle
     ''' (radius ≤ half a cell) could touch it. Call with all boxes at once.
