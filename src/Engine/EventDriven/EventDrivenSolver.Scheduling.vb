@@ -6,8 +6,9 @@ Imports System.Runtime.Intrinsics
 #End If
 
 ' Prediction: the earliest event of one body against the walls, the static obstacles and the
-' movable circles near it, and its next grid-cell crossing. Only the 3 × 3 cells around it are
-' searched, so the cost per event stays flat as the number of bodies grows.
+' movable circles near it, and its next grid-cell crossing. Only the cells around it that are within
+' reach of its path are searched (see ReachOfPath), so the cost per event stays flat as the number
+' of bodies grows.
 Partial Public NotInheritable Class EventDrivenSolver
     ''' <summary>Recomputes body i's next event at the solver's clock and files it in the queue.</summary>
     Private Sub Reschedule(i As Integer)
@@ -76,8 +77,8 @@ Partial Public NotInheritable Class EventDrivenSolver
 
     ''' <summary>
     ''' Body i's centre enters the next cell. Its collision prediction stays valid (its own motion did
-    ''' not change), so only the strip of three cells that just came into its 3 × 3 neighbourhood, and
-    ''' the statics of the new cell, are searched.
+    ''' not change); the walls and statics of the new cell, and the cells within reach of its new
+    ''' stretch of path except the one it came from, are searched (docs/event-driven.md §4).
     ''' </summary>
     Private Sub CrossCell(i As Integer)
         Dim dir = _ev(i).CellDir
