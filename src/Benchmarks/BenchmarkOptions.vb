@@ -99,6 +99,16 @@ Friend NotInheritable Class BenchmarkOptions
         End Get
     End Property
 
+    ''' <summary>
+    ''' Wall-clock seconds of short advances before a scaling gas is timed, so that .NET has finished
+    ''' optimising the hot code (see GasScaling.Measure).
+    ''' </summary>
+    Public ReadOnly Property GasWarmUpSeconds As Double
+        Get
+            Return If(Quick, 0.5, 3.0)
+        End Get
+    End Property
+
     ''' <summary>Wall-clock seconds one timed slice of the scaling gas should take.</summary>
     Public ReadOnly Property GasSliceSeconds As Double
         Get

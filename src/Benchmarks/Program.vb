@@ -174,7 +174,7 @@ Public NotInheritable Class Program
         Dim dt = If(probe IsNot Nothing AndAlso probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
         Dim r As BenchResult
         Try
-            r = GasScaling.Measure(options.ChildGas, solver, dt, options.Repeats, options.GasSliceSeconds)
+            r = GasScaling.Measure(options.ChildGas, solver, dt, options.Repeats, options.GasSliceSeconds, options.GasWarmUpSeconds)
         Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
             r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt, "failed: " & ex.GetType().Name & ": " & ex.Message)
             r.BodyCount = options.ChildGas
