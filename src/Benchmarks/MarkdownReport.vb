@@ -176,7 +176,7 @@ Friend Module MarkdownReport
         sb.Append("## Scaling: elastic gas at packing fraction 0.1").Append(ControlChars.Lf).Append(ControlChars.Lf)
         sb.Append("Scenarios.ElasticGas(N, packing fraction 0.1, r = 0.01 m): the box grows with N so the density stays the same. ").
            Append("Each row runs in its own process, so peak memory (working set) is that run's alone. ").
-           Append("After a warm-up the same gas is timed over several equal slices of simulated time (median). ").
+           Append("After a warm-up (seconds of short advances, until .NET has finished optimising the hot code, then a few slices to size the timed one) the same gas is timed over several equal slices of simulated time (median). ").
            Append("If the cost per collision is flat, the µs per collision column stays level as N grows. ").
            Append("Stepping solvers run at dt = 1/1000 s; a size is skipped when one step could take more than a few seconds if the cost grew as N².").Append(ControlChars.Lf).Append(ControlChars.Lf)
         If rows.Any(Function(r) r.Available AndAlso Not Double.IsNaN(r.MicrosecondsPerCollision)) Then
