@@ -1,6 +1,6 @@
 Option Strict On
 Imports System.Diagnostics
-Imports System.Runtime.InteropServices
+Imports System.Threading
 
 ''' <summary>
 ''' run SCENE --time T: checks every argument and the scene before any output file exists, then
@@ -19,28 +19,31 @@ Friend Module RunCommand
 
         Dim states As OutputFile = Nothing
         Dim events As OutputFile = Nothing
-        ' Ctrl+C and SIGTERM end the process without unwinding: throw the temporary files away first.
-        Dim discard = Sub()
-                          states?.Dispose()
-                          events?.Dispose()
-                      End Sub
-        Dim cancel As ConsoleCancelEventHandler = Sub(sender, e) discard()
-        AddHandler Console.CancelKeyPress, cancel
-        Dim terminate = PosixSignalRegistration.Create(PosixSignal.SIGTERM, Sub(context) discard())
-        Try
-            If o.StatesPath IsNot Nothing Then states = OutputFile.Create("--states", o.StatesPath)
-            If o.EventsPath IsNot Nothing Then events = OutputFile.Create("--events", o.EventsPath)
-            Dim summary = Simulate(world, o, states, events)
-            states?.Commit()
-            events?.Commit()
-            Console.Out.WriteLine(If(o.Json, summary.ToJson(), summary.ToText()))
-            Return ExitCodes.Ok
-        Finally
-            RemoveHandler Console.CancelKeyPress, cancel
-            terminate.Dispose()
-            states?.Dispose()
-            events?.Dispose()
-        End Try
+        ' Ctrl+C and SIGTERM: throw the temporary files away, say so, exit 1 (see RunInterruption).
+        Using interruption As New RunInterruption(
+            Sub()
+                states?.Dispose()
+                events?.Dispose()
+            End Sub)
+            Try
+                If o.StatesPath IsNot Nothing Then states = OutputFile.Create("--states", o.StatesPath)
+                If o.EventsPath IsNot Nothing Then events = OutputFile.Create("--events", o.EventsPath)
+                Dim summary = Simulate(world, o, states, events)
+                interruption.Finishing()
+                states?.Commit()
+                events?.Commit()
+                Console.Out.WriteLine(If(o.Json, summary.ToJson(), summary.ToText()))
+                Return ExitCodes.Ok
+            Catch ex As Exception When interruption.Interrupted
+                ' A signal closed the files under this thread, and the process is exiting with the
+                ' signal's message: nothing more to say.
+                Thread.Sleep(Timeout.Infinite)
+                Throw
+            Finally
+                states?.Dispose()
+                events?.Dispose()
+            End Try
+        End Using
     End Function
 
     Private Function CreateSolver(o As RunOptions) As ISolver

@@ -1,0 +1,57 @@
+Option Strict On
+Imports System.Diagnostics
+Imports Xunit
+
+''' <summary>
+''' Stopping a run with Ctrl+C (SIGINT) or SIGTERM: one line on standard error says so, the status is
+''' 1 (cli.md: any other failure), nothing goes to standard output, and no output file, finished or
+''' temporary, is left behind. Signals are POSIX and are sent with kill, so this runs where CI runs.
+''' </summary>
+Public Class CliSignalTests
+    <Runtime.InteropServices.DllImport("libc", EntryPoint:="kill", SetLastError:=True)>
+    Private Shared Function NativeKill(pid As Integer, sig As Integer) As Integer
+    End Function
+
+    ''' <summary>Every file in the folder, hidden ones (the temporary outputs start with a dot) included.</summary>
+    Private Shared Function AllFiles(folder As String) As String()
+        Dim options As New IO.EnumerationOptions With {.AttributesToSkip = 0}
+        Return IO.Directory.GetFileSystemEntries(folder, "*", options).Select(Function(f) IO.Path.GetFileName(f)).OrderBy(Function(f) f, StringComparer.Ordinal).ToArray()
+    End Function
+
+    <Theory>
+    <InlineData("TERM", "SIGTERM")>
+    <InlineData("INT", "Ctrl+C (SIGINT)")>
+    Public Sub RunStoppedBySignal_SaysSo_Exits1_AndLeavesNoFile(signal As String, name As String)
+        If OperatingSystem.IsWindows() Then Return ' no POSIX signals to send
+        Using t As New TempFolder()
+            Dim scene = t.Write("head-on.json", HeadOn)
+            ' Millions of samples: long enough to be stopped while it writes.
+            Dim psi As New ProcessStartInfo("dotnet") With {
+                .RedirectStandardOutput = True, .RedirectStandardError = True, .UseShellExecute = False}
+            For Each a In {CliDll, "run", scene, "--time", "5000", "--sample", "0.001", "--states", t.File("states.csv"), "--events", t.File("events.csv")}
+                psi.ArgumentList.Add(a)
+            Next
+            Using p = Process.Start(psi)
+                Dim outTask = p.StandardOutput.ReadToEndAsync()
+                Dim errTask = p.StandardError.ReadToEndAsync()
+                ' Wait until it is writing (its temporary files exist), then send the signal.
+                Dim clock = Stopwatch.StartNew()
+                While AllFiles(t.Path).Length < 3 AndAlso clock.Elapsed.TotalSeconds < 30 AndAlso Not p.HasExited
+                    Threading.Thread.Sleep(50)
+                End While
+                Threading.Thread.Sleep(300)
+                If p.HasExited Then Assert.Fail("the run ended before it could be stopped: " & errTask.Result)
+                Assert.True(NativeKill(p.Id, If(signal = "TERM", 15, 2)) = 0, "kill failed")
+                If Not p.WaitForExit(30000) Then
+                    p.Kill(True)
+                    Assert.Fail(name & " did not stop the run within 30 s")
+                End If
+                p.WaitForExit()
+                Assert.Equal(1, p.ExitCode)
+                Assert.Equal("run: interrupted by " & name & "; no output file was written" & vbLf, errTask.Result)
+                Assert.Equal("", outTask.Result)
+            End Using
+            Assert.Equal("head-on.json", String.Join(" ", AllFiles(t.Path)))
+        End Using
+    End Sub
+End Class
