@@ -167,6 +167,38 @@ Partial Public NotInheritable Class World
         _solver?.Invalidate(body)
     End Sub
 
+    ''' <summary>
+    ''' Puts <paramref name="replacement"/> where <paramref name="body"/> was, in the same place in
+    ''' every list (so tables and outputs keep their order), with the same id: how a fixed body, which
+    ''' the engine never moves, is moved by the user. Both must be the same kind of shape.
+    ''' </summary>
+    Public Sub Replace(body As Shape, replacement As Shape)
+        If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
+        If replacement Is Nothing Then Throw New ArgumentNullException(NameOf(replacement))
+        Dim index = _bodies.IndexOf(body)
+        If index < 0 Then Throw New ArgumentException("this body is not in the world", NameOf(body))
+        If replacement.GetType() IsNot body.GetType() Then Throw New ArgumentException("a body can only be replaced by one of the same kind", NameOf(replacement))
+        If replacement IsNot body AndAlso _bodies.Contains(replacement) Then Throw New ArgumentException("the replacement is already in the world", NameOf(replacement))
+        If replacement.Id <> body.Id Then Throw New ArgumentException("the replacement must keep the id '" & body.Id & "'", NameOf(replacement))
+        Dim c = TryCast(replacement, Circle)
+        If c IsNot Nothing Then
+            If Not c.Position.IsFinite OrElse Not c.Velocity.IsFinite Then Throw New ArgumentException("position and velocity must be finite", NameOf(replacement))
+            If c.IsFixed Then c.Velocity = Vector.Zero
+            If _walls AndAlso Not c.IsFixed Then
+                CheckFits(c.Radius, _width, _height)
+                c.Position = Inside(c.Position, c.Radius)
+            End If
+            Dim old = DirectCast(body, Circle)
+            _circles(_circles.IndexOf(old)) = c
+            If old Is _DraggedCircle Then _DraggedCircle = Nothing
+        Else
+            _rectangles(_rectangles.IndexOf(DirectCast(body, Rectangle))) = DirectCast(replacement, Rectangle)
+        End If
+        _bodies(index) = replacement
+        _solver?.Invalidate(body)
+        _solver?.Invalidate(replacement)
+    End Sub
+
     ''' <summary>Removes a body; returns False when it was not in the world.</summary>
     Public Function Remove(body As Shape) As Boolean
         If body Is Nothing OrElse Not _bodies.Remove(body) Then Return False

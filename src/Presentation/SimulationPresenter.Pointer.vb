@@ -237,8 +237,7 @@ Partial Public NotInheritable Class SimulationPresenter
             moved = New Rectangle(target, r.Width, r.Height, r.Id)
         End If
         moved.Color = _dragged.Color
-        World.Remove(_dragged)
-        World.Add(moved)
+        World.Replace(_dragged, moved) ' in its own place: it keeps its row in the tables
         _dragged = moved
     End Sub
 

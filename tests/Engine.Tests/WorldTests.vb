@@ -21,6 +21,33 @@ Public Class WorldTests
     End Sub
 
     <Fact>
+    Public Sub Replace_PutsTheNewBodyInTheOldOnesPlace_AndRefusesAMismatch()
+        Dim w As New World(10, 10, 9.81, 0.5) With {.Solver = New EventDrivenSolver()}
+        Dim table = New Rectangle(New Vector(2, 1), 2, 1, "table")
+        Dim peg = Circle.CreateFixed(New Vector(5, 5), 0.2, "peg")
+        Dim ball = New Circle(New Vector(7, 7), 0.3, 1.0)
+        w.Add(table)
+        w.Add(peg)
+        w.Add(ball)
+        Dim moved = Circle.CreateFixed(New Vector(6, 2), 0.2, "peg")
+        w.Replace(peg, moved)
+        Assert.Equal({"table", "peg", ball.Id}, w.Bodies.Select(Function(b) b.Id).ToArray())
+        Assert.Same(moved, w.Circles(0))
+        Assert.Same(moved, w.Bodies(1))
+        Dim slid = New Rectangle(New Vector(3, 1), 2, 1, "table")
+        w.Replace(table, slid)
+        Assert.Same(slid, w.Rectangles(0))
+        Assert.Same(slid, w.Bodies(0))
+        ' The engine still runs with the moved bodies (a fixed body's change rebuilds the solver).
+        w.Advance(0.1)
+        Assert.Equal(6.0, moved.Position.X)
+        Assert.Throws(Of ArgumentException)(Sub() w.Replace(peg, Circle.CreateFixed(New Vector(1, 1), 0.2, "peg")))
+        Assert.Throws(Of ArgumentException)(Sub() w.Replace(moved, New Rectangle(New Vector(6, 2), 1, 1, "peg")))
+        Assert.Throws(Of ArgumentException)(Sub() w.Replace(moved, Circle.CreateFixed(New Vector(6, 2), 0.2, "other")))
+        Assert.Throws(Of ArgumentException)(Sub() w.Replace(moved, ball))
+    End Sub
+
+    <Fact>
     Public Sub ApplyImpulse_MovesAHeavyBallLess()
         Dim w As New World(10, 10, 0)
         Dim light As New Circle(New Vector(2, 2), 0.1, 1.0)

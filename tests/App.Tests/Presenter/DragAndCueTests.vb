@@ -73,6 +73,19 @@ Public Class DragAndCueTests
     End Sub
 
     <Fact>
+    Public Sub RightDrag_OfAFixedBody_KeepsItsPlaceInTheTables()
+        Dim h As New PresenterHarness()
+        h.P.World.Add(New Rectangle(New Vector(1, 1), 2, 1, "table"))
+        h.P.World.Add(Circle.CreateFixed(New Vector(6, 3), 0.3, "peg"))
+        h.Ball(4, 4)
+        Dim before = h.P.World.Bodies.Select(Function(b) b.Id).ToArray()
+        h.Drag(PointerButton.Right, 2, 1.5, 3, 2.5)
+        h.Drag(PointerButton.Right, 6, 3, 7, 1)
+        Assert.Equal(before, h.P.World.Bodies.Select(Function(b) b.Id).ToArray())
+        Assert.Equal(7.0, h.P.World.Circles.Single(Function(c) c.Id = "peg").Position.X, 6)
+    End Sub
+
+    <Fact>
     Public Sub Cue_PullBackAndRelease_GivesDeltaVOfJOverM()
         Dim h As New PresenterHarness(New World(8, 5, 0.0, 1.0))
         Dim ball = h.Ball(4, 2, mass:=2)
