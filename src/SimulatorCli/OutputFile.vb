@@ -10,6 +10,7 @@ Friend NotInheritable Class OutputFile
     Implements IDisposable
 
     Private ReadOnly _target As String
+    ''' <summary>The temporary file, or Nothing when the target is a stream written straight through.</summary>
     Private ReadOnly _temp As String
     Private _writer As StreamWriter
     Private _committed As Boolean
@@ -38,19 +39,53 @@ Friend NotInheritable Class OutputFile
         If Not Directory.Exists(folder) Then Throw New BadInputException(optionName & ": folder '" & folder & "' does not exist")
     End Sub
 
-    ''' <summary>Starts writing (UTF-8 without BOM, "\n" line ends) to a temporary file beside <paramref name="path"/>.</summary>
+    ''' <summary>
+    ''' Starts writing (UTF-8 without BOM, "\n" line ends) to a temporary file beside
+    ''' <paramref name="path"/>, or beside the file it links to: a symbolic link is kept and its
+    ''' target replaced. A pipe or a device (a FIFO, /dev/stdout) cannot be replaced and holds no file
+    ''' to leave half-written: it is written straight through.
+    ''' </summary>
     Friend Shared Function Create(optionName As String, path As String) As OutputFile
         Dim target = IO.Path.GetFullPath(path)
-        Dim temp = IO.Path.Combine(IO.Path.GetDirectoryName(target), "." & IO.Path.GetFileName(target) & "." & Guid.NewGuid().ToString("N") & ".tmp")
         Try
+            Dim direct = OpenIfStream(target)
+            If direct IsNot Nothing Then Return New OutputFile(target, Nothing, NewWriter(direct))
+            If New FileInfo(target).LinkTarget IsNot Nothing Then
+                Dim final = New FileInfo(target).ResolveLinkTarget(returnFinalTarget:=True)
+                If final IsNot Nothing Then target = final.FullName
+            End If
+            Dim temp = IO.Path.Combine(IO.Path.GetDirectoryName(target), "." & IO.Path.GetFileName(target) & "." & Guid.NewGuid().ToString("N") & ".tmp")
             Dim stream As New FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None, 1 << 16)
-            Dim writer As New StreamWriter(stream, New UTF8Encoding(False)) With {.NewLine = vbLf}
-            Return New OutputFile(target, temp, writer)
+            Return New OutputFile(target, temp, NewWriter(stream))
         Catch ex As IOException
             Throw New BadInputException(optionName & ": cannot write in '" & IO.Path.GetDirectoryName(target) & "' (" & ex.Message & ")", ex)
         Catch ex As UnauthorizedAccessException
             Throw New BadInputException(optionName & ": cannot write in '" & IO.Path.GetDirectoryName(target) & "' (" & ex.Message & ")", ex)
         End Try
+    End Function
+
+    Private Shared Function NewWriter(stream As Stream) As StreamWriter
+        Return New StreamWriter(stream, New UTF8Encoding(False)) With {.NewLine = vbLf}
+    End Function
+
+    ''' <summary>
+    ''' The open target when it already exists and is a stream rather than a file (it cannot seek: a
+    ''' pipe or a device); Nothing otherwise, and for anything that cannot be opened here (the
+    ''' temporary file route then says why). Opening a FIFO waits for its reader, as it should.
+    ''' </summary>
+    Private Shared Function OpenIfStream(target As String) As FileStream
+        If Not File.Exists(target) Then Return Nothing
+        Dim probe As FileStream
+        Try
+            probe = New FileStream(target, FileMode.Open, FileAccess.Write, FileShare.ReadWrite, 1 << 16)
+        Catch ex As IOException
+            Return Nothing
+        Catch ex As UnauthorizedAccessException
+            Return Nothing
+        End Try
+        If Not probe.CanSeek Then Return probe
+        probe.Dispose()
+        Return Nothing
     End Function
 
     Friend ReadOnly Property Writer As TextWriter
@@ -59,13 +94,13 @@ Friend NotInheritable Class OutputFile
         End Get
     End Property
 
-    ''' <summary>Finishes the file and moves it over the target.</summary>
+    ''' <summary>Finishes the file and moves it over the target (a stream is only flushed and closed).</summary>
     Friend Sub Commit()
         _writer.Flush()
-        DirectCast(_writer.BaseStream, FileStream).Flush(True)
+        If _temp IsNot Nothing Then DirectCast(_writer.BaseStream, FileStream).Flush(True)
         _writer.Dispose()
         _writer = Nothing
-        File.Move(_temp, _target, overwrite:=True)
+        If _temp IsNot Nothing Then File.Move(_temp, _target, overwrite:=True)
         _committed = True
     End Sub
 
@@ -89,6 +124,7 @@ Friend NotInheritable Class OutputFile
     End Sub
 
     Private Sub TryDelete()
+        If _temp Is Nothing Then Return ' a stream: nothing to throw away
         Try
             If File.Exists(_temp) Then File.Delete(_temp)
         Catch ex As IOException
