@@ -152,12 +152,7 @@ Partial Public NotInheritable Class World
         End If
         Dim c = TryCast(body, Circle)
         If c IsNot Nothing Then
-            If Not c.Position.IsFinite OrElse Not c.Velocity.IsFinite Then Throw New ArgumentException("position and velocity must be finite", NameOf(body))
-            If c.IsFixed Then c.Velocity = Vector.Zero
-            If _walls AndAlso Not c.IsFixed Then
-                CheckFits(c.Radius, _width, _height)
-                c.Position = Inside(c.Position, c.Radius)
-            End If
+            Admit(c, NameOf(body))
             _circles.Add(c)
         Else
             _rectangles.Add(DirectCast(body, Rectangle))
@@ -182,12 +177,7 @@ Partial Public NotInheritable Class World
         If replacement.Id <> body.Id Then Throw New ArgumentException("the replacement must keep the id '" & body.Id & "'", NameOf(replacement))
         Dim c = TryCast(replacement, Circle)
         If c IsNot Nothing Then
-            If Not c.Position.IsFinite OrElse Not c.Velocity.IsFinite Then Throw New ArgumentException("position and velocity must be finite", NameOf(replacement))
-            If c.IsFixed Then c.Velocity = Vector.Zero
-            If _walls AndAlso Not c.IsFixed Then
-                CheckFits(c.Radius, _width, _height)
-                c.Position = Inside(c.Position, c.Radius)
-            End If
+            Admit(c, NameOf(replacement))
             Dim old = DirectCast(body, Circle)
             _circles(_circles.IndexOf(old)) = c
             If old Is _DraggedCircle Then _DraggedCircle = Nothing
@@ -197,6 +187,19 @@ Partial Public NotInheritable Class World
         _bodies(index) = replacement
         _solver?.Invalidate(body)
         _solver?.Invalidate(replacement)
+    End Sub
+
+    ''' <summary>
+    ''' Readies a circle that is joining the world: its position and velocity must be finite, a fixed
+    ''' one is at rest, and a movable one in a walled container is brought inside.
+    ''' </summary>
+    Private Sub Admit(c As Circle, paramName As String)
+        If Not c.Position.IsFinite OrElse Not c.Velocity.IsFinite Then Throw New ArgumentException("position and velocity must be finite", paramName)
+        If c.IsFixed Then c.Velocity = Vector.Zero
+        If _walls AndAlso Not c.IsFixed Then
+            CheckFits(c.Radius, _width, _height)
+            c.Position = Inside(c.Position, c.Radius)
+        End If
     End Sub
 
     ''' <summary>Removes a body; returns False when it was not in the world.</summary>
