@@ -50,8 +50,9 @@ Friend NotInheritable Class OutputFile
         Try
             Dim direct = OpenIfStream(target)
             If direct IsNot Nothing Then Return New OutputFile(target, Nothing, NewWriter(direct))
-            If New FileInfo(target).LinkTarget IsNot Nothing Then
-                Dim final = New FileInfo(target).ResolveLinkTarget(returnFinalTarget:=True)
+            Dim info As New FileInfo(target)
+            If info.LinkTarget IsNot Nothing Then
+                Dim final = info.ResolveLinkTarget(returnFinalTarget:=True)
                 If final IsNot Nothing Then target = final.FullName
             End If
             Dim temp = IO.Path.Combine(IO.Path.GetDirectoryName(target), "." & IO.Path.GetFileName(target) & "." & Guid.NewGuid().ToString("N") & ".tmp")

@@ -21,6 +21,18 @@ Public Class CliOutputTargetTests
         Return String.Join(" ", Directory.GetFileSystemEntries(folder, "*", options).Select(Function(f) Path.GetFileName(f)).OrderBy(Function(f) f, StringComparer.Ordinal))
     End Function
 
+    ''' <summary>
+    ''' Runs the scene for 0.2 s with its states table going to <paramref name="statesPath"/> while
+    ''' a reader opens <paramref name="fifo"/> and reads until the writer closes it; returns what it read.
+    ''' </summary>
+    Private Shared Function RunReadingFifo(scene As String, statesPath As String, fifo As String) As String
+        Dim reader = Threading.Tasks.Task.Run(Function() File.ReadAllText(fifo))
+        Dim r = RunCli("run", scene, "--time", "0.2", "--sample", "0.1", "--states", statesPath)
+        Assert.True(r.ExitCode = 0, r.ToString())
+        Assert.True(reader.Wait(TimeSpan.FromSeconds(30)), "the reader never saw the end of the table")
+        Return reader.Result
+    End Function
+
     <Fact>
     Public Sub SymbolicLink_IsKept_AndItsTargetReplacedWhole()
         If OperatingSystem.IsWindows() Then Return ' links need extra rights there
@@ -47,13 +59,9 @@ Public Class CliOutputTargetTests
             Dim scene = t.Write("head-on.json", HeadOn)
             Dim fifo = t.File("states.fifo")
             Shell("mkfifo", fifo)
-            ' The reader opens the FIFO and reads until the writer closes it.
-            Dim reader = Threading.Tasks.Task.Run(Function() File.ReadAllText(fifo))
-            Dim r = RunCli("run", scene, "--time", "0.2", "--sample", "0.1", "--states", fifo)
-            Assert.True(r.ExitCode = 0, r.ToString())
-            Assert.True(reader.Wait(TimeSpan.FromSeconds(30)), "the reader never saw the end of the table")
-            Assert.StartsWith(StatesHeader & vbLf, reader.Result)
-            Assert.Equal(7, reader.Result.TrimEnd(ChrW(10)).Split(ChrW(10)).Length)
+            Dim text = RunReadingFifo(scene, fifo, fifo)
+            Assert.StartsWith(StatesHeader & vbLf, text)
+            Assert.Equal(7, text.TrimEnd(ChrW(10)).Split(ChrW(10)).Length)
             Assert.Equal("head-on.json states.fifo", AllFiles(t.Path))
             Assert.Equal(0L, New FileInfo(fifo).Length) ' still the FIFO, not a file put in its place
         End Using
@@ -71,11 +79,7 @@ Public Class CliOutputTargetTests
             Dim fifo = t.File("pipe")
             Shell("mkfifo", fifo)
             Shell("ln", "-s", fifo, t.File("stdout"))
-            Dim reader = Threading.Tasks.Task.Run(Function() File.ReadAllText(fifo))
-            Dim r = RunCli("run", scene, "--time", "0.2", "--sample", "0.1", "--states", t.File("stdout"))
-            Assert.True(r.ExitCode = 0, r.ToString())
-            Assert.True(reader.Wait(TimeSpan.FromSeconds(30)), "the reader never saw the end of the table")
-            Assert.StartsWith(StatesHeader & vbLf, reader.Result)
+            Assert.StartsWith(StatesHeader & vbLf, RunReadingFifo(scene, t.File("stdout"), fifo))
             Assert.NotNull(New FileInfo(t.File("stdout")).LinkTarget)
             Assert.Equal("head-on.json pipe stdout", AllFiles(t.Path))
         End Using
