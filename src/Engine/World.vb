@@ -242,9 +242,30 @@ Partial Public NotInheritable Class World
         If Not (duration >= 0) OrElse Double.IsInfinity(duration) Then Throw New ArgumentOutOfRangeException(NameOf(duration), "duration must be a finite number ≥ 0")
         If _solver Is Nothing Then Throw New InvalidOperationException("the world has no solver")
         If duration = 0 Then Return
+        CheckSpeeds()
         Dim start = _Time
         _solver.Advance(duration)
         _Time = start + duration
+    End Sub
+
+    ''' <summary>
+    ''' The fastest a movable circle may move when the world advances, m/s. Every solver squares speeds
+    ''' (kinetic energy; the quadratics that give contact times multiply speeds by speeds and by
+    ''' distances), and the square of about 1.3e154 overflows a double: the stepping solvers then produce
+    ''' NaN, and the event solver finds every contact at once. 1e150 leaves room for those products.
+    ''' </summary>
+    Public Const MaxSpeed As Double = 1.0E+150
+
+    ''' <summary>
+    ''' Throws <see cref="SpeedLimitException"/> for the first movable circle faster than <see cref="MaxSpeed"/>.
+    ''' <see cref="Advance"/> checks this first; a caller can check before it starts anything.
+    ''' </summary>
+    Public Sub CheckSpeeds()
+        For Each c In _circles
+            If c.IsFixed Then Continue For
+            Dim v = c.Velocity
+            If Math.Abs(v.X) + Math.Abs(v.Y) > MaxSpeed AndAlso v.Length > MaxSpeed Then Throw New SpeedLimitException(c, v.Length)
+        Next
     End Sub
 
     ''' <summary>Sets a movable circle's velocity, m/s.</summary>

@@ -34,6 +34,10 @@ Public NotInheritable Class Program
         Catch ex As BadInputException
             Console.Error.WriteLine(OneLine(ex.Message))
             Return ExitCodes.BadInput
+        Catch ex As SpeedLimitException
+            ' A valid scene the solvers cannot simulate: a failure of the run, not bad input (cli.md).
+            Console.Error.WriteLine("run: " & OneLine(ex.Message))
+            Return ExitCodes.Failure
         Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
             Console.Error.WriteLine("internal error: " & OneLine(ex.Message))
             Return ExitCodes.Failure

@@ -16,6 +16,8 @@ Friend Module RunCommand
         If o.StatesPath IsNot Nothing Then OutputFile.CheckTarget("--states", o.StatesPath)
         If o.EventsPath IsNot Nothing Then OutputFile.CheckTarget("--events", o.EventsPath)
         world.Solver = CreateSolver(o)
+        ' A valid scene too fast to simulate fails (exit 1) before any file is created.
+        world.CheckSpeeds()
 
         Dim states As OutputFile = Nothing
         Dim events As OutputFile = Nothing
@@ -68,7 +70,7 @@ Friend Module RunCommand
         For Each t In SampleTimes(o.Time, o.Sample)
             Try
                 world.Advance(t - world.Time)
-            Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
+            Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException AndAlso Not TypeOf ex Is SpeedLimitException
                 Throw New InvalidOperationException("the " & world.Solver.Name & " solver failed between t = " & CsvText.Number(world.Time) & " s and t = " & CsvText.Number(t) & " s: " & ex.Message, ex)
             End Try
             If states IsNot Nothing Then WriteStates(states.Writer, t, movable)

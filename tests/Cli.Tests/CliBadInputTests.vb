@@ -4,7 +4,8 @@ Imports Xunit
 
 ''' <summary>
 ''' Bad input: exit 2, one line on standard error saying what and where, and no output file created
-''' or changed. Every case also names a states and an events file in a folder that exists.
+''' or changed. Every case also names a states and an events file in a folder that exists. A valid
+''' scene that no solver can run fails the same way, with exit 1 (cli.md: any other failure).
 ''' </summary>
 Public Class CliBadInputTests
     Private Const Scene As String = "{scene}"
@@ -56,6 +57,19 @@ Public Class CliBadInputTests
             Assert.True(r.ExitCode = 2, r.ToString())
             Assert.StartsWith(scenePath & ": " & expected, r.StdErr)
             Assert.Equal("", r.StdOut)
+            AssertOneLineAndNothingWritten(t, r)
+        End Using
+    End Sub
+
+    <Fact>
+    Public Sub ASceneTooFastToSimulate_IsValid_ButTheRunFails_Exit1_AndWritesNothing()
+        Using t As New TempFolder()
+            Dim scenePath = t.Write("scene.json", Q("{'format':'physics-scene/1','world':{'width':10,'height':10}," &
+                                                    "'bodies':[{'id':'fast','type':'circle','x':5,'y':5,'radius':0.5,'mass':1,'vx':1e300}]}"))
+            Assert.Equal(0, RunCli("validate", scenePath).ExitCode)
+            Dim r = Run(t, scenePath, {Scene, "--time", "1", "--states", States, "--events", Events})
+            Assert.True(r.ExitCode = 1, r.ToString())
+            Assert.StartsWith("run: circle 'fast' moves at 1E+300 m/s, faster than the 1E+150 m/s the simulation can handle", r.StdErr)
             AssertOneLineAndNothingWritten(t, r)
         End Using
     End Sub

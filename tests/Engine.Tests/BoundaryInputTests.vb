@@ -62,6 +62,41 @@ Public Class BoundaryInputTests
         Dim w = SceneFile.Load(json)
         Assert.Single(w.Bodies)
     End Sub
+
+    ''' <summary>A ball at speed v (m/s, along a diagonal) in a walled 10 m box with gravity and e = 0.9, next to a ball at rest.</summary>
+    Private Shared Function FastBall(speed As Double) As World
+        Dim w As New World(10, 10, 9.81, 0.9)
+        w.Add(New Circle(New Vector(5, 5), 0.5, 1.0, New Vector(speed, -speed) / Math.Sqrt(2)) With {.Id = "fast"})
+        w.Add(New Circle(New Vector(2, 2), 0.5, 1.0))
+        Return w
+    End Function
+
+    <Theory>
+    <MemberData(NameOf(TestSolvers.All), MemberType:=GetType(TestSolvers))>
+    Public Sub ASpeedWhoseSquareOverflows_IsRefusedWithItsName_AndTheWorldIsUnchanged(solver As String)
+        Dim w = TestSolvers.Run(FastBall(1.0E+300), solver)
+        Dim ex = Assert.Throws(Of SpeedLimitException)(Sub() w.Advance(0.1))
+        Assert.StartsWith("circle 'fast' moves at 1E+300 m/s, faster than the 1E+150 m/s", ex.Message)
+        Assert.Same(w.Circles(0), ex.Circle)
+        Assert.Equal(0.0, w.Time)
+        Assert.Equal(New Vector(5, 5), w.Circles(0).Position)
+        Assert.Equal(New Vector(2, 2), w.Circles(1).Position)
+    End Sub
+
+    <Theory>
+    <MemberData(NameOf(TestSolvers.All), MemberType:=GetType(TestSolvers))>
+    Public Sub JustBelowTheSpeedLimit_EverySolverKeepsAFiniteStateInsideTheBox(solver As String)
+        ' Past the limit the stepping solvers produce NaN and the event solver stops the ball dead.
+        Dim w = TestSolvers.Run(FastBall(0.99 * World.MaxSpeed), solver)
+        w.Advance(0.1)
+        For Each c In w.Circles
+            Assert.True(c.Position.IsFinite AndAlso c.Velocity.IsFinite, $"{solver}: circle {c.Id} at {c.Position}, {c.Velocity}")
+            Assert.InRange(c.Position.X, 0.5 - 1.0E-9, 9.5 + 1.0E-9)
+            Assert.InRange(c.Position.Y, 0.5 - 1.0E-9, 9.5 + 1.0E-9)
+        Next
+        ' Still fast: it bounced (speed kept by a factor e per bounce), it did not stop dead.
+        Assert.True(w.Circles(0).Velocity.Length > 1000, $"{solver}: {w.Circles(0).Velocity}")
+    End Sub
 End Class
 
 ''' <summary>The event solver with nothing, or only one thing, to move.</summary>

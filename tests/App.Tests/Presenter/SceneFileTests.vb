@@ -50,6 +50,20 @@ Public Class SceneFileTests
     End Sub
 
     <Fact>
+    Public Sub Open_ASceneTooFastToSimulate_PausesWithTheReason_OnTheFirstFrame()
+        Dim fast As New World(10, 10)
+        fast.Add(New Circle(New Vector(5, 5), 0.5, 1.0, New Vector(1.0E+300, 0)) With {.Id = "fast"})
+        Dim h As New PresenterHarness(store:=New FakeStore With {.ToLoad = fast})
+        h.P.OpenScene("/tmp/fast.json")
+        Assert.False(h.P.IsPaused)
+        h.P.Tick(1 / 60.0)
+        Assert.True(h.P.IsPaused)
+        Assert.Equal(0.0, h.P.World.Time)
+        Assert.StartsWith("The simulation stopped: circle 'fast' moves at 1E+300 m/s, faster than the 1E+150 m/s",
+                          h.View.LastMessage, StringComparison.Ordinal)
+    End Sub
+
+    <Fact>
     Public Sub Open_BadFile_ShowsTheOneLineMessage_AndKeepsTheScene()
         Dim store As New FakeStore With {.Failure = New FormatException("bodies[3].radius: must be greater than 0")}
         Dim h As New PresenterHarness(store:=store)
