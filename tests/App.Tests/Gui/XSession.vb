@@ -14,6 +14,7 @@ Public NotInheritable Class XSession
 
     Public Const WindowTitle As String = "Collision Simulator"
     Private Shared ReadOnly Tools As String() = {"Xvfb", "xdotool", "import", "convert", "mono"}
+    Private Shared ReadOnly ScreenSizeQuery As String() = {"getdisplaygeometry"}
 
     Private ReadOnly _xvfb As Process
     Private ReadOnly _app As Process
@@ -62,21 +63,27 @@ Public NotInheritable Class XSession
         Directory.CreateDirectory(ShotDirectory)
 
         _xvfb = StartXvfb(_Display)
-        _env("DISPLAY") = Display
-        Dim psi As New ProcessStartInfo("mono") With {.UseShellExecute = False, .RedirectStandardOutput = True, .RedirectStandardError = True, .WorkingDirectory = RepoRoot}
-        psi.ArgumentList.Add(AppExe)
-        For Each a In appArgs
-            psi.ArgumentList.Add(a)
-        Next
-        psi.Environment("DISPLAY") = Display
-        _app = New Process With {.StartInfo = psi}
-        AddHandler _app.OutputDataReceived, Sub(s, e) If e.Data IsNot Nothing Then SyncLock _appOut : _appOut.AppendLine(e.Data) : End SyncLock
-        AddHandler _app.ErrorDataReceived, Sub(s, e) If e.Data IsNot Nothing Then SyncLock _appErr : _appErr.AppendLine(e.Data) : End SyncLock
-        _app.Start()
-        _app.BeginOutputReadLine()
-        _app.BeginErrorReadLine()
-        _WindowId = WaitForWindow(TimeSpan.FromSeconds(60))
-        Thread.Sleep(1500) ' let the first frames paint
+        Try
+            _env("DISPLAY") = Display
+            Dim psi As New ProcessStartInfo("mono") With {.UseShellExecute = False, .RedirectStandardOutput = True, .RedirectStandardError = True, .WorkingDirectory = RepoRoot}
+            psi.ArgumentList.Add(AppExe)
+            For Each a In appArgs
+                psi.ArgumentList.Add(a)
+            Next
+            psi.Environment("DISPLAY") = Display
+            _app = New Process With {.StartInfo = psi}
+            AddHandler _app.OutputDataReceived, Sub(s, e) If e.Data IsNot Nothing Then SyncLock _appOut : _appOut.AppendLine(e.Data) : End SyncLock
+            AddHandler _app.ErrorDataReceived, Sub(s, e) If e.Data IsNot Nothing Then SyncLock _appErr : _appErr.AppendLine(e.Data) : End SyncLock
+            _app.Start()
+            _app.BeginOutputReadLine()
+            _app.BeginErrorReadLine()
+            _WindowId = WaitForWindow(TimeSpan.FromSeconds(60))
+            Thread.Sleep(1500) ' let the first frames paint
+        Catch
+            ' No instance reaches a Using block, so nothing else would stop Xvfb and the app.
+            Dispose()
+            Throw
+        End Try
     End Sub
 
     Private Shared Function StartXvfb(ByRef display As String) As Process
@@ -84,7 +91,9 @@ Public NotInheritable Class XSession
             ClearIfStale(n)
             If File.Exists("/tmp/.X" & n & "-lock") OrElse File.Exists("/tmp/.X11-unix/X" & n) Then Continue For
             Dim psi As New ProcessStartInfo("Xvfb") With {.UseShellExecute = False, .RedirectStandardError = True, .RedirectStandardOutput = True}
-            For Each a In {":" & n, "-screen", "0", "1400x900x24", "-nolisten", "tcp"}
+            ' -noreset: without it, Xvfb resets itself whenever its last client leaves, so the readiness
+            ' probe below (a client that connects and leaves) could reset it just as the app connects.
+            For Each a In {":" & n, "-screen", "0", "1400x900x24", "-nolisten", "tcp", "-noreset"}
                 psi.ArgumentList.Add(a)
             Next
             Dim p = Process.Start(psi)
@@ -92,17 +101,26 @@ Public NotInheritable Class XSession
             p.BeginOutputReadLine()
             Dim sw = Stopwatch.StartNew()
             Do While sw.Elapsed < TimeSpan.FromSeconds(15)
-                If File.Exists("/tmp/.X11-unix/X" & n) Then
+                ' The socket appears before the server takes connections, and another server may own
+                ' it (one started at the same moment on the same number): ready means this process is
+                ' still running and a client has been answered.
+                If p.HasExited Then Exit Do
+                If File.Exists("/tmp/.X11-unix/X" & n) AndAlso Answers(":" & n) AndAlso Not p.HasExited Then
                     display = ":" & n
                     Return p
                 End If
-                If p.HasExited Then Exit Do
                 Thread.Sleep(100)
             Loop
             If Not p.HasExited Then p.Kill(True)
             p.Dispose()
         Next
         Throw New InvalidOperationException("could not start Xvfb on any display from :101 to :160")
+    End Function
+
+    ''' <summary>Whether the X server on the display answers a client (xdotool asks for the screen size).</summary>
+    Private Shared Function Answers(display As String) As Boolean
+        Dim r = ProcessRunner.Run("xdotool", ScreenSizeQuery, New Dictionary(Of String, String) From {{"DISPLAY", display}}, TimeSpan.FromSeconds(10))
+        Return r.ExitCode = 0
     End Function
 
     ''' <summary>
