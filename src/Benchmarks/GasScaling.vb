@@ -5,7 +5,8 @@ Imports System.Globalization
 ''' <summary>
 ''' The elastic gas at growing N and a fixed packing fraction: ms per simulated second, collisions per
 ''' wall-clock second, µs per collision (flat when the cost per event does not grow with N) and peak
-''' memory. Each N runs in its own child process so the peak working set belongs to that run alone.
+''' memory; for the event solver also the work counts behind them (events per collision, grid cells
+''' searched per event), which show whether a growth in time is work or memory. Each N runs in its own child process so the peak working set belongs to that run alone.
 ''' </summary>
 Friend Module GasScaling
     ''' <summary>Scene name of the scaling rows.</summary>
@@ -52,6 +53,9 @@ Friend Module GasScaling
         Loop
         Dim ms As New List(Of Double)
         Dim perSecond As New List(Of Double)
+        ' The event solver's work counts (not timed): flat in N when the cost per event is.
+        Dim exact = TryCast(solver, EventDrivenSolver)
+        Dim events0 = If(exact?.EventCount, 0), cells0 = If(exact?.CellsSearched, 0), collisions0 = world.CollisionCount
         For k = 1 To repeats
             Dim before = world.CollisionCount
             GC.Collect()
@@ -74,6 +78,12 @@ Friend Module GasScaling
             result.PeakMegabytes = self.PeakWorkingSet64 / 1048576.0
         End Using
         result.Note = "slice " & slice.ToString("0.####", CultureInfo.InvariantCulture) & " s simulated per timed run"
+        If exact IsNot Nothing AndAlso world.CollisionCount > collisions0 AndAlso exact.EventCount > events0 Then
+            Dim events = exact.EventCount - events0
+            result.Note &= "; " & (events / CDbl(world.CollisionCount - collisions0)).ToString("0.00", CultureInfo.InvariantCulture) &
+                           " events per collision, " & ((exact.CellsSearched - cells0) / CDbl(events)).ToString("0.00", CultureInfo.InvariantCulture) &
+                           " cells searched per event"
+        End If
         Return result
     End Function
 End Module

@@ -1,6 +1,8 @@
 Option Strict On
+Imports System.Globalization
 Imports System.IO
 Imports System.Text.Json
+Imports System.Text.RegularExpressions
 Imports System.Xml.Linq
 Imports Xunit
 
@@ -26,7 +28,7 @@ Public Class BenchmarkProcessTests
         Dim dir = Path.Combine(Path.GetTempPath(), "bench-smoke-" & Guid.NewGuid().ToString("N"))
         Try
             Dim json = Path.Combine(dir, "out", "results.json")
-            Dim r = RunBenchmark("--quick", "--scenes", "projectile,gas-scaling", "--solvers", "euler,no-such-solver", "--dts", "1/60",
+            Dim r = RunBenchmark("--quick", "--scenes", "projectile,gas-scaling", "--solvers", "euler,event,no-such-solver", "--dts", "1/60",
                                  "--gas-sizes", "50", "--repeats", "1", "--out", dir, "--json", json)
             Assert.True(r.ExitCode = 0, r.ToString())
 
@@ -52,6 +54,12 @@ Public Class BenchmarkProcessTests
                 Assert.Equal(50, gas.GetProperty("n").GetInt32())
                 Assert.True(gas.GetProperty("peakMB").GetDouble() > 0, "peak memory comes from the child process")
                 Assert.Contains(results, Function(e) e.GetProperty("solver").GetString() = "no-such-solver" AndAlso Not e.GetProperty("available").GetBoolean())
+                ' The event solver's work counts behind its time: events per collision, cells searched per event.
+                Dim exact = results.Single(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "event")
+                Dim counts = Regex.Match(exact.GetProperty("note").GetString(), "; (\d+\.\d\d) events per collision, (\d+\.\d\d) cells searched per event$")
+                Assert.True(counts.Success, exact.GetProperty("note").GetString())
+                Assert.InRange(Double.Parse(counts.Groups(1).Value, CultureInfo.InvariantCulture), 1.0, 5.0)
+                Assert.InRange(Double.Parse(counts.Groups(2).Value, CultureInfo.InvariantCulture), 1.0, 18.0)
             End Using
         Finally
             If Directory.Exists(dir) Then Directory.Delete(dir, True)

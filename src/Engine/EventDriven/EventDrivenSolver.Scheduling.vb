@@ -129,6 +129,11 @@ Partial Public NotInheritable Class EventDrivenSolver
                           ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim c0 = Math.Max(0, col0), c1 = Math.Min(_grid.Nx - 1, col1)
         Dim r0 = Math.Max(0, row0), r1 = Math.Min(_grid.Ny - 1, row1)
+        _CellsSearched += (c1 - c0 + 1) * (r1 - r0 + 1)
+        If skip >= 0 Then
+            Dim sr = skip \ _grid.Nx, sc = skip - sr * _grid.Nx
+            If sc >= c0 AndAlso sc <= c1 AndAlso sr >= r0 AndAlso sr <= r1 Then _CellsSearched -= 1
+        End If
 #If NET Then
         If VectorScan Then
             ScanLanesVector(i, c0, c1, r0, r1, skip, asleep, px, py, vx, vy, ay, r, best, kind, other)

@@ -149,6 +149,12 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' <summary>Every event processed so far (collisions, cell crossings, stale re-predictions, …).</summary>
     Public ReadOnly Property EventCount As Long
 
+    ''' <summary>
+    ''' Grid cells searched for partners so far, summed over every prediction and cell crossing: with
+    ''' <see cref="EventCount"/>, the work per event, which should not grow with the number of bodies.
+    ''' </summary>
+    Public ReadOnly Property CellsSearched As Long
+
     ''' <summary>Attaches the solver to a world; the first advance builds every prediction.</summary>
     Public Sub Attach(world As World) Implements ISolver.Attach
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
