@@ -23,7 +23,7 @@ Friend Module FrameBenchmark
             Return result
         End If
 
-        Dim display = FreeDisplay()
+        Dim display = XDisplays.FreeDisplay(91, 160)
         If display < 0 Then result.Note = "no free X display number." : Return result
         Dim xpsi As New ProcessStartInfo(xvfb) With {.UseShellExecute = False, .RedirectStandardOutput = True, .RedirectStandardError = True}
         For Each a In {":" & display.ToString(CultureInfo.InvariantCulture), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"}
@@ -41,7 +41,7 @@ Friend Module FrameBenchmark
                 If Not File.Exists(socket) Then result.Note = "Xvfb did not start on :" & display.ToString(CultureInfo.InvariantCulture) & "." : Return result
                 Return RunApp(mono, appPath, circles, display, result)
             Finally
-                StopServer(server)
+                XDisplays.StopServer(server)
                 server.WaitForExit()
             End Try
         End Using
@@ -135,50 +135,6 @@ Friend Module FrameBenchmark
         Dim pattern = Text.Encoding.Unicode.GetBytes(name)
         Return bytes.AsSpan().IndexOf(pattern) >= 0
     End Function
-
-    ''' <summary>
-    ''' The first display number from :91 to :160 with no X server. A lock whose process no longer
-    ''' runs (a server that was killed without cleaning up) does not count: it is removed.
-    ''' </summary>
-    Friend Function FreeDisplay() As Integer
-        For d = 91 To 160
-            Dim s = d.ToString(CultureInfo.InvariantCulture)
-            ClearIfStale(d)
-            If Not File.Exists("/tmp/.X11-unix/X" & s) AndAlso Not File.Exists("/tmp/.X" & s & "-lock") Then Return d
-        Next
-        Return -1
-    End Function
-
-    Private Sub ClearIfStale(display As Integer)
-        Dim s = display.ToString(CultureInfo.InvariantCulture)
-        Dim lockFile = "/tmp/.X" & s & "-lock"
-        If Not File.Exists(lockFile) OrElse Not Directory.Exists("/proc/self") Then Return ' no /proc: cannot tell, leave it
-        Try
-            Dim pid As Integer
-            If Not Integer.TryParse(File.ReadAllText(lockFile).Trim(), NumberStyles.Integer, CultureInfo.InvariantCulture, pid) Then Return
-            If pid <= 0 OrElse Directory.Exists("/proc/" & pid.ToString(CultureInfo.InvariantCulture)) Then Return
-            File.Delete(lockFile)
-            If File.Exists("/tmp/.X11-unix/X" & s) Then File.Delete("/tmp/.X11-unix/X" & s)
-        Catch ex As IOException
-            ' in use or being freed by someone else: try the next number
-        Catch ex As UnauthorizedAccessException
-            ' not ours to free
-        End Try
-    End Sub
-
-    ''' <summary>Stops the X server politely (SIGTERM, so it removes its lock and socket), then for good.</summary>
-    Private Sub StopServer(server As Process)
-        If server.HasExited Then Return
-        Try
-            Using term = Process.Start(New ProcessStartInfo("kill", "-TERM " & server.Id.ToString(CultureInfo.InvariantCulture)) With {.UseShellExecute = False})
-                term.WaitForExit(5000)
-            End Using
-            server.WaitForExit(5000)
-        Catch ex As ComponentModel.Win32Exception
-            ' no kill command: fall through to Kill
-        End Try
-        If Not server.HasExited Then server.Kill()
-    End Sub
 
     Private Function FindOnPath(program As String) As String
         Dim pathVar = Environment.GetEnvironmentVariable("PATH")

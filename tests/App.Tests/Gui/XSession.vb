@@ -88,8 +88,7 @@ Public NotInheritable Class XSession
 
     Private Shared Function StartXvfb(ByRef display As String) As Process
         For n = 101 To 160
-            ClearIfStale(n)
-            If File.Exists("/tmp/.X" & n & "-lock") OrElse File.Exists("/tmp/.X11-unix/X" & n) Then Continue For
+            If Not XDisplays.IsFree(n) Then Continue For
             Dim psi As New ProcessStartInfo("Xvfb") With {.UseShellExecute = False, .RedirectStandardError = True, .RedirectStandardOutput = True}
             ' -noreset: without it, Xvfb resets itself whenever its last client leaves, so the readiness
             ' probe below (a client that connects and leaves) could reset it just as the app connects.
@@ -122,26 +121,6 @@ Public NotInheritable Class XSession
         Dim r = ProcessRunner.Run("xdotool", ScreenSizeQuery, New Dictionary(Of String, String) From {{"DISPLAY", display}}, TimeSpan.FromSeconds(10))
         Return r.ExitCode = 0
     End Function
-
-    ''' <summary>
-    ''' Frees display n when its lock names a process that no longer runs (an X server that was
-    ''' killed without cleaning up); a display whose server is alive is left alone.
-    ''' </summary>
-    Private Shared Sub ClearIfStale(n As Integer)
-        Dim lockFile = "/tmp/.X" & n & "-lock"
-        If Not File.Exists(lockFile) Then Return
-        Dim pid As Integer
-        Try
-            If Not Integer.TryParse(File.ReadAllText(lockFile).Trim(), Globalization.NumberStyles.Integer, Globalization.CultureInfo.InvariantCulture, pid) Then Return
-            If pid <= 0 OrElse Directory.Exists("/proc/" & pid) Then Return
-            File.Delete(lockFile)
-            If File.Exists("/tmp/.X11-unix/X" & n) Then File.Delete("/tmp/.X11-unix/X" & n)
-        Catch ex As IOException
-            ' someone else is using or freeing it: try the next display
-        Catch ex As UnauthorizedAccessException
-            ' not ours to free
-        End Try
-    End Sub
 
     Private Function WaitForWindow(timeout As TimeSpan) As String
         Dim sw = Stopwatch.StartNew()
@@ -200,12 +179,8 @@ Public NotInheritable Class XSession
     Public Sub Dispose() Implements IDisposable.Dispose
         For Each p In {_app, _xvfb}
             Try
-                ' Xvfb is asked to stop (SIGTERM) so that it removes its lock file and socket; a
-                ' killed one leaves them behind and the display stays taken.
-                If p Is _xvfb AndAlso p IsNot Nothing AndAlso Not p.HasExited Then
-                    ProcessRunner.Run("kill", {"-TERM", p.Id.ToString(Globalization.CultureInfo.InvariantCulture)}, Nothing, TimeSpan.FromSeconds(5))
-                    p.WaitForExit(3000)
-                End If
+                ' Xvfb is asked to stop (SIGTERM) so that it removes its lock file and socket.
+                If p Is _xvfb Then XDisplays.StopServer(p)
                 If p IsNot Nothing AndAlso Not p.HasExited Then p.Kill(True)
                 p?.WaitForExit(5000)
             Catch ex As InvalidOperationException
