@@ -89,6 +89,20 @@ Friend NotInheritable Class OutputFile
         Return Nothing
     End Function
 
+    ''' <summary>True when the target is a stream (a FIFO, /dev/stdout) written straight through, not a file replaced whole.</summary>
+    Friend ReadOnly Property IsStream As Boolean
+        Get
+            Return _temp Is Nothing
+        End Get
+    End Property
+
+    ''' <summary>The full path written to (for a symbolic link, the file it points to).</summary>
+    Friend ReadOnly Property Target As String
+        Get
+            Return _target
+        End Get
+    End Property
+
     Friend ReadOnly Property Writer As TextWriter
         Get
             Return _writer

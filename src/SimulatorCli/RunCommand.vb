@@ -23,10 +23,11 @@ Friend Module RunCommand
         Dim events As OutputFile = Nothing
         ' Ctrl+C and SIGTERM: throw the temporary files away, say so, exit 1 (see RunInterruption).
         Using interruption As New RunInterruption(
-            Sub()
+            Function()
                 states?.Dispose()
                 events?.Dispose()
-            End Sub)
+                Return {states, events}.Where(Function(f) f IsNot Nothing AndAlso f.IsStream).Select(Function(f) f.Target).ToList()
+            End Function)
             Try
                 If o.StatesPath IsNot Nothing Then states = OutputFile.Create("--states", o.StatesPath)
                 If o.EventsPath IsNot Nothing Then events = OutputFile.Create("--events", o.EventsPath)

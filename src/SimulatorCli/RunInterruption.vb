@@ -12,7 +12,7 @@ Imports System.Threading
 Friend NotInheritable Class RunInterruption
     Implements IDisposable
 
-    Private ReadOnly _discard As Action
+    Private ReadOnly _discard As Func(Of IReadOnlyList(Of String))
     Private ReadOnly _cancel As ConsoleCancelEventHandler
     Private ReadOnly _terminate As PosixSignalRegistration
     Private _state As Integer ' Running, Finishing or Stopped (Interlocked)
@@ -20,8 +20,12 @@ Friend NotInheritable Class RunInterruption
     Private Const StateFinishing As Integer = 1
     Private Const StateStopped As Integer = 2
 
-    ''' <summary>Starts listening; <paramref name="discard"/> throws the temporary outputs away.</summary>
-    Friend Sub New(discard As Action)
+    ''' <summary>
+    ''' Starts listening; <paramref name="discard"/> throws the temporary outputs away and returns the
+    ''' outputs that are streams (a FIFO, /dev/stdout), which were written straight through and so
+    ''' already hold the start of their table.
+    ''' </summary>
+    Friend Sub New(discard As Func(Of IReadOnlyList(Of String)))
         _discard = discard
         _cancel = Sub(sender, e)
                       e.Cancel = True
@@ -49,8 +53,10 @@ Friend NotInheritable Class RunInterruption
 
     Private Sub [Stop](signal As String)
         If Interlocked.CompareExchange(_state, StateStopped, StateRunning) <> StateRunning Then Return
-        _discard()
-        Console.Error.WriteLine("run: interrupted by " & signal & "; no output file was written")
+        Dim streamed = _discard()
+        Dim line = "run: interrupted by " & signal & "; no output file was written"
+        If streamed.Count > 0 Then line &= " (the table streamed into " & String.Join(" and ", streamed.Select(Function(p) "'" & p & "'")) & " stopped part-way)"
+        Console.Error.WriteLine(line)
         Environment.Exit(ExitCodes.Failure)
     End Sub
 

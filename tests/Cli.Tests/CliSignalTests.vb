@@ -54,4 +54,55 @@ Public Class CliSignalTests
             Assert.Equal("head-on.json", String.Join(" ", AllFiles(t.Path)))
         End Using
     End Sub
+
+    <Fact>
+    Public Sub RunStoppedWhileStreamingIntoAFifo_SaysTheStreamedTableStoppedPartWay()
+        If OperatingSystem.IsWindows() Then Return ' no FIFOs or POSIX signals there
+        Using t As New TempFolder()
+            Dim scene = t.Write("head-on.json", HeadOn)
+            Dim fifo = t.File("states.fifo")
+            Dim made = ProcessRunner.Run("mkfifo", {fifo}, Nothing, TimeSpan.FromSeconds(30))
+            Assert.True(made.ExitCode = 0, made.ToString())
+            ' A reader that counts what arrives, until the writer closes the FIFO.
+            Dim received As Long = 0
+            Dim reader = Threading.Tasks.Task.Run(
+                Sub()
+                    Using stream = IO.File.OpenRead(fifo)
+                        Dim buffer(65535) As Byte
+                        Do
+                            Dim n = stream.Read(buffer, 0, buffer.Length)
+                            If n <= 0 Then Exit Do
+                            Threading.Interlocked.Add(received, n)
+                        Loop
+                    End Using
+                End Sub)
+            Dim psi As New ProcessStartInfo("dotnet") With {
+                .RedirectStandardOutput = True, .RedirectStandardError = True, .UseShellExecute = False}
+            Dim args = New String() {CliDll, "run", scene, "--time", "5000", "--sample", "0.001", "--states", fifo, "--events", t.File("events.csv")}
+            For Each a In args
+                psi.ArgumentList.Add(a)
+            Next
+            Using p = Process.Start(psi)
+                Dim outTask = p.StandardOutput.ReadToEndAsync()
+                Dim errTask = p.StandardError.ReadToEndAsync()
+                Dim clock = Stopwatch.StartNew()
+                While Threading.Interlocked.Read(received) < 100000 AndAlso clock.Elapsed.TotalSeconds < 30 AndAlso Not p.HasExited
+                    Threading.Thread.Sleep(50)
+                End While
+                If p.HasExited Then Assert.Fail("the run ended before it could be stopped: " & errTask.Result)
+                Assert.True(NativeKill(p.Id, 15) = 0, "kill failed")
+                If Not p.WaitForExit(30000) Then
+                    p.Kill(True)
+                    Assert.Fail("SIGTERM did not stop the run within 30 s")
+                End If
+                p.WaitForExit()
+                Assert.Equal(1, p.ExitCode)
+                Assert.Equal("run: interrupted by SIGTERM; no output file was written (the table streamed into '" & fifo & "' stopped part-way)" & vbLf, errTask.Result)
+                Assert.Equal("", outTask.Result)
+            End Using
+            Assert.True(reader.Wait(TimeSpan.FromSeconds(30)), "the FIFO was never closed")
+            Assert.True(Threading.Interlocked.Read(received) >= 100000)
+            Assert.Equal("head-on.json states.fifo", String.Join(" ", AllFiles(t.Path)))
+        End Using
+    End Sub
 End Class
