@@ -20,12 +20,20 @@ Friend Module ChildProcess
         Public Property ErrorText As String = ""
     End Class
 
-    ''' <summary>Runs the child with these arguments and waits at most <paramref name="timeout"/>.</summary>
-    Public Function Run(args As IEnumerable(Of String), timeout As TimeSpan) As Outcome
+    ''' <summary>
+    ''' Runs the child with these arguments (and these environment variables, if any) and waits at
+    ''' most <paramref name="timeout"/>.
+    ''' </summary>
+    Public Function Run(args As IEnumerable(Of String), timeout As TimeSpan, Optional environment As IReadOnlyDictionary(Of String, String) = Nothing) As Outcome
         Dim psi = SelfStartInfo()
         For Each a In args
             psi.ArgumentList.Add(a)
         Next
+        If environment IsNot Nothing Then
+            For Each pair In environment
+                psi.Environment(pair.Key) = pair.Value
+            Next
+        End If
         psi.RedirectStandardOutput = True
         psi.RedirectStandardError = True
         psi.UseShellExecute = False

@@ -118,7 +118,7 @@ Public NotInheritable Class Program
                 Else
                     Dim args = options.ChildArguments()
                     args.AddRange({"--child-gas", n.ToString(CultureInfo.InvariantCulture), "--child-solver", solver})
-                    Dim outcome = ChildProcess.Run(args, options.GasChildTimeout)
+                    Dim outcome = ChildProcess.Run(args, options.GasChildTimeout, GasScaling.ChildEnvironment)
                     r = outcome.Results.FirstOrDefault()
                     If r Is Nothing Then
                         r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt,

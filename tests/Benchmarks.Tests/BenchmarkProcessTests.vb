@@ -58,6 +58,8 @@ Public Class BenchmarkProcessTests
                 Dim exact = results.Single(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "event")
                 Dim counts = Regex.Match(exact.GetProperty("note").GetString(), "; (\d+\.\d\d) events per collision, (\d+\.\d\d) cells searched per event$")
                 Assert.True(counts.Success, exact.GetProperty("note").GetString())
+                ' The gas children run with .NET's default tiered compilation, unlike the other scenes.
+                Assert.DoesNotContain("tiered compilation off", exact.GetProperty("note").GetString(), StringComparison.Ordinal)
                 Assert.InRange(Double.Parse(counts.Groups(1).Value, CultureInfo.InvariantCulture), 1.0, 5.0)
                 Assert.InRange(Double.Parse(counts.Groups(2).Value, CultureInfo.InvariantCulture), 1.0, 18.0)
             End Using
