@@ -18,6 +18,16 @@ Public Class CliSignalTests
         Return IO.Directory.GetFileSystemEntries(folder, "*", options).Select(Function(f) IO.Path.GetFileName(f)).OrderBy(Function(f) f, StringComparer.Ordinal).ToArray()
     End Function
 
+    ''' <summary>Sends signal <paramref name="number"/> to the run and waits (30 s at most) until it has ended.</summary>
+    Private Shared Sub SignalAndWait(p As Process, number As Integer, name As String)
+        Assert.True(NativeKill(p.Id, number) = 0, "kill failed")
+        If Not p.WaitForExit(30000) Then
+            p.Kill(True)
+            Assert.Fail(name & " did not stop the run within 30 s")
+        End If
+        p.WaitForExit()
+    End Sub
+
     <Theory>
     <InlineData("TERM", "SIGTERM")>
     <InlineData("INT", "Ctrl+C (SIGINT)")>
@@ -41,12 +51,7 @@ Public Class CliSignalTests
                 End While
                 Threading.Thread.Sleep(300)
                 If p.HasExited Then Assert.Fail("the run ended before it could be stopped: " & errTask.Result)
-                Assert.True(NativeKill(p.Id, If(signal = "TERM", 15, 2)) = 0, "kill failed")
-                If Not p.WaitForExit(30000) Then
-                    p.Kill(True)
-                    Assert.Fail(name & " did not stop the run within 30 s")
-                End If
-                p.WaitForExit()
+                SignalAndWait(p, If(signal = "TERM", 15, 2), name)
                 Assert.Equal(1, p.ExitCode)
                 Assert.Equal("run: interrupted by " & name & "; no output file was written" & vbLf, errTask.Result)
                 Assert.Equal("", outTask.Result)
@@ -90,12 +95,7 @@ Public Class CliSignalTests
                     Threading.Thread.Sleep(50)
                 End While
                 If p.HasExited Then Assert.Fail("the run ended before it could be stopped: " & errTask.Result)
-                Assert.True(NativeKill(p.Id, 15) = 0, "kill failed")
-                If Not p.WaitForExit(30000) Then
-                    p.Kill(True)
-                    Assert.Fail("SIGTERM did not stop the run within 30 s")
-                End If
-                p.WaitForExit()
+                SignalAndWait(p, 15, "SIGTERM")
                 Assert.Equal(1, p.ExitCode)
                 Assert.Equal("run: interrupted by SIGTERM; no output file was written (the table streamed into '" & fifo & "' stopped part-way)" & vbLf, errTask.Result)
                 Assert.Equal("", outTask.Result)
