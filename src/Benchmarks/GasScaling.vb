@@ -6,7 +6,8 @@ Imports System.Globalization
 ''' The elastic gas at growing N and a fixed packing fraction: ms per simulated second, collisions per
 ''' wall-clock second, µs per collision (flat when the cost per event does not grow with N) and peak
 ''' memory; for the event solver also the work counts behind them (events per collision, grid cells
-''' searched per event), which show whether a growth in time is work or memory. Each N runs in its own child process so the peak working set belongs to that run alone.
+''' searched per event), which show whether a growth in time is work or memory. Each N runs in its
+''' own child process so the peak working set belongs to that run alone.
 ''' </summary>
 Friend Module GasScaling
     ''' <summary>Scene name of the scaling rows.</summary>

@@ -118,8 +118,12 @@ Public NotInheritable Class XSession
 
     ''' <summary>Whether the X server on the display answers a client (xdotool asks for the screen size).</summary>
     Private Shared Function Answers(display As String) As Boolean
-        Dim r = ProcessRunner.Run("xdotool", ScreenSizeQuery, New Dictionary(Of String, String) From {{"DISPLAY", display}}, TimeSpan.FromSeconds(10))
-        Return r.ExitCode = 0
+        Try
+            Dim r = ProcessRunner.Run("xdotool", ScreenSizeQuery, New Dictionary(Of String, String) From {{"DISPLAY", display}}, TimeSpan.FromSeconds(10))
+            Return r.ExitCode = 0
+        Catch ex As TimeoutException
+            Return False ' not answering yet; the caller's own time limit decides
+        End Try
     End Function
 
     Private Function WaitForWindow(timeout As TimeSpan) As String
