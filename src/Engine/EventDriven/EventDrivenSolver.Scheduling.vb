@@ -174,11 +174,12 @@ Partial Public NotInheritable Class EventDrivenSolver
                         ' line and the contact time is the smaller root of a quadratic. The root is
                         ' computed for every candidate and the tests combined into one condition: which
                         ' pairs meet is random, and a mispredicted branch costs more than the square root.
-                        Dim tj = _now - _body(j).T0
-                        Dim dx = px - (_body(j).Px + _body(j).Vx * tj)
-                        Dim dy = py - (_body(j).Py + (_body(j).Vy + 0.5 * ay * tj) * tj)
-                        Dim dvx = vx - _body(j).Vx
-                        Dim dvy = vy - (_body(j).Vy + ay * tj)
+                        Dim xj, yj, vxj, vyj As Double
+                        _body(j).StateAt(_now, xj, yj, vxj, vyj)
+                        Dim dx = px - xj
+                        Dim dy = py - yj
+                        Dim dvx = vx - vxj
+                        Dim dvy = vy - vyj
                         Dim b = dx * dvx + dy * dvy
                         Dim sumR = r + _body(j).R
                         Dim c = dx * dx + dy * dy - sumR * sumR
