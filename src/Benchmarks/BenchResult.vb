@@ -44,6 +44,16 @@ Friend NotInheritable Class BenchResult
     ''' <summary>How many timed runs the median is over.</summary>
     Public Property Runs As Integer
 
+    ''' <summary>
+    ''' How many separate runs of the whole case this row is the median of (the gas scaling runs each
+    ''' size in several rounds); 1 for a single run.
+    ''' </summary>
+    Public Property Rounds As Integer = 1
+
+    ''' <summary>The slowest and fastest of those runs, collisions per wall-clock second; NaN for a single run.</summary>
+    Public Property SlowestCollisionsPerSecond As Double = Double.NaN
+    Public Property FastestCollisionsPerSecond As Double = Double.NaN
+
     ''' <summary>Anything a reader needs to know: why it is not available, a secondary figure, a warning.</summary>
     Public Property Note As String = ""
 End Class

@@ -23,11 +23,13 @@ Friend NotInheritable Class BenchmarkOptions
     Public Const Usage As String =
         "usage: Benchmarks [--quick] [--json FILE] [--out DIR] [--no-frame]" & vbLf &
         "                  [--scenes a,b,...] [--solvers event,euler,verlet] [--dts 1/60,1/1000,...]" & vbLf &
-        "                  [--gas-sizes 100,1000,...] [--repeats K] [--app PATH]" & vbLf &
+        "                  [--gas-sizes 100,1000,...] [--gas-rounds K] [--repeats K] [--app PATH]" & vbLf &
         "  --quick      a short run for CI (under a minute); without it every scene, dt and N (about 10 minutes)" & vbLf &
         "  --json FILE  also write every result as JSON, for comparing runs" & vbLf &
         "  --out DIR    where docs/benchmarks.md and the SVG plots go (default: docs)" & vbLf &
         "  --no-frame   skip the app's frame benchmark (mono + Xvfb)" & vbLf &
+        "  --gas-rounds K  run every gas size K times, one size after another in each round, and report" & vbLf &
+        "               the median run with the range (default 3; 1 with --quick)" & vbLf &
         "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, and gas-scaling"
 
     Public Property Quick As Boolean
@@ -40,6 +42,7 @@ Friend NotInheritable Class BenchmarkOptions
     Public Property Solvers As IReadOnlyList(Of String) = AllSolvers
     Private _timeSteps As IReadOnlyList(Of Double)
     Private _gasSizes As IReadOnlyList(Of Integer)
+    Private _gasRounds As Integer
     Private _repeats As Integer
 
     ''' <summary>Hidden: run this one scene in this process and print its results (child mode).</summary>
@@ -60,6 +63,17 @@ Friend NotInheritable Class BenchmarkOptions
     Public ReadOnly Property GasSizes As IReadOnlyList(Of Integer)
         Get
             Return If(_gasSizes, If(Quick, New Integer() {100, 1000}, New Integer() {100, 1000, 10000, 100000}))
+        End Get
+    End Property
+
+    ''' <summary>
+    ''' How many times each gas size runs. Each round runs every size once, so the rounds are minutes
+    ''' apart and this machine's slow and quick spells (which last seconds to minutes) fall on every
+    ''' size alike; the report gives the median round and the range.
+    ''' </summary>
+    Public ReadOnly Property GasRounds As Integer
+        Get
+            Return If(_gasRounds > 0, _gasRounds, If(Quick, 1, 3))
         End Get
     End Property
 
@@ -152,6 +166,7 @@ Friend NotInheritable Class BenchmarkOptions
                 Case "--solvers" : o.Solvers = ParseList(a, value(a))
                 Case "--dts" : o._timeSteps = ParseList(a, value(a)).Select(Function(t) ParseTimeStep(a, t)).ToList()
                 Case "--gas-sizes" : o._gasSizes = ParseList(a, value(a)).Select(Function(t) ParsePositive(a, t)).ToList()
+                Case "--gas-rounds" : o._gasRounds = ParsePositive(a, value(a))
                 Case "--repeats" : o._repeats = ParsePositive(a, value(a))
                 Case "--child-scene" : o.ChildScene = ParseNames(a, value(a), AllScenes)(0)
                 Case "--child-gas" : o.ChildGas = ParsePositive(a, value(a))

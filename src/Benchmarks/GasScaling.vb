@@ -100,4 +100,36 @@ Friend Module GasScaling
         End If
         Return result
     End Function
+
+    ''' <summary>
+    ''' One row per case from several rounds of the same cases (every round lists them in the same
+    ''' order): the round with the median collisions per second (the lower middle one for an even
+    ''' count), its note led by how many runs and their range. A case no round could measure keeps
+    ''' the first round's reason.
+    ''' </summary>
+    Public Function CombineRounds(rounds As IReadOnlyList(Of IReadOnlyList(Of BenchResult))) As List(Of BenchResult)
+        If rounds Is Nothing OrElse rounds.Count = 0 Then Throw New ArgumentException("at least one round is needed", NameOf(rounds))
+        Dim combined As New List(Of BenchResult)
+        For k = 0 To rounds(0).Count - 1
+            Dim index = k
+            Dim runs = rounds.Select(Function(round) round(index)).ToList()
+            Dim measured = runs.Where(Function(r) r.Available AndAlso Not Double.IsNaN(r.CollisionsPerSecond)).
+                                OrderBy(Function(r) r.CollisionsPerSecond).ToList()
+            If measured.Count = 0 OrElse rounds.Count = 1 Then
+                combined.Add(runs(0))
+                Continue For
+            End If
+            Dim median = measured((measured.Count - 1) \ 2)
+            median.Rounds = measured.Count
+            median.SlowestCollisionsPerSecond = measured(0).CollisionsPerSecond
+            median.FastestCollisionsPerSecond = measured(measured.Count - 1).CollisionsPerSecond
+            Dim summary = "median of " & measured.Count.ToString(CultureInfo.InvariantCulture) & " runs" &
+                          If(measured.Count < runs.Count, " (" & (runs.Count - measured.Count).ToString(CultureInfo.InvariantCulture) & " more failed)", "") &
+                          ", " & NumberText.Whole(measured(0).CollisionsPerSecond) & " to " &
+                          NumberText.Whole(measured(measured.Count - 1).CollisionsPerSecond) & " collisions/s"
+            median.Note = If(median.Note.Length > 0, summary & "; " & median.Note, summary)
+            combined.Add(median)
+        Next
+        Return combined
+    End Function
 End Module

@@ -77,6 +77,9 @@ Friend Module JsonReport
             .PeakMegabytes = Number(e, "peakMB"),
             .SimulatedSeconds = Number(e, "simulatedSeconds"),
             .Runs = e.GetProperty("runs").GetInt32(),
+            .Rounds = RoundsOf(e),
+            .SlowestCollisionsPerSecond = Number(e, "slowestCollisionsPerSecond"),
+            .FastestCollisionsPerSecond = Number(e, "fastestCollisionsPerSecond"),
             .Note = e.GetProperty("note").GetString()}
     End Function
 
@@ -95,6 +98,9 @@ Friend Module JsonReport
         WriteNumber(w, "peakMB", r.PeakMegabytes)
         WriteNumber(w, "simulatedSeconds", r.SimulatedSeconds)
         w.WriteNumber("runs", r.Runs)
+        w.WriteNumber("rounds", r.Rounds)
+        WriteNumber(w, "slowestCollisionsPerSecond", r.SlowestCollisionsPerSecond)
+        WriteNumber(w, "fastestCollisionsPerSecond", r.FastestCollisionsPerSecond)
         w.WriteString("note", r.Note)
         w.WriteEndObject()
     End Sub
@@ -102,6 +108,13 @@ Friend Module JsonReport
     Private Sub WriteNumber(w As Utf8JsonWriter, name As String, value As Double)
         If Double.IsNaN(value) OrElse Double.IsInfinity(value) Then w.WriteNull(name) Else w.WriteNumber(name, value)
     End Sub
+
+    ''' <summary>The "rounds" field; 1 when absent (files written before it existed).</summary>
+    Private Function RoundsOf(e As JsonElement) As Integer
+        Dim p As JsonElement
+        If Not e.TryGetProperty("rounds", p) OrElse p.ValueKind <> JsonValueKind.Number Then Return 1
+        Return p.GetInt32()
+    End Function
 
     Private Function Number(e As JsonElement, name As String) As Double
         Dim n = NullableNumber(e, name)

@@ -94,7 +94,30 @@ Public NotInheritable Class Program
         Return results
     End Function
 
+    ''' <summary>
+    ''' The gas at every size, each in a child process, <see cref="BenchmarkOptions.GasRounds"/> times:
+    ''' the first round decides which sizes each solver is given; the later rounds run the sizes the
+    ''' first one measured again, in the same order; each row is the median round.
+    ''' </summary>
     Private Shared Function RunScaling(options As BenchmarkOptions) As List(Of BenchResult)
+        Dim rounds As New List(Of IReadOnlyList(Of BenchResult))
+        For round = 1 To options.GasRounds
+            If options.GasRounds > 1 Then
+                Console.Out.WriteLine("gas scaling, round " & round.ToString(CultureInfo.InvariantCulture) & " of " & options.GasRounds.ToString(CultureInfo.InvariantCulture))
+            End If
+            rounds.Add(If(round = 1, RunFirstScalingRound(options), RunScalingAgain(options, rounds(0))))
+        Next
+        Dim combined = GasScaling.CombineRounds(rounds)
+        If options.GasRounds > 1 Then
+            Console.Out.WriteLine("gas scaling, the median of the rounds:")
+            For Each r In combined
+                Print(r)
+            Next
+        End If
+        Return combined
+    End Function
+
+    Private Shared Function RunFirstScalingRound(options As BenchmarkOptions) As List(Of BenchResult)
         Dim results As New List(Of BenchResult)
         For Each solver In options.Solvers
             Dim probe = SceneRunner.TryCreateSolver(solver, 0.001)
@@ -116,16 +139,7 @@ Public NotInheritable Class Program
                         previous.BodyCount.ToString(CultureInfo.InvariantCulture) & ")")
                     r.BodyCount = n
                 Else
-                    Dim args = options.ChildArguments()
-                    args.AddRange({"--child-gas", n.ToString(CultureInfo.InvariantCulture), "--child-solver", solver})
-                    Dim outcome = ChildProcess.Run(args, options.GasChildTimeout, GasScaling.ChildEnvironment)
-                    r = outcome.Results.FirstOrDefault()
-                    If r Is Nothing Then
-                        r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt,
-                            If(outcome.TimedOut, "timed out after " & options.GasChildTimeout.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s",
-                               "failed (exit " & outcome.ExitCode.ToString(CultureInfo.InvariantCulture) & "): " & FirstLine(outcome.ErrorText)))
-                        r.BodyCount = n
-                    End If
+                    r = RunGasChild(options, solver, dt, n)
                 End If
                 Print(r)
                 results.Add(r)
@@ -133,6 +147,32 @@ Public NotInheritable Class Program
             Next
         Next
         Return results
+    End Function
+
+    ''' <summary>The cases the first round measured, run again in the same order; the others are kept as they were.</summary>
+    Private Shared Function RunScalingAgain(options As BenchmarkOptions, first As IReadOnlyList(Of BenchResult)) As List(Of BenchResult)
+        Dim results As New List(Of BenchResult)
+        For Each previous In first
+            Dim r = If(previous.Available, RunGasChild(options, previous.Solver, previous.TimeStep, previous.BodyCount), previous)
+            If previous.Available Then Print(r)
+            results.Add(r)
+        Next
+        Return results
+    End Function
+
+    ''' <summary>The gas at N = <paramref name="n"/> with one solver, in a child process; a failure or time-out becomes a row saying so.</summary>
+    Private Shared Function RunGasChild(options As BenchmarkOptions, solver As String, dt As Double?, n As Integer) As BenchResult
+        Dim args = options.ChildArguments()
+        args.AddRange({"--child-gas", n.ToString(CultureInfo.InvariantCulture), "--child-solver", solver})
+        Dim outcome = ChildProcess.Run(args, options.GasChildTimeout, GasScaling.ChildEnvironment)
+        Dim r = outcome.Results.FirstOrDefault()
+        If r Is Nothing Then
+            r = SceneRunner.NotAvailable(GasScaling.SceneName, solver, dt,
+                If(outcome.TimedOut, "timed out after " & options.GasChildTimeout.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s",
+                   "failed (exit " & outcome.ExitCode.ToString(CultureInfo.InvariantCulture) & "): " & FirstLine(outcome.ErrorText)))
+            r.BodyCount = n
+        End If
+        Return r
     End Function
 
     ''' <summary>

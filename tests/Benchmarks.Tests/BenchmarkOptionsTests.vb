@@ -14,6 +14,7 @@ Public Class BenchmarkOptionsTests
         Assert.Equal(1 / 4000.0, o.TimeSteps(7))
         Assert.Equal(Values(100, 1000, 10000, 100000), o.GasSizes)
         Assert.Equal(Values("event", "euler", "verlet"), o.Solvers)
+        Assert.Equal(3, o.GasRounds)
     End Sub
 
     <Fact>
@@ -22,6 +23,13 @@ Public Class BenchmarkOptionsTests
         Assert.True(o.TimeSteps.Count < 8)
         Assert.True(o.GasSizes.Max() <= 1000)
         Assert.True(o.Repeats < BenchmarkOptions.Parse(Array.Empty(Of String)()).Repeats)
+        Assert.Equal(1, o.GasRounds)
+    End Sub
+
+    <Fact>
+    Public Sub GasRounds_AreRead()
+        Assert.Equal(5, BenchmarkOptions.Parse(Values("--gas-rounds", "5")).GasRounds)
+        Assert.Equal(2, BenchmarkOptions.Parse(Values("--quick", "--gas-rounds", "2")).GasRounds)
     End Sub
 
     <Fact>
@@ -38,6 +46,7 @@ Public Class BenchmarkOptionsTests
     <InlineData("--dts|1/0", "--dts: '1/0' is not a time step greater than 0 (write 1/60 or 0.001)")>
     <InlineData("--scenes|nope", "--scenes: unknown scene 'nope'")>
     <InlineData("--repeats|0", "--repeats: '0' is not a whole number greater than 0")>
+    <InlineData("--gas-rounds|three", "--gas-rounds: 'three' is not a whole number greater than 0")>
     <InlineData("--json", "--json: needs a value")>
     <InlineData("--frobnicate", "unknown option '--frobnicate' (see --help)")>
     Public Sub BadInput_GivesAOneLineMessageNamingTheOption(args As String, message As String)

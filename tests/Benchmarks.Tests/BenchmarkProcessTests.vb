@@ -29,7 +29,7 @@ Public Class BenchmarkProcessTests
         Try
             Dim json = Path.Combine(dir, "out", "results.json")
             Dim r = RunBenchmark("--quick", "--scenes", "projectile,gas-scaling", "--solvers", "euler,event,no-such-solver", "--dts", "1/60",
-                                 "--gas-sizes", "50", "--repeats", "1", "--out", dir, "--json", json)
+                                 "--gas-sizes", "50", "--gas-rounds", "2", "--repeats", "1", "--out", dir, "--json", json)
             Assert.True(r.ExitCode = 0, r.ToString())
 
             Dim md = File.ReadAllText(Path.Combine(dir, "benchmarks.md"))
@@ -57,6 +57,10 @@ Public Class BenchmarkProcessTests
                 ' The event solver's work counts behind its time: events per collision, cells searched per event.
                 Dim exact = results.Single(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "event")
                 Dim counts = Regex.Match(exact.GetProperty("note").GetString(), "; (\d+\.\d\d) events per collision, (\d+\.\d\d) cells searched per event$")
+                ' Each size ran twice (--gas-rounds 2): the row is the slower run, and says so.
+                Assert.Equal(2, exact.GetProperty("rounds").GetInt32())
+                Assert.StartsWith("median of 2 runs, ", exact.GetProperty("note").GetString(), StringComparison.Ordinal)
+                Assert.Equal(exact.GetProperty("slowestCollisionsPerSecond").GetDouble(), exact.GetProperty("collisionsPerSecond").GetDouble())
                 Assert.True(counts.Success, exact.GetProperty("note").GetString())
                 ' The gas children run with .NET's default tiered compilation, unlike the other scenes.
                 Assert.DoesNotContain("tiered compilation off", exact.GetProperty("note").GetString(), StringComparison.Ordinal)

@@ -40,6 +40,9 @@ Public Class JsonReportTests
     Public Sub ToLine_IsOneLine_AndParsesBackToTheSameResult()
         Dim r = SampleResults.Results()(1)
         r.Note = "a note with + and µ"
+        r.Rounds = 3
+        r.SlowestCollisionsPerSecond = 8.5
+        r.FastestCollisionsPerSecond = 12.25
         Dim line = JsonReport.ToLine(r)
         Assert.DoesNotContain(vbLf, line)
         Assert.Contains("+ and µ", line)
@@ -50,6 +53,17 @@ Public Class JsonReportTests
         Assert.Equal(r.Error, back.Error)
         Assert.Equal(r.MsPerSimulatedSecond, back.MsPerSimulatedSecond)
         Assert.True(Double.IsNaN(back.PeakMegabytes))
+        Assert.Equal(3, back.Rounds)
+        Assert.Equal(8.5, back.SlowestCollisionsPerSecond)
+        Assert.Equal(12.25, back.FastestCollisionsPerSecond)
         Assert.Equal(r.Note, back.Note)
+    End Sub
+
+    <Fact>
+    Public Sub Parse_ReadsAResultWrittenBeforeRoundsExisted_AsOneRun()
+        Dim back = JsonReport.Parse("{""scene"":""gas-scaling"",""solver"":""event"",""dt"":null,""available"":true,""error"":null,""errorMetric"":""none"",""msPerSimulatedSecond"":40,""collisionsPerSecond"":1000,""microsecondsPerCollision"":1,""n"":1000,""peakMB"":null,""simulatedSeconds"":1,""runs"":5,""note"":""old""}")
+        Assert.Equal(1, back.Rounds)
+        Assert.True(Double.IsNaN(back.SlowestCollisionsPerSecond))
+        Assert.Equal(1000, back.CollisionsPerSecond)
     End Sub
 End Class

@@ -23,6 +23,17 @@ Public Class MarkdownReportTests
     End Sub
 
     <Fact>
+    Public Sub Render_Headline_GivesTheRangeWhenTheGasRanInRounds()
+        Dim results = SampleResults.Results()
+        results(4).Rounds = 3
+        results(4).SlowestCollisionsPerSecond = 900000
+        results(4).FastestCollisionsPerSecond = 1300000
+        Dim md = MarkdownReport.Render(SampleResults.Machine(), "full", 5, SampleResults.Scenes(), results, New FrameResult)
+        Assert.Contains("N = 1,000: **1,234,567 collisions per second** (0.81 µs per collision, 40.0 ms per simulated second; the median of 3 runs, which ranged from 900,000 to 1,300,000).", md)
+        Assert.Contains("N = 10,000: **987,654 collisions per second** (1.01 µs per collision, 450 ms per simulated second).", md)
+    End Sub
+
+    <Fact>
     Public Sub Render_Headline_SaysWhyTheEventSolverHasNoResult()
         Dim results = SampleResults.Results()
         results(0) = New BenchResult With {.Scene = "projectile", .Solver = "event", .Runs = 0,
