@@ -181,7 +181,7 @@ Friend Module MarkdownReport
            Append("Each row runs in its own process, so peak memory (working set) is that run's alone. ").
            Append("These runs use .NET's default settings (tiered compilation, which recompiles hot code guided by the profile it gathered, as the command line and the tests run the engine), not the other scenes' tiered compilation off: without the profile the event-driven gas runs 10–20 % slower at N = 1 000. ").
            Append("After a warm-up (seconds of short advances, until .NET has finished optimising the hot code, then a few slices to size the timed one) the same gas is timed over several equal slices of simulated time (median). ").
-           Append("This machine is shared, and its speed changes in spells of seconds to minutes, so the full run measures every size several times, in rounds of one size after another; each row is the median run, and its note gives the slowest and fastest. ").
+           Append("A shared machine's speed changes in spells of seconds to minutes, so the full run measures every size several times (--gas-rounds), in rounds of one size after another; each row is the median run, and its note gives the slowest and fastest. ").
            Append("If the cost per collision is flat, the µs per collision column stays level as N grows. ").
            Append("Stepping solvers run at dt = 1/1000 s; a size is skipped when one step could take more than a few seconds if the cost grew as N².").Append(ControlChars.Lf).Append(ControlChars.Lf)
         If rows.Any(Function(r) r.Available AndAlso Not Double.IsNaN(r.MicrosecondsPerCollision)) Then
