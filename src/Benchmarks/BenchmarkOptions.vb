@@ -68,7 +68,7 @@ Friend NotInheritable Class BenchmarkOptions
 
     ''' <summary>
     ''' How many times each gas size runs. Each round runs every size once, so the rounds are minutes
-    ''' apart and this machine's slow and quick spells (which last seconds to minutes) fall on every
+    ''' apart and a shared machine's slow and quick spells (which last seconds to minutes) fall on every
     ''' size alike; the report gives the median round and the range.
     ''' </summary>
     Public ReadOnly Property GasRounds As Integer

@@ -6,7 +6,8 @@ Imports System.Text.Json
 
 ''' <summary>
 ''' The results as JSON, for comparing runs: one object per case with scene, solver, dt, error, error
-''' metric, ms per simulated second, collisions per second, N and peak MB. NaN is written as null.
+''' metric, ms per simulated second, collisions per second, N and peak MB, and for a case run in several
+''' rounds (the gas scaling) how many and their slowest and fastest. NaN is written as null.
 ''' The same object, on one line, carries a result from a child process to its parent.
 ''' </summary>
 Friend Module JsonReport
