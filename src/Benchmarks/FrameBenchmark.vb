@@ -23,22 +23,15 @@ Friend Module FrameBenchmark
             Return result
         End If
 
-        Dim display = XDisplays.FreeDisplay(91, 160)
-        If display < 0 Then result.Note = "no free X display number." : Return result
-        Dim xpsi As New ProcessStartInfo(xvfb) With {.UseShellExecute = False, .RedirectStandardOutput = True, .RedirectStandardError = True}
-        For Each a In {":" & display.ToString(CultureInfo.InvariantCulture), "-screen", "0", "1280x1024x24", "-nolisten", "tcp"}
-            xpsi.ArgumentList.Add(a)
-        Next
-        Using server = Process.Start(xpsi)
+        ' Ready once its socket is there, as before: the benchmark needs no X client tool of its own.
+        Dim display As Integer
+        Dim started = XDisplays.StartServer(xvfb, 91, 160, "1280x1024x24", TimeSpan.FromSeconds(10), Function(n) True, display)
+        If started Is Nothing Then
+            result.Note = If(XDisplays.FreeDisplay(91, 160) < 0, "no free X display number.", "Xvfb did not start on any free display from :91 to :160.")
+            Return result
+        End If
+        Using server = started
             Try
-                server.BeginOutputReadLine()
-                server.BeginErrorReadLine()
-                Dim socket = "/tmp/.X11-unix/X" & display.ToString(CultureInfo.InvariantCulture)
-                Dim waited = Stopwatch.StartNew()
-                Do While Not File.Exists(socket) AndAlso waited.Elapsed.TotalSeconds < 10 AndAlso Not server.HasExited
-                    Threading.Thread.Sleep(100)
-                Loop
-                If Not File.Exists(socket) Then result.Note = "Xvfb did not start on :" & display.ToString(CultureInfo.InvariantCulture) & "." : Return result
                 Return RunApp(mono, appPath, circles, display, result)
             Finally
                 XDisplays.StopServer(server)

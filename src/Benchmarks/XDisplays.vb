@@ -49,6 +49,44 @@ Friend Module XDisplays
     End Sub
 
     ''' <summary>
+    ''' Starts an X server (<paramref name="xvfb"/>, the Xvfb program) with one screen of
+    ''' <paramref name="screen"/> (e.g. "1280x1024x24") on the first free display from
+    ''' <paramref name="first"/> to <paramref name="last"/>, and waits until it is ready: its socket
+    ''' exists, <paramref name="answers"/> says a client got an answer, and the process still runs
+    ''' (another server started at the same moment on the same number may own the socket). A display
+    ''' where it is not ready within <paramref name="wait"/> is given up and the next one tried.
+    ''' Returns the server and sets <paramref name="display"/>; Nothing when no display worked.
+    ''' </summary>
+    Friend Function StartServer(xvfb As String, first As Integer, last As Integer, screen As String, wait As TimeSpan,
+                                answers As Func(Of Integer, Boolean), ByRef display As Integer) As Process
+        For n = first To last
+            If Not IsFree(n) Then Continue For
+            Dim s = n.ToString(CultureInfo.InvariantCulture)
+            Dim psi As New ProcessStartInfo(xvfb) With {.UseShellExecute = False, .RedirectStandardError = True, .RedirectStandardOutput = True}
+            ' -noreset: without it, Xvfb resets itself whenever its last client leaves, so a readiness
+            ' probe (a client that connects and leaves) could reset it just as the real client connects.
+            For Each a In {":" & s, "-screen", "0", screen, "-nolisten", "tcp", "-noreset"}
+                psi.ArgumentList.Add(a)
+            Next
+            Dim p = Process.Start(psi)
+            p.BeginErrorReadLine()
+            p.BeginOutputReadLine()
+            Dim clock = Stopwatch.StartNew()
+            Do While clock.Elapsed < wait AndAlso Not p.HasExited
+                ' The socket appears before the server takes connections.
+                If File.Exists("/tmp/.X11-unix/X" & s) AndAlso answers(n) AndAlso Not p.HasExited Then
+                    display = n
+                    Return p
+                End If
+                Threading.Thread.Sleep(100)
+            Loop
+            StopServer(p)
+            p.Dispose()
+        Next
+        Return Nothing
+    End Function
+
+    ''' <summary>
     ''' Stops an X server politely (SIGTERM, so it removes its lock file and socket; a killed one leaves
     ''' them behind and the display stays taken), then for good if it has not gone within 5 s.
     ''' </summary>

@@ -86,40 +86,19 @@ Public NotInheritable Class XSession
         End Try
     End Sub
 
+    ''' <summary>Xvfb on a free display from :101 (ready when it answers xdotool), or an exception saying it could not start.</summary>
     Private Shared Function StartXvfb(ByRef display As String) As Process
-        For n = 101 To 160
-            If Not XDisplays.IsFree(n) Then Continue For
-            Dim psi As New ProcessStartInfo("Xvfb") With {.UseShellExecute = False, .RedirectStandardError = True, .RedirectStandardOutput = True}
-            ' -noreset: without it, Xvfb resets itself whenever its last client leaves, so the readiness
-            ' probe below (a client that connects and leaves) could reset it just as the app connects.
-            For Each a In {":" & n, "-screen", "0", "1400x900x24", "-nolisten", "tcp", "-noreset"}
-                psi.ArgumentList.Add(a)
-            Next
-            Dim p = Process.Start(psi)
-            p.BeginErrorReadLine()
-            p.BeginOutputReadLine()
-            Dim sw = Stopwatch.StartNew()
-            Do While sw.Elapsed < TimeSpan.FromSeconds(15)
-                ' The socket appears before the server takes connections, and another server may own
-                ' it (one started at the same moment on the same number): ready means this process is
-                ' still running and a client has been answered.
-                If p.HasExited Then Exit Do
-                If File.Exists("/tmp/.X11-unix/X" & n) AndAlso Answers(":" & n) AndAlso Not p.HasExited Then
-                    display = ":" & n
-                    Return p
-                End If
-                Thread.Sleep(100)
-            Loop
-            If Not p.HasExited Then p.Kill(True)
-            p.Dispose()
-        Next
-        Throw New InvalidOperationException("could not start Xvfb on any display from :101 to :160")
+        Dim n As Integer
+        Dim p = XDisplays.StartServer("Xvfb", 101, 160, "1400x900x24", TimeSpan.FromSeconds(15), AddressOf Answers, n)
+        If p Is Nothing Then Throw New InvalidOperationException("could not start Xvfb on any display from :101 to :160")
+        display = ":" & n.ToString(Globalization.CultureInfo.InvariantCulture)
+        Return p
     End Function
 
-    ''' <summary>Whether the X server on the display answers a client (xdotool asks for the screen size).</summary>
-    Private Shared Function Answers(display As String) As Boolean
+    ''' <summary>Whether the X server on display n answers a client (xdotool asks for the screen size).</summary>
+    Private Shared Function Answers(n As Integer) As Boolean
         Try
-            Dim r = ProcessRunner.Run("xdotool", ScreenSizeQuery, New Dictionary(Of String, String) From {{"DISPLAY", display}}, TimeSpan.FromSeconds(10))
+            Dim r = ProcessRunner.Run("xdotool", ScreenSizeQuery, New Dictionary(Of String, String) From {{"DISPLAY", ":" & n.ToString(Globalization.CultureInfo.InvariantCulture)}}, TimeSpan.FromSeconds(10))
             Return r.ExitCode = 0
         Catch ex As TimeoutException
             Return False ' not answering yet; the caller's own time limit decides
