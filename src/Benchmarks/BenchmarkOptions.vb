@@ -30,7 +30,8 @@ Friend NotInheritable Class BenchmarkOptions
         "  --no-frame   skip the app's frame benchmark (mono + Xvfb)" & vbLf &
         "  --gas-rounds K  run every gas size K times, one size after another in each round, and report" & vbLf &
         "               the median run with the range (default 3; 1 with --quick)" & vbLf &
-        "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, and gas-scaling"
+        "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, and gas-scaling" & vbLf &
+        "  gas-scaling also times the textbook baseline (a plain event-driven gas, not the engine) beside event"
 
     Public Property Quick As Boolean
     Public Property Help As Boolean

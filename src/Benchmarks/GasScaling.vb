@@ -13,6 +13,22 @@ Friend Module GasScaling
     ''' <summary>Scene name of the scaling rows.</summary>
     Public Const SceneName As String = "gas-scaling"
 
+    ''' <summary>Solver name of the textbook baseline's rows (see <see cref="TextbookGas"/>): not an engine solver.</summary>
+    Public Const TextbookName As String = "textbook"
+
+    ''' <summary>
+    ''' The solvers the gas runs with: those asked for, and after the event solver the textbook
+    ''' baseline, which shows what this machine gives for the same work done plainly.
+    ''' </summary>
+    Public Function SolversFor(solvers As IEnumerable(Of String)) As List(Of String)
+        Dim list As New List(Of String)
+        For Each s In solvers
+            list.Add(s)
+            If s = "event" Then list.Add(TextbookName)
+        Next
+        Return list.Distinct().ToList()
+    End Function
+
     ''' <summary>
     ''' The gas children run with .NET's default settings: tiered compilation, which recompiles hot code
     ''' guided by the profile it gathered (dynamic PGO), as the command line and the tests run the
@@ -33,10 +49,38 @@ Friend Module GasScaling
     Public Function Measure(count As Integer, solverName As String, timeStep As Double?, repeats As Integer, targetWallSeconds As Double,
                             warmUpSeconds As Double) As BenchResult
         Dim world = Scenarios.ElasticGas(count, GasEnergyScene.PackingFraction)
+        Dim result As New BenchResult With {.Scene = SceneName, .Solver = solverName, .TimeStep = timeStep, .BodyCount = count}
+        If solverName = TextbookName Then
+            Dim gas As New TextbookGas(world)
+            result.TimeStep = Nothing
+            TimeSlices(result, AddressOf gas.Advance, Function() gas.CollisionCount, Function() gas.EventCount, Nothing, repeats, targetWallSeconds, warmUpSeconds)
+            If result.CollisionsPerSecond > 0 Then
+                result.Note &= "; the textbook baseline, not the engine (see TextbookGas)"
+            End If
+            Return result
+        End If
         Dim solver = SceneRunner.TryCreateSolver(solverName, timeStep)
         If solver Is Nothing Then Return SceneRunner.NotAvailable(SceneName, solverName, timeStep, "not available in this build")
         world.Solver = solver
-        Dim result As New BenchResult With {.Scene = SceneName, .Solver = solverName, .TimeStep = timeStep, .BodyCount = count}
+        Dim exact = TryCast(solver, EventDrivenSolver)
+        If exact Is Nothing Then
+            TimeSlices(result, AddressOf world.Advance, Function() world.CollisionCount, Nothing, Nothing, repeats, targetWallSeconds, warmUpSeconds)
+        Else
+            TimeSlices(result, AddressOf world.Advance, Function() world.CollisionCount, Function() exact.EventCount, Function() exact.CellsSearched,
+                       repeats, targetWallSeconds, warmUpSeconds)
+        End If
+        Return result
+    End Function
+
+    ''' <summary>
+    ''' Warms the gas up, sizes a slice of simulated time that takes about <paramref name="targetWallSeconds"/>,
+    ''' times <paramref name="repeats"/> slices and fills in <paramref name="result"/> (medians, peak
+    ''' memory, and the work counts where there are: <paramref name="events"/> processed, grid
+    ''' <paramref name="cells"/> searched; Nothing when not counted).
+    ''' </summary>
+    Private Sub TimeSlices(result As BenchResult, advance As Action(Of Double), collisions As Func(Of Long), events As Func(Of Long),
+                           cells As Func(Of Long), repeats As Integer, targetWallSeconds As Double, warmUpSeconds As Double)
+        Dim timeStep = result.TimeStep
 
         ' Warm-up, first part: .NET first compiles a method quickly and recompiles it optimised (guided
         ' by the profile gathered meanwhile) only after it has been called often, in the background.
@@ -48,7 +92,7 @@ Friend Module GasScaling
         Dim clock = Stopwatch.StartNew()
         Dim calls = 0
         Do While clock.Elapsed.TotalSeconds < warmUpSeconds OrElse (calls < 100 AndAlso clock.Elapsed.TotalSeconds < 4 * warmUpSeconds)
-            world.Advance(slice)
+            advance(slice)
             calls += 1
         Loop
         ' Second part: double the slice until one slice takes long enough to time well. At least three
@@ -56,7 +100,7 @@ Friend Module GasScaling
         Dim warmups = 0
         Do
             clock.Restart()
-            world.Advance(slice)
+            advance(slice)
             clock.Stop()
             warmups += 1
             Dim longEnough = clock.Elapsed.TotalSeconds >= targetWallSeconds / 2
@@ -65,18 +109,17 @@ Friend Module GasScaling
         Loop
         Dim ms As New List(Of Double)
         Dim perSecond As New List(Of Double)
-        ' The event solver's work counts (not timed): flat in N when the cost per event is.
-        Dim exact = TryCast(solver, EventDrivenSolver)
-        Dim events0 = If(exact?.EventCount, 0), cells0 = If(exact?.CellsSearched, 0), collisions0 = world.CollisionCount
+        ' The work counts (not timed): flat in N when the cost per event is.
+        Dim events0 = If(events Is Nothing, 0L, events()), cells0 = If(cells Is Nothing, 0L, cells()), collisions0 = collisions()
         For k = 1 To repeats
-            Dim before = world.CollisionCount
+            Dim before = collisions()
             GC.Collect()
             clock.Restart()
-            world.Advance(slice)
+            advance(slice)
             clock.Stop()
             Dim wall = clock.Elapsed.TotalSeconds
             ms.Add(wall * 1000 / slice)
-            perSecond.Add((world.CollisionCount - before) / wall)
+            perSecond.Add((collisions() - before) / wall)
         Next
         result.Runs = repeats
         result.SimulatedSeconds = slice
@@ -92,14 +135,14 @@ Friend Module GasScaling
         result.Note = "slice " & slice.ToString("0.####", CultureInfo.InvariantCulture) & " s simulated per timed run"
         ' Started by the parent, the child has .NET's defaults (ChildEnvironment); say so when it has not.
         If Environment.GetEnvironmentVariable("DOTNET_TieredCompilation") <> "1" Then result.Note &= "; tiered compilation off"
-        If exact IsNot Nothing AndAlso world.CollisionCount > collisions0 AndAlso exact.EventCount > events0 Then
-            Dim events = exact.EventCount - events0
-            result.Note &= "; " & (events / CDbl(world.CollisionCount - collisions0)).ToString("0.00", CultureInfo.InvariantCulture) &
-                           " events per collision, " & ((exact.CellsSearched - cells0) / CDbl(events)).ToString("0.00", CultureInfo.InvariantCulture) &
-                           " cells searched per event"
+        If events IsNot Nothing AndAlso collisions() > collisions0 AndAlso events() > events0 Then
+            Dim processed = events() - events0
+            result.Note &= "; " & (processed / CDbl(collisions() - collisions0)).ToString("0.00", CultureInfo.InvariantCulture) & " events per collision"
+            If cells IsNot Nothing Then
+                result.Note &= ", " & ((cells() - cells0) / CDbl(processed)).ToString("0.00", CultureInfo.InvariantCulture) & " cells searched per event"
+            End If
         End If
-        Return result
-    End Function
+    End Sub
 
     ''' <summary>
     ''' One row per case from several rounds of the same cases (every round lists them in the same

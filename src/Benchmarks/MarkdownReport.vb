@@ -18,6 +18,7 @@ Friend Module MarkdownReport
             Case "event" : Return "#d62728"
             Case "euler" : Return "#1f77b4"
             Case "verlet" : Return "#2ca02c"
+            Case GasScaling.TextbookName : Return "#9467bd"
             Case Else : Return "#7f7f7f"
         End Select
     End Function
@@ -111,6 +112,7 @@ Friend Module MarkdownReport
             Case "event" : Return "event (exact)"
             Case "euler" : Return "semi-implicit Euler"
             Case "verlet" : Return "position Verlet"
+            Case GasScaling.TextbookName : Return "textbook baseline (not the engine)"
             Case Else : Return solver & If(stepping, " (stepping)", "")
         End Select
     End Function
@@ -129,6 +131,13 @@ Friend Module MarkdownReport
             End If
         Next
         If gas.Count = 0 Then sb.Append("- The event-driven solver's gas scaling was not measured in this run (solver not available or scene not run).").Append(ControlChars.Lf)
+        Dim baseline = results.Where(Function(r) r.Scene = GasScaling.SceneName AndAlso r.Solver = GasScaling.TextbookName AndAlso r.Available).ToList()
+        Dim pairs = {1000, 10000}.Select(Function(n) baseline.FirstOrDefault(Function(r) r.BodyCount = n)).Where(Function(r) r IsNot Nothing).ToList()
+        If pairs.Count > 0 Then
+            sb.Append("- For scale, the textbook baseline (a plain event-driven gas, not the engine; see the scaling section) on the same machine: ").
+               Append(String.Join(" and ", pairs.Select(Function(r) Whole(r.CollisionsPerSecond) & " collisions per second at N = " & Whole(r.BodyCount)))).
+               Append("."c).Append(ControlChars.Lf)
+        End If
 
         Dim lines As New List(Of String)
         For Each scene In scenes
@@ -183,13 +192,14 @@ Friend Module MarkdownReport
            Append("After a warm-up (seconds of short advances, until .NET has finished optimising the hot code, then a few slices to size the timed one) the same gas is timed over several equal slices of simulated time (median). ").
            Append("A shared machine's speed changes in spells of seconds to minutes, so the full run measures every size several times (--gas-rounds), in rounds of one size after another; each row is the median run, and its note gives the slowest and fastest. ").
            Append("If the cost per collision is flat, the µs per collision column stays level as N grows. ").
+           Append("The *textbook* rows are not the engine: they time a plain event-driven gas written the textbook way (src/Benchmarks/TextbookGas.vb: cell lists, one event per ball in a binary heap, no vectors, none of the engine's features), the same gas on the same machine, to show what the machine gives for this work done plainly. ").
            Append("Stepping solvers run at dt = 1/1000 s; a size is skipped when one step could take more than a few seconds if the cost grew as N².").Append(ControlChars.Lf).Append(ControlChars.Lf)
         If rows.Any(Function(r) r.Available AndAlso Not Double.IsNaN(r.MicrosecondsPerCollision)) Then
             sb.Append("![Cost per collision against N](").Append(PlotFileName(GasScaling.SceneName)).Append(")"c).Append(ControlChars.Lf).Append(ControlChars.Lf)
         End If
         sb.Append("| N | Solver | dt (s) | ms per simulated s | collisions/s | µs per collision | peak MB | note |").Append(ControlChars.Lf)
         sb.Append("|---|---|---|---|---|---|---|---|").Append(ControlChars.Lf)
-        For Each r In rows.OrderBy(Function(x) x.Solver <> "event").ThenBy(Function(x) x.Solver).ThenBy(Function(x) x.BodyCount)
+        For Each r In rows.OrderBy(Function(x) ScalingOrder(x.Solver)).ThenBy(Function(x) x.Solver).ThenBy(Function(x) x.BodyCount)
             sb.Append("| ").Append(If(r.BodyCount > 0, Whole(r.BodyCount), "—")).Append(" | ").Append(r.Solver).Append(" | ").Append(TimeStepText.Format(r.TimeStep)).Append(" | ")
             If r.Available Then
                 sb.Append(Ms(r.MsPerSimulatedSecond)).Append(" | ").Append(Whole(r.CollisionsPerSecond)).Append(" | ").
@@ -201,6 +211,13 @@ Friend Module MarkdownReport
         Next
         sb.Append(ControlChars.Lf)
     End Sub
+
+    ''' <summary>The scaling table lists the event solver first, then the textbook baseline beside it, then the stepping solvers.</summary>
+    Private Function ScalingOrder(solver As String) As Integer
+        If solver = "event" Then Return 0
+        If solver = GasScaling.TextbookName Then Return 1
+        Return 2
+    End Function
 
     Private Sub FrameSection(sb As StringBuilder, frame As FrameResult)
         sb.Append("## Frame budget (the app)").Append(ControlChars.Lf).Append(ControlChars.Lf)

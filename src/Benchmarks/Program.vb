@@ -119,16 +119,16 @@ Public NotInheritable Class Program
 
     Private Shared Function RunFirstScalingRound(options As BenchmarkOptions) As List(Of BenchResult)
         Dim results As New List(Of BenchResult)
-        For Each solver In options.Solvers
+        For Each solver In GasScaling.SolversFor(options.Solvers)
             Dim probe = SceneRunner.TryCreateSolver(solver, 0.001)
-            If probe Is Nothing Then
+            If probe Is Nothing AndAlso solver <> GasScaling.TextbookName Then
                 Dim missing = SceneRunner.NotAvailable(GasScaling.SceneName, solver, Nothing, "not available in this build")
                 Print(missing)
                 results.Add(missing)
                 Continue For
             End If
             ' Stepping solvers run the gas at one everyday step, 1/1000 s.
-            Dim dt = If(probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
+            Dim dt = If(probe IsNot Nothing AndAlso probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
             Dim previous As BenchResult = Nothing
             For Each n In options.GasSizes.OrderBy(Function(x) x)
                 Dim r As BenchResult

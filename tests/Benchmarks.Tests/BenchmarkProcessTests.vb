@@ -66,6 +66,13 @@ Public Class BenchmarkProcessTests
                 Assert.DoesNotContain("tiered compilation off", exact.GetProperty("note").GetString(), StringComparison.Ordinal)
                 Assert.InRange(Double.Parse(counts.Groups(1).Value, CultureInfo.InvariantCulture), 1.0, 5.0)
                 Assert.InRange(Double.Parse(counts.Groups(2).Value, CultureInfo.InvariantCulture), 1.0, 18.0)
+                ' The textbook baseline runs beside the event solver, in rounds as well, and says what it is.
+                Dim baseline = results.Single(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "textbook")
+                Assert.True(baseline.GetProperty("available").GetBoolean(), baseline.GetProperty("note").GetString())
+                Assert.Equal(50, baseline.GetProperty("n").GetInt32())
+                Assert.Equal(2, baseline.GetProperty("rounds").GetInt32())
+                Assert.True(baseline.GetProperty("collisionsPerSecond").GetDouble() > 0)
+                Assert.Matches("events per collision; the textbook baseline, not the engine", baseline.GetProperty("note").GetString())
             End Using
         Finally
             If Directory.Exists(dir) Then Directory.Delete(dir, True)

@@ -69,6 +69,30 @@ Public Class MarkdownReportTests
     End Sub
 
     <Fact>
+    Public Sub Render_TheTextbookBaseline_IsListedBesideTheEventSolver_AndNamedInTheHeadlineForScale()
+        Dim results = SampleResults.Results()
+        results.Add(New BenchResult With {.Scene = "gas-scaling", .Solver = "verlet", .TimeStep = 0.001, .BodyCount = 1000, .MsPerSimulatedSecond = 900,
+                                          .CollisionsPerSecond = 5000, .MicrosecondsPerCollision = 200, .PeakMegabytes = 40, .Runs = 5})
+        results.Add(New BenchResult With {.Scene = "gas-scaling", .Solver = "textbook", .BodyCount = 10000, .MsPerSimulatedSecond = 600,
+                                          .CollisionsPerSecond = 555555, .MicrosecondsPerCollision = 1.8, .PeakMegabytes = 38, .Runs = 5})
+        results.Add(New BenchResult With {.Scene = "gas-scaling", .Solver = "textbook", .BodyCount = 1000, .MsPerSimulatedSecond = 50,
+                                          .CollisionsPerSecond = 777777, .MicrosecondsPerCollision = 1.29, .PeakMegabytes = 34, .Runs = 5})
+        Dim md = MarkdownReport.Render(SampleResults.Machine(), "full", 5, SampleResults.Scenes(), results, New FrameResult)
+        Dim head = md.Substring(0, md.IndexOf("## Machine", StringComparison.Ordinal))
+        Assert.Contains("- For scale, the textbook baseline (a plain event-driven gas, not the engine; see the scaling section) on the same machine: " &
+                        "777,777 collisions per second at N = 1,000 and 555,555 collisions per second at N = 10,000.", head)
+        ' The engine's figures stay the headline's own.
+        Assert.Contains("N = 1,000: **1,234,567 collisions per second**", head)
+        Dim order = Values("| 1,000 | event |", "| 10,000 | event |", "| 1,000 | textbook |", "| 10,000 | textbook |", "| 1,000 | verlet |").
+            Select(Function(row) md.IndexOf(row, StringComparison.Ordinal)).ToList()
+        Assert.DoesNotContain(-1, order)
+        Assert.Equal(order.OrderBy(Function(k) k), order)
+        Assert.Contains("The *textbook* rows are not the engine", md)
+        Dim plot = MarkdownReport.Plots(SampleResults.Scenes(), results)("benchmark-gas-scaling.svg")
+        Assert.Contains("textbook baseline (not the engine)", plot)
+    End Sub
+
+    <Fact>
     Public Sub Render_SaysWhyTheFrameBudgetWasNotMeasured_OrGivesIt()
         Assert.Contains("Not measured in this run: mono is not installed.", Render())
         Dim ran = Render(New FrameResult With {.Ran = True, .Circles = 1000, .StepMs = 3.25, .PaintMs = 9.5, .RawJson = "{""stepMs"":3.25}"})
