@@ -112,7 +112,7 @@ Friend Module MarkdownReport
             Case "event" : Return "event (exact)"
             Case "euler" : Return "semi-implicit Euler"
             Case "verlet" : Return "position Verlet"
-            Case GasScaling.TextbookName : Return "textbook baseline (not the engine)"
+            Case GasScaling.TextbookName : Return "textbook baseline"
             Case Else : Return solver & If(stepping, " (stepping)", "")
         End Select
     End Function
