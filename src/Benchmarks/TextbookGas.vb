@@ -86,7 +86,7 @@ Friend NotInheritable Class TextbookGas
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
         If world.Gravity <> 0 OrElse world.Restitution <> 1 OrElse Not world.Walls OrElse world.Rectangles.Count > 0 OrElse
            world.Circles.Count = 0 OrElse world.Circles.Any(Function(c) c.IsFixed) Then
-            Throw New ArgumentException("the textbook gas models only free circles with g = 0, e = 1 and walls", NameOf(world))
+            Throw New ArgumentException("the textbook gas models only free circles in a walled box with g = 0, e = 1 and no rectangles", NameOf(world))
         End If
         _n = world.Circles.Count
         _width = world.Width
@@ -220,11 +220,7 @@ Friend NotInheritable Class TextbookGas
         Dim best = Double.PositiveInfinity, partner = NoPartner
         HitWalls(i, x, y, best, partner)
         Dim col = _next(i).Col, row = _next(i).Row
-        For r = Math.Max(0, row - 1) To Math.Min(_ny - 1, row + 1)
-            For c = Math.Max(0, col - 1) To Math.Min(_nx - 1, col + 1)
-                HitDiscsIn(i, r * _nx + c, x, y, best, partner)
-            Next
-        Next
+        HitDiscsIn(i, col - 1, col + 1, row - 1, row + 1, x, y, best, partner)
         File(i, x, y, best, partner)
     End Sub
 
@@ -252,21 +248,12 @@ Friend NotInheritable Class TextbookGas
         Dim best = _next(i).HitTime - _Time
         HitWalls(i, x, y, best, partner)
         Dim col = _next(i).Col, row = _next(i).Row
-        If side <= 1 Then
-            Dim c = If(side = 0, col - 1, col + 1)
-            If c >= 0 AndAlso c < _nx Then
-                For r = Math.Max(0, row - 1) To Math.Min(_ny - 1, row + 1)
-                    HitDiscsIn(i, r * _nx + c, x, y, best, partner)
-                Next
-            End If
-        Else
-            Dim r = If(side = 2, row - 1, row + 1)
-            If r >= 0 AndAlso r < _ny Then
-                For c = Math.Max(0, col - 1) To Math.Min(_nx - 1, col + 1)
-                    HitDiscsIn(i, r * _nx + c, x, y, best, partner)
-                Next
-            End If
-        End If
+        Select Case side
+            Case 0 : HitDiscsIn(i, col - 1, col - 1, row - 1, row + 1, x, y, best, partner)
+            Case 1 : HitDiscsIn(i, col + 1, col + 1, row - 1, row + 1, x, y, best, partner)
+            Case 2 : HitDiscsIn(i, col - 1, col + 1, row - 1, row - 1, x, y, best, partner)
+            Case Else : HitDiscsIn(i, col - 1, col + 1, row + 1, row + 1, x, y, best, partner)
+        End Select
         File(i, x, y, best, partner)
     End Sub
 
@@ -276,12 +263,22 @@ Friend NotInheritable Class TextbookGas
         y = _disc(i).Y + _disc(i).Vy * tau
     End Sub
 
+    ''' <summary>Disc i against every disc in columns c0 … c1, rows r0 … r1 (those inside the grid).</summary>
+    Private Sub HitDiscsIn(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, x As Double, y As Double,
+                           ByRef best As Double, ByRef partner As Integer)
+        For r = Math.Max(0, r0) To Math.Min(_ny - 1, r1)
+            For c = Math.Max(0, c0) To Math.Min(_nx - 1, c1)
+                HitDiscsInCell(i, r * _nx + c, x, y, best, partner)
+            Next
+        Next
+    End Sub
+
     ''' <summary>
     ''' Disc i against every disc of one cell: their relative motion is a straight line, so they touch
     ''' at the smaller root of |d + v t| = r_i + r_j. A hit after the partner's own next hit is left
     ''' out (the partner is predicted again then and finds this pair if it still holds).
     ''' </summary>
-    Private Sub HitDiscsIn(i As Integer, cell As Integer, x As Double, y As Double, ByRef best As Double, ByRef partner As Integer)
+    Private Sub HitDiscsInCell(i As Integer, cell As Integer, x As Double, y As Double, ByRef best As Double, ByRef partner As Integer)
         Dim vx = _disc(i).Vx, vy = _disc(i).Vy, ri = _disc(i).R
         Dim first = cell * _capacity
         For k = first To first + _cellCount(cell) - 1
@@ -310,22 +307,17 @@ Friend NotInheritable Class TextbookGas
     ''' <summary>The walls along disc i's cell: a gap closing at a constant speed.</summary>
     Private Sub HitWalls(i As Integer, x As Double, y As Double, ByRef best As Double, ByRef partner As Integer)
         Dim vx = _disc(i).Vx, vy = _disc(i).Vy, r = _disc(i).R
-        Dim t As Double
-        If _next(i).Col = 0 Then
-            t = GapCloses(x - r, -vx)
-            If t < best Then best = t : partner = -1
-        End If
-        If _next(i).Col = _nx - 1 Then
-            t = GapCloses(_width - r - x, vx)
-            If t < best Then best = t : partner = -2
-        End If
-        If _next(i).Row = 0 Then
-            t = GapCloses(y - r, -vy)
-            If t < best Then best = t : partner = -3
-        End If
-        If _next(i).Row = _ny - 1 Then
-            t = GapCloses(_height - r - y, vy)
-            If t < best Then best = t : partner = -4
+        If _next(i).Col = 0 Then Earlier(GapCloses(x - r, -vx), -1, best, partner)
+        If _next(i).Col = _nx - 1 Then Earlier(GapCloses(_width - r - x, vx), -2, best, partner)
+        If _next(i).Row = 0 Then Earlier(GapCloses(y - r, -vy), -3, best, partner)
+        If _next(i).Row = _ny - 1 Then Earlier(GapCloses(_height - r - y, vy), -4, best, partner)
+    End Sub
+
+    ''' <summary>Takes <paramref name="t"/> (s) and what it is for when it is earlier than the best so far.</summary>
+    Private Shared Sub Earlier(t As Double, what As Integer, ByRef best As Double, ByRef which As Integer)
+        If t < best Then
+            best = t
+            which = what
         End If
     End Sub
 
@@ -339,23 +331,11 @@ Friend NotInheritable Class TextbookGas
     Private Sub File(i As Integer, x As Double, y As Double, best As Double, partner As Integer)
         Dim vx = _disc(i).Vx, vy = _disc(i).Vy
         Dim col = _next(i).Col, row = _next(i).Row
-        Dim exitTime = Double.PositiveInfinity, side = -1, t As Double
-        If col > 0 Then
-            t = GapCloses(x - col * _cellWidth, -vx)
-            If t < exitTime Then exitTime = t : side = 0
-        End If
-        If col < _nx - 1 Then
-            t = GapCloses((col + 1) * _cellWidth - x, vx)
-            If t < exitTime Then exitTime = t : side = 1
-        End If
-        If row > 0 Then
-            t = GapCloses(y - row * _cellHeight, -vy)
-            If t < exitTime Then exitTime = t : side = 2
-        End If
-        If row < _ny - 1 Then
-            t = GapCloses((row + 1) * _cellHeight - y, vy)
-            If t < exitTime Then exitTime = t : side = 3
-        End If
+        Dim exitTime = Double.PositiveInfinity, side = -1
+        If col > 0 Then Earlier(GapCloses(x - col * _cellWidth, -vx), 0, exitTime, side)
+        If col < _nx - 1 Then Earlier(GapCloses((col + 1) * _cellWidth - x, vx), 1, exitTime, side)
+        If row > 0 Then Earlier(GapCloses(y - row * _cellHeight, -vy), 2, exitTime, side)
+        If row < _ny - 1 Then Earlier(GapCloses((row + 1) * _cellHeight - y, vy), 3, exitTime, side)
         _next(i).HitTime = _Time + best
         _next(i).Partner = partner
         _next(i).PartnerCount = If(partner >= 0, _next(partner).Count, 0)
