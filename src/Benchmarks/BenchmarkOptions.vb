@@ -28,8 +28,8 @@ Friend NotInheritable Class BenchmarkOptions
         "  --json FILE  also write every result as JSON, for comparing runs" & vbLf &
         "  --out DIR    where docs/benchmarks.md and the SVG plots go (default: docs)" & vbLf &
         "  --no-frame   skip the app's frame benchmark (mono + Xvfb)" & vbLf &
-        "  --gas-rounds K  run every gas size K times, one size after another in each round, and report" & vbLf &
-        "               the median run with the range (default 3; 1 with --quick)" & vbLf &
+        "  --gas-rounds K  run every gas size K times, in rounds that take the sizes in turn and every solver" & vbLf &
+        "               at a size one after the other; report the median run with the range (default 3; 1 with --quick)" & vbLf &
         "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, and gas-scaling" & vbLf &
         "  gas-scaling also times the textbook baseline (a plain event-driven gas, not the engine) beside event"
 

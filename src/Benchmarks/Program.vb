@@ -117,8 +117,16 @@ Public NotInheritable Class Program
         Return combined
     End Function
 
+    ''' <summary>
+    ''' Every size in turn, smallest first, and at each size every solver one after the other, so
+    ''' that rows of one size (the event solver and the textbook baseline beside it) are measured
+    ''' close together, in the same spell of a shared machine. A stepping solver skips a size when
+    ''' its last measured size predicts too long a step.
+    ''' </summary>
     Private Shared Function RunFirstScalingRound(options As BenchmarkOptions) As List(Of BenchResult)
         Dim results As New List(Of BenchResult)
+        Dim runnable As New List(Of String)
+        Dim timeSteps As New Dictionary(Of String, Double?)
         For Each solver In GasScaling.SolversFor(options.Solvers)
             Dim probe = SceneRunner.TryCreateSolver(solver, 0.001)
             If probe Is Nothing AndAlso solver <> GasScaling.TextbookName Then
@@ -128,9 +136,15 @@ Public NotInheritable Class Program
                 Continue For
             End If
             ' Stepping solvers run the gas at one everyday step, 1/1000 s.
-            Dim dt = If(probe IsNot Nothing AndAlso probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
-            Dim previous As BenchResult = Nothing
-            For Each n In options.GasSizes.OrderBy(Function(x) x)
+            timeSteps(solver) = If(probe IsNot Nothing AndAlso probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
+            runnable.Add(solver)
+        Next
+        Dim lastMeasured As New Dictionary(Of String, BenchResult)
+        For Each n In options.GasSizes.OrderBy(Function(x) x)
+            For Each solver In runnable
+                Dim dt = timeSteps(solver)
+                Dim previous As BenchResult = Nothing
+                lastMeasured.TryGetValue(solver, previous)
                 Dim r As BenchResult
                 Dim predicted = PredictedStepSeconds(previous, n, dt)
                 If predicted > options.StepBudgetSeconds Then
@@ -143,7 +157,7 @@ Public NotInheritable Class Program
                 End If
                 Print(r)
                 results.Add(r)
-                If r.Available Then previous = r
+                If r.Available Then lastMeasured(solver) = r
             Next
         Next
         Return results

@@ -29,8 +29,16 @@ Public Class BenchmarkProcessTests
         Try
             Dim json = Path.Combine(dir, "out", "results.json")
             Dim r = RunBenchmark("--quick", "--scenes", "projectile,gas-scaling", "--solvers", "euler,event,no-such-solver", "--dts", "1/60",
-                                 "--gas-sizes", "50", "--gas-rounds", "2", "--repeats", "1", "--out", dir, "--json", json)
+                                 "--gas-sizes", "60,50", "--gas-rounds", "2", "--repeats", "1", "--out", dir, "--json", json)
             Assert.True(r.ExitCode = 0, r.ToString())
+            ' A round takes the sizes in turn, smallest first, and every solver at a size one after the
+            ' other, so the event solver and the textbook baseline beside it meet the same spell.
+            Dim firstRound = r.StdOut.Substring(0, r.StdOut.IndexOf("gas scaling, round 2", StringComparison.Ordinal))
+            Dim order = Values("gas-scaling euler dt=1/1000 N=50:", "gas-scaling event dt=— N=50:", "gas-scaling textbook dt=— N=50:",
+                               "gas-scaling euler dt=1/1000 N=60:", "gas-scaling event dt=— N=60:", "gas-scaling textbook dt=— N=60:").
+                Select(Function(line) firstRound.IndexOf(line, StringComparison.Ordinal)).ToList()
+            Assert.DoesNotContain(-1, order)
+            Assert.Equal(order.OrderBy(Function(k) k), order)
 
             Dim md = File.ReadAllText(Path.Combine(dir, "benchmarks.md"))
             Assert.Contains("## Headline", md)
@@ -50,12 +58,12 @@ Public Class BenchmarkProcessTests
                 Assert.Equal(1 / 60.0, projectile.GetProperty("dt").GetDouble(), 12)
                 Assert.True(projectile.GetProperty("error").GetDouble() > 0)
                 Assert.True(projectile.GetProperty("msPerSimulatedSecond").GetDouble() > 0)
-                Dim gas = results.Single(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "euler")
+                Dim gas = results.First(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "euler")
                 Assert.Equal(50, gas.GetProperty("n").GetInt32())
                 Assert.True(gas.GetProperty("peakMB").GetDouble() > 0, "peak memory comes from the child process")
                 Assert.Contains(results, Function(e) e.GetProperty("solver").GetString() = "no-such-solver" AndAlso Not e.GetProperty("available").GetBoolean())
                 ' The event solver's work counts behind its time: events per collision, cells searched per event.
-                Dim exact = results.Single(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "event")
+                Dim exact = results.First(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "event")
                 Dim counts = Regex.Match(exact.GetProperty("note").GetString(), "; (\d+\.\d\d) events per collision, (\d+\.\d\d) cells searched per event$")
                 ' Each size ran twice (--gas-rounds 2): the row is the slower run, and says so.
                 Assert.Equal(2, exact.GetProperty("rounds").GetInt32())
@@ -67,7 +75,7 @@ Public Class BenchmarkProcessTests
                 Assert.InRange(Double.Parse(counts.Groups(1).Value, CultureInfo.InvariantCulture), 1.0, 5.0)
                 Assert.InRange(Double.Parse(counts.Groups(2).Value, CultureInfo.InvariantCulture), 1.0, 18.0)
                 ' The textbook baseline runs beside the event solver, in rounds as well, and says what it is.
-                Dim baseline = results.Single(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "textbook")
+                Dim baseline = results.First(Function(e) e.GetProperty("scene").GetString() = "gas-scaling" AndAlso e.GetProperty("solver").GetString() = "textbook")
                 Assert.True(baseline.GetProperty("available").GetBoolean(), baseline.GetProperty("note").GetString())
                 Assert.Equal(50, baseline.GetProperty("n").GetInt32())
                 Assert.Equal(2, baseline.GetProperty("rounds").GetInt32())
