@@ -16,6 +16,21 @@ Friend Module GasScaling
     ''' <summary>Solver name of the textbook baseline's rows (see <see cref="TextbookGas"/>): not an engine solver.</summary>
     Public Const TextbookName As String = "textbook"
 
+    ''' <summary>The time step the stepping solvers run the gas at, s: one everyday step.</summary>
+    Public Const SteppingTimeStep As Double = 0.001
+
+    ''' <summary>
+    ''' Whether the gas can run with <paramref name="solverName"/> in this build (the textbook baseline
+    ''' always can), and at which time step: <see cref="SteppingTimeStep"/> for a stepping solver,
+    ''' Nothing for the event solver and the baseline, which have none.
+    ''' </summary>
+    Public Function TimeStepFor(solverName As String) As (Available As Boolean, TimeStep As Double?)
+        If solverName = TextbookName Then Return (True, Nothing)
+        Dim probe = SceneRunner.TryCreateSolver(solverName, SteppingTimeStep)
+        If probe Is Nothing Then Return (False, Nothing)
+        Return (True, If(probe.TimeStep.HasValue, CType(SteppingTimeStep, Double?), Nothing))
+    End Function
+
     ''' <summary>
     ''' The solvers the gas runs with: those asked for, and after the event solver the textbook
     ''' baseline, which shows what this machine gives for the same work done plainly.

@@ -128,15 +128,14 @@ Public NotInheritable Class Program
         Dim runnable As New List(Of String)
         Dim timeSteps As New Dictionary(Of String, Double?)
         For Each solver In GasScaling.SolversFor(options.Solvers)
-            Dim probe = SceneRunner.TryCreateSolver(solver, 0.001)
-            If probe Is Nothing AndAlso solver <> GasScaling.TextbookName Then
+            Dim plan = GasScaling.TimeStepFor(solver)
+            If Not plan.Available Then
                 Dim missing = SceneRunner.NotAvailable(GasScaling.SceneName, solver, Nothing, "not available in this build")
                 Print(missing)
                 results.Add(missing)
                 Continue For
             End If
-            ' Stepping solvers run the gas at one everyday step, 1/1000 s.
-            timeSteps(solver) = If(probe IsNot Nothing AndAlso probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
+            timeSteps(solver) = plan.TimeStep
             runnable.Add(solver)
         Next
         Dim lastMeasured As New Dictionary(Of String, BenchResult)
@@ -224,8 +223,7 @@ Public NotInheritable Class Program
 
     Private Shared Function RunChildGas(options As BenchmarkOptions) As Integer
         Dim solver = options.ChildSolver
-        Dim probe = SceneRunner.TryCreateSolver(solver, 0.001)
-        Dim dt = If(probe IsNot Nothing AndAlso probe.TimeStep.HasValue, CType(0.001, Double?), Nothing)
+        Dim dt = GasScaling.TimeStepFor(solver).TimeStep
         Dim r As BenchResult
         Try
             r = GasScaling.Measure(options.ChildGas, solver, dt, options.Repeats, options.GasSliceSeconds, options.GasWarmUpSeconds)

@@ -116,4 +116,13 @@ Public Class TextbookGasTests
         Assert.Equal(Values("euler", "verlet"), GasScaling.SolversFor(Values("euler", "verlet")))
         Assert.Equal(Values("event", "textbook"), GasScaling.SolversFor(Values("event", "textbook")))
     End Sub
+
+    <Fact>
+    Public Sub TheGasTimeStep_IsTheEverydayStepForASteppingSolver_AndNoneForTheEventSolverOrTheBaseline()
+        Assert.Equal((True, CType(0.001, Double?)), GasScaling.TimeStepFor("euler"))
+        Assert.Equal((True, CType(0.001, Double?)), GasScaling.TimeStepFor("verlet"))
+        Assert.Equal((True, CType(Nothing, Double?)), GasScaling.TimeStepFor("event"))
+        Assert.Equal((True, CType(Nothing, Double?)), GasScaling.TimeStepFor("textbook"))
+        Assert.False(GasScaling.TimeStepFor("no-such-solver").Available)
+    End Sub
 End Class
