@@ -67,7 +67,7 @@ Friend NotInheritable Class CornerSlides
         Dim xk, yk, vxk, vyk As Double
         b.Motion(k).StateAt(_s.Now, xk, yk, vxk, vyk)
         Return TimeOfImpact.CircleCircle(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay,
-                                         b.Motion(k).R + 2 * b.Motion(j).R, _s.Slop)
+                                         b.Motion(k).R + 2 * b.Motion(j).R, SolverState.SlopAt(xk, yk))
     End Function
 
     ''' <summary>Fills the scratch list with body i's grid neighbours (see <see cref="Neighbour"/>); returns how many.</summary>
@@ -105,7 +105,7 @@ Friend NotInheritable Class CornerSlides
     ''' </summary>
     Friend Sub Finish(i As Integer)
         Dim r = _s.Bodies.Motion(i).R
-        Launch(i, _leaveAngle(i), r + 10 * _s.Slop + 1.0E-9 * r)
+        Launch(i, _leaveAngle(i), r + 10 * SolverState.SlopAt(_cx(i), _cy(i)) + 1.0E-9 * r)
     End Sub
 
     ''' <summary>

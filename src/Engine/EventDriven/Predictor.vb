@@ -62,6 +62,7 @@ Friend NotInheritable Class Predictor
         Dim px, py, vx, vy As Double
         b.Motion(i).StateAt(_s.Now, px, py, vx, vy)
         Dim r = b.Motion(i).R
+        Dim slop = SolverState.SlopAt(px, py)
         Dim moving = m = BodyMode.Free OrElse m = BodyMode.Supported
         If moving Then
             If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
@@ -69,11 +70,11 @@ Friend NotInheritable Class Predictor
                 ' An obstacle is listed in every cell within half a cell of it, so the body's own cell suffices.
                 Dim c = b.Slot(i).Cell
                 For s = _s.Grid.StaticStart(c) To _s.Grid.StaticStart(c + 1) - 1
-                    CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, best, kind, other, feature)
+                    CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, slop, best, kind, other, feature)
                 Next
             Else
                 For s = 0 To _s.Obstacles.Count - 1
-                    CheckObstacle(s, px, py, vx, vy, ay, r, best, kind, other, feature)
+                    CheckObstacle(s, px, py, vx, vy, ay, r, slop, best, kind, other, feature)
                 Next
             End If
         End If
@@ -83,14 +84,14 @@ Friend NotInheritable Class Predictor
         Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, dir)
         If b.Slot(i).Cell >= 0 Then
             Dim c0, c1, r0, r1 As Integer
-            ReachOfPath(i, px, py, vx, vy, ay, r, Math.Min(exitTime, best), c0, c1, r0, r1)
-            ScanCells(i, c0, c1, r0, r1, -1, asleep, px, py, vx, vy, ay, r, best, kind, other)
+            ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
+            ScanCells(i, c0, c1, r0, r1, -1, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
             For k = 0 To _s.OversizedCount - 1
-                CheckPair(i, _s.Oversized(k), asleep, px, py, vx, vy, ay, r, best, kind, other)
+                CheckPair(i, _s.Oversized(k), asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
             Next
         Else
             For j = 0 To b.Count - 1
-                If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
             Next
         End If
         ' A supported body reaching the end of the obstacle it rests on.
@@ -132,18 +133,19 @@ Friend NotInheritable Class Predictor
         Dim px, py, vx, vy As Double
         b.Motion(i).StateAt(_s.Now, px, py, vx, vy)
         Dim r = b.Motion(i).R
+        Dim slop = SolverState.SlopAt(px, py)
         If m = BodyMode.Free OrElse m = BodyMode.Supported Then
             If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
             For s = _s.Grid.StaticStart(target) To _s.Grid.StaticStart(target + 1) - 1
-                CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, best, kind, other, feature)
+                CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, slop, best, kind, other, feature)
             Next
         End If
         Dim asleep = m = BodyMode.Sleeping
         Dim exitDir = 0
         Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, exitDir)
         Dim c0, c1, r0, r1 As Integer
-        ReachOfPath(i, px, py, vx, vy, ay, r, Math.Min(exitTime, best), c0, c1, r0, r1)
-        ScanCells(i, c0, c1, r0, r1, previous, asleep, px, py, vx, vy, ay, r, best, kind, other)
+        ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
+        ScanCells(i, c0, c1, r0, r1, previous, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
         File(i, best, kind, other, feature, exitTime, exitDir)
     End Sub
 
@@ -152,7 +154,7 @@ Friend NotInheritable Class Predictor
     ''' overflow one by one, then the lanes, four at a time where the processor has 256-bit vectors.
     ''' </summary>
     Private Sub ScanCells(i As Integer, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, skip As Integer, asleep As Boolean,
-                          px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                          px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                           ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim grid = _s.Grid
         Dim c0 = Math.Max(0, col0), c1 = Math.Min(grid.Nx - 1, col1)
@@ -162,15 +164,15 @@ Friend NotInheritable Class Predictor
             Dim sr = skip \ grid.Nx, sc = skip - sr * grid.Nx
             If sc >= c0 AndAlso sc <= c1 AndAlso sr >= r0 AndAlso sr <= r1 Then _s.CellsSearched -= 1
         End If
-        ' A body whose acceleration is not vertical (sliding down a slope) takes no hot path.
-        If _s.Bodies.Motion(i).Ax <> 0 Then asleep = True
+        ' A body asleep, or whose acceleration is not vertical (sliding down a slope), takes no hot path.
+        Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0
 #If NET Then
         If VectorScan Then
-            ScanLanesVector(i, c0, c1, r0, r1, skip, asleep, px, py, vx, vy, ay, r, best, kind, other)
+            ScanLanesVector(i, c0, c1, r0, r1, skip, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
             Return
         End If
 #End If
-        ScanBodies(i, c0, c1, r0, r1, skip, True, asleep, px, py, vx, vy, ay, r, best, kind, other)
+        ScanBodies(i, c0, c1, r0, r1, skip, True, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
     End Sub
 
     ''' <summary>
@@ -179,12 +181,12 @@ Friend NotInheritable Class Predictor
     ''' <paramref name="slowOnly"/>: the scanning body takes no hot path (asleep, or not falling freely).
     ''' </summary>
     Private Sub ScanBodies(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, withLanes As Boolean,
-                           slowOnly As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                           slowOnly As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                            ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim grid = _s.Grid
         Dim count = grid.Count, laneBody = grid.LaneBody, nx = grid.Nx, listed = _scanList
         Dim motion = _s.Bodies.Motion, slot = _s.Bodies.Slot
-        Dim now = _s.Now, slop = _s.Slop
+        Dim now = _s.Now
         Dim asleep = _s.Bodies.Slot(i).Mode = BodyMode.Sleeping
         For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
@@ -220,7 +222,7 @@ Friend NotInheritable Class Predictor
                         Dim c = dx * dx + dy * dy - sumR * sumR
                         If c <= 2 * sumR * slop Then
                             ' Touching (common in a pile): only an approach can be a collision now.
-                            If b < 0 AndAlso j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                            If b < 0 AndAlso j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
                         Else
                             Dim a = dvx * dvx + dvy * dvy
                             Dim disc = b * b - a * c
@@ -236,7 +238,7 @@ Friend NotInheritable Class Predictor
                             End If
                         End If
                     ElseIf j <> i Then
-                        CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                        CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
                     End If
                 Next
             Next
@@ -252,7 +254,7 @@ Friend NotInheritable Class Predictor
     ''' so far is taken in lane order, as the scalar loop would.
     ''' </summary>
     Private Sub ScanLanesVector(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, slowOnly As Boolean,
-                                px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                                px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                                 ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim grid = _s.Grid
         Dim blocks = grid.Blocks, count = grid.Count, laneBody = grid.LaneBody, overflow = grid.OverflowHead
@@ -265,7 +267,7 @@ Friend NotInheritable Class Predictor
         Dim vAy = Vector256.Create(ay), vHalfAy = Vector256.Create(0.5 * ay)
         ' A body that takes no hot path matches no lane: NaN equals nothing.
         Dim vMatch = Vector256.Create(If(slowOnly, Double.NaN, ay))
-        Dim vR = Vector256.Create(r), vTwo = Vector256.Create(2.0), vSlop = Vector256.Create(_s.Slop)
+        Dim vR = Vector256.Create(r), vTwo = Vector256.Create(2.0), vSlop = Vector256.Create(slop)
         Dim vGraze = Vector256.Create(TimeOfImpact.GrazeFraction)
         Dim vZero = Vector256(Of Double).Zero
         Dim laneIndex = Vector256.Create(0.0, 1.0, 2.0, 3.0)
@@ -276,7 +278,7 @@ Friend NotInheritable Class Predictor
                 If cell = skip Then Continue For
                 If overflow(cell) >= 0 Then
                     Dim col = cell - rr * nx
-                    ScanBodies(i, col, col, rr, rr, -1, False, slowOnly, px, py, vx, vy, ay, r, best, kind, other)
+                    ScanBodies(i, col, col, rr, rr, -1, False, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
                 End If
                 Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
                 Dim hot = valid And Vector256.Equals(blocks(cell).Ay, vMatch)
@@ -320,7 +322,7 @@ Friend NotInheritable Class Predictor
                     look = look And (look - 1UI)
                     Dim j = laneBody(cell * UniformGrid.Lanes + k)
                     If ((special >> k) And 1UI) <> 0 Then
-                        If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, best, kind, other)
+                        If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
                     ElseIf t.GetElement(k) < best Then
                         best = t.GetElement(k)
                         kind = EventKind.Body
@@ -360,7 +362,8 @@ Friend NotInheritable Class Predictor
         Dim slot = _s.Bodies.Slot
         Dim all = slot(i).Cell < 0
         Dim col = slot(i).Col, row = slot(i).Row
-        Dim slop = _s.Slop
+        ' Each wall's gap is measured along one axis, so its tolerance follows that coordinate alone.
+        Dim slop = SolverState.SlopAlong(px)
         Dim t As Double
         If all OrElse col = 0 Then
             t = TimeOfImpact.GapCloses(px - r, vx, 0, slop)
@@ -371,6 +374,7 @@ Friend NotInheritable Class Predictor
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Right
         End If
         If Not free Then Return
+        slop = SolverState.SlopAlong(py)
         If all OrElse row = 0 Then
             t = TimeOfImpact.GapCloses(py - r, vy, ay, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Bottom
@@ -381,15 +385,15 @@ Friend NotInheritable Class Predictor
         End If
     End Sub
 
-    Private Sub CheckObstacle(s As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+    Private Sub CheckObstacle(s As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                               ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
         Dim f As Integer
-        Dim t = ContactRules.TimeToObstacle(_s.Obstacles, s, px, py, vx, vy, ay, r, _s.Slop, f)
+        Dim t = ContactRules.TimeToObstacle(_s.Obstacles, s, px, py, vx, vy, ay, r, slop, f)
         If t < best Then best = t : kind = EventKind.Obstacle : other = s : feature = f
     End Sub
 
     Private Sub CheckPair(i As Integer, j As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
-                          ay As Double, r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+                          ay As Double, r As Double, slop As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim b = _s.Bodies
         Dim mj = b.Slot(j).Mode
         If mj = BodyMode.Rounding Then
@@ -405,7 +409,7 @@ Friend NotInheritable Class Predictor
         Dim xj, yj, vxj, vyj As Double
         b.Motion(j).StateAt(_s.Now, xj, yj, vxj, vyj)
         Dim t = ContactRules.TimeBetweenBodies(px - xj, py - yj, vx - vxj, vy - vyj, b.Motion(i).Ax - b.Motion(j).Ax, ay - b.Motion(j).Ay,
-                                               r + b.Motion(j).R, _s.Slop, Math.Abs(vx) + Math.Abs(vy) + Math.Abs(vxj) + Math.Abs(vyj))
+                                               r + b.Motion(j).R, slop, Math.Abs(vx) + Math.Abs(vy) + Math.Abs(vxj) + Math.Abs(vyj))
         If t < best Then
             best = t
             kind = EventKind.Body
@@ -422,7 +426,7 @@ Friend NotInheritable Class Predictor
     ''' needs the cells beyond it. Every pair is still found: of the two bodies, the one that searched
     ''' last searched with both final courses and the other's cell (docs/event-driven.md §4).
     ''' </summary>
-    Private Sub ReachOfPath(i As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+    Private Sub ReachOfPath(i As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                             span As Double, ByRef c0 As Integer, ByRef c1 As Integer, ByRef r0 As Integer, ByRef r1 As Integer)
         Dim slot = _s.Bodies.Slot
         Dim grid = _s.Grid
@@ -435,7 +439,7 @@ Friend NotInheritable Class Predictor
         PathBox.Bounds(px, py, vx, vy, ay, span, xlo, xhi, ylo, yhi)
         ' A body sliding round a corner is listed where it started the slide but can reach 3 r_max
         ' beyond; the margin covers rounding and the touching tolerance.
-        Dim reach = r + If(_s.Bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * _s.Slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
+        Dim reach = r + If(_s.Bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
         ' Written so that NaN keeps the neighbour.
         If xlo - reach >= col * grid.CellWidth Then c0 = col
         If xhi + reach <= (col + 1) * grid.CellWidth Then c1 = col

@@ -81,8 +81,9 @@ Friend NotInheritable Class Responder
         Dim approach = Vector.Dot(before, n)
         Dim after = Impulse.Resolve(before, 1.0, Vector.Zero, 0.0, n, _s.E).A
         If approach < 0 AndAlso after = before Then
-            b.Motion(i).Px += n.X * 4 * _s.Slop ' see CollideBodies: an approach too small to resolve
-            b.Motion(i).Py += n.Y * 4 * _s.Slop
+            Dim slop = _s.SlopOf(i) ' see CollideBodies: an approach too small to resolve
+            b.Motion(i).Px += n.X * 4 * slop
+            b.Motion(i).Py += n.Y * 4 * slop
         End If
         b.Motion(i).Vx = after.X
         b.Motion(i).Vy = after.Y
@@ -114,7 +115,7 @@ Friend NotInheritable Class Responder
             ' The approach was below what the velocities can resolve in floating point (after an
             ' e = 0 contact): part them by a few slops instead, so the pair stops being "touching".
             Dim wi = If(invI > 0 OrElse invJ = 0, 0.5, 0.0), wj = If(invJ > 0 OrElse invI = 0, 0.5, 0.0)
-            Dim sep = 4 * _s.Slop / Math.Max(wi + wj, 0.5)
+            Dim sep = 4 * Math.Max(_s.SlopOf(i), _s.SlopOf(j)) / Math.Max(wi + wj, 0.5)
             m(i).Px += n.X * sep * wi
             m(i).Py += n.Y * sep * wi
             m(j).Px -= n.X * sep * wj

@@ -163,10 +163,14 @@ Friend NotInheritable Class RestRules
         Dim rx = b.Motion(i).Vx - sx, ry = b.Motion(i).Vy - sy
         Dim vn = rx * n.X + ry * n.Y
         Dim speedScale = Math.Sqrt(_s.G * r)
-        ' Resting rule: the rest of the bounce series is a geometric series of flight times.
+        ' Resting rule: the rest of the bounce series is a geometric series of flight times, 2 v_n / (g (1 − e)).
+        ' It is summed once what is left is shorter than RestWindow, so the state shown is at rest
+        ' no more than that before the series really ends (or once the hops are far below rounding).
         Dim restSpeed = Math.Sqrt(2 * _s.G * RestHeight(r))
         Dim level = n.Y >= 1 - 1.0E-12 AndAlso support <> BodyTable.SupportNone
-        If level AndAlso vn < restSpeed AndAlso (support <> BodyTable.SupportBody OrElse Math.Abs(rx) < 0.02 * speedScale) Then
+        Dim seriesLeft = If(_s.E < 1, 2 * vn / (_s.G * (1 - _s.E)), Double.PositiveInfinity)
+        Dim ended = seriesLeft <= RestWindow OrElse vn < 1.0E-6 * restSpeed
+        If level AndAlso ended AndAlso (support <> BodyTable.SupportBody OrElse Math.Abs(rx) < 0.02 * speedScale) Then
             EnterRest(i, support, vn)
             Return
         End If
@@ -206,7 +210,13 @@ Friend NotInheritable Class RestRules
         If speed2 < limit2 AndAlso IsHeld(i) Then Sleep(i)
     End Sub
 
-    ''' <summary>Bounce height (m) below which a ball counts as resting: 10⁻⁶ of its radius.</summary>
+    ''' <summary>
+    ''' The bounce series on a level support is followed exactly until what is left of it is shorter
+    ''' than this, s: a state sampled later than the rest time minus this is truly at rest.
+    ''' </summary>
+    Friend Const RestWindow As Double = 0.0001
+
+    ''' <summary>Bounce height (m) of the slowest hop a body may leave a slope with: 10⁻⁶ of its radius.</summary>
     Private Shared Function RestHeight(r As Double) As Double
         Return Math.Max(1.0E-6 * r, 1.0E-12)
     End Function
@@ -293,7 +303,7 @@ Friend NotInheritable Class RestRules
         Dim b = _s.Bodies
         Dim p = b.PositionAt(i, _s.Now)
         Dim px = p.X, py = p.Y, r = b.Motion(i).R
-        Dim gap = 1.0E-3 * r + _s.Slop
+        Dim gap = 1.0E-3 * r + SolverState.SlopAt(px, py)
         _nNormals = 0
         If _s.Walls Then
             If py - r <= gap Then Return True

@@ -21,8 +21,6 @@ Friend NotInheritable Class SolverState
     Friend Walls As Boolean
     Friend Width As Double
     Friend Height As Double
-    ''' <summary>Distance (m) within which bodies count as touching: rounding, never physics.</summary>
-    Friend Slop As Double
     ''' <summary>Largest rounding radius (m) of a body in the grid.</summary>
     Friend RMax As Double
     ''' <summary>Bodies too big for the grid, checked against every body.</summary>
@@ -34,6 +32,28 @@ Friend NotInheritable Class SolverState
 
     ''' <summary>The bodies an event changed, to be rescheduled once it is resolved (each once, in the order they changed).</summary>
     Friend ReadOnly Touched As New TouchedList()
+
+    ''' <summary>Touching tolerance relative to the coordinates involved: 10⁻¹² of them, and never below 10⁻¹² m.</summary>
+    Friend Const SlopFraction As Double = 1.0E-12
+
+    ''' <summary>
+    ''' Distance (m) within which bodies at (x, y) count as touching: rounding, never physics. It is
+    ''' local, because rounding is: a coordinate of 10⁶ m carries errors a million times those of one
+    ''' of 1 m, and a container 10¹² m wide says nothing about a ball bouncing on its floor.
+    ''' </summary>
+    Friend Shared Function SlopAt(x As Double, y As Double) As Double
+        Return SlopFraction * Math.Max(1.0, Math.Max(Math.Abs(x), Math.Abs(y)))
+    End Function
+
+    ''' <summary>Like <see cref="SlopAt"/>, for a gap measured along one axis from coordinate v (m).</summary>
+    Friend Shared Function SlopAlong(v As Double) As Double
+        Return SlopFraction * Math.Max(1.0, Math.Abs(v))
+    End Function
+
+    ''' <summary>The touching tolerance (m) for body i where it is now.</summary>
+    Friend Function SlopOf(i As Integer) As Double
+        Return SlopAt(Bodies.Motion(i).Px, Bodies.Motion(i).Py)
+    End Function
 
     ''' <summary>
     ''' Body i's motion changed: predictions made with its old motion become stale (its counter), its
