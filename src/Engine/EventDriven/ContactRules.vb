@@ -8,25 +8,34 @@ Option Strict On
 Friend Module ContactRules
     ''' <summary>
     ''' Two movable circles whose centres are (dx, dy) apart (A − B), with relative velocity (dvx, dvy)
-    ''' and relative acceleration (dax, day): when they touch (s from now), see <see cref="TimeOfImpact.CircleCircle(Double, Double, Double, Double, Double, Double, Double, Double, Double)"/>.
+    ''' and relative acceleration (dax, day): when they touch (s from now; +∞ if not before <paramref name="horizon"/> s), see <see cref="TimeOfImpact.CircleCircle(Double, Double, Double, Double, Double, Double, Double, Double, Double)"/>.
     ''' </summary>
     Friend Function TimeBetweenBodies(dx As Double, dy As Double, dvx As Double, dvy As Double, dax As Double, day As Double,
-                                      sumRadii As Double, slop As Double, speedScale As Double) As Double
+                                      sumRadii As Double, slop As Double, speedScale As Double, horizon As Double) As Double
+        ' Relative to B, A's centre must come within R of the origin: not before the horizon, no root finding.
+        If (dax <> 0 OrElse day <> 0) AndAlso
+           Not PathBox.MayReach(dx, dy, dvx, dvy, dax, day, horizon, 0, 0, 0, 0, sumRadii + slop) Then Return Double.PositiveInfinity
         Return TimeOfImpact.CircleCircle(dx, dy, dvx, dvy, dax, day, sumRadii, slop, speedScale)
     End Function
 
     ''' <summary>
     ''' A movable circle of radius r (centre p, velocity v, vertical acceleration ay) against obstacle s:
-    ''' when it touches (s from now, +∞ if never), and which feature (face or corner) it touches.
+    ''' when it touches (s from now, +∞ if never or not within <paramref name="horizon"/> s), and which
+    ''' feature (face or corner) it touches.
     ''' </summary>
     Friend Function TimeToObstacle(o As Obstacles, s As Integer, px As Double, py As Double, vx As Double, vy As Double,
-                                   ay As Double, r As Double, slop As Double, ByRef feature As Integer) As Double
+                                   ay As Double, r As Double, slop As Double, horizon As Double, ByRef feature As Integer) As Double
+        ' Most obstacles in a body's cell are out of its reach before its next event or cell crossing:
+        ' a box test spares the root finding (quartics, for corners under gravity).
+        Dim xmin, ymin, xmax, ymax As Double
+        o.Bounds(s, xmin, ymin, xmax, ymax)
+        If Not PathBox.MayReach(px, py, vx, vy, 0, ay, horizon, xmin, ymin, xmax, ymax, r + slop) Then Return Double.PositiveInfinity
         Select Case o.Kind(s)
             Case ObstacleKind.Circle
                 feature = 0
                 Return TimeOfImpact.CircleCircle(px - o.X0(s), py - o.Y0(s), vx, vy, ay, r + o.Radius(s), slop)
             Case Else
-                Return TimeOfImpact.CircleRectangle(px, py, vx, vy, ay, r, o.X0(s), o.Y0(s), o.X1(s), o.Y1(s), slop, feature)
+                Return TimeOfImpact.CircleRectangle(px, py, vx, vy, ay, r, o.X0(s), o.Y0(s), o.X1(s), o.Y1(s), slop, horizon, feature)
         End Select
     End Function
 

@@ -63,32 +63,31 @@ Friend NotInheritable Class Predictor
         b.Motion(i).StateAt(_s.Now, px, py, vx, vy)
         Dim r = b.Motion(i).R
         Dim slop = SolverState.SlopAt(px, py)
+        Dim asleep = m = BodyMode.Sleeping
+        Dim dir = 0
+        Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, dir)
         Dim moving = m = BodyMode.Free OrElse m = BodyMode.Supported
         If moving Then
             If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
             If b.Slot(i).Cell >= 0 Then
-                ' An obstacle is listed in every cell within half a cell of it, so the body's own cell suffices.
+                ' An obstacle is listed in every cell within half a cell of it, so the body's own cell
+                ' suffices, and only until it leaves the cell: the next cell's obstacles are tested then.
                 Dim c = b.Slot(i).Cell
                 For s = _s.Grid.StaticStart(c) To _s.Grid.StaticStart(c + 1) - 1
-                    CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, slop, best, kind, other, feature)
+                    CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, slop, exitTime, best, kind, other, feature)
                 Next
             Else
                 For s = 0 To _s.Obstacles.Count - 1
-                    CheckObstacle(s, px, py, vx, vy, ay, r, slop, best, kind, other, feature)
+                    CheckObstacle(s, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other, feature)
                 Next
             End If
         End If
         ' Movable neighbours: those in the cells within reach of its path (see ReachOfPath).
-        Dim asleep = m = BodyMode.Sleeping
-        Dim dir = 0
-        Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, dir)
         If b.Slot(i).Cell >= 0 Then
             Dim c0, c1, r0, r1 As Integer
             ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
             ScanCells(i, c0, c1, r0, r1, -1, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
-            For k = 0 To _s.OversizedCount - 1
-                CheckPair(i, _s.Oversized(k), asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
-            Next
+            CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
         Else
             For j = 0 To b.Count - 1
                 If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
@@ -134,18 +133,19 @@ Friend NotInheritable Class Predictor
         b.Motion(i).StateAt(_s.Now, px, py, vx, vy)
         Dim r = b.Motion(i).R
         Dim slop = SolverState.SlopAt(px, py)
-        If m = BodyMode.Free OrElse m = BodyMode.Supported Then
-            If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
-            For s = _s.Grid.StaticStart(target) To _s.Grid.StaticStart(target + 1) - 1
-                CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, slop, best, kind, other, feature)
-            Next
-        End If
         Dim asleep = m = BodyMode.Sleeping
         Dim exitDir = 0
         Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, exitDir)
+        If m = BodyMode.Free OrElse m = BodyMode.Supported Then
+            If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
+            For s = _s.Grid.StaticStart(target) To _s.Grid.StaticStart(target + 1) - 1
+                CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, slop, exitTime, best, kind, other, feature)
+            Next
+        End If
         Dim c0, c1, r0, r1 As Integer
         ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
         ScanCells(i, c0, c1, r0, r1, previous, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+        CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
         File(i, best, kind, other, feature, exitTime, exitDir)
     End Sub
 
@@ -385,15 +385,30 @@ Friend NotInheritable Class Predictor
         End If
     End Sub
 
+    ''' <summary>Body i against obstacle s, looking no further ahead than the best so far or <paramref name="until"/> (s from now).</summary>
     Private Sub CheckObstacle(s As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
-                              ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
+                              until As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
         Dim f As Integer
-        Dim t = ContactRules.TimeToObstacle(_s.Obstacles, s, px, py, vx, vy, ay, r, slop, f)
+        Dim t = ContactRules.TimeToObstacle(_s.Obstacles, s, px, py, vx, vy, ay, r, slop, Math.Min(best, until), f)
         If t < best Then best = t : kind = EventKind.Obstacle : other = s : feature = f
     End Sub
 
+    ''' <summary>
+    ''' Gridded body i against the bodies too large for the grid, looking only as far ahead as its next
+    ''' cell crossing: they are tested again on every crossing, and an oversized body that changes
+    ''' course tests every body itself.
+    ''' </summary>
+    Private Sub CheckOversized(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
+                               ay As Double, r As Double, slop As Double, until As Double,
+                               ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        For k = 0 To _s.OversizedCount - 1
+            CheckPair(i, _s.Oversized(k), asleep, px, py, vx, vy, ay, r, slop, best, kind, other, until)
+        Next
+    End Sub
+
     Private Sub CheckPair(i As Integer, j As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
-                          ay As Double, r As Double, slop As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+                          ay As Double, r As Double, slop As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer,
+                          Optional until As Double = Double.PositiveInfinity)
         Dim b = _s.Bodies
         Dim mj = b.Slot(j).Mode
         If mj = BodyMode.Rounding Then
@@ -409,7 +424,7 @@ Friend NotInheritable Class Predictor
         Dim xj, yj, vxj, vyj As Double
         b.Motion(j).StateAt(_s.Now, xj, yj, vxj, vyj)
         Dim t = ContactRules.TimeBetweenBodies(px - xj, py - yj, vx - vxj, vy - vyj, b.Motion(i).Ax - b.Motion(j).Ax, ay - b.Motion(j).Ay,
-                                               r + b.Motion(j).R, slop, Math.Abs(vx) + Math.Abs(vy) + Math.Abs(vxj) + Math.Abs(vyj))
+                                               r + b.Motion(j).R, slop, Math.Abs(vx) + Math.Abs(vy) + Math.Abs(vxj) + Math.Abs(vyj), Math.Min(best, until))
         If t < best Then
             best = t
             kind = EventKind.Body

@@ -84,7 +84,21 @@ Public Module TimeOfImpact
     Public Function CircleRectangle(px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                                     x0 As Double, y0 As Double, x1 As Double, y1 As Double, slop As Double,
                                     ByRef feature As Integer) As Double
+        Return CircleRectangle(px, py, vx, vy, ay, r, x0, y0, x1, y1, slop, Double.PositiveInfinity, feature)
+    End Function
+
+    ''' <summary>
+    ''' <see cref="CircleRectangle(Double, Double, Double, Double, Double, Double, Double, Double, Double, Double, Double, ByRef Integer)"/>,
+    ''' looking no further than <paramref name="horizon"/> s ahead: a corner the path's bounding box
+    ''' cannot reach by then is not solved for (its quartic is the costly part).
+    ''' </summary>
+    Public Function CircleRectangle(px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                                    x0 As Double, y0 As Double, x1 As Double, y1 As Double, slop As Double, horizon As Double,
+                                    ByRef feature As Integer) As Double
         Dim best = Double.PositiveInfinity
+        Dim xlo = Double.NegativeInfinity, xhi = Double.PositiveInfinity, ylo = Double.NegativeInfinity, yhi = Double.PositiveInfinity
+        If horizon < Double.PositiveInfinity Then PathBox.Bounds(px, py, vx, vy, ay, horizon, xlo, xhi, ylo, yhi)
+        Dim reach = r + slop
         feature = -1
         Dim t As Double
         ' Faces: x is linear, y quadratic in t.
@@ -100,6 +114,8 @@ Public Module TimeOfImpact
         For k = 0 To 3
             Dim cx = If((k And 1) = 0, x0, x1)
             Dim cy = If((k And 2) = 0, y0, y1)
+            ' Written so that NaN still solves.
+            If xhi + reach < cx OrElse xlo - reach > cx OrElse yhi + reach < cy OrElse ylo - reach > cy Then Continue For
             t = CircleCircle(px - cx, py - cy, vx, vy, ay, r, slop)
             If t < best Then
                 Dim hx = px + vx * t - cx
