@@ -10,11 +10,13 @@ Friend NotInheritable Class Responder
     Private ReadOnly _s As SolverState
     Private ReadOnly _rest As RestRules
     Private ReadOnly _slides As CornerSlides
+    Private ReadOnly _clusters As ClusterResponse
 
     Friend Sub New(state As SolverState, rest As RestRules, slides As CornerSlides)
         _s = state
         _rest = rest
         _slides = slides
+        _clusters = New ClusterResponse(state, rest)
     End Sub
 
     ''' <summary>Resolves body i's collision-type event, which is due now.</summary>
@@ -75,7 +77,10 @@ Friend NotInheritable Class Responder
     ''' towards i). <paramref name="support"/> names what it would rest on if n points straight up.
     ''' </summary>
     Private Sub CollideImmovable(i As Integer, n As Vector, other As Shape, side As WallSide, kind As CollisionKind, support As Integer)
-        If _rest.Jammed(i) Then Return
+        If _rest.HitTooOften(i) Then
+            _clusters.Resolve(i)
+            Return
+        End If
         Dim b = _s.Bodies
         Dim before = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
         Dim approach = Vector.Dot(before, n)
@@ -100,8 +105,11 @@ Friend NotInheritable Class Responder
         _s.Sync(i)
         _s.Sync(j)
         Dim b = _s.Bodies
-        If b.Mode(j) = BodyMode.Sleeping AndAlso _rest.Jammed(i) Then Return
-        If b.Mode(i) = BodyMode.Sleeping AndAlso _rest.Jammed(j) Then Return
+        If _rest.HitTooOften(i) Or _rest.HitTooOften(j) Then
+            ' The cluster grows from a body that can move (the other may be asleep or dragged).
+            _clusters.Resolve(If(_clusters.CanMove(i), i, j))
+            Return
+        End If
         Dim m = b.Motion
         Dim n = New Vector(m(i).Px - m(j).Px, m(i).Py - m(j).Py).Normalized(New Vector(0, 1))
         Dim vi = New Vector(m(i).Vx, m(i).Vy), vj = New Vector(m(j).Vx, m(j).Vy)

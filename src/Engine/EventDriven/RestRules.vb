@@ -25,7 +25,7 @@ Friend NotInheritable Class RestRules
     Private _wake As Integer() = Array.Empty(Of Integer)()
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
 
-    ''' <summary>Hits at one instant after which a free body counts as wedged (see <see cref="Jammed"/>).</summary>
+    ''' <summary>Hits at one instant after which a body's cluster is resolved at once (see <see cref="HitTooOften"/>).</summary>
     Private Const JamHits As Integer = 16
     ''' <summary>Collisions within √(r/g)/10 that count as a burst (the start of inelastic collapse).</summary>
     Private Const BurstCollisions As Integer = 20
@@ -125,31 +125,25 @@ Friend NotInheritable Class RestRules
     End Function
 
     ''' <summary>
-    ''' A free body wedged between supports that do not give way (a ball falling into a gap slightly
-    ''' narrower than itself) is hit by each of them in turn at the same instant, and pairwise impulses
-    ''' only shave a little off its speed each time. After <see cref="JamHits"/> hits at one instant the
-    ''' contacts are resolved together: the supports block every direction it could move in, so it
-    ''' stops (and, under gravity, sleeps). Returns True when that happened and the event is done.
+    ''' Counts a collision of body i at the clock's instant and says whether it has now been hit more
+    ''' than <see cref="JamHits"/> times at that one instant: pairwise impulses are then not getting
+    ''' past it (a light body squeezed between heavy ones, a ball wedged in a narrow gap), and its
+    ''' cluster of touching bodies should be resolved at once (see <see cref="ClusterResponse"/>).
     ''' </summary>
-    Friend Function Jammed(i As Integer) As Boolean
-        Dim b = _s.Bodies
-        If b.Mode(i) <> BodyMode.Free Then Return False
+    Friend Function HitTooOften(i As Integer) As Boolean
         If _sameTime(i) = _s.Now Then
             _sameCount(i) += 1
         Else
             _sameTime(i) = _s.Now
             _sameCount(i) = 0
         End If
-        If _sameCount(i) < JamHits Then Return False
-        b.Motion(i).Vx = 0
-        b.Motion(i).Vy = 0
-        ' Wedged under gravity it goes to sleep where it is (even if the wedge is not quite a held
-        ' position, it cannot move at this instant, and a sleeper wakes again when hit).
-        If _s.G > 0 Then Sleep(i)
-        _s.Changed(i)
-        _sameCount(i) = 0
-        Return True
+        Return _sameCount(i) >= JamHits
     End Function
+
+    ''' <summary>Starts body i's count of hits at this instant afresh (its cluster was just resolved).</summary>
+    Friend Sub ForgetHits(i As Integer)
+        _sameCount(i) = 0
+    End Sub
 
     ''' <summary>
     ''' After a free body touched something that does not give way (floor, rectangle, fixed circle,
@@ -260,6 +254,9 @@ Friend NotInheritable Class RestRules
         b.Motion(i).Ax = 0
         b.Support(i) = BodyTable.SupportNone
         _restTimes.Remove(b.Shapes(i))
+        ' Its lane shows it free at once, before anything is predicted against it (the vector and the
+        ' one-at-a-time pair tests must see the same mode, or they take different branches).
+        _s.Publish(i)
     End Sub
 
     ''' <summary>Wakes every sleeping or resting body that (directly or through others) rests on body i.</summary>
