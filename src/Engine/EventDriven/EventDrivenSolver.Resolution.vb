@@ -330,6 +330,10 @@ Partial Public NotInheritable Class EventDrivenSolver
         _body(i).Ay = -_g
         _support(i) = SupportNone
         _restTimes.Remove(_circle(i))
+        ' Its lane shows it free at once: WakeAbove predicts the bodies above against it before the
+        ' caller's Changed(i), and a lane still marked "not free" sent the vectorised pair test down
+        ' another branch than the one-at-a-time test, so the two paths' runs drifted apart.
+        Publish(i)
     End Sub
 
     ''' <summary>Wakes every sleeping or resting body that (directly or through others) rests on body i.</summary>
