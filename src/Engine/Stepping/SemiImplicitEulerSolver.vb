@@ -1,7 +1,7 @@
 Option Strict On
 
 ''' <summary>
-''' The seed's algorithm, kept as the baseline: semi-implicit Euler (v += a dt, then x += v dt with the
+''' The textbook game-engine algorithm, kept as the baseline: semi-implicit (symplectic) Euler (v += a dt, then x += v dt with the
 ''' new v) in fixed sub-steps, then static resolution (push overlapping bodies apart) and dynamic
 ''' resolution (an impulse along the normal). Collisions are found after the fact, so a ball that moves
 ''' more than its diameter in one step can tunnel through a thin obstacle. First order: position and

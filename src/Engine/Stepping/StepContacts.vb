@@ -2,7 +2,7 @@ Option Strict On
 
 ''' <summary>
 ''' Contact handling shared by the stepping solvers, run after each sub-step. Collisions are found after
-''' the fact (the bodies already overlap), so each contact is handled in two parts, as in the seed:
+''' the fact (the bodies already overlap), so each contact is handled in two parts, as many game engines do:
 ''' static resolution pushes the bodies apart along the normal, shared in proportion to inverse mass;
 ''' dynamic resolution applies the impulse j = −(1 + e)(v_rel · n) / (1/m_A + 1/m_B) along the normal,
 ''' which leaves the tangential velocity alone (no friction), so a ball resting on a floor can still slide.

@@ -1,7 +1,7 @@
 Option Strict On
 
 ''' <summary>
-''' Position Verlet (the second seed's method): x_{n+1} = x_n + (x_n − x_{n−1}) + a h², keeping each
+''' Position Verlet (Störmer–Verlet in its position form): x_{n+1} = x_n + (x_n − x_{n−1}) + a h², keeping each
 ''' circle's previous position instead of integrating its velocity. The velocity shown is
 ''' v_{n+1} = (x_{n+1} − x_n)/h + ½ a h, which is the central difference (x_{n+2} − x_n)/(2h) with the
 ''' x_{n+2} that the next step will produce: second order, and known at the end of the step rather than a
