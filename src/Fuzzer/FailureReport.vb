@@ -60,9 +60,8 @@ Friend Module FailureReport
         Select Case v.Invariant
             Case Invariants.Sampling
                 Return run(plan.Sample) & " --events a.csv && " & run(plan.SecondSample) & " --events b.csv && diff a.csv b.csv"
-            Case Invariants.Energy
-                Return run(v.Sample) & " --series e.csv"
-            Case Invariants.WallTime, Invariants.Guard, Invariants.Crash
+            Case Invariants.Energy, Invariants.WallTime, Invariants.Guard, Invariants.Crash
+                ' the summary gives the energy at T (where the failure was seen) and the run's wall time
                 Return run(v.Sample) & " --json"
             Case Else
                 Return run(v.Sample)

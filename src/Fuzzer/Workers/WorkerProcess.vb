@@ -17,13 +17,16 @@ Namespace Workers
         Implements ISceneChecker, IDisposable
 
         Private ReadOnly _scratch As String
+        Private ReadOnly _start As Func(Of ProcessStartInfo)
         Private _process As Process
         Private _stderr As StringBuilder
         Private _disposed As Boolean
 
         ''' <param name="scratch">a file this worker may write scenes to</param>
-        Friend Sub New(scratch As String)
+        ''' <param name="start">how to start the process (<see cref="StartInfo"/> when Nothing)</param>
+        Friend Sub New(scratch As String, Optional start As Func(Of ProcessStartInfo) = Nothing)
             _scratch = scratch
+            _start = If(start, AddressOf StartInfo)
         End Sub
 
         ''' <summary>How the worker is started: the dotnet host and this program's dll, or this program's own executable.</summary>
@@ -87,7 +90,7 @@ Namespace Workers
             If _process IsNot Nothing AndAlso Not _process.HasExited Then Return
             _process?.Dispose()
             _stderr = New StringBuilder()
-            Dim p = Process.Start(StartInfo())
+            Dim p = Process.Start(_start())
             Dim errors = _stderr
             AddHandler p.ErrorDataReceived, Sub(sender, e)
                                                 If e.Data Is Nothing Then Return
