@@ -30,6 +30,20 @@ Public Class SceneRunnerTests
     <Theory>
     <InlineData("event")>
     <InlineData("euler")>
+    Public Sub ASolverThatThrows_IsAnExceptionFailure(solver As String)
+        ' faster than World.MaxSpeed: the world refuses to advance it
+        Dim text = "{""format"": ""physics-scene/1"", ""world"": {""width"": 2, ""height"": 2}, ""bodies"": [" &
+            "{""id"": ""a"", ""type"": ""circle"", ""x"": 1, ""y"": 1, ""radius"": 0.1, ""mass"": 1, ""vx"": 1e151}]}"
+        Dim outcome = SceneRunner.Run(text, solver, 1.0, 0.05, 10)
+        Dim v = Assert.Single(outcome.Violations)
+        Assert.Equal(Invariants.Crash, v.Invariant)
+        Assert.Contains("SpeedLimitException between t = 0 s and t = 0.05 s", v.Message, StringComparison.Ordinal)
+        Assert.False(outcome.Completed)
+    End Sub
+
+    <Theory>
+    <InlineData("event")>
+    <InlineData("euler")>
     <InlineData("verlet")>
     Public Sub TheEndState_IsTheCommandLinesToTheBit(solver As String)
         Dim folder = Path.Combine(Path.GetTempPath(), "fuzz-cli-" & Guid.NewGuid().ToString("N"))

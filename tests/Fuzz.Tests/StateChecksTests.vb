@@ -84,6 +84,22 @@ Public Class StateChecksTests
     End Sub
 
     <Fact>
+    Public Sub Guard_CatchesTheEventSolverGivingUp()
+        Dim w = Box()
+        w.Add(New Circle(New Vector(1, 1), 0.1, 1.0, New Vector(5, 0), "a"))
+        Dim solver As New EventDrivenSolver() With {.MaxEventsPerAdvance = 1000}
+        w.Solver = solver
+        w.Advance(0.1)
+        Assert.Null(StateChecks.Guard(w))
+        solver.MaxEventsPerAdvance = 0 ' the next event trips it
+        w.Advance(1.0)
+        Assert.StartsWith("the event solver's runaway guard tripped", StateChecks.Guard(w), StringComparison.Ordinal)
+        Dim stepping = Box()
+        stepping.Solver = SolverFactory.Create("verlet")
+        Assert.Null(StateChecks.Guard(stepping))
+    End Sub
+
+    <Fact>
     Public Sub Energy_CatchesAGain_ButNotALossOrTheAllowance()
         Dim w = Box()
         Dim a As New Circle(New Vector(1, 1), 0.1, 2.0, New Vector(3, 0), "a")

@@ -57,9 +57,7 @@ Namespace Checking
                 If isEvent Then
                     hit = report(Invariants.Overlap, t, StateChecks.Overlap(world)) OrElse hit
                     hit = report(Invariants.Energy, t, energy.Check(world)) OrElse hit
-                    If DirectCast(world.Solver, EventDrivenSolver).GuardTripped Then
-                        hit = report(Invariants.Guard, t, "the event solver's runaway guard tripped before t = " & t.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s") OrElse hit
-                    End If
+                    hit = report(Invariants.Guard, t, StateChecks.Guard(world)) OrElse hit
                 End If
                 If hit Then
                     stopped = True

@@ -107,6 +107,17 @@ Namespace Checking
             Return found
         End Function
 
+        ''' <summary>
+        ''' With the event solver: whether its runaway guard has tripped (it then moved bodies ballistically
+        ''' and pushed overlaps apart instead of resolving collisions).
+        ''' </summary>
+        Friend Function Guard(world As World) As String
+            Dim solver = TryCast(world.Solver, EventDrivenSolver)
+            If solver Is Nothing OrElse Not solver.GuardTripped Then Return Nothing
+            Return "the event solver's runaway guard tripped before t = " & world.Time.ToString("R", CultureInfo.InvariantCulture) & " s (" &
+                solver.EventCount.ToString(CultureInfo.InvariantCulture) & " events in earlier advances)"
+        End Function
+
         ''' <summary>A number for a message: six digits, invariant.</summary>
         Friend Function Brief(value As Double) As String
             Return value.ToString("G6", CultureInfo.InvariantCulture)

@@ -42,6 +42,7 @@ Namespace Workers
                 .UseShellExecute = False, .StandardOutputEncoding = New UTF8Encoding(False)}
             psi.ArgumentList.Add(dll)
             psi.ArgumentList.Add("--worker")
+            psi.ArgumentList.Add(Environment.ProcessId.ToString(CultureInfo.InvariantCulture))
             Return psi
         End Function
 
