@@ -114,8 +114,7 @@ Namespace Checking
         Friend Function Guard(world As World) As String
             Dim solver = TryCast(world.Solver, EventDrivenSolver)
             If solver Is Nothing OrElse Not solver.GuardTripped Then Return Nothing
-            Return "the event solver's runaway guard tripped before t = " & world.Time.ToString("R", CultureInfo.InvariantCulture) & " s (" &
-                solver.EventCount.ToString(CultureInfo.InvariantCulture) & " events in earlier advances)"
+            Return "the event solver's runaway guard tripped before t = " & world.Time.ToString("R", CultureInfo.InvariantCulture) & " s"
         End Function
 
         ''' <summary>A number for a message: six digits, invariant.</summary>
