@@ -11,7 +11,7 @@ Friend NotInheritable Class FuzzOptions
     ''' <summary>Where shrunk failing scenes and their README go.</summary>
     Friend Property Out As String = "fuzz-failures"
     Friend Property Solvers As IReadOnlyList(Of String) = {"event", "euler", "verlet"}
-    Friend Property Kinds As BodyKinds = BodyKinds.Today
+    Friend Property Kinds As BodyKinds = BodyKinds.Default
     ''' <summary>Simulated time T of a run, s (shorter for fast scenes: see <see cref="Campaign.PlanFor"/>).</summary>
     Friend Property Time As Double = 1.0
     ''' <summary>Sampling interval S, s.</summary>

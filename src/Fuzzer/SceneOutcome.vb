@@ -10,7 +10,7 @@ Friend NotInheritable Class SceneOutcome
         Me.Plan = plan
     End Sub
 
-    ''' <summary>How files and lines name it: the seed, or the scene file's name.</summary>
+    ''' <summary>How files and lines name it: its seed, or the scene file's name.</summary>
     Friend ReadOnly Property Label As String
     Friend ReadOnly Property Seed As Long?
     Friend ReadOnly Property Doc As SceneDoc

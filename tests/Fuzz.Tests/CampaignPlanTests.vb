@@ -9,7 +9,7 @@ Public Class CampaignPlanTests
     Public Sub AFastScene_RunsUntilItsFastestBallHasCrossedTheContainerAThousandTimes()
         Dim options As New FuzzOptions()
         For seed = 1 To 300
-            Dim draft = SceneGenerator.Generate(seed, BodyKinds.Today, 40)
+            Dim draft = SceneGenerator.Generate(seed, BodyKinds.Default, 40)
             Dim plan = Campaign.PlanFor(draft, options)
             Dim crossings = 1000 * Math.Min(draft.World.Width, draft.World.Height) / draft.TopSpeed()
             If crossings >= 1 Then

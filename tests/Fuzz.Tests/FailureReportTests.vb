@@ -27,7 +27,7 @@ Public Class FailureReportTests
     Public Sub WritingTwice_KeepsOneLinePerFile()
         Dim folder = Path.Combine(Path.GetTempPath(), "fuzz-report-" & Guid.NewGuid().ToString("N"))
         Try
-            Dim doc = SceneGenerator.Generate(9, BodyKinds.Today, 40).ToDoc()
+            Dim doc = SceneGenerator.Generate(9, BodyKinds.Default, 40).ToDoc()
             Dim plan As New RunPlan(1, 0.05, 0.013, 10)
             Dim outcome As New SceneOutcome("9", 9, doc, plan)
             Dim v As New Violation(Invariants.Energy, "event", 0.05, 0.1, "energy grew")

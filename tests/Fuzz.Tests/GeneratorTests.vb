@@ -17,9 +17,9 @@ Public Class GeneratorTests
     End Sub
 
     <Fact>
-    Public Sub EveryScene_LoadsWithTheSceneReader_AndHoldsOnlyTodaysKinds()
+    Public Sub EveryScene_LoadsWithTheSceneReader_AndHoldsOnlyTheDefaultKinds()
         For seed = 1 To Seeds
-            Dim draft = SceneGenerator.Generate(seed, BodyKinds.Today, MaxBodies)
+            Dim draft = SceneGenerator.Generate(seed, BodyKinds.Default, MaxBodies)
             Dim text = draft.ToText()
             Dim world As World = Nothing
             Try
@@ -43,8 +43,8 @@ Public Class GeneratorTests
     <Fact>
     Public Sub TheSameSeed_GivesTheSameScene_BitForBit()
         For seed = 1 To 200
-            Dim first = SceneGenerator.Generate(seed, BodyKinds.Today, MaxBodies).ToText()
-            Dim again = SceneGenerator.Generate(seed, BodyKinds.Today, MaxBodies).ToText()
+            Dim first = SceneGenerator.Generate(seed, BodyKinds.Default, MaxBodies).ToText()
+            Dim again = SceneGenerator.Generate(seed, BodyKinds.Default, MaxBodies).ToText()
             Assert.Equal(first, again)
             ' and what the reader makes of it, to the bit
             Dim a = SceneFile.Load(first), b = SceneFile.Load(again)
@@ -53,7 +53,7 @@ Public Class GeneratorTests
                 Assert.Equal(BitConverter.DoubleToInt64Bits(a.Circles(i).Velocity.Y), BitConverter.DoubleToInt64Bits(b.Circles(i).Velocity.Y))
             Next
         Next
-        Dim all = Enumerable.Range(1, 200).Select(Function(s) SceneGenerator.Generate(s, BodyKinds.Today, MaxBodies).ToText()).ToList()
+        Dim all = Enumerable.Range(1, 200).Select(Function(s) SceneGenerator.Generate(s, BodyKinds.Default, MaxBodies).ToText()).ToList()
         Assert.Equal(200, all.Distinct().Count())
     End Sub
 
@@ -64,7 +64,7 @@ Public Class GeneratorTests
         Dim minRadius = Double.PositiveInfinity, maxRadius = 0.0, minMass = Double.PositiveInfinity, maxMass = 0.0, maxSpeed = 0.0
         Dim widestMassSpread = 1.0
         For seed = 1 To Seeds
-            Dim draft = SceneGenerator.Generate(seed, BodyKinds.Today, MaxBodies)
+            Dim draft = SceneGenerator.Generate(seed, BodyKinds.Default, MaxBodies)
             For Each name In draft.Ingredients.Distinct()
                 count("ingredient " & name)
             Next
@@ -175,10 +175,10 @@ Public Class GeneratorTests
 
     <Fact>
     Public Sub Kinds_ReadAsTheCommandLineSpellsThem()
-        Assert.Equal(BodyKinds.Today, BodyKindNames.Parse("circle,rectangle"))
+        Assert.Equal(BodyKinds.Default, BodyKindNames.Parse("circle,rectangle"))
         Assert.Equal(BodyKinds.All, BodyKindNames.Parse("all"))
         Assert.Equal(BodyKinds.Circle Or BodyKinds.Segment, BodyKindNames.Parse("segment, circle"))
-        Assert.Equal(BodyKinds.Today, BodyKindNames.Parse(BodyKindNames.Format(BodyKinds.Today)))
+        Assert.Equal(BodyKinds.Default, BodyKindNames.Parse(BodyKindNames.Format(BodyKinds.Default)))
         Assert.Throws(Of ArgumentException)(Function() BodyKindNames.Parse("circle,blob"))
         ' a kind switched off never appears, even where an ingredient would add it
         For seed = 1 To 100

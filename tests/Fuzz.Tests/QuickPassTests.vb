@@ -21,7 +21,7 @@ Public Class QuickPassTests
     Public Sub RandomScenes_BreakNoInvariant_WithAnySolver()
         Dim options As New FuzzOptions With {
             .Scenes = QuickPass.Scenes, .Seed = QuickPass.FirstSeed, .Time = QuickPass.Time, .Cap = QuickPass.Cap,
-            .MaxBodies = QuickPass.MaxBodies, .Kinds = BodyKinds.Today, .Shrink = False}
+            .MaxBodies = QuickPass.MaxBodies, .Kinds = BodyKinds.Default, .Shrink = False}
         Dim log As New StringWriter()
         Dim result = Campaign.Run(options, log)
         _output.WriteLine(log.ToString())

@@ -20,7 +20,7 @@ Public Class SceneRunnerTests
 
     <Fact>
     Public Sub ARunOverTheCap_StopsWithAWallTimeFailure()
-        Dim text = SceneGenerator.Generate(3, BodyKinds.Today, 40).ToText()
+        Dim text = SceneGenerator.Generate(3, BodyKinds.Default, 40).ToText()
         Dim outcome = SceneRunner.Run(text, "verlet", 1.0, 0.05, cap:=0.000000001)
         Dim v = Assert.Single(outcome.Violations)
         Assert.Equal(Invariants.WallTime, v.Invariant)
@@ -50,7 +50,7 @@ Public Class SceneRunnerTests
         Directory.CreateDirectory(folder)
         Try
             For Each seed In {4, 8, 21}
-                Dim text = SceneGenerator.Generate(seed, BodyKinds.Today, 40).ToText()
+                Dim text = SceneGenerator.Generate(seed, BodyKinds.Default, 40).ToText()
                 Dim scene = Path.Combine(folder, "scene.json")
                 Dim states = Path.Combine(folder, "s.csv")
                 File.WriteAllText(scene, text)

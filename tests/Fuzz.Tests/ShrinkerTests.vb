@@ -45,7 +45,7 @@ Public Class ShrinkerTests
 
     <Fact>
     Public Sub TheSceneShrinker_CutsBodiesAndTheRun_ToWhatTheFailureNeeds()
-        Dim doc = SceneGenerator.Generate(17, BodyKinds.Today, 40).ToDoc()
+        Dim doc = SceneGenerator.Generate(17, BodyKinds.Default, 40).ToDoc()
         Assert.True(doc.Bodies.Count >= 10)
         Dim needed = {doc.Bodies(2).Id, doc.Bodies(doc.Bodies.Count - 1).Id}
         Dim plan As New RunPlan(1.0, 0.05, 0.013, 10)
@@ -64,7 +64,7 @@ Public Class ShrinkerTests
 
     <Fact>
     Public Sub AFailureThatDoesNotComeBack_IsNotShrunk()
-        Dim doc = SceneGenerator.Generate(3, BodyKinds.Today, 40).ToDoc()
+        Dim doc = SceneGenerator.Generate(3, BodyKinds.Default, 40).ToDoc()
         Dim plan As New RunPlan(1.0, 0.05, 0.013, 10)
         Dim seen As New Violation(Invariants.WallTime, "event", 0.05, 0.5, "over the cap once")
         Dim result = SceneShrinker.Shrink(doc, plan, seen, Function(d, p) Nothing, Never)

@@ -2,8 +2,8 @@ Option Strict On
 Imports System.Text.Json
 
 ''' <summary>
-''' An independent reading of the physics-scene/1 specification, for the body kinds today's engine does
-''' not read yet (segments, polygons, movable boxes, links): fields, ranges, convexity, containment and
+''' An independent reading of the physics-scene/1 specification, for the body kinds the engine does not
+''' read yet (segments, polygons, movable boxes, links): fields, ranges, convexity, containment and
 ''' overlaps, checked exactly (separating axes for convex shapes), as the specification states them.
 ''' </summary>
 Public Module SpecConformance

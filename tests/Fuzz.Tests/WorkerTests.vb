@@ -19,7 +19,7 @@ Public Class WorkerTests
         Using worker As New WorkerProcess(Scratch())
             Dim here As New InProcessChecker()
             For Each seed In {1, 7, 12, 14}
-                Dim text = SceneGenerator.Generate(seed, BodyKinds.Today, 40).ToText()
+                Dim text = SceneGenerator.Generate(seed, BodyKinds.Default, 40).ToText()
                 For Each solver In {"event", "euler", "verlet"}
                     Dim there = worker.Check(text, solver, plan, Nothing)
                     Dim local = here.Check(text, solver, plan, Nothing)
@@ -37,7 +37,7 @@ Public Class WorkerTests
             Dim r = worker.Check(text, "event", New RunPlan(1, 0.05, 0, 10), Nothing)
             Assert.Equal(Invariants.Refused, Assert.Single(r.Violations).Invariant)
             ' and the worker goes on with the next scene
-            Dim ok = worker.Check(SceneGenerator.Generate(2, BodyKinds.Today, 40).ToText(), "euler", New RunPlan(0.1, 0.05, 0, 10), Nothing)
+            Dim ok = worker.Check(SceneGenerator.Generate(2, BodyKinds.Default, 40).ToText(), "euler", New RunPlan(0.1, 0.05, 0, 10), Nothing)
             Assert.DoesNotContain(ok.Violations, Function(v) v.Invariant = Invariants.Refused OrElse v.Invariant = Invariants.Crash)
         End Using
     End Sub
@@ -55,7 +55,7 @@ Public Class WorkerTests
         Dim clock = Stopwatch.StartNew()
         Using worker As New WorkerProcess(Scratch(), silent)
             ' cap 0.1 s: the worker may be silent for 2 × 0.1 + 5 s
-            Dim r = worker.Check(SceneGenerator.Generate(2, BodyKinds.Today, 40).ToText(), "event", New RunPlan(1, 0.05, 0, 0.1), Nothing)
+            Dim r = worker.Check(SceneGenerator.Generate(2, BodyKinds.Default, 40).ToText(), "event", New RunPlan(1, 0.05, 0, 0.1), Nothing)
             Dim v = Assert.Single(r.Violations)
             Assert.Equal(Invariants.WallTime, v.Invariant)
             Assert.Contains("killed", v.Message, StringComparison.Ordinal)
@@ -73,7 +73,7 @@ Public Class WorkerTests
                         Return psi
                     End Function
         Using worker As New WorkerProcess(Scratch(), dying)
-            Dim r = worker.Check(SceneGenerator.Generate(2, BodyKinds.Today, 40).ToText(), "event", New RunPlan(1, 0.05, 0, 10), Nothing)
+            Dim r = worker.Check(SceneGenerator.Generate(2, BodyKinds.Default, 40).ToText(), "event", New RunPlan(1, 0.05, 0, 10), Nothing)
             Dim v = Assert.Single(r.Violations)
             Assert.Equal(Invariants.Crash, v.Invariant)
             Assert.Contains("exit code 134", v.Message, StringComparison.Ordinal)

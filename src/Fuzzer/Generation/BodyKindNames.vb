@@ -6,7 +6,7 @@ Namespace Generation
         Private ReadOnly Names As New Dictionary(Of String, BodyKinds)(StringComparer.Ordinal) From {
             {"circle", BodyKinds.Circle}, {"rectangle", BodyKinds.Rectangle}, {"segment", BodyKinds.Segment},
             {"polygon", BodyKinds.Polygon}, {"box", BodyKinds.Box}, {"link", BodyKinds.Link},
-            {"today", BodyKinds.Today}, {"all", BodyKinds.All}}
+            {"default", BodyKinds.Default}, {"all", BodyKinds.All}}
 
         ''' <summary>Reads a comma-separated list; throws ArgumentException naming an unknown kind.</summary>
         Friend Function Parse(text As String) As BodyKinds
@@ -24,7 +24,7 @@ Namespace Generation
         ''' <summary>The list <see cref="Parse"/> reads back.</summary>
         Friend Function Format(kinds As BodyKinds) As String
             If kinds = BodyKinds.All Then Return "all"
-            Return String.Join(",", Names.Where(Function(n) n.Value <> BodyKinds.Today AndAlso n.Value <> BodyKinds.All AndAlso (kinds And n.Value) = n.Value).Select(Function(n) n.Key))
+            Return String.Join(",", Names.Where(Function(n) n.Value <> BodyKinds.Default AndAlso n.Value <> BodyKinds.All AndAlso (kinds And n.Value) = n.Value).Select(Function(n) n.Key))
         End Function
     End Module
 End Namespace

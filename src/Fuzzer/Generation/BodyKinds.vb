@@ -2,7 +2,7 @@ Option Strict On
 
 Namespace Generation
     ''' <summary>
-    ''' The kinds of body a generated scene may hold. <see cref="Today"/> is what the engine reads now;
+    ''' The kinds of body a generated scene may hold. <see cref="BodyKinds.Default"/> is what the engine reads now;
     ''' the others are written to the format's specification and switched on when the engine reads them.
     ''' </summary>
     <Flags>
@@ -20,8 +20,8 @@ Namespace Generation
         Box = 16
         ''' <summary>Springs, rods and strings ("links").</summary>
         Link = 32
-        ''' <summary>What the engine reads today: circles and fixed rectangles.</summary>
-        Today = Circle Or Rectangle
+        ''' <summary>The default: what the engine reads now, circles and fixed rectangles.</summary>
+        [Default] = Circle Or Rectangle
         ''' <summary>Every kind the format describes.</summary>
         All = Circle Or Rectangle Or Segment Or Polygon Or Box Or Link
     End Enum

@@ -2,7 +2,7 @@ Option Strict On
 
 Namespace Generation
     ''' <summary>
-    ''' SplitMix64 (Steele, Lea and Flood, 2014): a tiny generator whose output depends on the seed alone,
+    ''' SplitMix64 (Steele, Lea and Flood, 2014): a tiny generator whose output depends on its seed alone,
     ''' on every platform and runtime, so a seed names one scene for good. Every draw that shapes a scene
     ''' uses only +, −, ×, ÷, √ and exact scalings (<see cref="ExactMath"/>), which IEEE 754 rounds the same
     ''' everywhere; library functions such as Math.Log or Math.Sin may differ in the last bit between
