@@ -22,6 +22,8 @@ Friend NotInheritable Class BodyTable
     Friend Reach As Double() = Array.Empty(Of Double)()
     ''' <summary>The body's size for the resting rules' thresholds, m: a circle's radius, else the radius of a disc of the same area.</summary>
     Friend Scale As Double() = Array.Empty(Of Double)()
+    ''' <summary>True while a body is out of the grid for a long slide (see SolverState.Roam).</summary>
+    Friend Roaming As Boolean() = Array.Empty(Of Boolean)()
     ''' <summary>What a supported body rests on: an obstacle index ≥ 0, <see cref="SupportFloor"/> or <see cref="SupportBody"/>.</summary>
     Friend Support As Integer() = Array.Empty(Of Integer)()
     ''' <summary>The support's face the body slides along (an edge of the pair's Minkowski difference), −1 for the floor or a body.</summary>
@@ -60,6 +62,7 @@ Friend NotInheritable Class BodyTable
             Reach(i) = farthest + o.Radius
             Scale(i) = If(IsCircle(i), o.Radius, Math.Sqrt(body.Area / Math.PI))
             Slot(i) = New EventSlot() With {.ColTime = Double.PositiveInfinity, .CellTime = Double.PositiveInfinity}
+            Roaming(i) = False
             Reload(i, world, now)
         Next
     End Sub
@@ -115,6 +118,7 @@ Friend NotInheritable Class BodyTable
         ReDim IsCircle(capacity - 1)
         ReDim Reach(capacity - 1)
         ReDim Scale(capacity - 1)
+        ReDim Roaming(capacity - 1)
         ReDim Support(capacity - 1)
         ReDim SupportEdge(capacity - 1)
     End Sub

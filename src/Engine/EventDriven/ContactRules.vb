@@ -97,10 +97,19 @@ Friend Module ContactRules
         Return If(feature >= 0 AndAlso feature < shape.EdgeCount, feature, -1)
     End Function
 
-    ''' <summary>Whether a contact feature of body i and obstacle k is a rounded corner (a curved support).</summary>
-    Friend Function IsRoundedCorner(s As SolverState, i As Integer, k As Integer, feature As Integer) As Boolean
+    ''' <summary>
+    ''' When a contact feature of body i and obstacle k is a rounded corner, the curve it is: the corner
+    ''' (the arc's centre), the pair's rounding radius, and the normals of the faces it joins (none for a
+    ''' point: a fixed circle). Nothing for a face or a sharp corner.
+    ''' </summary>
+    Friend Function CurveAt(s As SolverState, i As Integer, k As Integer, feature As Integer) As CurvedSupport?
         Dim shape = s.Shapes.Difference(s.Obstacles.Outlines(k), s.Bodies.Outlines(i))
-        Return shape.Radius > 0 AndAlso feature >= shape.EdgeCount
+        If Not (shape.Radius > 0 AndAlso feature >= shape.EdgeCount AndAlso feature < shape.EdgeCount + shape.VertexCount) Then Return Nothing
+        Dim v = feature - shape.EdgeCount
+        Dim curve As New CurvedSupport With {.Centre = New Vector(s.Obstacles.X0(k), s.Obstacles.Y0(k)) + shape.Corners(v), .Radius = shape.Radius}
+        ' Corner v joins edge v − 1 (ending there) and edge v (starting there).
+        If shape.EdgeCount > 0 Then curve.Cone = (shape.EdgeNormals((v - 1 + shape.EdgeCount) Mod shape.EdgeCount), shape.EdgeNormals(v Mod shape.EdgeCount))
+        Return curve
     End Function
 
     ''' <summary>How the outputs' enumeration names a pair (the kind name itself comes from the shapes).</summary>

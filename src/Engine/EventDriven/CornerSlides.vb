@@ -22,6 +22,12 @@ Friend NotInheritable Class CornerSlides
     Private _endAngle As Double() = Array.Empty(Of Double)()
     Private _ontoFace As Boolean() = Array.Empty(Of Boolean)()
     Private _start As Double() = Array.Empty(Of Double)()
+    ''' <summary>
+    ''' True when the body is still climbing towards a turning point it reaches at <see cref="_start"/>:
+    ''' the slide is then described from that point on, where it is at rest, and the climb is its mirror
+    ''' image in time (before _start the body is where the slide puts it at _start − t, moving the other way).
+    ''' </summary>
+    Private _climbing As Boolean() = Array.Empty(Of Boolean)()
     ''' <summary>Scratch list of a body's neighbours (no allocation per event).</summary>
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
 
@@ -40,44 +46,66 @@ Friend NotInheritable Class CornerSlides
         _endAngle = New Double(n - 1) {}
         _ontoFace = New Boolean(n - 1) {}
         _start = New Double(n - 1) {}
+        _climbing = New Boolean(n - 1) {}
         _neighbours = New Integer(n - 1) {}
     End Sub
 
     ''' <summary>
     ''' Body i, at the clock, its reference point <paramref name="radius"/> m from the corner
     ''' (<paramref name="cx"/>, <paramref name="cy"/>) along <paramref name="normal"/>, moving at
-    ''' <paramref name="velocity"/> (m/s, along the arc's tangent), starts sliding round it. It leaves
-    ''' when the normal force vanishes, or reaches the next face first (the corner's normals end at
-    ''' <paramref name="endNormal"/>; Nothing for a full circle). Returns False, doing nothing, when it
-    ''' is too fast to follow the corner at all (it flies off at once).
+    ''' <paramref name="velocity"/> (m/s; only its part along the arc's tangent counts), starts sliding
+    ''' round it. It leaves when the normal force vanishes, or reaches a face that takes it first: the
+    ''' corner's normals end at the two <paramref name="cone"/> normals (Nothing for a full circle: a
+    ''' fixed circle, a ball at rest). A body climbing towards the top too slowly to pass it turns back
+    ''' and slides down again. Returns False, doing nothing, when it is too fast to follow the curve at
+    ''' all (it flies off at once) or rests exactly on top.
     ''' </summary>
-    Friend Function Start(i As Integer, cx As Double, cy As Double, radius As Double, normal As Vector, velocity As Vector, endNormal As Vector?) As Boolean
+    Friend Function Start(i As Integer, cx As Double, cy As Double, radius As Double, normal As Vector, velocity As Vector,
+                          cone As (Vector, Vector)?) As Boolean
         Dim g = _s.G
+        If Not (g > 0) Then Return False
         Dim phi = Math.Atan2(normal.X, normal.Y)
         Dim tangent = New Vector(Math.Cos(phi), -Math.Sin(phi)) ' clockwise
         Dim vt = Vector.Dot(velocity, tangent)
         ' Which way round: as it moves, or (at rest) the way gravity pulls it.
-        Dim dir = If(vt <> 0, Math.Sign(vt), If(normal.X <> 0, Math.Sign(normal.X), 1))
+        Dim dir As Double = If(vt <> 0, Math.Sign(vt), If(normal.X <> 0, Math.Sign(normal.X), 1))
         Dim theta0 = dir * phi
         Dim speed = Math.Abs(vt)
         If speed = 0 AndAlso theta0 = 0 Then Return False ' at rest exactly on top: it stays
+        Dim climbing = False
+        Dim startTime = _s.Now
+        If theta0 < 0 Then
+            ' Climbing towards the top: it turns back where v² = v0² + 2gR (cos θ0 − cos θ) reaches 0,
+            ' unless it has the speed to pass the top.
+            Dim cosTurn = Math.Cos(theta0) + speed * speed / (2 * g * radius)
+            If cosTurn < 1 AndAlso CornerSlide.LeaveAngle(speed, g, radius, theta0) > theta0 Then
+                ' From the turning point on it slides back the other way, starting at rest; the climb is
+                ' the mirror image in time of the slide back down to here.
+                Dim turn = Math.Acos(cosTurn) ' > 0: the turning point's angle, seen going back
+                Dim climb = CornerSlide.Duration(0, g, radius, turn, -theta0)
+                If Not (climb < Double.PositiveInfinity) Then Return False
+                dir = -dir
+                theta0 = turn
+                speed = 0
+                climbing = True
+                startTime = _s.Now + climb
+            End If
+        End If
         Dim leave = CornerSlide.LeaveAngle(speed, g, radius, theta0)
-        If leave <= theta0 Then Return False
+        If leave <= theta0 AndAlso Not climbing Then Return False
         Dim finish = leave
         Dim ontoFace = False
-        If endNormal.HasValue Then
-            ' The arc ends where the next face begins: beyond that the face holds it.
-            Dim phiEnd = Math.Atan2(endNormal.Value.X, endNormal.Value.Y)
-            Dim thetaEnd = dir * phiEnd
-            While thetaEnd < theta0
-                thetaEnd += 2 * Math.PI
-            End While
-            If thetaEnd < leave Then
-                finish = thetaEnd
+        If cone.HasValue Then
+            ' The arc ends where the next face ahead begins: beyond that the face holds it.
+            Dim ahead = Math.Min(AngleAhead(cone.Value.Item1, dir, theta0), AngleAhead(cone.Value.Item2, dir, theta0))
+            If ahead < leave Then
+                finish = ahead
                 ontoFace = True
             End If
         End If
         Dim b = _s.Bodies
+        ' An arc wider than a body's own reach can carry it beyond the cells searched around it.
+        If radius > _s.RMax Then _s.Roam(i)
         b.SetMode(i, BodyMode.Rounding)
         b.Motion(i).Ay = Double.NaN ' not a parabola: no prediction may read it as one
         b.Motion(i).Ax = 0
@@ -89,13 +117,30 @@ Friend NotInheritable Class CornerSlides
         _v0(i) = speed
         _endAngle(i) = finish
         _ontoFace(i) = ontoFace
-        _start(i) = _s.Now
+        _start(i) = startTime
+        _climbing(i) = climbing
         Return True
+    End Function
+
+    ''' <summary>The angle (in the direction of travel) of a cone normal, the first time it comes at or after θ0.</summary>
+    Private Shared Function AngleAhead(normal As Vector, dir As Double, theta0 As Double) As Double
+        Dim theta = dir * Math.Atan2(normal.X, normal.Y)
+        While theta <= theta0
+            theta += 2 * Math.PI
+        End While
+        Return theta
     End Function
 
     ''' <summary>Time (s, from now) until sliding body i leaves its corner or reaches the next face.</summary>
     Friend Function TimeToEnd(i As Integer) As Double
         Return Math.Max(0, CornerSlide.Duration(_v0(i), _s.G, _radius(i), _theta0(i), _endAngle(i)) - (_s.Now - _start(i)))
+    End Function
+
+    ''' <summary>Where on its arc body i is at time t (rad) and which way it moves: +1 on, −1 still climbing back to the turning point.</summary>
+    Private Function AngleAt(i As Integer, t As Double, ByRef sense As Double) As Double
+        Dim tau = t - _start(i)
+        sense = If(tau < 0, -1.0, 1.0)
+        Return CornerSlide.AngleAfter(_v0(i), _s.G, _radius(i), _theta0(i), _endAngle(i), Math.Abs(tau))
     End Function
 
     ''' <summary>
@@ -125,16 +170,13 @@ Friend NotInheritable Class CornerSlides
 
     ''' <summary>Sliding body i's reference point (m) and velocity (m/s) at time t (s), exactly on its arc.</summary>
     Friend Sub StateAt(i As Integer, t As Double, ByRef position As Vector, ByRef velocity As Vector)
-        Dim theta = AngleAt(i, t)
-        Dim speed = CornerSlide.SpeedAt(_v0(i), _s.G, _radius(i), _theta0(i), theta)
+        Dim sense As Double
+        Dim theta = AngleAt(i, t, sense)
+        Dim speed = sense * CornerSlide.SpeedAt(_v0(i), _s.G, _radius(i), _theta0(i), theta)
         Dim s = _dir(i)
         position = New Vector(_cx(i) + s * _radius(i) * Math.Sin(theta), _cy(i) + _radius(i) * Math.Cos(theta))
         velocity = New Vector(s * speed * Math.Cos(theta), -speed * Math.Sin(theta))
     End Sub
-
-    Private Function AngleAt(i As Integer, t As Double) As Double
-        Return CornerSlide.AngleAfter(_v0(i), _s.G, _radius(i), _theta0(i), _endAngle(i), t - _start(i))
-    End Function
 
     ''' <summary>
     ''' Ends a slide early (a neighbour came within reach): the body becomes free at its exact place
@@ -142,28 +184,31 @@ Friend NotInheritable Class CornerSlides
     ''' over (it hops round the rest of the corner).
     ''' </summary>
     Friend Sub Interrupt(i As Integer)
-        Launch(i, AngleAt(i, _s.Now), _radius(i))
+        Dim sense As Double
+        Dim theta = AngleAt(i, _s.Now, sense)
+        Launch(i, theta, _radius(i), sense)
     End Sub
 
     ''' <summary>
     ''' The slide is over. Leaving the corner, it goes off tangentially, touching it with zero normal
-    ''' speed: it starts a hair (far below any physical scale) outside, so rounding cannot turn the
-    ''' tangent into a collision. Reaching the next face, it goes on from exactly there, and the face's
+    ''' speed: it starts a hair (ten touching tolerances, far below any physical scale) outside, so
+    ''' rounding cannot turn the tangent into a collision. Reaching the next face, it goes on from exactly there, and the face's
     ''' own contact takes over.
     ''' </summary>
     Friend Sub Finish(i As Integer)
         Dim r = _radius(i)
-        Launch(i, _endAngle(i), If(_ontoFace(i), r, r + 10 * SolverState.SlopAt(_cx(i), _cy(i)) + 1.0E-9 * r))
+        Launch(i, _endAngle(i), If(_ontoFace(i), r, r + 10 * SolverState.SlopAt(_cx(i) + r, _cy(i) + r)), 1)
     End Sub
 
     ''' <summary>
     ''' Turns body i into a free body at angle θ on its arc, its reference point <paramref name="arc"/> m
-    ''' from the corner, moving along the tangent at the slide's speed there.
+    ''' from the corner, moving along the tangent at the slide's speed there (backwards, sense −1, while
+    ''' it is still climbing to its turning point).
     ''' </summary>
-    Private Sub Launch(i As Integer, theta As Double, arc As Double)
+    Private Sub Launch(i As Integer, theta As Double, arc As Double, sense As Double)
         Dim b = _s.Bodies
         Dim s = _dir(i)
-        Dim speed = CornerSlide.SpeedAt(_v0(i), _s.G, _radius(i), _theta0(i), theta)
+        Dim speed = sense * CornerSlide.SpeedAt(_v0(i), _s.G, _radius(i), _theta0(i), theta)
         b.Motion(i).Px = _cx(i) + s * arc * Math.Sin(theta)
         b.Motion(i).Py = _cy(i) + arc * Math.Cos(theta)
         b.Motion(i).Vx = s * speed * Math.Cos(theta)
@@ -172,6 +217,7 @@ Friend NotInheritable Class CornerSlides
         b.SetMode(i, BodyMode.Free)
         b.Motion(i).Ay = -_s.G
         b.Support(i) = BodyTable.SupportNone
+        _s.StopRoaming(i)
         _s.Changed(i)
         _s.MoveToCellOfPosition(i)
     End Sub

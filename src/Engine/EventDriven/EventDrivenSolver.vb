@@ -29,7 +29,7 @@ Public NotInheritable Class EventDrivenSolver
 
     Public Sub New()
         _slides = New CornerSlides(_s)
-        _rest = New RestRules(_s)
+        _rest = New RestRules(_s, _slides)
         _predictor = New Predictor(_s, _slides)
         _responder = New Responder(_s, _rest, _slides)
     End Sub
@@ -215,6 +215,7 @@ Public NotInheritable Class EventDrivenSolver
         End If
         _rest.ForgetRest(body)
         _s.Bodies.Reload(i, w, _s.Now)
+        _s.StopRoaming(i)
         _s.Changed(i)
         _s.MoveToCellOfPosition(i)
         _rest.WakeAbove(i)

@@ -393,6 +393,9 @@ Friend NotInheritable Class Predictor
     ''' <summary>Body i against obstacle s, looking no further ahead than the best so far or <paramref name="until"/> (s from now).</summary>
     Private Sub CheckObstacle(i As Integer, s As Integer, px As Double, py As Double, vx As Double, vy As Double, ax As Double, ay As Double,
                               slop As Double, until As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
+        ' Sliding on a face of a convex body, it can meet that body again only where the face ends,
+        ' which is its own event (LeaveSupport).
+        If _s.Bodies.Support(i) = s AndAlso _s.Bodies.Slot(i).Mode = BodyMode.Supported Then Return
         Dim f As Integer
         Dim t = ContactRules.TimeToObstacle(_s, i, s, px, py, vx, vy, ax, ay, slop, Math.Min(best, until), f)
         If t < best Then best = t : kind = EventKind.Obstacle : other = s : feature = f

@@ -71,8 +71,9 @@ Friend NotInheritable Class Responder
         ' What it could rest on: a face of the obstacle (which one, to slide along and to leave at its
         ' ends), or a rounded corner (a fixed circle, a rectangle's corner), which holds only from right above.
         Dim edge = ContactRules.FaceOf(_s, i, s, feature)
-        Dim support = If(edge >= 0, s, If(ContactRules.IsRoundedCorner(_s, i, s, feature), BodyTable.SupportBody, BodyTable.SupportNone))
-        CollideImmovable(i, n, _s.Obstacles.Shapes(s), WallSide.None, support, edge)
+        Dim curve = ContactRules.CurveAt(_s, i, s, feature)
+        Dim support = If(edge >= 0, s, If(curve.HasValue, BodyTable.SupportBody, BodyTable.SupportNone))
+        CollideImmovable(i, n, _s.Obstacles.Shapes(s), WallSide.None, support, edge, curve)
     End Sub
 
     ''' <summary>
@@ -80,7 +81,8 @@ Friend NotInheritable Class Responder
     ''' towards i). <paramref name="support"/> names what it would rest on if n points straight up
     ''' (and <paramref name="edge"/> which face of it).
     ''' </summary>
-    Private Sub CollideImmovable(i As Integer, n As Vector, other As Shape, side As WallSide, support As Integer, edge As Integer)
+    Private Sub CollideImmovable(i As Integer, n As Vector, other As Shape, side As WallSide, support As Integer, edge As Integer,
+                                 Optional curve As CurvedSupport? = Nothing)
         If _rest.HitTooOften(i) Then
             _clusters.Resolve(i)
             Return
@@ -102,7 +104,7 @@ Friend NotInheritable Class Responder
             _rest.NoteHit(i)
         End If
         If b.Mode(i) = BodyMode.Supported AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then _rest.MakeFree(i)
-        If b.Mode(i) = BodyMode.Free Then _rest.AfterSupportContact(i, n, support, edge, 0, 0)
+        If b.Mode(i) = BodyMode.Free Then _rest.AfterSupportContact(i, n, support, edge, 0, 0, curve)
         _s.Changed(i)
     End Sub
 
@@ -185,7 +187,7 @@ Friend NotInheritable Class Responder
         b.Motion(i).Py = corner.Y + n.Y * k.Radius
         Dim v = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
         _rest.MakeFree(i)
-        If k.Radius > 0 Then _slides.Start(i, corner.X, corner.Y, k.Radius, n, v, k.EdgeNormals(nextFace))
+        If k.Radius > 0 Then _slides.Start(i, corner.X, corner.Y, k.Radius, n, v, (n, k.EdgeNormals(nextFace)))
         _s.Changed(i)
     End Sub
 End Class

@@ -7,6 +7,7 @@ Option Strict On
 ''' </summary>
 Friend NotInheritable Class RestRules
     Private ReadOnly _s As SolverState
+    Private ReadOnly _slides As CornerSlides
     ''' <summary>Time of the body's last collision, s (for the inelastic-collapse guard).</summary>
     Private _lastHit As Double() = Array.Empty(Of Double)()
     ''' <summary>Start (s) and size of the body's current burst of collisions (for the sleeping rule).</summary>
@@ -23,6 +24,8 @@ Friend NotInheritable Class RestRules
     Private _nNormals As Integer
     ''' <summary>Scratch: bodies being woken, and one body's neighbours.</summary>
     Private _wake As Integer() = Array.Empty(Of Integer)()
+    Private _settle As Integer() = Array.Empty(Of Integer)()
+    Private ReadOnly _above As New List(Of Integer)
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
 
     ''' <summary>Hits at one instant after which a body's cluster is resolved at once (see <see cref="HitTooOften"/>).</summary>
@@ -30,8 +33,9 @@ Friend NotInheritable Class RestRules
     ''' <summary>Collisions within √(r/g)/10 that count as a burst (the start of inelastic collapse).</summary>
     Private Const BurstCollisions As Integer = 20
 
-    Friend Sub New(state As SolverState)
+    Friend Sub New(state As SolverState, slides As CornerSlides)
         _s = state
+        _slides = slides
     End Sub
 
     ''' <summary>Forgets every body's history (after a rebuild); rest times survive while the body still sits still.</summary>
@@ -45,6 +49,7 @@ Friend NotInheritable Class RestRules
             _sameTime = New Double(capacity - 1) {}
             _sameCount = New Integer(capacity - 1) {}
             _wake = New Integer(capacity - 1) {}
+            _settle = New Integer(capacity - 1) {}
             _neighbours = New Integer(capacity - 1) {}
         End If
         Dim stillResting As New HashSet(Of Shape)()
@@ -150,37 +155,71 @@ Friend NotInheritable Class RestRules
     ''' a body at rest, moving at (sx, sy) m/s) with normal n: the resting and sleeping rules that end
     ''' the Zeno series. Speeds are relative to the support.
     ''' </summary>
-    Friend Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, edge As Integer, sx As Double, sy As Double)
+    Friend Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, edge As Integer, sx As Double, sy As Double,
+                                   Optional curve As CurvedSupport? = Nothing)
         If _s.G = 0 OrElse n.Y <= 0 Then Return
         Dim b = _s.Bodies
         Dim r = b.Scale(i)
         Dim rx = b.Motion(i).Vx - sx, ry = b.Motion(i).Vy - sy
         Dim vn = rx * n.X + ry * n.Y
         Dim speedScale = Math.Sqrt(_s.G * r)
-        ' Resting rule: the rest of the bounce series is a geometric series of flight times, 2 v_n / (g (1 − e)).
-        ' It is summed once what is left is shorter than RestWindow, so the state shown is at rest
-        ' no more than that before the series really ends (or once the hops are far below rounding).
+        Dim still = sx = 0 AndAlso sy = 0
+        ' Resting rule: the rest of the bounce series is a geometric series of flight times,
+        ' 2 v_n / (g n_y (1 − e)) (gravity's part along the normal pulls it back). It is summed once what
+        ' is left is shorter than RestWindow, so the state shown is at rest no more than that before the
+        ' series really ends (or once the hops are far below rounding).
         Dim restSpeed = Math.Sqrt(2 * _s.G * RestHeight(r))
         Dim level = n.Y >= 1 - 1.0E-12 AndAlso support <> BodyTable.SupportNone
-        Dim seriesLeft = If(_s.E < 1, 2 * vn / (_s.G * (1 - _s.E)), Double.PositiveInfinity)
+        Dim seriesLeft = If(_s.E < 1, 2 * vn / (_s.G * n.Y * (1 - _s.E)), Double.PositiveInfinity)
         Dim ended = seriesLeft <= RestWindow OrElse vn < 1.0E-6 * restSpeed
         If level AndAlso ended AndAlso (support <> BodyTable.SupportBody OrElse Math.Abs(rx) < 0.02 * speedScale) Then
             EnterRest(i, support, edge, vn)
             Return
         End If
-        ' On a level support the bounce series is followed exactly down to restSpeed.
+        ' On a level support the bounce series is followed exactly down to its end.
         If level AndAlso support <> BodyTable.SupportBody Then Return
+        ' On a sloping face of a fixed body, likewise; then it slides down the face, exactly. Unless
+        ' something else holds it too (the other side of a V): slow and held there, it sleeps.
+        If support >= 0 AndAlso edge >= 0 AndAlso still Then
+            SleepIfSettled(i)
+            If b.Mode(i) = BodyMode.Sleeping Then Return
+            If ended Then EnterSlide(i, support, edge, n)
+            Return
+        End If
+        ' On a curve that does not move, once the hops are tiny it slides round the curve, exactly.
+        If curve.HasValue AndAlso still AndAlso vn < restSpeed Then
+            Dim c = curve.Value
+            If _slides.Start(i, c.Centre.X, c.Centre.Y, c.Radius, n, New Vector(b.Motion(i).Vx, b.Motion(i).Vy), c.Cone) Then Return
+        End If
         ' Sleeping rule: slow and held from below (one level support, or supports on both sides).
-        If sx = 0 AndAlso sy = 0 Then
+        If still Then
             SleepIfSettled(i)
             If b.Mode(i) = BodyMode.Sleeping Then Return
         End If
-        ' Zeno guard on a slope: never leave a support slower than restSpeed, so a body sliding
+        ' Zeno guard on a support that moves: never leave it slower than restSpeed, so a body sliding
         ' down a curved support hops down it in finitely many events instead of infinitely many.
         If vn < restSpeed Then
             b.Motion(i).Vx += n.X * (restSpeed - vn)
             b.Motion(i).Vy += n.Y * (restSpeed - vn)
         End If
+    End Sub
+
+    ''' <summary>
+    ''' The bounce series on a sloping face has ended: the body slides along the face with no friction,
+    ''' its velocity along the face kept, and the part of gravity along the face, g − (g·n) n, as its
+    ''' acceleration: an exact parabola along the slope, s(t) = s₀ + u t + ½ g sin θ t².
+    ''' </summary>
+    Private Sub EnterSlide(i As Integer, support As Integer, edge As Integer, n As Vector)
+        Dim b = _s.Bodies
+        Dim v = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
+        Dim along = v - n * Vector.Dot(v, n)
+        b.Motion(i).Vx = along.X
+        b.Motion(i).Vy = along.Y
+        b.Motion(i).Ax = _s.G * n.Y * n.X
+        b.Motion(i).Ay = -_s.G + _s.G * n.Y * n.Y
+        b.Support(i) = support
+        b.SupportEdge(i) = edge
+        b.SetMode(i, BodyMode.Supported)
     End Sub
 
     ''' <summary>
@@ -204,6 +243,102 @@ Friend NotInheritable Class RestRules
         Dim limit2 = If(_burstCount(i) > BurstCollisions, scale2, 0.0004 * scale2)
         If speed2 < limit2 AndAlso IsHeld(i) Then Sleep(i)
     End Sub
+
+    ''' <summary>
+    ''' A body that goes to sleep held by exactly two flat faces of fixed bodies or walls (the bottom of
+    ''' a V, a corner of the box) is put exactly where it touches both: the point where the two faces,
+    ''' moved out by its outline, cross. It was within 10⁻³ of its size of there; exactly there, a
+    ''' scene that should end at that point does.
+    ''' </summary>
+    Private Sub Settle(i As Integer)
+        Dim b = _s.Bodies
+        Dim p = New Vector(b.Motion(i).Px, b.Motion(i).Py)
+        Dim gap = 1.0E-3 * b.Scale(i) + SolverState.SlopAt(p.X, p.Y)
+        Dim o = b.Outlines(i)
+        ' Faces touched: normal n and level h, so that touching means n·p = h.
+        Dim count = 0
+        Dim n1, n2 As Vector, h1, h2 As Double
+        Dim add = Sub(n As Vector, h As Double)
+                      ' Faces that press down (a body resting on this one) do not hold it.
+                      If Vector.Dot(n, p) - h > gap OrElse n.Y < 0 Then Return
+                      If count = 0 Then n1 = n : h1 = h Else n2 = n : h2 = h
+                      count += 1
+                  End Sub
+        If _s.Walls Then
+            add(New Vector(1, 0), -o.MinX)
+            add(New Vector(-1, 0), o.MaxX - _s.Width)
+            add(New Vector(0, 1), -o.MinY)
+            add(New Vector(0, -1), o.MaxY - _s.Height)
+        End If
+        For k = 0 To _s.Obstacles.Count - 1
+            Dim shape = _s.Shapes.Difference(_s.Obstacles.Outlines(k), o)
+            Dim origin = New Vector(_s.Obstacles.X0(k), _s.Obstacles.Y0(k))
+            Dim first, second As Integer
+            Dim faces = OutlineContact.TouchingEdges(shape, p - origin, gap, first, second)
+            If faces = 0 Then
+                If OutlineContact.Penetration(shape, p - origin).Depth >= -gap Then count += 2 ' a corner: not two flat faces
+                Continue For
+            End If
+            For Each e In {first, second}
+                If e < 0 Then Continue For
+                Dim n = shape.EdgeNormals(e)
+                add(n, Vector.Dot(n, origin + shape.Corners(e)) + shape.Radius)
+            Next
+        Next
+        ' Bodies at rest below do not move up or down either: a box under it holds it by its top face.
+        Dim neighbours = GridNeighbours.Collect(_s, i, _neighbours)
+        For q = 0 To neighbours - 1
+            Dim j = _neighbours(q)
+            ' Asleep, or resting on something level: it does not move up or down.
+            If Not (b.Mode(j) = BodyMode.Sleeping OrElse (b.Mode(j) = BodyMode.Supported AndAlso b.Motion(j).Ay = 0 AndAlso b.Motion(j).Ax = 0)) Then Continue For
+            Dim shape = _s.Shapes.Difference(b.Outlines(j), o)
+            Dim origin = New Vector(b.Motion(j).Px, b.Motion(j).Py)
+            Dim first, second As Integer
+            Dim faces = OutlineContact.TouchingEdges(shape, p - origin, gap, first, second)
+            If faces = 0 Then
+                If OutlineContact.Penetration(shape, p - origin).Depth >= -gap Then count += 2
+                Continue For
+            End If
+            For Each e In {first, second}
+                If e < 0 Then Continue For
+                Dim n = shape.EdgeNormals(e)
+                add(n, Vector.Dot(n, origin + shape.Corners(e)) + shape.Radius)
+            Next
+        Next
+        Dim target As Vector
+        If count = 1 AndAlso n1.Y >= 1 - 1.0E-12 Then
+            ' One level face holds it: exactly on it.
+            target = New Vector(p.X, h1)
+        ElseIf count = 2 Then
+            Dim det = n1.X * n2.Y - n1.Y * n2.X
+            If Math.Abs(det) < 1.0E-6 Then Return ' parallel faces: no single point
+            target = New Vector((h1 * n2.Y - h2 * n1.Y) / det, (n1.X * h2 - n2.X * h1) / det)
+        Else
+            Return
+        End If
+        If (target - p).Length > gap OrElse Not IsClear(i, target) Then Return
+        b.Motion(i).Px = target.X
+        b.Motion(i).Py = target.Y
+    End Sub
+
+    ''' <summary>Whether body i could be at p (m) without overlapping anything it collides with (beyond the touching tolerance).</summary>
+    Private Function IsClear(i As Integer, p As Vector) As Boolean
+        Dim b = _s.Bodies
+        Dim tolerance = SolverState.SlopAt(p.X, p.Y)
+        Dim o = b.Outlines(i)
+        If _s.Walls AndAlso (p.X + o.MinX < -tolerance OrElse p.Y + o.MinY < -tolerance OrElse
+                             p.X + o.MaxX > _s.Width + tolerance OrElse p.Y + o.MaxY > _s.Height + tolerance) Then Return False
+        For k = 0 To _s.Obstacles.Count - 1
+            If ContactRules.OverlapWithObstacle(_s, i, k, p).Depth > tolerance Then Return False
+        Next
+        Dim count = GridNeighbours.Collect(_s, i, _neighbours)
+        For q = 0 To count - 1
+            Dim j = _neighbours(q)
+            If b.Mode(j) = BodyMode.Rounding Then Continue For
+            If ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now)).Depth > tolerance Then Return False
+        Next
+        Return True
+    End Function
 
     ''' <summary>
     ''' The bounce series on a level support is followed exactly until what is left of it is shorter
@@ -231,6 +366,7 @@ Friend NotInheritable Class RestRules
         If Math.Abs(b.Motion(i).Vx) < 0.05 * Math.Sqrt(_s.G * b.Scale(i)) AndAlso support <> BodyTable.SupportNone Then Sleep(i)
     End Sub
 
+    ''' <summary>Body i (at the clock) goes to sleep where it is, put exactly on what holds it when that is flat (see <see cref="Settle"/>).</summary>
     Friend Sub Sleep(i As Integer)
         Dim b = _s.Bodies
         b.Motion(i).Vx = 0
@@ -238,6 +374,48 @@ Friend NotInheritable Class RestRules
         b.Motion(i).Ay = 0
         b.Motion(i).Ax = 0
         b.SetMode(i, BodyMode.Sleeping)
+        Settle(i)
+        SettleAbove(i)
+    End Sub
+
+    ''' <summary>
+    ''' A body may fall asleep on one still moving (a box on a box that was still bouncing). When the one
+    ''' below sleeps too, each sleeping body above it (and above those, upwards) is put exactly on it
+    ''' if it is within the touching tolerance, so a stack ends face on face; one that is no longer held
+    ''' at all (the body below moved away after it fell asleep) wakes and falls.
+    ''' </summary>
+    Private Sub SettleAbove(i As Integer)
+        Dim b = _s.Bodies
+        Dim head = 0, tail = 0
+        _settle(tail) = i
+        tail += 1
+        While head < tail
+            Dim k = _settle(head)
+            head += 1
+            Dim count = GridNeighbours.Collect(_s, k, _neighbours)
+            _above.Clear()
+            For q = 0 To count - 1
+                Dim j = _neighbours(q)
+                If b.Mode(j) <> BodyMode.Sleeping OrElse b.Motion(j).Py <= b.Motion(k).Py Then Continue For
+                _above.Add(j)
+            Next
+            For Each j In _above
+                Dim before = New Vector(b.Motion(j).Px, b.Motion(j).Py)
+                Settle(j)
+                If Not IsHeld(j) Then
+                    ' It fell asleep on a body that has since moved away: it falls after it, from now.
+                    MakeFree(j)
+                    _s.Changed(j)
+                    Continue For
+                End If
+                If b.Motion(j).Px = before.X AndAlso b.Motion(j).Py = before.Y Then Continue For
+                _s.Changed(j)
+                If tail < _settle.Length Then
+                    _settle(tail) = j
+                    tail += 1
+                End If
+            Next
+        End While
     End Sub
 
     ''' <summary>A resting or sleeping body that was moved by a hit flies again, and so does what rests on it.</summary>
@@ -251,6 +429,7 @@ Friend NotInheritable Class RestRules
     ''' <summary>Body i flies freely under gravity from now on (its rest, if any, is over).</summary>
     Friend Sub MakeFree(i As Integer)
         Dim b = _s.Bodies
+        _s.Sync(i) ' its path so far ends here: gravity starts now, not when it fell asleep
         b.SetMode(i, BodyMode.Free)
         b.Motion(i).Ay = -_s.G
         b.Motion(i).Ax = 0

@@ -93,6 +93,38 @@ Friend NotInheritable Class SolverState
         Publish(i)
     End Sub
 
+    ''' <summary>
+    ''' Body i leaves the grid for a while: it is about to slide along an arc that can take it further
+    ''' than the cells around it are searched, so, like a body too large for the grid, it is checked
+    ''' against every body and every body against it until <see cref="StopRoaming"/>.
+    ''' </summary>
+    Friend Sub Roam(i As Integer)
+        Dim cell = Bodies.Slot(i).Cell
+        If cell < 0 Then Return
+        Dim pulled = Grid.Remove(i, cell)
+        If pulled >= 0 Then Publish(pulled)
+        Bodies.Slot(i).Cell = -1
+        Bodies.Roaming(i) = True
+        Oversized(OversizedCount) = i
+        OversizedCount += 1
+    End Sub
+
+    ''' <summary>Body i, roaming (see <see cref="Roam"/>), goes back into the grid at the cell its reference point is in now.</summary>
+    Friend Sub StopRoaming(i As Integer)
+        If Not Bodies.Roaming(i) Then Return
+        Bodies.Roaming(i) = False
+        Dim k = Array.IndexOf(Oversized, i, 0, OversizedCount)
+        Oversized(k) = Oversized(OversizedCount - 1)
+        OversizedCount -= 1
+        Dim col = Grid.ColumnOf(Bodies.Motion(i).Px), row = Grid.RowOf(Bodies.Motion(i).Py)
+        Dim cell = row * Grid.Nx + col
+        Grid.Insert(i, cell)
+        Bodies.Slot(i).Cell = cell
+        Bodies.Slot(i).Col = col
+        Bodies.Slot(i).Row = row
+        Publish(i)
+    End Sub
+
     ''' <summary>Moves gridded body i to the cell its reference point is in now.</summary>
     Friend Sub MoveToCellOfPosition(i As Integer)
         If Bodies.Slot(i).Cell < 0 Then Return

@@ -259,9 +259,11 @@ Public Module OutlineContact
         Dim length = outline.EdgeLengths(i)
         If u < -slop OrElse u > length + slop Then Return False
         If outline.Radius > 0 OrElse m = 2 Then
+            ' At an end (within slop: a body that slid there is put exactly on the end, which rounding
+            ' may leave a hair inside) and moving outwards, it is leaving the face: the corner's.
             Dim uRate = Vector.Dot(velocity, along)
-            If u >= length AndAlso uRate > 0 Then Return False
-            If u <= 0 AndAlso uRate < 0 Then Return False
+            If u >= length - slop AndAlso uRate > 0 Then Return False
+            If u <= slop AndAlso uRate < 0 Then Return False
             Return True
         End If
         If u >= length - slop AndAlso Not ClosesOnEdge(outline, (i + 1) Mod m, velocity, da, approachTol) Then Return False
