@@ -78,9 +78,9 @@ Public Class RegressionSceneTests
     <Fact>
     Public Sub SlowMixedScene_RunsWithinTheCap_AndKeepsEveryEventSolverInvariant()
         ' Radii from 1 mm to 1 m, speeds to 10⁴ m/s, e = 1: about 6 million collisions in 0.5 s, which ran at
-        ' 135 000 collisions/s (45 s). At the elastic gas's rate (docs/benchmarks.md: 0.56 to 1.1 million
-        ' collisions/s on the 2-core build machine) a run takes 5 to 11 s, so the cap of 20 s trips only when
-        ' the scene runs several times slower than the gas; the speed itself is the benchmark's to measure.
+        ' 135 000 collisions/s (45 s). It now runs at about the elastic gas's rate (docs/benchmarks.md), 5 to
+        ' 11 s on the 2-core build machine. The cap only stops an advance that never ends: it is generous so
+        ' that a busy machine does not trip it; the speed itself is the benchmark's to measure.
         ' Both sampling intervals and every event-solver invariant, in a worker process so that one endless
         ' advance is killed.
         Dim text = File.ReadAllText(TestPaths.Case_(SlowMixed))
@@ -91,5 +91,5 @@ Public Class RegressionSceneTests
     End Sub
 
     ''' <summary>Wall-clock seconds one run of the slow mixed scene may take.</summary>
-    Private Const SlowMixedCap As Double = 20
+    Private Const SlowMixedCap As Double = 120
 End Class
