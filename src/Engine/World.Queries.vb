@@ -11,11 +11,17 @@ Partial Public NotInheritable Class World
         Return sum
     End Function
 
-    ''' <summary>Σ m g y over movable bodies (y of each one's centre of mass), J; zero level at y = 0, the container's floor.</summary>
+    ''' <summary>
+    ''' Σ m g y over movable bodies (y of each one's centre of mass; zero level at y = 0, the container's
+    ''' floor) plus the energy stored in springs, Σ ½ k extension², J.
+    ''' </summary>
     Public Function PotentialEnergy() As Double
         Dim sum = 0.0
         For Each b In _movables
             sum += b.Mass * _gravity * b.CentreOfMass.Y
+        Next
+        For Each l In _links
+            sum += l.StoredEnergy
         Next
         Return sum
     End Function

@@ -13,6 +13,9 @@ Partial Public NotInheritable Class World
     Private ReadOnly _segments As New List(Of Segment)
     Private ReadOnly _polygons As New List(Of Polygon)
     Private ReadOnly _movables As New List(Of Shape)
+    Private ReadOnly _links As New List(Of Link)
+    Private ReadOnly _linkIds As New HashSet(Of String)(StringComparer.Ordinal)
+    Private _nextLinkId As Integer = 1
     Private ReadOnly _ids As New HashSet(Of String)(StringComparer.Ordinal)
     Private _width As Double
     Private _height As Double
@@ -133,6 +136,13 @@ Partial Public NotInheritable Class World
         End Get
     End Property
 
+    ''' <summary>The springs, rods and strings, in the order they were added.</summary>
+    Public ReadOnly Property Links As IReadOnlyList(Of Link)
+        Get
+            Return _links
+        End Get
+    End Property
+
     ''' <summary>Collisions reported since the world was made.</summary>
     Public ReadOnly Property CollisionCount As Long
 
@@ -218,6 +228,9 @@ Partial Public NotInheritable Class World
         list(list.IndexOf(body)) = replacement
         If Not body.IsFixed Then _movables(_movables.IndexOf(body)) = replacement
         If body Is _DraggedBody Then _DraggedBody = Nothing
+        For k = 0 To _links.Count - 1
+            If _links(k).A Is body OrElse _links(k).B Is body Then _links(k) = _links(k).WithBody(body, replacement)
+        Next
         _bodies(index) = replacement
         _solver?.Invalidate(body)
         _solver?.Invalidate(replacement)
@@ -243,8 +256,53 @@ Partial Public NotInheritable Class World
         KindList(body).Remove(body)
         _movables.Remove(body)
         If body Is _DraggedBody Then _DraggedBody = Nothing
-        _solver?.Invalidate(body)
+        Dim linked = _links.RemoveAll(Function(l) l.A Is body OrElse l.B Is body)
+        If linked > 0 Then
+            _linkIds.Clear()
+            For Each l In _links
+                _linkIds.Add(l.Id)
+            Next
+        End If
+        _solver?.Invalidate(If(linked > 0, Nothing, body))
         Return True
+    End Function
+
+    ''' <summary>
+    ''' Adds a link between bodies already in the world. An empty id is given the next free "link" number.
+    ''' Rods and strings keep the length they are given: a rod whose ends are not that far apart, or a string
+    ''' whose ends are farther apart, is pulled to it by the solver's first step.
+    ''' </summary>
+    Public Sub Add(link As Link)
+        If link Is Nothing Then Throw New ArgumentNullException(NameOf(link))
+        If _links.Contains(link) Then Throw New ArgumentException("this link is already in the world", NameOf(link))
+        If Not _bodies.Contains(link.A) OrElse (link.B IsNot Nothing AndAlso Not _bodies.Contains(link.B)) Then Throw New ArgumentException("a link's bodies must be in the world", NameOf(link))
+        If String.IsNullOrEmpty(link.Id) Then
+            Do
+                link.Id = "link" & _nextLinkId.ToString(Globalization.CultureInfo.InvariantCulture)
+                _nextLinkId += 1
+            Loop While _linkIds.Contains(link.Id)
+        ElseIf _linkIds.Contains(link.Id) Then
+            Throw New ArgumentException("link id '" & link.Id & "' is already used", NameOf(link))
+        End If
+        _links.Add(link)
+        _linkIds.Add(link.Id)
+        _solver?.Invalidate(Nothing)
+    End Sub
+
+    ''' <summary>Removes a link; returns False when it was not in the world.</summary>
+    Public Function Remove(link As Link) As Boolean
+        If link Is Nothing OrElse Not _links.Remove(link) Then Return False
+        _linkIds.Remove(link.Id)
+        _solver?.Invalidate(Nothing)
+        Return True
+    End Function
+
+    ''' <summary>The link with this id, or Nothing.</summary>
+    Public Function FindLink(id As String) As Link
+        For Each l In _links
+            If String.Equals(l.Id, id, StringComparison.Ordinal) Then Return l
+        Next
+        Return Nothing
     End Function
 
     ''' <summary>Removes every body and sets the clock to zero.</summary>
@@ -257,6 +315,9 @@ Partial Public NotInheritable Class World
         _movables.Clear()
         _ids.Clear()
         _nextId = 1
+        _links.Clear()
+        _linkIds.Clear()
+        _nextLinkId = 1
         _DraggedBody = Nothing
         _Time = 0
         _solver?.Invalidate(Nothing)
