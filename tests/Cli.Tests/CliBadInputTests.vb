@@ -50,6 +50,10 @@ Public Class CliBadInputTests
     <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[{'type':'circle','x':1,'y':1,'radius':0,'mass':1}]}", "bodies[0].radius: must be greater than 0")>
     <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[{'type':'circle','x':1,'y':1,'radius':0.1,'mass':1},{'type':'circle','x':1.05,'y':1,'radius':0.1,'mass':1}]}", "bodies[1]: overlaps bodies[0] by 0.15 m")>
     <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[{'type':'circle','x':1,'y':1,'radius':0.1,'mass':1}", "document: is not valid JSON")>
+    <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[{'id':'ball1','type':'circle','x':1,'y':1,'radius':0.1,'mass':1},{'id':'ball2','type':'circle','x':2,'y':1,'radius':0.1,'mass':1}]," &
+                "'links':[{'type':'rod','a':'ball1','b':'ball2'},{'type':'string','a':'ball1','at':[1,3]},{'type':'spring','a':'ball1','b':'bal2','stiffness':40}]}", "links[2].b: no body ""bal2""")>
+    <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[{'id':'bob','type':'circle','x':1,'y':1,'radius':0.1,'mass':1}],'links':[{'type':'rod','a':'bob','at':[1,3],'length':1.5}]}",
+                "links[0].length: a rod's length must be the distance between its ends in the file, 2 m, not 1.5 m")>
     Public Sub InvalidScene_Exits2_NamingFileAndPlace_AndWritesNothing(json As String, expected As String)
         Using t As New TempFolder()
             Dim scenePath = t.Write("scene.json", Q(json))

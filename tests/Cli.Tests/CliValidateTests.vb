@@ -38,12 +38,27 @@ Public Class CliValidateTests
     <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5,'restitution':1.5},'bodies':[]}", "world.restitution: must be between 0 and 1")>
     <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[{'id':'a','type':'circle','x':1,'y':1,'radius':0.1,'mass':1},{'id':'a','type':'rectangle','x':3,'y':0,'width':1,'height':1}]}", "bodies[1].id: ""a"" is already the id of bodies[0]")>
     <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[{'type':'circle','x':1,'y':1,'radius':0.1,'mass':1e400}]}", "bodies[0].mass: must be a finite number (1e400 is too large)")>
+    <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[{'id':'peg','type':'circle','x':4,'y':4,'radius':0.1,'fixed':true}],'links':[{'type':'string','a':'peg','at':[4,4.5]}]}", "links[0]: both ends are fixed (body ""peg"" and the point (x = 4, y = 4.5)), so it could never move anything")>
+    <InlineData("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[{'id':'bob','type':'circle','x':1,'y':1,'radius':0.1,'mass':1}],'links':[{'type':'spring','a':'bob','at':[1,3]}]}", "links[0].stiffness: is required")>
     Public Sub InvalidScenes_AreNamed(json As String, expected As String)
         Using t As New TempFolder()
             Dim scene = t.Write("s.json", Q(json))
             Dim r = RunCli("validate", scene)
             Assert.True(r.ExitCode = 2, r.ToString())
             Assert.Equal(scene & ": " & expected, r.StdErr.TrimEnd())
+        End Using
+    End Sub
+
+    <Fact>
+    Public Sub ASceneWithLinks_PrintsOk()
+        Using t As New TempFolder()
+            Dim scene = t.Write("links.json", Q("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[" &
+                "{'id':'bob','type':'circle','x':2,'y':1.5,'radius':0.1,'mass':1},{'id':'left','type':'circle','x':4,'y':1,'radius':0.1,'mass':1}," &
+                "{'id':'right','type':'circle','x':4.7,'y':1,'radius':0.1,'mass':1}]," &
+                "'links':[{'type':'string','a':'bob','at':[2.0,3.0],'length':1.5},{'type':'spring','a':'left','b':'right','stiffness':40,'rest_length':0.5},{'type':'rod','a':'left','at':[4,3]}]}"))
+            Dim r = RunCli("validate", scene)
+            Assert.True(r.ExitCode = 0, r.ToString())
+            Assert.Equal("ok", r.StdOut.Trim())
         End Using
     End Sub
 

@@ -33,6 +33,17 @@ Namespace Scenes
         ''' <summary>Its reference point, m (a polygon's centroid).</summary>
         Friend Property Position As Vector
 
+        ''' <summary>
+        ''' Where a link joins it, m: its centre of mass, computed as the built body computes it (so a
+        ''' distance measured here is the one the world sees): a circle's centre, a rectangle's centre, a
+        ''' polygon's centroid.
+        ''' </summary>
+        Friend ReadOnly Property ReferencePoint As Vector
+            Get
+                Return Position + Outline.Centroid
+            End Get
+        End Property
+
         ''' <summary>Where error messages point: "bodies[3]".</summary>
         Friend ReadOnly Property Place As String
             Get

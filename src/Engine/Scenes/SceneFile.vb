@@ -5,8 +5,8 @@ Imports System.Text
 Namespace Scenes
     ''' <summary>
     ''' Scene files (physics-scene/1, see docs/scene-files.md): JSON documents that describe the
-    ''' container, gravity, restitution and the bodies. Reading checks everything before it builds the
-    ''' world; writing is exact, so a saved scene reads back identical.
+    ''' container, gravity, restitution, the bodies and the links between them. Reading checks
+    ''' everything before it builds the world; writing is exact, so a saved scene reads back identical.
     ''' </summary>
     Public Module SceneFile
         ''' <summary>

@@ -8,8 +8,9 @@ Imports System.Xml.Linq
 
 Namespace Scenes
     ''' <summary>
-    ''' Reads a physics-scene/1 document: parse, check every field, check ids, walls and overlaps, and
-    ''' only then build the world, so an error never leaves anything half-loaded.
+    ''' Reads a physics-scene/1 document: parse, check every field, check ids, walls and overlaps, then
+    ''' the links between the bodies, and only then build the world, so an error never leaves anything
+    ''' half-loaded.
     ''' </summary>
     Friend Module SceneReader
         ''' <summary>The only format this reader knows.</summary>
@@ -28,7 +29,8 @@ Namespace Scenes
             Dim bodies = ReadBodies(root)
             If settings.Walls Then CheckInside(bodies, settings)
             OverlapCheck.Check(bodies)
-            Return Build(settings, bodies)
+            Dim links = LinkReader.ReadLinks(root, bodies)
+            Return Build(settings, bodies, links)
         End Function
 
         ''' <summary>"bodies[3]": 0-based, as in a JSON path.</summary>
@@ -317,10 +319,16 @@ Namespace Scenes
             Return value.ToString("G6", CultureInfo.InvariantCulture)
         End Function
 
-        Private Function Build(s As WorldSettings, bodies As List(Of BodySpec)) As World
+        Private Function Build(s As WorldSettings, bodies As List(Of BodySpec), links As List(Of LinkSpec)) As World
             Dim w As New World(s.Width, s.Height, s.Gravity, s.Restitution, s.Walls)
+            Dim shapes As New List(Of Shape)(bodies.Count)
             For Each b In bodies
-                w.Add(b.ToShape())
+                Dim shape = b.ToShape()
+                w.Add(shape)
+                shapes.Add(shape)
+            Next
+            For Each l In links
+                w.Add(l.ToLink(shapes))
             Next
             Return w
         End Function

@@ -6,7 +6,7 @@ Imports System.Xml.Linq
 
 Namespace Scenes
     ''' <summary>
-    ''' Writes a world as a physics-scene/1 document: every field explicit (ids, world settings),
+    ''' Writes a world as a physics-scene/1 document: every field explicit (ids, world settings, links),
     ''' numbers in round-trip precision, so that reading it back gives exactly the same scene.
     ''' </summary>
     Friend Module SceneWriter
@@ -23,7 +23,36 @@ Namespace Scenes
                 bodies.Add(BodyElement(b))
             Next
             Dim root = JsonObject("root", JsonValue("format", SceneReader.FormatName), settings, bodies)
+            ' A scene without links is written as before, so older builds read it unchanged.
+            If world.Links.Count > 0 Then
+                Dim links As New XElement("links", New XAttribute("type", "array"))
+                For Each l In world.Links
+                    links.Add(LinkElement(l))
+                Next
+                root.Add(links)
+            End If
             Return ToJson(root)
+        End Function
+
+        ''' <summary>
+        ''' Every field explicit. A rod's or string's length is always written: its default, the distance in
+        ''' the file, follows the bodies, which have moved by the time a running scene is saved.
+        ''' </summary>
+        Private Function LinkElement(l As Link) As XElement
+            Dim e = JsonObject("item", JsonValue("id", l.Id), JsonValue("type", l.KindName), JsonValue("a", l.A.Id))
+            If l.B Is Nothing Then
+                e.Add(New XElement("at", New XAttribute("type", "array"),
+                                   New XElement("item", New XAttribute("type", "number"), JsonNumber.Format(l.Anchor.X)),
+                                   New XElement("item", New XAttribute("type", "number"), JsonNumber.Format(l.Anchor.Y))))
+            Else
+                e.Add(JsonValue("b", l.B.Id))
+            End If
+            If l.Kind = LinkKind.Spring Then
+                e.Add(JsonValue("stiffness", l.Stiffness), JsonValue("rest_length", l.Length), JsonValue("damping", l.Damping))
+            Else
+                e.Add(JsonValue("length", l.Length))
+            End If
+            Return e
         End Function
 
         Private Function BodyElement(b As Shape) As XElement
