@@ -130,8 +130,16 @@ Friend NotInheritable Class StepContacts
             Dim rb = TryCast(b, Rectangle)
             If rb IsNot Nothing Then Return Collider.CircleRectangle(ca.Position, ca.Radius, rb.Min, rb.Max)
         End If
-        Return Collider.OutlineOutline(_differences.Get(b.Outline, a.Outline).Difference, a.Position, b.Position)
+        ' Bodies whose boxes are apart cannot overlap: the box test saves the outline's, the dearest part
+        ' of a step of resting boxes, for the pairs the broad phase kept only for their margin.
+        Dim ao = a.Outline, bo = b.Outline
+        If a.Position.X + ao.MaxX < b.Position.X + bo.MinX OrElse b.Position.X + bo.MaxX < a.Position.X + ao.MinX OrElse
+           a.Position.Y + ao.MaxY < b.Position.Y + bo.MinY OrElse b.Position.Y + bo.MaxY < a.Position.Y + ao.MinY Then Return Apart
+        Return Collider.OutlineOutline(_differences.Get(bo, ao).Difference, a.Position, b.Position)
     End Function
+
+    ''' <summary>The contact of two bodies known to be apart: no depth, so nothing is done.</summary>
+    Private Shared ReadOnly Apart As New Contact(New Vector(0, 1), Double.NegativeInfinity)
 
     ''' <summary>Orders the pairs by the height of their lower body (the middle of its box), so support spreads up a pile in one pass.</summary>
     Private Sub SortBottomUp(bodies As IReadOnlyList(Of Shape))
