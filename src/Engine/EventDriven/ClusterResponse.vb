@@ -24,9 +24,9 @@ Friend NotInheritable Class ClusterResponse
     Private ReadOnly _contacts As New List(Of ClusterContact)
     Private ReadOnly _against As New List(Of Shape)
     Private ReadOnly _side As New List(Of WallSide)
-    Private ReadOnly _kind As New List(Of CollisionKind)
-    ''' <summary>What each contact would be as a support for body A (see BodyTable's Support codes).</summary>
+    ''' <summary>What each contact would be as a support for body A (see BodyTable's Support codes), and which face.</summary>
     Private ReadOnly _support As New List(Of Integer)
+    Private ReadOnly _supportEdge As New List(Of Integer)
     Private ReadOnly _pairs As New HashSet(Of Long)
     Private ReadOnly _workspace As New ContactClusterWorkspace()
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
@@ -75,8 +75,8 @@ Friend NotInheritable Class ClusterResponse
         _contacts.Clear()
         _against.Clear()
         _side.Clear()
-        _kind.Clear()
         _support.Clear()
+        _supportEdge.Clear()
         _pairs.Clear()
         If _neighbours.Length < _s.Bodies.Count Then
             _neighbours = New Integer(_s.Bodies.Count - 1) {}
@@ -115,27 +115,33 @@ Friend NotInheritable Class ClusterResponse
     Private Sub Expand(i As Integer, slot As Integer)
         Dim b = _s.Bodies
         Dim p = New Vector(b.Motion(i).Px, b.Motion(i).Py)
-        Dim r = b.Motion(i).R
+        Dim o = b.Outlines(i)
         Dim near = 4 * SolverState.SlopAt(p.X, p.Y)
         If _s.Walls Then
-            If p.X - r <= near Then AddWorld(slot, New Vector(1, 0), Nothing, WallSide.Left, CollisionKind.CircleWall, BodyTable.SupportNone)
-            If _s.Width - r - p.X <= near Then AddWorld(slot, New Vector(-1, 0), Nothing, WallSide.Right, CollisionKind.CircleWall, BodyTable.SupportNone)
-            If p.Y - r <= near Then AddWorld(slot, New Vector(0, 1), Nothing, WallSide.Bottom, CollisionKind.CircleWall, BodyTable.SupportFloor)
-            If _s.Height - r - p.Y <= near Then AddWorld(slot, New Vector(0, -1), Nothing, WallSide.Top, CollisionKind.CircleWall, BodyTable.SupportNone)
+            If p.X + o.MinX <= near Then AddWorld(slot, New Vector(1, 0), Nothing, WallSide.Left, BodyTable.SupportNone, -1)
+            If _s.Width - o.MaxX - p.X <= near Then AddWorld(slot, New Vector(-1, 0), Nothing, WallSide.Right, BodyTable.SupportNone, -1)
+            If p.Y + o.MinY <= near Then AddWorld(slot, New Vector(0, 1), Nothing, WallSide.Bottom, BodyTable.SupportFloor, -1)
+            If _s.Height - o.MaxY - p.Y <= near Then AddWorld(slot, New Vector(0, -1), Nothing, WallSide.Top, BodyTable.SupportNone, -1)
         End If
-        Dim o = _s.Obstacles
-        For s = 0 To o.Count - 1
-            Dim c = ContactRules.Overlap(o, s, p, r)
+        Dim obstacles = _s.Obstacles
+        For s = 0 To obstacles.Count - 1
+            Dim c = ContactRules.OverlapWithObstacle(_s, i, s, p)
             If c.Depth < -near Then Continue For
-            Dim support = If(o.Kind(s) = ObstacleKind.Rectangle, If(c.Normal = New Vector(0, 1), s, BodyTable.SupportNone), BodyTable.SupportBody)
-            AddWorld(slot, c.Normal, o.Shapes(s), WallSide.None, ContactRules.KindOfObstacle(o, s), support)
+            ' As a support: the face it lies on, or a rounded corner (holds only from right above).
+            Dim shape = _s.Shapes.Difference(obstacles.Outlines(s), o)
+            Dim first, second As Integer
+            Dim faces = OutlineContact.TouchingEdges(shape, p - New Vector(obstacles.X0(s), obstacles.Y0(s)), near, first, second)
+            If faces = 1 Then
+                AddWorld(slot, c.Normal, obstacles.Shapes(s), WallSide.None, s, first)
+            Else
+                AddWorld(slot, c.Normal, obstacles.Shapes(s), WallSide.None, If(shape.Radius > 0, BodyTable.SupportBody, BodyTable.SupportNone), -1)
+            End If
         Next
         Dim count = GridNeighbours.Collect(_s, i, _neighbours)
         For q = 0 To count - 1
             Dim j = _neighbours(q)
             If b.Mode(j) = BodyMode.Rounding Then Continue For
-            Dim pj = b.PositionAt(j, _s.Now)
-            Dim c = Collider.CircleCircle(p, r, pj, b.Motion(j).R)
+            Dim c = ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now))
             If c.Depth < -near Then Continue For
             Dim key = CLng(Math.Min(i, j)) * Integer.MaxValue + Math.Max(i, j)
             If Not _pairs.Add(key) Then Continue For
@@ -144,17 +150,17 @@ Friend NotInheritable Class ClusterResponse
             _contacts.Add(New ClusterContact(slot, other, c.Normal))
             _against.Add(b.Shapes(j))
             _side.Add(WallSide.None)
-            _kind.Add(CollisionKind.CircleCircle)
             _support.Add(BodyTable.SupportBody)
+            _supportEdge.Add(-1)
         Next
     End Sub
 
-    Private Sub AddWorld(slot As Integer, normal As Vector, other As Shape, side As WallSide, kind As CollisionKind, support As Integer)
+    Private Sub AddWorld(slot As Integer, normal As Vector, other As Shape, side As WallSide, support As Integer, edge As Integer)
         _contacts.Add(New ClusterContact(slot, ClusterContact.World, normal))
         _against.Add(other)
         _side.Add(side)
-        _kind.Add(kind)
         _support.Add(support)
+        _supportEdge.Add(edge)
     End Sub
 
     ''' <summary>
@@ -185,7 +191,7 @@ Friend NotInheritable Class ClusterResponse
             ' Wedged between several: a hop off one support would only drive it into another.
             If best < 0 OrElse (immovableContacts > 1 AndAlso bestUp < 1 - 1.0E-12) Then Continue For
             Dim s = If(_contacts(best).BodyB = ClusterContact.World, Vector.Zero, _velocity(_contacts(best).BodyB))
-            _rest.AfterSupportContact(i, _contacts(best).Normal, _support(best), s.X, s.Y)
+            _rest.AfterSupportContact(i, _contacts(best).Normal, _support(best), _supportEdge(best), s.X, s.Y)
             _s.Changed(i)
         Next
     End Sub
@@ -209,7 +215,8 @@ Friend NotInheritable Class ClusterResponse
                 bBefore = _velocity(other)
                 bAfter = bBefore - n * (j * _inverseMass(other))
             End If
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, DirectCast(b.Shapes(_members(a)), Circle), _against(c), _side(c), _kind(c),
+            Dim body = b.Shapes(_members(a))
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, body, _against(c), _side(c), ContactRules.KindOf(body, _against(c)),
                                                          aBefore, aAfter, bBefore, bAfter))
         Next
     End Sub

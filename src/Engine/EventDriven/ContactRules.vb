@@ -1,91 +1,149 @@
 Option Strict On
 
 ''' <summary>
-''' The one place that says, for each pair of body kinds, which time-of-impact function finds their
-''' contact and what the contact normal is when they touch (docs/event-driven.md §2–3). The solver's
-''' other parts ask here and never look at a body's shape themselves.
+''' The one place that says, for each pair of body kinds, which maths finds their contact and its
+''' normal (docs/event-driven.md §2–3): <see cref="RuleFor"/> is the dispatch, and a new pair of kinds
+''' is a new <see cref="IContactRule"/> registered there. The solver's other parts ask here and never
+''' look at a body's shape themselves. Also here: the container's walls, which every body meets by
+''' the extents of its outline, and the contact geometry the resting rules need.
 ''' </summary>
 Friend Module ContactRules
-    ''' <summary>
-    ''' Two movable circles whose centres are (dx, dy) apart (A − B), with relative velocity (dvx, dvy)
-    ''' and relative acceleration (dax, day): when they touch (s from now; +∞ if not before <paramref name="horizon"/> s), see <see cref="TimeOfImpact.CircleCircle(Double, Double, Double, Double, Double, Double, Double, Double, Double)"/>.
-    ''' </summary>
-    Friend Function TimeBetweenBodies(dx As Double, dy As Double, dvx As Double, dvy As Double, dax As Double, day As Double,
-                                      sumRadii As Double, slop As Double, speedScale As Double, horizon As Double) As Double
-        ' Relative to B, A's centre must come within R of the origin: not before the horizon, no root finding.
-        If (dax <> 0 OrElse day <> 0) AndAlso
-           Not PathBox.MayReach(dx, dy, dvx, dvy, dax, day, horizon, 0, 0, 0, 0, sumRadii + slop) Then Return Double.PositiveInfinity
-        Return TimeOfImpact.CircleCircle(dx, dy, dvx, dvy, dax, day, sumRadii, slop, speedScale)
+    Private ReadOnly CirclePair As New CircleCircleRule()
+    Private ReadOnly CircleBox As New CircleBoxRule()
+    Private ReadOnly AnyPair As New OutlineRule()
+
+    ''' <summary>The rule for a moving body A (a circle or not) against a body B of the given kind.</summary>
+    Friend Function RuleFor(aIsCircle As Boolean, b As ShapeKind) As IContactRule
+        If aIsCircle Then
+            If b = ShapeKind.Circle Then Return CirclePair
+            If b = ShapeKind.Rectangle Then Return CircleBox
+        End If
+        Return AnyPair
     End Function
 
-    ''' <summary>
-    ''' A movable circle of radius r (centre p, velocity v, vertical acceleration ay) against obstacle s:
-    ''' when it touches (s from now, +∞ if never or not within <paramref name="horizon"/> s), and which
-    ''' feature (face or corner) it touches.
-    ''' </summary>
-    Friend Function TimeToObstacle(o As Obstacles, s As Integer, px As Double, py As Double, vx As Double, vy As Double,
-                                   ay As Double, r As Double, slop As Double, horizon As Double, ByRef feature As Integer) As Double
+    ''' <summary>The query for movable body i against movable body j at the clock (both not sliding round a corner).</summary>
+    Friend Function BodyQuery(s As SolverState, i As Integer, j As Integer, slop As Double, horizon As Double) As ContactQuery
+        Dim b = s.Bodies
+        Dim xi, yi, vxi, vyi, xj, yj, vxj, vyj As Double
+        b.Motion(i).StateAt(s.Now, xi, yi, vxi, vyi)
+        b.Motion(j).StateAt(s.Now, xj, yj, vxj, vyj)
+        Return New ContactQuery With {
+            .A = b.Outlines(i), .B = b.Outlines(j), .D = New Vector(xi - xj, yi - yj), .Dv = New Vector(vxi - vxj, vyi - vyj),
+            .Da = New Vector(b.Motion(i).Ax - b.Motion(j).Ax, b.Motion(i).Ay - b.Motion(j).Ay), .Slop = slop,
+            .SpeedScale = Math.Abs(vxi) + Math.Abs(vyi) + Math.Abs(vxj) + Math.Abs(vyj), .Horizon = horizon, .Shapes = s.Shapes}
+    End Function
+
+    ''' <summary>The query for movable body i (at (px, py), velocity, acceleration) against obstacle k.</summary>
+    Friend Function ObstacleQuery(s As SolverState, i As Integer, k As Integer, px As Double, py As Double, vx As Double, vy As Double,
+                                  ax As Double, ay As Double, slop As Double, horizon As Double) As ContactQuery
+        Dim o = s.Obstacles
+        Return New ContactQuery With {
+            .A = s.Bodies.Outlines(i), .B = o.Outlines(k), .D = New Vector(px - o.X0(k), py - o.Y0(k)), .Dv = New Vector(vx, vy),
+            .Da = New Vector(ax, ay), .Slop = slop, .SpeedScale = 0, .Horizon = horizon, .Shapes = s.Shapes}
+    End Function
+
+    ''' <summary>Movable bodies i and j: when they touch (s from now; +∞ if not before <paramref name="horizon"/> s), and which feature.</summary>
+    Friend Function TimeBetweenBodies(s As SolverState, i As Integer, j As Integer, slop As Double, horizon As Double, ByRef feature As Integer) As Double
+        Dim q = BodyQuery(s, i, j, slop, horizon)
+        Return RuleFor(s.Bodies.IsCircle(i), s.Bodies.Shapes(j).Kind).TimeOfImpact(q, feature)
+    End Function
+
+    ''' <summary>Movable body i, at (px, py) with the given velocity and acceleration, against obstacle k.</summary>
+    Friend Function TimeToObstacle(s As SolverState, i As Integer, k As Integer, px As Double, py As Double, vx As Double, vy As Double,
+                                   ax As Double, ay As Double, slop As Double, horizon As Double, ByRef feature As Integer) As Double
+        Dim o = s.Obstacles
         ' Most obstacles in a body's cell are out of its reach before its next event or cell crossing:
         ' a box test spares the root finding (quartics, for corners under gravity).
         Dim xmin, ymin, xmax, ymax As Double
-        o.Bounds(s, xmin, ymin, xmax, ymax)
-        If Not PathBox.MayReach(px, py, vx, vy, 0, ay, horizon, xmin, ymin, xmax, ymax, r + slop) Then Return Double.PositiveInfinity
-        Select Case o.Kind(s)
-            Case ObstacleKind.Circle
-                feature = 0
-                Return TimeOfImpact.CircleCircle(px - o.X0(s), py - o.Y0(s), vx, vy, ay, r + o.Radius(s), slop)
-            Case Else
-                Return TimeOfImpact.CircleRectangle(px, py, vx, vy, ay, r, o.X0(s), o.Y0(s), o.X1(s), o.Y1(s), slop, horizon, feature)
-        End Select
+        o.Bounds(k, xmin, ymin, xmax, ymax)
+        If Not PathBox.MayReach(px, py, vx, vy, ax, ay, horizon, xmin, ymin, xmax, ymax, s.Bodies.Reach(i) + slop) Then Return Double.PositiveInfinity
+        Dim q = ObstacleQuery(s, i, k, px, py, vx, vy, ax, ay, slop, horizon)
+        Return RuleFor(s.Bodies.IsCircle(i), o.Kind(k)).TimeOfImpact(q, feature)
     End Function
 
     ''' <summary>
-    ''' The contact of a circle of radius r, centre (px, py), touching <paramref name="feature"/> of
-    ''' obstacle s: the unit normal from the obstacle towards the circle. A face contact snaps the
-    ''' centre onto the face (the contact is exact, so rounding never accumulates over many bounces).
-    ''' <paramref name="upwardFace"/> is True for the top face of a rectangle: something can rest on it.
+    ''' The unit normal from obstacle k towards body i (its reference point at (px, py)), touching the
+    ''' given feature. A face contact moves the body onto the face exactly (the contact is exact, so
+    ''' rounding never accumulates over many bounces).
     ''' </summary>
-    Friend Function ObstacleNormal(o As Obstacles, s As Integer, feature As Integer, r As Double,
-                                   ByRef px As Double, ByRef py As Double, ByRef upwardFace As Boolean) As Vector
-        upwardFace = False
-        If o.Kind(s) = ObstacleKind.Circle Then
-            Return New Vector(px - o.X0(s), py - o.Y0(s)).Normalized(New Vector(0, 1))
-        End If
-        Select Case feature
-            Case 0 : px = Math.Min(px, o.X0(s) - r) : Return New Vector(-1, 0)
-            Case 1 : px = Math.Max(px, o.X1(s) + r) : Return New Vector(1, 0)
-            Case 2 : py = Math.Min(py, o.Y0(s) - r) : Return New Vector(0, -1)
-            Case 3 : py = Math.Max(py, o.Y1(s) + r) : upwardFace = True : Return New Vector(0, 1)
-            Case Else
-                Dim cx = If(((feature - 4) And 1) = 0, o.X0(s), o.X1(s))
-                Dim cy = If(((feature - 4) And 2) = 0, o.Y0(s), o.Y1(s))
-                Return New Vector(px - cx, py - cy).Normalized(New Vector(0, 1))
-        End Select
-    End Function
-
-    ''' <summary>How the outputs name a collision with obstacle s.</summary>
-    Friend Function KindOfObstacle(o As Obstacles, s As Integer) As CollisionKind
-        Return If(o.Kind(s) = ObstacleKind.Circle, CollisionKind.CircleFixed, CollisionKind.CircleRectangle)
+    Friend Function NormalAtObstacle(s As SolverState, i As Integer, k As Integer, feature As Integer, ByRef px As Double, ByRef py As Double) As Vector
+        Dim q = ObstacleQuery(s, i, k, px, py, 0, 0, 0, 0, SolverState.SlopAt(px, py), Double.PositiveInfinity)
+        Dim correction As Double
+        Dim n = RuleFor(s.Bodies.IsCircle(i), s.Obstacles.Kind(k)).Normal(q, feature, correction)
+        px += n.X * correction
+        py += n.Y * correction
+        Return n
     End Function
 
     ''' <summary>
-    ''' A body resting on top of obstacle s, its reference point at x (m) moving at vx (m/s) along the
-    ''' top: when it reaches the end of the top (s from now; negative if already past it).
+    ''' The unit normal from body j towards body i where they touch now. Two circles: the line between
+    ''' their centres. Otherwise the face of their pair shape that i's reference point lies on (the
+    ''' corner-on-corner rule where it lies on two), or the line from its nearest rounded corner.
     ''' </summary>
-    Friend Function TimeToLeaveTop(o As Obstacles, s As Integer, x As Double, vx As Double) As Double
-        Return If(vx > 0, (o.X1(s) - x) / vx, (o.X0(s) - x) / vx)
+    Friend Function NormalBetweenBodies(s As SolverState, i As Integer, j As Integer) As Vector
+        Dim b = s.Bodies
+        Dim pi = b.PositionAt(i, s.Now), pj = b.PositionAt(j, s.Now)
+        Dim k = s.Shapes.Difference(b.Outlines(j), b.Outlines(i))
+        Dim d = pi - pj
+        Dim slop = SolverState.SlopAt(pi.X, pi.Y)
+        Dim first, second As Integer
+        If OutlineContact.TouchingEdges(k, d, 4 * slop, first, second) > 0 Then Return OutlineContact.ContactNormal(k, d, first, 4 * slop)
+        Return OutlineContact.Penetration(k, d).Normal
     End Function
 
-    ''' <summary>The point (m) of obstacle s's top edge where a body leaving it in direction sign(vx) goes over: the corner it may slide round.</summary>
-    Friend Function TopCorner(o As Obstacles, s As Integer, vx As Double) As Vector
-        Return New Vector(If(vx > 0, o.X1(s), o.X0(s)), o.Y1(s))
+    ''' <summary>The face (an edge of the pair shape of body i and obstacle k) that a contact feature is, or −1 for a corner.</summary>
+    Friend Function FaceOf(s As SolverState, i As Integer, k As Integer, feature As Integer) As Integer
+        Dim shape = s.Shapes.Difference(s.Obstacles.Outlines(k), s.Bodies.Outlines(i))
+        Return If(feature >= 0 AndAlso feature < shape.EdgeCount, feature, -1)
     End Function
 
-    ''' <summary>How much body i overlaps obstacle s (m; ≤ 0 when apart), with the normal towards the body.</summary>
-    Friend Function Overlap(o As Obstacles, s As Integer, p As Vector, r As Double) As Contact
-        If o.Kind(s) = ObstacleKind.Circle Then
-            Return Collider.CircleCircle(p, r, New Vector(o.X0(s), o.Y0(s)), o.Radius(s))
-        End If
-        Return Collider.CircleRectangle(p, r, New Vector(o.X0(s), o.Y0(s)), New Vector(o.X1(s), o.Y1(s)))
+    ''' <summary>Whether a contact feature of body i and obstacle k is a rounded corner (a curved support).</summary>
+    Friend Function IsRoundedCorner(s As SolverState, i As Integer, k As Integer, feature As Integer) As Boolean
+        Dim shape = s.Shapes.Difference(s.Obstacles.Outlines(k), s.Bodies.Outlines(i))
+        Return shape.Radius > 0 AndAlso feature >= shape.EdgeCount
+    End Function
+
+    ''' <summary>How the outputs' enumeration names a pair (the kind name itself comes from the shapes).</summary>
+    Friend Function KindOf(a As Shape, b As Shape) As CollisionKind
+        If a.Kind <> ShapeKind.Circle Then Return CollisionKind.Other
+        If b Is Nothing Then Return CollisionKind.CircleWall
+        Select Case b.Kind
+            Case ShapeKind.Circle : Return If(b.IsFixed, CollisionKind.CircleFixed, CollisionKind.CircleCircle)
+            Case ShapeKind.Rectangle : Return CollisionKind.CircleRectangle
+            Case Else : Return CollisionKind.Other
+        End Select
+    End Function
+
+    ''' <summary>How much body i (its reference point at p) overlaps obstacle k (m; ≤ 0 when apart), with the normal towards the body.</summary>
+    Friend Function OverlapWithObstacle(s As SolverState, i As Integer, k As Integer, p As Vector) As Contact
+        Dim o = s.Obstacles
+        Return OutlineContact.Penetration(s.Shapes.Difference(o.Outlines(k), s.Bodies.Outlines(i)), p - New Vector(o.X0(k), o.Y0(k)))
+    End Function
+
+    ''' <summary>How much body i (at pi) overlaps body j (at pj) (m; ≤ 0 when apart), with the normal from j towards i.</summary>
+    Friend Function OverlapWithBody(s As SolverState, i As Integer, j As Integer, pi As Vector, pj As Vector) As Contact
+        Dim b = s.Bodies
+        If b.IsCircle(i) AndAlso b.IsCircle(j) Then Return Collider.CircleCircle(pi, b.Motion(i).R, pj, b.Motion(j).R)
+        Return OutlineContact.Penetration(s.Shapes.Difference(b.Outlines(j), b.Outlines(i)), pi - pj)
+    End Function
+
+    ''' <summary>
+    ''' A body supported on face e of obstacle k's pair shape, its reference point at p (m) moving with
+    ''' v (m/s) and a (m/s²) along the face: when it reaches an end of the face (s from now; +∞ if it
+    ''' never does), and which end (True: the far end, where face e meets face e + 1).
+    ''' </summary>
+    Friend Function TimeToLeaveFace(s As SolverState, i As Integer, k As Integer, e As Integer, p As Vector, v As Vector, a As Vector,
+                                    ByRef farEnd As Boolean) As Double
+        Dim shape = s.Shapes.Difference(s.Obstacles.Outlines(k), s.Bodies.Outlines(i))
+        Dim c0 = shape.Corners(e), c1 = shape.Corners((e + 1) Mod shape.VertexCount)
+        Dim length = shape.EdgeLengths(e)
+        Dim tangent = (c1 - c0) / length
+        ' Along the face: q(t) = q0 + u t + ½ w t², from 0 at the near end to L at the far end.
+        Dim d = p - New Vector(s.Obstacles.X0(k), s.Obstacles.Y0(k))
+        Dim q0 = Vector.Dot(d - c0, tangent), u = Vector.Dot(v, tangent), w = Vector.Dot(a, tangent)
+        Dim toFar = RootFinding.EarliestEntryQuadratic(-0.5 * w, -u, length - q0, 0)
+        Dim toNear = RootFinding.EarliestEntryQuadratic(0.5 * w, u, q0, 0)
+        farEnd = toFar <= toNear
+        Return Math.Min(toFar, toNear)
     End Function
 End Module

@@ -105,14 +105,14 @@ Public NotInheritable Class EventDrivenSolver
     ''' When a bouncing circle came to rest: the time (s) its infinite series of ever smaller bounces
     ''' ends, t + 2 v_n / (g (1 − e)). Nothing while it is not resting.
     ''' </summary>
-    Public Function RestTime(circle As Circle) As Double?
-        Return _rest.RestTime(circle)
+    Public Function RestTime(body As Shape) As Double?
+        Return _rest.RestTime(body)
     End Function
 
-    ''' <summary>True when the circle is asleep (part of a settled pile, acting as a fixed obstacle).</summary>
-    Public Function IsAsleep(circle As Circle) As Boolean
-        If circle Is Nothing OrElse _dirty Then Return False
-        Dim i = _s.Bodies.IndexOf(circle)
+    ''' <summary>True when the body is asleep (part of a settled pile, acting as a fixed obstacle).</summary>
+    Public Function IsAsleep(body As Shape) As Boolean
+        If body Is Nothing OrElse _dirty Then Return False
+        Dim i = _s.Bodies.IndexOf(body)
         Return i >= 0 AndAlso _s.Bodies.Mode(i) = BodyMode.Sleeping
     End Function
 
@@ -205,16 +205,15 @@ Public NotInheritable Class EventDrivenSolver
         Dim w = _s.World
         If _dirty OrElse w Is Nothing Then Return
         Dim i = _s.Bodies.IndexOf(body)
-        Dim c = TryCast(body, Circle)
-        If i < 0 OrElse c Is Nothing OrElse c.IsFixed OrElse Not w.Circles.Contains(c) Then
+        If i < 0 OrElse body.IsFixed OrElse Not w.Movables.Contains(body) Then
             _dirty = True
             Return
         End If
-        If OverlapsSomething(c) Then
+        If OverlapsSomething(body) Then
             _dirty = True ' the rebuild pushes the overlap apart first
             Return
         End If
-        _rest.ForgetRest(c)
+        _rest.ForgetRest(body)
         _s.Bodies.Reload(i, w, _s.Now)
         _s.Changed(i)
         _s.MoveToCellOfPosition(i)
@@ -234,6 +233,7 @@ Public NotInheritable Class EventDrivenSolver
         _s.Now = w.Time
         _s.Obstacles.Load(w)
         _s.Bodies.Load(w, _s.Now)
+        _s.Shapes.Clear()
         Dim n = _s.Bodies.Count
         _s.Touched.Reset(n)
         _predictor.Reset(n)
@@ -247,22 +247,25 @@ Public NotInheritable Class EventDrivenSolver
         _dirty = False
     End Sub
 
-    ''' <summary>Whether circle c (just moved or added by the user) overlaps anything beyond rounding.</summary>
-    Private Function OverlapsSomething(c As Circle) As Boolean
+    ''' <summary>Whether body c (just moved or added by the user) overlaps anything it collides with, beyond rounding.</summary>
+    Private Function OverlapsSomething(c As Shape) As Boolean
         Dim tol = SolverState.SlopAt(c.Position.X, c.Position.Y)
-        For Each o In _s.World.Circles
+        For Each o In _s.World.Bodies
             If o Is c Then Continue For
-            If Collider.CircleCircle(c.Position, c.Radius, o.Position, o.Radius).Depth > tol Then Return True
-        Next
-        For Each r In _s.World.Rectangles
-            If Collider.CircleRectangle(c.Position, c.Radius, r.Min, r.Max).Depth > tol Then Return True
+            Dim depth As Double
+            If c.Kind = ShapeKind.Circle AndAlso o.Kind = ShapeKind.Circle Then
+                depth = c.Outline.Radius + o.Outline.Radius - (c.Position - o.Position).Length
+            Else
+                depth = OutlineContact.Penetration(_s.Shapes.Difference(o.Outline, c.Outline), c.Position - o.Position).Depth
+            End If
+            If depth > tol Then Return True
         Next
         Return False
     End Function
 
     ''' <summary>The dragged body moves in a straight line to its target over this advance, with no gravity.</summary>
     Private Sub StartDrag(duration As Double)
-        Dim i = _s.Bodies.IndexOf(_s.World.DraggedCircle)
+        Dim i = _s.Bodies.IndexOf(_s.World.DraggedBody)
         If i < 0 Then Return
         _s.Sync(i)
         Dim target = _s.World.DragTarget
@@ -280,9 +283,9 @@ Public NotInheritable Class EventDrivenSolver
     ''' <summary>Writes every movable body's exact state at <paramref name="t"/> back to the model.</summary>
     Private Sub WriteBack(t As Double)
         Dim b = _s.Bodies
-        Dim dragged = _s.World.DraggedCircle
+        Dim dragged = _s.World.DraggedBody
         For i = 0 To b.Count - 1
-            Dim c = DirectCast(b.Shapes(i), Circle)
+            Dim c = b.Shapes(i)
             If b.Mode(i) = BodyMode.Rounding Then
                 Dim position, velocity As Vector
                 _slides.StateAt(i, t, position, velocity)

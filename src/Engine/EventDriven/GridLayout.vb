@@ -13,8 +13,8 @@ Friend Module GridLayout
 
     ''' <summary>
     ''' Cells holding about <paramref name="perCell"/> bodies each (few crossings, few neighbours),
-    ''' never narrower than the largest gridded diameter. Bodies more than four times the median radius
-    ''' are "oversized": kept out of the grid and checked against every body, so one giant does not
+    ''' never narrower than the largest gridded diameter. Bodies reaching more than four times the median
+    ''' from their reference point are "oversized": kept out of the grid and checked against every body, so one giant does not
     ''' make every cell huge. Every body is filed in its cell and published; every obstacle is listed
     ''' in the cells it can be touched from.
     ''' </summary>
@@ -25,7 +25,7 @@ Friend Module GridLayout
         If n > 0 Then
             Dim radii = New Double(n - 1) {}
             For k = 0 To n - 1
-                radii(k) = b.Motion(k).R
+                radii(k) = b.Reach(k)
             Next
             Array.Sort(radii)
             limit = 4 * radii(n \ 2)
@@ -34,11 +34,11 @@ Friend Module GridLayout
         Dim rMax = 0.0
         s.OversizedCount = 0
         For i = 0 To n - 1
-            If b.Motion(i).R > limit Then
+            If b.Reach(i) > limit Then
                 s.Oversized(s.OversizedCount) = i
                 s.OversizedCount += 1
             Else
-                rMax = Math.Max(rMax, b.Motion(i).R)
+                rMax = Math.Max(rMax, b.Reach(i))
             End If
         Next
         s.RMax = rMax
@@ -46,7 +46,7 @@ Friend Module GridLayout
         Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(perCell * s.Width * s.Height / gridded))
         s.Grid.Layout(s.Width, s.Height, cell, n, 4 * n + 64)
         For i = 0 To n - 1
-            If b.Motion(i).R > limit Then
+            If b.Reach(i) > limit Then
                 b.Slot(i).Cell = -1
             Else
                 b.Slot(i).Col = s.Grid.ColumnOf(b.Motion(i).Px)

@@ -34,9 +34,12 @@ Friend Structure LaneBlock
         Put(Me.ColTime, k, colTime)
     End Sub
 
-    ''' <summary>The vertical acceleration a lane shows: NaN when there is a horizontal one too (see the type).</summary>
+    ''' <summary>
+    ''' The vertical acceleration a lane shows: NaN when there is a horizontal one too, or when the body
+    ''' is not a circle (R = 0: a polygon), whose pairs the quadratic of two circles does not describe.
+    ''' </summary>
     Friend Shared Function PublishedAy(ByRef state As Motion) As Double
-        Return If(state.Ax = 0, state.Ay, Double.NaN)
+        Return If(state.Ax = 0 AndAlso state.R > 0, state.Ay, Double.NaN)
     End Function
 
     ''' <summary>Writes one body's next collision time (s) into lane k (0 … 3).</summary>

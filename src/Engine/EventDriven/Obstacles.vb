@@ -2,68 +2,70 @@ Option Strict On
 
 ''' <summary>
 ''' The fixed bodies as the event-driven solver sees them, numbered 0 … Count − 1 (fixed circles
-''' first, then rectangles, each in the world's order): what kind each is, where it is, and its
-''' bounding box, which the grid uses to list it in the cells it can be touched from. Fixed bodies
-''' never move, so this is read once per rebuild.
+''' first, then rectangles, segments and polygons, each in the world's order): what kind each is,
+''' where it is, its outline and its bounding box, which the grid uses to list it in the cells it can
+''' be touched from. Fixed bodies never move, so this is read once per rebuild.
 ''' </summary>
 Friend NotInheritable Class Obstacles
     Friend Count As Integer
     Friend Shapes As Shape() = Array.Empty(Of Shape)()
-    Friend Kind As ObstacleKind() = Array.Empty(Of ObstacleKind)()
-    ''' <summary>A fixed circle's centre and radius (m); a rectangle's lower-left (X0, Y0) and upper-right (X1, Y1) corners (m).</summary>
+    Friend Kind As ShapeKind() = Array.Empty(Of ShapeKind)()
+    ''' <summary>Reference point, m: a fixed circle's centre, a rectangle's lower-left corner, a segment's first end, a polygon's centroid.</summary>
     Friend X0 As Double() = Array.Empty(Of Double)()
     Friend Y0 As Double() = Array.Empty(Of Double)()
+    ''' <summary>A rectangle's upper-right corner, m (a circle: its centre again).</summary>
     Friend X1 As Double() = Array.Empty(Of Double)()
     Friend Y1 As Double() = Array.Empty(Of Double)()
+    ''' <summary>A fixed circle's radius, m (0 for the others).</summary>
     Friend Radius As Double() = Array.Empty(Of Double)()
+    Friend Outlines As Outline() = Array.Empty(Of Outline)()
 
     Friend Sub Load(world As World)
-        Dim n = world.Rectangles.Count
+        Dim list As New List(Of Shape)
         For Each c In world.Circles
-            If c.IsFixed Then n += 1
+            If c.IsFixed Then list.Add(c)
         Next
+        For Each r In world.Rectangles
+            If r.IsFixed Then list.Add(r)
+        Next
+        list.AddRange(world.Segments)
+        For Each p In world.Polygons
+            If p.IsFixed Then list.Add(p)
+        Next
+        Dim n = list.Count
         Count = n
-        Shapes = New Shape(n - 1) {}
-        Kind = New ObstacleKind(n - 1) {}
+        Shapes = list.ToArray()
+        Kind = New ShapeKind(n - 1) {}
         X0 = New Double(n - 1) {}
         Y0 = New Double(n - 1) {}
         X1 = New Double(n - 1) {}
         Y1 = New Double(n - 1) {}
         Radius = New Double(n - 1) {}
-        Dim k = 0
-        For Each c In world.Circles
-            If Not c.IsFixed Then Continue For
-            Shapes(k) = c
-            Kind(k) = ObstacleKind.Circle
-            X0(k) = c.Position.X
-            Y0(k) = c.Position.Y
-            X1(k) = c.Position.X
-            Y1(k) = c.Position.Y
-            Radius(k) = c.Radius
-            k += 1
-        Next
-        For Each r In world.Rectangles
-            Shapes(k) = r
-            Kind(k) = ObstacleKind.Rectangle
-            X0(k) = r.Min.X
-            Y0(k) = r.Min.Y
-            X1(k) = r.Max.X
-            Y1(k) = r.Max.Y
-            k += 1
+        Outlines = New Outline(n - 1) {}
+        For k = 0 To n - 1
+            Dim s = Shapes(k)
+            Kind(k) = s.Kind
+            Outlines(k) = s.Outline
+            X0(k) = s.Position.X
+            Y0(k) = s.Position.Y
+            Radius(k) = s.Outline.Radius
+            If s.Kind = ShapeKind.Rectangle Then
+                Dim r = DirectCast(s, Rectangle)
+                X1(k) = r.Max.X
+                Y1(k) = r.Max.Y
+            Else
+                X1(k) = X0(k)
+                Y1(k) = Y0(k)
+            End If
         Next
     End Sub
 
     ''' <summary>Obstacle k's bounding box, m.</summary>
     Friend Sub Bounds(k As Integer, ByRef xmin As Double, ByRef ymin As Double, ByRef xmax As Double, ByRef ymax As Double)
-        xmin = X0(k) - Radius(k)
-        ymin = Y0(k) - Radius(k)
-        xmax = X1(k) + Radius(k)
-        ymax = Y1(k) + Radius(k)
+        Dim o = Outlines(k)
+        xmin = X0(k) + o.MinX
+        ymin = Y0(k) + o.MinY
+        xmax = X0(k) + o.MaxX
+        ymax = Y0(k) + o.MaxY
     End Sub
 End Class
-
-''' <summary>The kinds of fixed body.</summary>
-Friend Enum ObstacleKind As Byte
-    Circle
-    Rectangle
-End Enum

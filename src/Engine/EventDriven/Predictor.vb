@@ -74,11 +74,11 @@ Friend NotInheritable Class Predictor
                 ' suffices, and only until it leaves the cell: the next cell's obstacles are tested then.
                 Dim c = b.Slot(i).Cell
                 For s = _s.Grid.StaticStart(c) To _s.Grid.StaticStart(c + 1) - 1
-                    CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, slop, exitTime, best, kind, other, feature)
+                    CheckObstacle(i, _s.Grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
                 Next
             Else
                 For s = 0 To _s.Obstacles.Count - 1
-                    CheckObstacle(s, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other, feature)
+                    CheckObstacle(i, s, px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
                 Next
             End If
         End If
@@ -93,10 +93,11 @@ Friend NotInheritable Class Predictor
                 If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
             Next
         End If
-        ' A supported body reaching the end of the obstacle it rests on.
-        If m = BodyMode.Supported AndAlso b.Support(i) >= 0 AndAlso vx <> 0 Then
-            Dim t = ContactRules.TimeToLeaveTop(_s.Obstacles, b.Support(i), px, vx)
-            If t < best Then best = Math.Max(0, t) : kind = EventKind.LeaveSupport : other = b.Support(i) : feature = 0
+        ' A supported body reaching an end of the face it rests on.
+        If m = BodyMode.Supported AndAlso b.Support(i) >= 0 Then
+            Dim farEnd As Boolean
+            Dim t = ContactRules.TimeToLeaveFace(_s, i, b.Support(i), b.SupportEdge(i), New Vector(px, py), New Vector(vx, vy), New Vector(ax, ay), farEnd)
+            If t < best Then best = Math.Max(0, t) : kind = EventKind.LeaveSupport : other = b.Support(i) : feature = If(farEnd, 1, 0)
         End If
         File(i, best, kind, other, feature, exitTime, dir)
     End Sub
@@ -132,6 +133,7 @@ Friend NotInheritable Class Predictor
         Dim px, py, vx, vy As Double
         b.Motion(i).StateAt(_s.Now, px, py, vx, vy)
         Dim r = b.Motion(i).R
+        Dim ax = b.Motion(i).Ax
         Dim slop = SolverState.SlopAt(px, py)
         Dim asleep = m = BodyMode.Sleeping
         Dim exitDir = 0
@@ -139,7 +141,7 @@ Friend NotInheritable Class Predictor
         If m = BodyMode.Free OrElse m = BodyMode.Supported Then
             If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
             For s = _s.Grid.StaticStart(target) To _s.Grid.StaticStart(target + 1) - 1
-                CheckObstacle(_s.Grid.StaticItems(s), px, py, vx, vy, ay, r, slop, exitTime, best, kind, other, feature)
+                CheckObstacle(i, _s.Grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
             Next
         End If
         Dim c0, c1, r0, r1 As Integer
@@ -164,8 +166,8 @@ Friend NotInheritable Class Predictor
             Dim sr = skip \ grid.Nx, sc = skip - sr * grid.Nx
             If sc >= c0 AndAlso sc <= c1 AndAlso sr >= r0 AndAlso sr <= r1 Then _s.CellsSearched -= 1
         End If
-        ' A body asleep, or whose acceleration is not vertical (sliding down a slope), takes no hot path.
-        Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0
+        ' A body asleep, not a circle, or whose acceleration is not vertical (sliding down a slope), takes no hot path.
+        Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0 OrElse Not _s.Bodies.IsCircle(i)
 #If NET Then
         If VectorScan Then
             ScanLanesVector(i, c0, c1, r0, r1, skip, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
@@ -206,7 +208,7 @@ Friend NotInheritable Class Predictor
                 End If
                 For q = 0 To n - 1
                     Dim j = listed(q)
-                    If motion(j).Ay = ay AndAlso motion(j).Ax = 0 AndAlso Not slowOnly Then
+                    If motion(j).Ay = ay AndAlso motion(j).Ax = 0 AndAlso motion(j).R > 0 AndAlso Not slowOnly Then
                         ' Hot path (the elastic gas): the same acceleration, so the relative motion is a
                         ' straight line and the contact time is the smaller root of a quadratic. The root
                         ' is computed for every candidate and the tests combined into one condition: which
@@ -360,36 +362,39 @@ Friend NotInheritable Class Predictor
     Private Sub CheckWalls(i As Integer, free As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
                            r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef feature As Integer)
         Dim slot = _s.Bodies.Slot
+        Dim o = _s.Bodies.Outlines(i)
+        Dim ax = _s.Bodies.Motion(i).Ax
         Dim all = slot(i).Cell < 0
         Dim col = slot(i).Col, row = slot(i).Row
-        ' Each wall's gap is measured along one axis, so its tolerance follows that coordinate alone.
+        ' Each wall's gap is measured along one axis (from the outline's extent on that side), so its
+        ' tolerance follows that coordinate alone.
         Dim slop = SolverState.SlopAlong(px)
         Dim t As Double
         If all OrElse col = 0 Then
-            t = TimeOfImpact.GapCloses(px - r, vx, 0, slop)
+            t = TimeOfImpact.GapCloses(px + o.MinX, vx, ax, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Left
         End If
         If all OrElse col = _s.Grid.Nx - 1 Then
-            t = TimeOfImpact.GapCloses(_s.Width - r - px, -vx, 0, slop)
+            t = TimeOfImpact.GapCloses(_s.Width - o.MaxX - px, -vx, -ax, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Right
         End If
         If Not free Then Return
         slop = SolverState.SlopAlong(py)
         If all OrElse row = 0 Then
-            t = TimeOfImpact.GapCloses(py - r, vy, ay, slop)
+            t = TimeOfImpact.GapCloses(py + o.MinY, vy, ay, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Bottom
         End If
         If all OrElse row = _s.Grid.Ny - 1 Then
-            t = TimeOfImpact.GapCloses(_s.Height - r - py, -vy, -ay, slop)
+            t = TimeOfImpact.GapCloses(_s.Height - o.MaxY - py, -vy, -ay, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Top
         End If
     End Sub
 
     ''' <summary>Body i against obstacle s, looking no further ahead than the best so far or <paramref name="until"/> (s from now).</summary>
-    Private Sub CheckObstacle(s As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
-                              until As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
+    Private Sub CheckObstacle(i As Integer, s As Integer, px As Double, py As Double, vx As Double, vy As Double, ax As Double, ay As Double,
+                              slop As Double, until As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
         Dim f As Integer
-        Dim t = ContactRules.TimeToObstacle(_s.Obstacles, s, px, py, vx, vy, ay, r, slop, Math.Min(best, until), f)
+        Dim t = ContactRules.TimeToObstacle(_s, i, s, px, py, vx, vy, ax, ay, slop, Math.Min(best, until), f)
         If t < best Then best = t : kind = EventKind.Obstacle : other = s : feature = f
     End Sub
 
@@ -421,10 +426,8 @@ Friend NotInheritable Class Predictor
             Return
         End If
         If asleep AndAlso mj = BodyMode.Sleeping Then Return
-        Dim xj, yj, vxj, vyj As Double
-        b.Motion(j).StateAt(_s.Now, xj, yj, vxj, vyj)
-        Dim t = ContactRules.TimeBetweenBodies(px - xj, py - yj, vx - vxj, vy - vyj, b.Motion(i).Ax - b.Motion(j).Ax, ay - b.Motion(j).Ay,
-                                               r + b.Motion(j).R, slop, Math.Abs(vx) + Math.Abs(vy) + Math.Abs(vxj) + Math.Abs(vyj), Math.Min(best, until))
+        Dim f As Integer
+        Dim t = ContactRules.TimeBetweenBodies(_s, i, j, slop, Math.Min(best, until), f)
         If t < best Then
             best = t
             kind = EventKind.Body
@@ -454,7 +457,7 @@ Friend NotInheritable Class Predictor
         PathBox.Bounds(px, py, vx, vy, ay, span, xlo, xhi, ylo, yhi)
         ' A body sliding round a corner is listed where it started the slide but can reach 3 r_max
         ' beyond; the margin covers rounding and the touching tolerance.
-        Dim reach = r + If(_s.Bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
+        Dim reach = _s.Bodies.Reach(i) + If(_s.Bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
         ' Written so that NaN keeps the neighbour.
         If xlo - reach >= col * grid.CellWidth Then c0 = col
         If xhi + reach <= (col + 1) * grid.CellWidth Then c1 = col

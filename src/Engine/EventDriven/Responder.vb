@@ -41,7 +41,7 @@ Friend NotInheritable Class Responder
             Case EventKind.Wall
                 CollideWall(i, CType(slot(i).Feature, WallSide))
             Case EventKind.LeaveSupport
-                LeaveSupport(i, slot(i).Other)
+                LeaveSupport(i, slot(i).Other, slot(i).Feature = 1)
             Case EventKind.CornerEnd
                 _slides.Finish(i)
             Case Else
@@ -52,31 +52,35 @@ Friend NotInheritable Class Responder
     Private Sub CollideWall(i As Integer, side As WallSide)
         _s.Sync(i)
         Dim m = _s.Bodies.Motion
+        Dim o = _s.Bodies.Outlines(i)
         Dim n As Vector
         ' Snap onto the wall: the contact is exact, so rounding never accumulates over many bounces.
         Select Case side
-            Case WallSide.Left : n = New Vector(1, 0) : m(i).Px = m(i).R
-            Case WallSide.Right : n = New Vector(-1, 0) : m(i).Px = _s.Width - m(i).R
-            Case WallSide.Bottom : n = New Vector(0, 1) : m(i).Py = m(i).R
-            Case Else : n = New Vector(0, -1) : m(i).Py = _s.Height - m(i).R
+            Case WallSide.Left : n = New Vector(1, 0) : m(i).Px = -o.MinX
+            Case WallSide.Right : n = New Vector(-1, 0) : m(i).Px = _s.Width - o.MaxX
+            Case WallSide.Bottom : n = New Vector(0, 1) : m(i).Py = -o.MinY
+            Case Else : n = New Vector(0, -1) : m(i).Py = _s.Height - o.MaxY
         End Select
-        CollideImmovable(i, n, Nothing, side, CollisionKind.CircleWall, If(side = WallSide.Bottom, BodyTable.SupportFloor, BodyTable.SupportNone))
+        CollideImmovable(i, n, Nothing, side, If(side = WallSide.Bottom, BodyTable.SupportFloor, BodyTable.SupportNone), -1)
     End Sub
 
     Private Sub CollideObstacle(i As Integer, s As Integer, feature As Integer)
         _s.Sync(i)
         Dim m = _s.Bodies.Motion
-        Dim upward As Boolean
-        Dim n = ContactRules.ObstacleNormal(_s.Obstacles, s, feature, m(i).R, m(i).Px, m(i).Py, upward)
-        Dim support = If(upward, s, If(_s.Obstacles.Kind(s) = ObstacleKind.Circle, BodyTable.SupportBody, BodyTable.SupportNone))
-        CollideImmovable(i, n, _s.Obstacles.Shapes(s), WallSide.None, ContactRules.KindOfObstacle(_s.Obstacles, s), support)
+        Dim n = ContactRules.NormalAtObstacle(_s, i, s, feature, m(i).Px, m(i).Py)
+        ' What it could rest on: a face of the obstacle (which one, to slide along and to leave at its
+        ' ends), or a rounded corner (a fixed circle, a rectangle's corner), which holds only from right above.
+        Dim edge = ContactRules.FaceOf(_s, i, s, feature)
+        Dim support = If(edge >= 0, s, If(ContactRules.IsRoundedCorner(_s, i, s, feature), BodyTable.SupportBody, BodyTable.SupportNone))
+        CollideImmovable(i, n, _s.Obstacles.Shapes(s), WallSide.None, support, edge)
     End Sub
 
     ''' <summary>
     ''' Body i (already at the clock) hits something of infinite mass along unit normal n (pointing
-    ''' towards i). <paramref name="support"/> names what it would rest on if n points straight up.
+    ''' towards i). <paramref name="support"/> names what it would rest on if n points straight up
+    ''' (and <paramref name="edge"/> which face of it).
     ''' </summary>
-    Private Sub CollideImmovable(i As Integer, n As Vector, other As Shape, side As WallSide, kind As CollisionKind, support As Integer)
+    Private Sub CollideImmovable(i As Integer, n As Vector, other As Shape, side As WallSide, support As Integer, edge As Integer)
         If _rest.HitTooOften(i) Then
             _clusters.Resolve(i)
             Return
@@ -93,11 +97,12 @@ Friend NotInheritable Class Responder
         b.Motion(i).Vx = after.X
         b.Motion(i).Vy = after.Y
         If approach < 0 Then
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, DirectCast(b.Shapes(i), Circle), other, side, kind, before, after, Vector.Zero, Vector.Zero))
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), other, side, ContactRules.KindOf(b.Shapes(i), other),
+                                                         before, after, Vector.Zero, Vector.Zero))
             _rest.NoteHit(i)
         End If
         If b.Mode(i) = BodyMode.Supported AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then _rest.MakeFree(i)
-        If b.Mode(i) = BodyMode.Free Then _rest.AfterSupportContact(i, n, support, 0, 0)
+        If b.Mode(i) = BodyMode.Free Then _rest.AfterSupportContact(i, n, support, edge, 0, 0)
         _s.Changed(i)
     End Sub
 
@@ -111,7 +116,9 @@ Friend NotInheritable Class Responder
             Return
         End If
         Dim m = b.Motion
-        Dim n = New Vector(m(i).Px - m(j).Px, m(i).Py - m(j).Py).Normalized(New Vector(0, 1))
+        Dim n = If(b.IsCircle(i) AndAlso b.IsCircle(j),
+                   New Vector(m(i).Px - m(j).Px, m(i).Py - m(j).Py).Normalized(New Vector(0, 1)),
+                   ContactRules.NormalBetweenBodies(_s, i, j))
         Dim vi = New Vector(m(i).Vx, m(i).Vy), vj = New Vector(m(j).Vx, m(j).Vy)
         Dim approach = Vector.Dot(vi - vj, n)
         Dim gentle = -approach < _rest.GentleSpeed(i, j)
@@ -137,7 +144,7 @@ Friend NotInheritable Class Responder
         _s.Publish(i)
         _s.Publish(j)
         If approach < 0 AndAlso (invI > 0 OrElse invJ > 0) Then
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, DirectCast(b.Shapes(i), Circle), b.Shapes(j), WallSide.None, CollisionKind.CircleCircle, vi, result.A, vj, result.B))
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), b.Shapes(j), WallSide.None, ContactRules.KindOf(b.Shapes(i), b.Shapes(j)), vi, result.A, vj, result.B))
             _rest.NoteHit(i)
             _rest.NoteHit(j)
         End If
@@ -145,12 +152,12 @@ Friend NotInheritable Class Responder
         If result.A <> vi AndAlso b.Mode(i) <> BodyMode.Dragged Then _rest.WakeFrom(i)
         If result.B <> vj AndAlso b.Mode(j) <> BodyMode.Dragged Then _rest.WakeFrom(j)
         If b.Mode(i) = BodyMode.Free AndAlso invJ = 0 AndAlso b.Mode(j) <> BodyMode.Dragged Then
-            _rest.AfterSupportContact(i, n, BodyTable.SupportBody, m(j).Vx, m(j).Vy)
+            _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy)
         ElseIf b.Mode(i) = BodyMode.Free Then
             _rest.SleepIfSettled(i)
         End If
         If b.Mode(j) = BodyMode.Free AndAlso invI = 0 AndAlso b.Mode(i) <> BodyMode.Dragged Then
-            _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, m(i).Vx, m(i).Vy)
+            _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy)
         ElseIf b.Mode(j) = BodyMode.Free Then
             _rest.SleepIfSettled(j)
         End If
@@ -159,18 +166,26 @@ Friend NotInheritable Class Responder
     End Sub
 
     ''' <summary>
-    ''' A supported body reached the end of the obstacle it rests on: fast enough (v² ≥ g r) it flies
-    ''' off on a parabola; slower, it slides round the corner until the normal force vanishes.
+    ''' A supported body reached an end of the face it rests on (the far end when <paramref name="farEnd"/>).
+    ''' Round a rounded corner (a circle's radius) it slides on until the normal force vanishes or the
+    ''' next face takes it, or flies off if it is too fast to follow the curve; past a sharp corner
+    ''' (a box's), it simply flies on.
     ''' </summary>
-    Private Sub LeaveSupport(i As Integer, s As Integer)
+    Private Sub LeaveSupport(i As Integer, s As Integer, farEnd As Boolean)
         _s.Sync(i)
-        Dim m = _s.Bodies.Motion
-        Dim vx = m(i).Vx
-        Dim corner = ContactRules.TopCorner(_s.Obstacles, s, vx)
-        m(i).Px = corner.X
-        m(i).Py = corner.Y + m(i).R
+        Dim b = _s.Bodies
+        Dim k = _s.Shapes.Difference(_s.Obstacles.Outlines(s), b.Outlines(i))
+        Dim e = b.SupportEdge(i)
+        Dim c = If(farEnd, (e + 1) Mod k.VertexCount, e)
+        Dim nextFace = If(farEnd, (e + 1) Mod k.EdgeCount, (e - 1 + k.EdgeCount) Mod k.EdgeCount)
+        Dim corner = New Vector(_s.Obstacles.X0(s), _s.Obstacles.Y0(s)) + k.Corners(c)
+        Dim n = k.EdgeNormals(e)
+        ' Exactly at the end of the face.
+        b.Motion(i).Px = corner.X + n.X * k.Radius
+        b.Motion(i).Py = corner.Y + n.Y * k.Radius
+        Dim v = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
         _rest.MakeFree(i)
-        If vx * vx < _s.G * m(i).R Then _slides.Start(i, corner.X, corner.Y, vx)
+        If k.Radius > 0 Then _slides.Start(i, corner.X, corner.Y, k.Radius, n, v, k.EdgeNormals(nextFace))
         _s.Changed(i)
     End Sub
 End Class

@@ -99,7 +99,7 @@ Friend NotInheritable Class RestRules
                     ' Only a sleeper (which never moves) may take a blow from above as the ground does:
                     ' treating a moving body as immovable can trap a ball in a cycle of instantaneous hits.
                     Dim dy = b.Motion(partner).Py - b.Motion(i).Py
-                    Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (b.Motion(i).R + b.Motion(partner).R)
+                    Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (b.Scale(i) + b.Scale(partner))
                     If above OrElse gentle Then Return 0
                 End If
                 Return b.InverseMass(i)
@@ -114,14 +114,14 @@ Friend NotInheritable Class RestRules
     ''' </summary>
     Friend Function EffectiveRestitution(i As Integer, j As Integer) As Double
         If _s.E >= 1 OrElse _s.G = 0 Then Return _s.E
-        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_s.Bodies.Motion(i).R, _s.Bodies.Motion(j).R) / _s.G)
+        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_s.Bodies.Scale(i), _s.Bodies.Scale(j)) / _s.G)
         If _s.Now - _lastHit(i) < tc AndAlso _s.Now - _lastHit(j) < tc Then Return 1.0
         Return _s.E
     End Function
 
     ''' <summary>Normal speed (m/s) below which a touch on a resting body does not wake it: 10 % of √(g r).</summary>
     Friend Function GentleSpeed(i As Integer, j As Integer) As Double
-        Return 0.1 * Math.Sqrt(_s.G * Math.Min(_s.Bodies.Motion(i).R, _s.Bodies.Motion(j).R))
+        Return 0.1 * Math.Sqrt(_s.G * Math.Min(_s.Bodies.Scale(i), _s.Bodies.Scale(j)))
     End Function
 
     ''' <summary>
@@ -150,10 +150,10 @@ Friend NotInheritable Class RestRules
     ''' a body at rest, moving at (sx, sy) m/s) with normal n: the resting and sleeping rules that end
     ''' the Zeno series. Speeds are relative to the support.
     ''' </summary>
-    Friend Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, sx As Double, sy As Double)
+    Friend Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, edge As Integer, sx As Double, sy As Double)
         If _s.G = 0 OrElse n.Y <= 0 Then Return
         Dim b = _s.Bodies
-        Dim r = b.Motion(i).R
+        Dim r = b.Scale(i)
         Dim rx = b.Motion(i).Vx - sx, ry = b.Motion(i).Vy - sy
         Dim vn = rx * n.X + ry * n.Y
         Dim speedScale = Math.Sqrt(_s.G * r)
@@ -165,7 +165,7 @@ Friend NotInheritable Class RestRules
         Dim seriesLeft = If(_s.E < 1, 2 * vn / (_s.G * (1 - _s.E)), Double.PositiveInfinity)
         Dim ended = seriesLeft <= RestWindow OrElse vn < 1.0E-6 * restSpeed
         If level AndAlso ended AndAlso (support <> BodyTable.SupportBody OrElse Math.Abs(rx) < 0.02 * speedScale) Then
-            EnterRest(i, support, vn)
+            EnterRest(i, support, edge, vn)
             Return
         End If
         ' On a level support the bounce series is followed exactly down to restSpeed.
@@ -192,9 +192,10 @@ Friend NotInheritable Class RestRules
     Friend Sub SleepIfSettled(i As Integer)
         If _s.G = 0 Then Return
         Dim m = _s.Bodies.Motion(i)
+        Dim size = _s.Bodies.Scale(i)
         Dim speed2 = m.Vx * m.Vx + m.Vy * m.Vy
-        Dim scale2 = _s.G * m.R
-        Dim window = 0.1 * Math.Sqrt(m.R / _s.G)
+        Dim scale2 = _s.G * size
+        Dim window = 0.1 * Math.Sqrt(size / _s.G)
         If _s.Now - _burstStart(i) > window Then
             _burstStart(i) = _s.Now
             _burstCount(i) = 0
@@ -215,7 +216,7 @@ Friend NotInheritable Class RestRules
         Return Math.Max(1.0E-6 * r, 1.0E-12)
     End Function
 
-    Private Sub EnterRest(i As Integer, support As Integer, vn As Double)
+    Private Sub EnterRest(i As Integer, support As Integer, edge As Integer, vn As Double)
         Dim b = _s.Bodies
         Dim body = b.Shapes(i)
         Dim flight = If(_s.E < 1, 2 * vn / (_s.G * (1 - _s.E)), 0.0)
@@ -224,9 +225,10 @@ Friend NotInheritable Class RestRules
         b.Motion(i).Vy = 0
         b.Motion(i).Ay = 0
         b.Support(i) = support
+        b.SupportEdge(i) = edge
         b.SetMode(i, BodyMode.Supported)
         ' Slow enough along a level support: asleep (a pile's floor layer must settle to hold the rest).
-        If Math.Abs(b.Motion(i).Vx) < 0.05 * Math.Sqrt(_s.G * b.Motion(i).R) AndAlso support <> BodyTable.SupportNone Then Sleep(i)
+        If Math.Abs(b.Motion(i).Vx) < 0.05 * Math.Sqrt(_s.G * b.Scale(i)) AndAlso support <> BodyTable.SupportNone Then Sleep(i)
     End Sub
 
     Friend Sub Sleep(i As Integer)
@@ -253,6 +255,7 @@ Friend NotInheritable Class RestRules
         b.Motion(i).Ay = -_s.G
         b.Motion(i).Ax = 0
         b.Support(i) = BodyTable.SupportNone
+        b.SupportEdge(i) = -1
         _restTimes.Remove(b.Shapes(i))
         ' Its lane shows it free at once, before anything is predicted against it (the vector and the
         ' one-at-a-time pair tests must see the same mode, or they take different branches).
@@ -277,8 +280,8 @@ Friend NotInheritable Class RestRules
                 If mj <> BodyMode.Sleeping AndAlso mj <> BodyMode.Supported Then Continue For
                 Dim dx = b.Motion(j).Px - kx, dy = b.Motion(j).Py - ky
                 If dy <= 0 Then Continue For
-                Dim reach = b.Motion(j).R + b.Motion(k).R + 1.0E-3 * Math.Min(b.Motion(j).R, b.Motion(k).R)
-                If dx * dx + dy * dy > reach * reach Then Continue For
+                Dim c = ContactRules.OverlapWithBody(_s, j, k, New Vector(b.Motion(j).Px, b.Motion(j).Py), here)
+                If c.Depth < -1.0E-3 * Math.Min(b.Scale(j), b.Scale(k)) OrElse c.Normal.Y <= 0 Then Continue For
                 _s.Sync(j)
                 MakeFree(j)
                 _s.Changed(j)
@@ -299,20 +302,21 @@ Friend NotInheritable Class RestRules
     Private Function IsHeld(i As Integer) As Boolean
         Dim b = _s.Bodies
         Dim p = b.PositionAt(i, _s.Now)
-        Dim px = p.X, py = p.Y, r = b.Motion(i).R
-        Dim gap = 1.0E-3 * r + SolverState.SlopAt(px, py)
+        Dim px = p.X, py = p.Y
+        Dim o = b.Outlines(i)
+        Dim gap = 1.0E-3 * b.Scale(i) + SolverState.SlopAt(px, py)
         _nNormals = 0
         If _s.Walls Then
-            If py - r <= gap Then Return True
-            If px - r <= gap Then AddNormal(1, 0)
-            If _s.Width - r - px <= gap Then AddNormal(-1, 0)
-            If _s.Height - r - py <= gap Then AddNormal(0, -1)
+            If py + o.MinY <= gap Then Return True
+            If px + o.MinX <= gap Then AddNormal(1, 0)
+            If _s.Width - o.MaxX - px <= gap Then AddNormal(-1, 0)
+            If _s.Height - o.MaxY - py <= gap Then AddNormal(0, -1)
         End If
-        ' Rectangles, then fixed circles: the order the normals were always gathered in.
+        ' Rectangles, then the other fixed bodies: the order the normals were always gathered in.
         For pass = 0 To 1
             For k = 0 To _s.Obstacles.Count - 1
-                If (_s.Obstacles.Kind(k) = ObstacleKind.Rectangle) <> (pass = 0) Then Continue For
-                Dim c = ContactRules.Overlap(_s.Obstacles, k, p, r)
+                If (_s.Obstacles.Kind(k) = ShapeKind.Rectangle) <> (pass = 0) Then Continue For
+                Dim c = ContactRules.OverlapWithObstacle(_s, i, k, p)
                 If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
             Next
         Next
@@ -320,7 +324,7 @@ Friend NotInheritable Class RestRules
         For q = 0 To count - 1
             Dim j = _neighbours(q)
             If b.Mode(j) = BodyMode.Rounding OrElse b.Mode(j) = BodyMode.Dragged Then Continue For
-            Dim c = Collider.CircleCircle(p, r, b.PositionAt(j, _s.Now), b.Motion(j).R)
+            Dim c = ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now))
             If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
         Next
         ' Up = (0, 1) lies between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.

@@ -11,6 +11,8 @@ Friend NotInheritable Class SolverState
     Friend ReadOnly Obstacles As New Obstacles()
     Friend ReadOnly Grid As New UniformGrid()
     Friend ReadOnly Queue As New EventQueue()
+    ''' <summary>The pairs' Minkowski differences (see <see cref="ContactRules"/>).</summary>
+    Friend ReadOnly Shapes As New ContactShapes()
 
     Friend World As World
     ''' <summary>The solver's clock, s (absolute, like World.Time).</summary>
@@ -21,7 +23,7 @@ Friend NotInheritable Class SolverState
     Friend Walls As Boolean
     Friend Width As Double
     Friend Height As Double
-    ''' <summary>Largest rounding radius (m) of a body in the grid.</summary>
+    ''' <summary>Largest reach (m) of a body in the grid from its reference point (a circle's radius).</summary>
     Friend RMax As Double
     ''' <summary>Bodies too big for the grid, checked against every body.</summary>
     Friend Oversized As Integer() = Array.Empty(Of Integer)()
