@@ -111,6 +111,103 @@ Public Module Collider
         Return New Contact(n, ra + rb - Vector.Dot(pa - pb, n))
     End Function
 
+    ''' <summary>
+    ''' Contact between any two bodies that never rotate: body A (outline a, reference point pa) and body B
+    ''' (outline b, reference point pb). They touch exactly when pa − pb lies in the Minkowski difference
+    ''' of their outlines, so the contact is that point's <see cref="OutlineContact.Penetration"/>: the
+    ''' depth, and the normal from B towards A (a face's own normal, or from a corner towards the point).
+    ''' </summary>
+    Public Function OutlineOutline(a As Outline, pa As Vector, b As Outline, pb As Vector) As Contact
+        Return OutlineOutline(Outline.MinkowskiDifference(b, a), pa, pb)
+    End Function
+
+    ''' <summary>
+    ''' <see cref="OutlineOutline(Outline, Vector, Outline, Vector)"/> with the Minkowski difference of B's and
+    ''' A's outlines already made (<c>Outline.MinkowskiDifference(b, a)</c>), for callers that keep it.
+    ''' </summary>
+    Public Function OutlineOutline(difference As Outline, pa As Vector, pb As Vector) As Contact
+        If difference Is Nothing Then Throw New ArgumentNullException(NameOf(difference))
+        Return OutlineContact.Penetration(difference, pa - pb)
+    End Function
+
+    ''' <summary>
+    ''' The core of an outline: the same shape without its rounding (radius 0). A circle's core is its
+    ''' centre; a polygon's, box's or segment's is the outline itself.
+    ''' </summary>
+    Public Function OutlineCore(shape As Outline) As Outline
+        If shape Is Nothing Then Throw New ArgumentNullException(NameOf(shape))
+        If shape.Radius = 0 Then Return shape
+        Dim v = shape.Vertices
+        If v.Count = 1 Then Return Outline.Point(0).Translated(v(0))
+        If v.Count = 2 Then Return Outline.Segment(v(0), v(1))
+        Return Outline.Polygon(v)
+    End Function
+
+    ''' <summary>
+    ''' The contact of a body A that moved (its reference point) from <paramref name="from"/> to
+    ''' <paramref name="pa"/> during a time step with a fixed body B at <paramref name="pb"/>, for every
+    ''' pair of shapes. <paramref name="difference"/> is <c>Outline.MinkowskiDifference(b, a)</c>, where
+    ''' d = p_A − p_B must be for the bodies to touch, and <paramref name="coreDifference"/> is
+    ''' <c>Outline.MinkowskiDifference(b, OutlineCore(a))</c>, where d is when A's core (a circle's centre, the
+    ''' whole of a box or polygon) is inside B itself. When the straight path of d during the step crossed
+    ''' into that region (it ended inside, or went right through: a circle's centre reached the body, a box
+    ''' entered it), A is sent back out by the side its path came in by (the normal of the feature it
+    ''' entered, <see cref="OutlineContact.ContactNormal"/>), not by the nearest side, so neither a fast
+    ''' step nor a push can carry it through a thin body to its far side; a segment, which has no
+    ''' thickness, is the extreme case. The depth is how far d must move along that normal to be A's own
+    ''' rounding (a circle's radius) beyond the entry point's tangent line. A path that started inside has
+    ''' no side it came in by and gets the nearest way out, as does a path that never got there (then the
+    ''' nearest point is right: a circle's centre is still outside the body). For a circle against a fixed
+    ''' circle or rectangle this is the rule of <see cref="CircleCircleFrom"/> and
+    ''' <see cref="CircleRectangleFrom"/>, which give it in closed form.
+    ''' </summary>
+    Public Function OutlineOutlineFrom(difference As Outline, coreDifference As Outline, pa As Vector, pb As Vector, from As Vector) As Contact
+        If difference Is Nothing Then Throw New ArgumentNullException(NameOf(difference))
+        If coreDifference Is Nothing Then Throw New ArgumentNullException(NameOf(coreDifference))
+        Dim d = pa - pb
+        Dim nearest = OutlineContact.Penetration(difference, d)
+        If Not from.IsFinite OrElse from = pa Then Return nearest
+        Dim d0 = from - pb
+        Dim path = d - d0
+        ' Touching is decided to a part in 10¹² of the sizes involved: rounding, not geometry.
+        Dim slop = PathSlop * (d0.Length + path.Length + (difference.MaxX - difference.MinX) + (difference.MaxY - difference.MinY))
+        If OutlineContact.Penetration(coreDifference, d0).Depth > slop Then Return nearest
+        Dim feature As Integer
+        Dim t = OutlineContact.EarliestEntry(coreDifference, d0, path, Vector.Zero, slop, 0, 1.0, feature)
+        If feature < 0 OrElse Not (t <= 1.0) Then Return nearest
+        Dim entry = d0 + t * path
+        Dim n = OutlineContact.ContactNormal(coreDifference, entry, feature, slop)
+        ' A's rounding: the difference's radius is A's plus B's, the core difference's B's alone.
+        Return New Contact(n, difference.Radius - coreDifference.Radius + Vector.Dot(n, entry - d))
+    End Function
+
+    ''' <summary>Touching tolerance of <see cref="OutlineOutlineFrom(Outline, Outline, Vector, Vector, Vector)"/>, as a fraction of the sizes involved.</summary>
+    Private Const PathSlop As Double = 0.000000000001
+
+    ''' <summary>
+    ''' <see cref="OutlineOutlineFrom(Outline, Outline, Vector, Vector, Vector)"/> for body A (outline a) against
+    ''' fixed body B (outline b), making both Minkowski differences here.
+    ''' </summary>
+    Public Function OutlineOutlineFrom(a As Outline, pa As Vector, b As Outline, pb As Vector, from As Vector) As Contact
+        Return OutlineOutlineFrom(Outline.MinkowskiDifference(b, a), Outline.MinkowskiDifference(b, OutlineCore(a)), pa, pb, from)
+    End Function
+
+    ''' <summary>
+    ''' Contact of any body (reference point p, outline <paramref name="shape"/>) with one side of a
+    ''' container of the given size (m): nothing rotates, so the depth comes from the outline's extents.
+    ''' The normal points into the container.
+    ''' </summary>
+    Public Function OutlineWall(p As Vector, shape As Outline, side As WallSide, width As Double, height As Double) As Contact
+        If shape Is Nothing Then Throw New ArgumentNullException(NameOf(shape))
+        Select Case side
+            Case WallSide.Left : Return New Contact(New Vector(1, 0), -(p.X + shape.MinX))
+            Case WallSide.Right : Return New Contact(New Vector(-1, 0), p.X + shape.MaxX - width)
+            Case WallSide.Bottom : Return New Contact(New Vector(0, 1), -(p.Y + shape.MinY))
+            Case WallSide.Top : Return New Contact(New Vector(0, -1), p.Y + shape.MaxY - height)
+            Case Else : Throw New ArgumentOutOfRangeException(NameOf(side))
+        End Select
+    End Function
+
     ''' <summary>Contact of a circle with one side of a container of the given size; the normal points into the container.</summary>
     Public Function CircleWall(p As Vector, r As Double, side As WallSide, width As Double, height As Double) As Contact
         Select Case side

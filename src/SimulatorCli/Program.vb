@@ -52,5 +52,5 @@ Public NotInheritable Class Program
     Private Const Usage As String =
         "usage: SimulatorCli validate SCENE" & vbLf &
         "       SimulatorCli run SCENE --time T [--solver auto|event|euler|verlet] [--dt D] [--sample S]" & vbLf &
-        "                    [--states FILE] [--events FILE] [--json]"
+        "                    [--states FILE] [--events FILE] [--series FILE] [--json]"
 End Class

@@ -4,37 +4,43 @@ Imports System.Threading
 
 ''' <summary>
 ''' run SCENE --time T: checks every argument and the scene before any output file exists, then
-''' runs, sampling states at t = 0, S, 2S, … and T, logging every collision, and prints the summary.
+''' runs, sampling states and totals at t = 0, S, 2S, … and T, logging every collision, and prints the summary.
 ''' </summary>
 Friend Module RunCommand
     Friend Const StatesHeader As String = "t,id,x,y,vx,vy"
     Friend Const EventsHeader As String = "t,a,b,kind,a_vx_before,a_vy_before,a_vx_after,a_vy_after,b_vx_before,b_vy_before,b_vx_after,b_vy_after"
+    Friend Const SeriesHeader As String = "t,ke,pe,energy,px,py,com_x,com_y"
 
     Friend Function Execute(o As RunOptions) As Integer
         ' Everything that can be bad input is checked here, before any file is created.
         Dim world = SceneInput.Load(o.ScenePath)
-        If o.StatesPath IsNot Nothing Then OutputFile.CheckTarget("--states", o.StatesPath)
-        If o.EventsPath IsNot Nothing Then OutputFile.CheckTarget("--events", o.EventsPath)
+        For Each output In o.Outputs
+            OutputFile.CheckTarget(output.Name, output.Path)
+        Next
         world.Solver = CreateSolver(o)
         ' A valid scene too fast to simulate fails (exit 1) before any file is created.
         world.CheckSpeeds()
 
         Dim states As OutputFile = Nothing
         Dim events As OutputFile = Nothing
+        Dim series As OutputFile = Nothing
         ' Ctrl+C and SIGTERM: throw the temporary files away, say so, exit 1 (see RunInterruption).
         Using interruption As New RunInterruption(
             Function()
                 states?.Dispose()
                 events?.Dispose()
-                Return {states, events}.Where(Function(f) f IsNot Nothing AndAlso f.IsStream).Select(Function(f) f.Target).ToList()
+                series?.Dispose()
+                Return {states, events, series}.Where(Function(f) f IsNot Nothing AndAlso f.IsStream).Select(Function(f) f.Target).ToList()
             End Function)
             Try
                 If o.StatesPath IsNot Nothing Then states = OutputFile.Create("--states", o.StatesPath)
                 If o.EventsPath IsNot Nothing Then events = OutputFile.Create("--events", o.EventsPath)
-                Dim summary = Simulate(world, o, states, events)
+                If o.SeriesPath IsNot Nothing Then series = OutputFile.Create("--series", o.SeriesPath)
+                Dim summary = Simulate(world, o, states, events, series)
                 interruption.Finishing()
                 states?.Commit()
                 events?.Commit()
+                series?.Commit()
                 Console.Out.WriteLine(If(o.Json, summary.ToJson(), summary.ToText()))
                 Return ExitCodes.Ok
             Catch ex As Exception When interruption.Interrupted
@@ -45,6 +51,7 @@ Friend Module RunCommand
             Finally
                 states?.Dispose()
                 events?.Dispose()
+                series?.Dispose()
             End Try
         End Using
     End Function
@@ -60,13 +67,15 @@ Friend Module RunCommand
         End Try
     End Function
 
-    Private Function Simulate(world As World, o As RunOptions, states As OutputFile, events As OutputFile) As RunSummary
-        Dim movable = world.Circles.Where(Function(c) Not c.IsFixed).ToList()
+    Private Function Simulate(world As World, o As RunOptions, states As OutputFile, events As OutputFile, series As OutputFile) As RunSummary
+        ' Every movable body, in the scene's order: circles, boxes and polygons alike.
+        Dim movable = world.Movables.ToList()
         If events IsNot Nothing Then
             events.Writer.WriteLine(EventsHeader)
             world.CollisionListener = Sub(r) WriteCollision(events.Writer, r)
         End If
         states?.Writer.WriteLine(StatesHeader)
+        series?.Writer.WriteLine(SeriesHeader)
         Dim clock = Stopwatch.StartNew()
         For Each t In SampleTimes(o.Time, o.Sample)
             Try
@@ -75,6 +84,7 @@ Friend Module RunCommand
                 Throw New InvalidOperationException("the " & world.Solver.Name & " solver failed between t = " & CsvText.Number(world.Time) & " s and t = " & CsvText.Number(t) & " s: " & ex.Message, ex)
             End Try
             If states IsNot Nothing Then WriteStates(states.Writer, t, movable)
+            If series IsNot Nothing Then WriteTotals(series.Writer, t, world)
         Next
         clock.Stop()
         Return New RunSummary(o, world, movable.Count, clock.Elapsed.TotalSeconds)
@@ -95,7 +105,8 @@ Friend Module RunCommand
         Yield total
     End Function
 
-    Private Sub WriteStates(w As IO.TextWriter, t As Double, movable As List(Of Circle))
+    ''' <summary>One row per movable body: its reference point, the point the scene file gives (a circle's centre, a rectangle's lower-left corner, a polygon's centroid).</summary>
+    Private Sub WriteStates(w As IO.TextWriter, t As Double, movable As List(Of Shape))
         Dim time = CsvText.Number(t)
         For Each c In movable
             w.Write(time)
@@ -110,6 +121,17 @@ Friend Module RunCommand
             w.Write(","c)
             w.WriteLine(CsvText.Number(c.Velocity.Y))
         Next
+    End Sub
+
+    ''' <summary>One row of the totals: kinetic and potential energy and their sum (J), momentum (kg·m/s), centre of mass (m).</summary>
+    Private Sub WriteTotals(w As IO.TextWriter, t As Double, world As World)
+        Dim ke = world.KineticEnergy()
+        Dim pe = Totals.PotentialEnergy(world)
+        Dim p = world.Momentum()
+        Dim com = world.CentreOfMass()
+        w.WriteLine(String.Join(",",
+            CsvText.Number(t), CsvText.Number(ke), CsvText.Number(pe), CsvText.Number(ke + pe),
+            CsvText.Number(p.X), CsvText.Number(p.Y), CsvText.Number(com.X), CsvText.Number(com.Y)))
     End Sub
 
     Private Sub WriteCollision(w As IO.TextWriter, r As CollisionRecord)

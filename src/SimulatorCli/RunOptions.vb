@@ -9,7 +9,7 @@ Friend NotInheritable Class RunOptions
     ''' <summary>The most sample times a run may ask for (T / S).</summary>
     Friend Const MaxSamples As Double = 10000000.0
 
-    Private Const Known As String = "--time, --solver, --dt, --sample, --states, --events, --json"
+    Private Const Known As String = "--time, --solver, --dt, --sample, --states, --events, --series, --json"
 
     Friend Property ScenePath As String
     ''' <summary>Simulated time, s, &gt; 0.</summary>
@@ -21,12 +21,13 @@ Friend NotInheritable Class RunOptions
     Friend Property Sample As Double = DefaultSample
     Friend Property StatesPath As String
     Friend Property EventsPath As String
+    Friend Property SeriesPath As String
     Friend Property Json As Boolean
 
     Private Sub New()
     End Sub
 
-    ''' <summary>Reads "SCENE --time T [--solver NAME] [--dt D] [--sample S] [--states FILE] [--events FILE] [--json]" in any order.</summary>
+    ''' <summary>Reads "SCENE --time T [--solver NAME] [--dt D] [--sample S] [--states FILE] [--events FILE] [--series FILE] [--json]" in any order.</summary>
     Friend Shared Function Parse(args As IReadOnlyList(Of String)) As RunOptions
         Dim o As New RunOptions()
         Dim seen As New HashSet(Of String)(StringComparer.Ordinal)
@@ -75,30 +76,44 @@ Friend NotInheritable Class RunOptions
                     o.StatesPath = Required(name, value, "a file name")
                 Case "--events"
                     o.EventsPath = Required(name, value, "a file name")
+                Case "--series"
+                    o.SeriesPath = Required(name, value, "a file name")
                 Case Else
                     Throw New BadInputException("run: unknown option '" & name & "' (expected " & Known & ")")
             End Select
         Loop
         If o.ScenePath Is Nothing Then Throw New BadInputException("run: no scene file given (usage: run SCENE --time T)")
         If Not hasTime Then Throw New BadInputException("run: --time T is required (simulated seconds, > 0)")
-        If o.StatesPath IsNot Nothing AndAlso o.EventsPath IsNot Nothing AndAlso
-           String.Equals(Path.GetFullPath(o.StatesPath), Path.GetFullPath(o.EventsPath), StringComparison.Ordinal) Then
-            Throw New BadInputException("--events: '" & o.EventsPath & "' is also the --states file")
-        End If
+        ' Two tables in one file would each overwrite the other.
+        Dim outputs = o.Outputs
+        For k = 1 To outputs.Count - 1
+            For j = 0 To k - 1
+                If String.Equals(Path.GetFullPath(outputs(k).Path), Path.GetFullPath(outputs(j).Path), StringComparison.Ordinal) Then
+                    Throw New BadInputException(outputs(k).Name & ": '" & outputs(k).Path & "' is also the " & outputs(j).Name & " file")
+                End If
+            Next
+        Next
         ' Every sample time is a stop of the simulation loop; a count no spreadsheet could open is a typo.
         If o.Time / o.Sample > MaxSamples Then
             Throw New BadInputException("--sample: " & o.Sample.ToString("R", CultureInfo.InvariantCulture) & " s would take more than " &
                                         MaxSamples.ToString("N0", CultureInfo.InvariantCulture) & " samples over --time " & o.Time.ToString("R", CultureInfo.InvariantCulture) & " s")
         End If
         ' An output on top of the scene would destroy the input.
-        For Each output In {("--states", o.StatesPath), ("--events", o.EventsPath)}
-            If output.Item2 IsNot Nothing AndAlso
-               String.Equals(Path.GetFullPath(output.Item2), Path.GetFullPath(o.ScenePath), StringComparison.Ordinal) Then
-                Throw New BadInputException(output.Item1 & ": '" & output.Item2 & "' is the scene file itself")
+        For Each output In outputs
+            If String.Equals(Path.GetFullPath(output.Path), Path.GetFullPath(o.ScenePath), StringComparison.Ordinal) Then
+                Throw New BadInputException(output.Name & ": '" & output.Path & "' is the scene file itself")
             End If
         Next
         Return o
     End Function
+
+    ''' <summary>The output files asked for, with the option that names each, in the order --states, --events, --series.</summary>
+    Friend ReadOnly Property Outputs As IReadOnlyList(Of (Name As String, Path As String))
+        Get
+            Dim all = {("--states", StatesPath), ("--events", EventsPath), ("--series", SeriesPath)}
+            Return all.Where(Function(f) f.Item2 IsNot Nothing).Select(Function(f) (Name:=f.Item1, Path:=f.Item2)).ToList()
+        End Get
+    End Property
 
     Private Shared Function Required(name As String, value As String, what As String) As String
         If String.IsNullOrEmpty(value) Then Throw New BadInputException(name & ": missing value (" & what & ")")

@@ -19,6 +19,7 @@ Friend NotInheritable Class RunSummary
     Private ReadOnly _momentum As Vector
     Private ReadOnly _states As String
     Private ReadOnly _events As String
+    Private ReadOnly _series As String
 
     ''' <param name="wallSeconds">wall-clock time of the simulation loop, s</param>
     Friend Sub New(o As RunOptions, world As World, movable As Integer, wallSeconds As Double)
@@ -31,10 +32,11 @@ Friend NotInheritable Class RunSummary
         _wall = wallSeconds
         _collisions = world.CollisionCount
         _kinetic = world.KineticEnergy()
-        _potential = world.PotentialEnergy()
+        _potential = Totals.PotentialEnergy(world)
         _momentum = world.Momentum()
         _states = o.StatesPath
         _events = o.EventsPath
+        _series = o.SeriesPath
     End Sub
 
     ''' <summary>Collisions per wall-clock second; Nothing when the run took no measurable time.</summary>
@@ -48,18 +50,19 @@ Friend NotInheritable Class RunSummary
     Friend Function ToText() As String
         Dim inv = CultureInfo.InvariantCulture
         Dim lines As New List(Of String) From {
-            "scene             " & _scene & " (" & _bodies.ToString(inv) & " bodies, " & _movable.ToString(inv) & " movable circles)",
+            "scene             " & _scene & " (" & _bodies.ToString(inv) & " bodies, " & _movable.ToString(inv) & " movable)",
             "solver            " & _solver & If(_dt.HasValue, ", dt = " & _dt.Value.ToString("R", inv) & " s", ""),
             "simulated         " & _simulated.ToString("R", inv) & " s",
             "wall-clock        " & _wall.ToString("0.000", inv) & " s",
             "collisions        " & _collisions.ToString(inv) &
                 If(EventsPerSecond.HasValue, " (" & EventsPerSecond.Value.ToString("0.#", inv) & " per wall-clock second)", ""),
             "kinetic energy    " & _kinetic.ToString("R", inv) & " J",
-            "potential energy  " & _potential.ToString("R", inv) & " J (m g y over movable circles)",
+            "potential energy  " & _potential.ToString("R", inv) & " J (m g y of each movable body's centre of mass)",
             "total energy      " & (_kinetic + _potential).ToString("R", inv) & " J",
             "momentum          (" & _momentum.X.ToString("R", inv) & ", " & _momentum.Y.ToString("R", inv) & ") kg m/s"}
         If _states IsNot Nothing Then lines.Add("states CSV        " & _states)
         If _events IsNot Nothing Then lines.Add("collisions CSV    " & _events)
+        If _series IsNot Nothing Then lines.Add("totals CSV        " & _series)
         Return String.Join(vbLf, lines)
     End Function
 
@@ -88,6 +91,7 @@ Friend NotInheritable Class RunSummary
                 w.WriteEndArray()
                 w.WriteString("states", _states)
                 w.WriteString("events", _events)
+                w.WriteString("series", _series)
                 w.WriteEndObject()
             End Using
             Return Encoding.UTF8.GetString(stream.ToArray())

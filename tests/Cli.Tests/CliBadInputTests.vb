@@ -35,6 +35,9 @@ Public Class CliBadInputTests
     <InlineData("run: unexpected argument 'extra.json'", Scene, "extra.json", "--time", "1", "--states", States, "--events", Events)>
     <InlineData("--json: takes no value", Scene, "--time", "1", "--json=yes", "--states", States, "--events", Events)>
     <InlineData("--events: '", Scene, "--time", "1", "--states", States, "--events", States)>
+    <InlineData("--series: missing value", Scene, "--time", "1", "--states", States, "--events", Events, "--series")>
+    <InlineData("--series: '", Scene, "--time", "1", "--states", States, "--events", Events, "--series", States)>
+    <InlineData("--series: '", Scene, "--time", "1", "--states", States, "--events", Events, "--series", Events)>
     <InlineData("--sample: 1E-300 s would take more than 10,000,000 samples", Scene, "--time", "1e300", "--sample", "1e-300", "--states", States, "--events", Events)>
     Public Sub BadArguments_Exit2_WithOneLine_AndWriteNothing(expectedStart As String, ParamArray args As String())
         Using t As New TempFolder()
@@ -93,6 +96,7 @@ Public Class CliBadInputTests
     <Theory>
     <InlineData("--states")>
     <InlineData("--events")>
+    <InlineData("--series")>
     Public Sub MissingOutputFolder_Exits2_AndWritesNothing(optionName As String)
         Using t As New TempFolder()
             Dim scenePath = t.Write("scene.json", HeadOn)
@@ -105,20 +109,23 @@ Public Class CliBadInputTests
         End Using
     End Sub
 
-    <Fact>
-    Public Sub OutputThatIsAFolder_Exits2()
+    <Theory>
+    <InlineData("--states")>
+    <InlineData("--series")>
+    Public Sub OutputThatIsAFolder_Exits2(optionName As String)
         Using t As New TempFolder()
             Dim scenePath = t.Write("scene.json", HeadOn)
             Directory.CreateDirectory(t.File("out"))
-            Dim r = RunCli("run", scenePath, "--time", "1", "--states", t.File("out"))
+            Dim r = RunCli("run", scenePath, "--time", "1", optionName, t.File("out"))
             Assert.True(r.ExitCode = 2, r.ToString())
-            Assert.Equal("--states: '" & t.File("out") & "' is a folder, not a file", r.StdErr.TrimEnd())
+            Assert.Equal(optionName & ": '" & t.File("out") & "' is a folder, not a file", r.StdErr.TrimEnd())
         End Using
     End Sub
 
     <Theory>
     <InlineData("--states")>
     <InlineData("--events")>
+    <InlineData("--series")>
     Public Sub AnOutputOnTopOfTheScene_IsBadInput_AndTheSceneSurvives(optionName As String)
         Using t As New TempFolder()
             Dim scenePath = t.Write("scene.json", HeadOn)
@@ -129,15 +136,17 @@ Public Class CliBadInputTests
         End Using
     End Sub
 
-    <Fact>
-    Public Sub BadInput_LeavesAnExistingOutputFileUntouched()
+    <Theory>
+    <InlineData("--states")>
+    <InlineData("--series")>
+    Public Sub BadInput_LeavesAnExistingOutputFileUntouched(optionName As String)
         Using t As New TempFolder()
             Dim scenePath = t.Write("scene.json", HeadOn)
-            Dim states = t.Write("states.csv", "precious")
-            Dim r = RunCli("run", scenePath, "--time", "-5", "--states", states)
+            Dim output = t.Write("out.csv", "precious")
+            Dim r = RunCli("run", scenePath, "--time", "-5", optionName, output)
             Assert.True(r.ExitCode = 2, r.ToString())
-            Assert.Equal("precious", File.ReadAllText(states))
-            Assert.Equal("scene.json|states.csv", String.Join("|", t.Files()))
+            Assert.Equal("precious", File.ReadAllText(output))
+            Assert.Equal("out.csv|scene.json", String.Join("|", t.Files()))
         End Using
     End Sub
 

@@ -84,4 +84,20 @@ Public Class CliOutputTargetTests
             Assert.Equal("head-on.json pipe stdout", AllFiles(t.Path))
         End Using
     End Sub
+    <Fact>
+    Public Sub SeriesIntoAFifo_IsWrittenThrough()
+        If OperatingSystem.IsWindows() Then Return ' no FIFOs there
+        Using t As New TempFolder()
+            Dim scene = t.Write("head-on.json", HeadOn)
+            Dim fifo = t.File("series.fifo")
+            Shell("mkfifo", fifo)
+            Dim reader = Threading.Tasks.Task.Run(Function() File.ReadAllText(fifo))
+            Dim r = RunCli("run", scene, "--time", "0.2", "--sample", "0.1", "--series", fifo)
+            Assert.True(r.ExitCode = 0, r.ToString())
+            Assert.True(reader.Wait(TimeSpan.FromSeconds(30)), "the reader never saw the end of the table")
+            Assert.StartsWith("t,ke,pe,energy,px,py,com_x,com_y" & vbLf, reader.Result)
+            Assert.Equal(4, reader.Result.TrimEnd(ChrW(10)).Split(ChrW(10)).Length) ' header + 3 samples
+            Assert.Equal("head-on.json series.fifo", AllFiles(t.Path))
+        End Using
+    End Sub
 End Class

@@ -38,7 +38,7 @@ Public Class CliSignalTests
             ' Millions of samples: long enough to be stopped while it writes.
             Dim psi As New ProcessStartInfo("dotnet") With {
                 .RedirectStandardOutput = True, .RedirectStandardError = True, .UseShellExecute = False}
-            For Each a In {CliDll, "run", scene, "--time", "5000", "--sample", "0.001", "--states", t.File("states.csv"), "--events", t.File("events.csv")}
+            For Each a In {CliDll, "run", scene, "--time", "5000", "--sample", "0.001", "--states", t.File("states.csv"), "--events", t.File("events.csv"), "--series", t.File("series.csv")}
                 psi.ArgumentList.Add(a)
             Next
             Using p = Process.Start(psi)
@@ -46,7 +46,7 @@ Public Class CliSignalTests
                 Dim errTask = p.StandardError.ReadToEndAsync()
                 ' Wait until it is writing (its temporary files exist), then send the signal.
                 Dim clock = Stopwatch.StartNew()
-                While AllFiles(t.Path).Length < 3 AndAlso clock.Elapsed.TotalSeconds < 30 AndAlso Not p.HasExited
+                While AllFiles(t.Path).Length < 4 AndAlso clock.Elapsed.TotalSeconds < 30 AndAlso Not p.HasExited
                     Threading.Thread.Sleep(50)
                 End While
                 Threading.Thread.Sleep(300)

@@ -3,8 +3,10 @@ Option Strict On
 ''' <summary>
 ''' The textbook game-engine algorithm, kept as the baseline: semi-implicit (symplectic) Euler (v += a dt, then x += v dt with the
 ''' new v) in fixed sub-steps, then static resolution (push overlapping bodies apart) and dynamic
-''' resolution (an impulse along the normal). Collisions are found after the fact, so a ball that moves
-''' more than its diameter in one step can tunnel through a thin obstacle. First order: position and
+''' resolution (an impulse along the normal), for bodies of every shape. Collisions are found after the
+''' fact, so a ball that moves more than its diameter in one step can pass through another movable body
+''' unseen (never through a fixed one: a body whose path crossed into one is sent back out the side it
+''' came in by). First order: position and
 ''' velocity errors shrink in proportion to dt; in free flight it loses ½ g² dt² of energy per unit mass
 ''' per step, so it never gains energy.
 ''' </summary>
@@ -68,19 +70,18 @@ Public NotInheritable Class SemiImplicitEulerSolver
         Return t0 + duration
     End Function
 
-    ''' <summary>One step of h s: v += a h, then x += v h (the new v, which is what makes it semi-implicit and stable).</summary>
+    ''' <summary>One step of h s for every movable body: v += a h, then x += v h (the new v, which is what makes it semi-implicit and stable).</summary>
     Private Sub Integrate(h As Double, remaining As Double)
         Dim g = _world.Gravity
-        Dim dragged = _world.DraggedCircle
-        For Each c In _world.Circles
-            If c.IsFixed Then Continue For
-            If c Is dragged Then
-                DragStep.Move(_world, c, h, remaining)
+        Dim dragged = _world.DraggedBody
+        For Each b In _world.Movables
+            If b Is dragged Then
+                DragStep.Move(_world, b, h, remaining)
                 Continue For
             End If
-            Dim v = New Vector(c.Velocity.X, c.Velocity.Y - g * h)
-            c.Velocity = v
-            c.Position += v * h
+            Dim v = New Vector(b.Velocity.X, b.Velocity.Y - g * h)
+            b.Velocity = v
+            b.Position += v * h
         Next
     End Sub
 End Class

@@ -2,15 +2,15 @@ Option Strict On
 
 ''' <summary>
 ''' Position Verlet (Störmer–Verlet in its position form): x_{n+1} = x_n + (x_n − x_{n−1}) + a h², keeping each
-''' circle's previous position instead of integrating its velocity. The velocity shown is
+''' movable body's previous position (of its reference point) instead of integrating its velocity. The velocity shown is
 ''' v_{n+1} = (x_{n+1} − x_n)/h + ½ a h, which is the central difference (x_{n+2} − x_n)/(2h) with the
 ''' x_{n+2} that the next step will produce: second order, and known at the end of the step rather than a
 ''' step late. Under constant gravity it is exact (a projectile follows s = ut + ½at² to rounding) and it
 ''' conserves energy. When the step changes (the shortened last step of an advance), the Verlet difference
 ''' is scaled: x_{n+1} = x_n + (x_n − x_{n−1}) h/h' + a h (h + h')/2, where h' is the previous step.
 ''' Every outside change (velocity set, impulse, drag, add, g, e, size) re-seeds
-''' x_{n−1} = x − v h' + ½ a h'² from the circle's velocity, so it takes effect exactly; contacts do the same
-''' after moving a circle, so the implied velocity is the post-collision one.
+''' x_{n−1} = x − v h' + ½ a h'² from the body's velocity, so it takes effect exactly; contacts do the same
+''' after moving a body, so the implied velocity is the post-collision one.
 ''' </summary>
 Public NotInheritable Class VerletSolver
     Implements ISolver
@@ -24,11 +24,11 @@ Public NotInheritable Class VerletSolver
 
     Private ReadOnly _dt As Double
     Private ReadOnly _contacts As New StepContacts()
-    ' Previous positions between advances, by circle; a circle missing here is re-seeded from its velocity.
-    Private ReadOnly _previous As New Dictionary(Of Circle, Vector)
+    ' Previous positions between advances, by body; a body missing here is re-seeded from its velocity.
+    Private ReadOnly _previous As New Dictionary(Of Shape, Vector)
     Private _world As World
     Private _hPrevious As Double
-    ' Working arrays for one advance, indexed like World.Circles.
+    ' Working arrays for one advance, indexed like World.Movables.
     Private _prev As Vector() = Array.Empty(Of Vector)()
     Private _touched As Boolean() = Array.Empty(Of Boolean)()
 
@@ -53,21 +53,20 @@ Public NotInheritable Class VerletSolver
         End Get
     End Property
 
-    ''' <summary>Called by <see cref="World.Solver"/>; every circle is seeded from its velocity.</summary>
+    ''' <summary>Called by <see cref="World.Solver"/>; every body is seeded from its velocity.</summary>
     Public Sub Attach(world As World) Implements ISolver.Attach
         _world = world
         _previous.Clear()
         _hPrevious = _dt
     End Sub
 
-    ''' <summary>Forgets the previous position of <paramref name="body"/> (of every circle when Nothing), so it is re-seeded from the velocity.</summary>
+    ''' <summary>Forgets the previous position of <paramref name="body"/> (of every body when Nothing), so it is re-seeded from the velocity.</summary>
     Public Sub Invalidate(body As Shape) Implements ISolver.Invalidate
         If body Is Nothing Then
             _previous.Clear()
             Return
         End If
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing Then _previous.Remove(c)
+        _previous.Remove(body)
     End Sub
 
     ''' <summary>Advances by exactly <paramref name="duration"/> s in steps of at most <see cref="TimeStep"/>.</summary>
@@ -101,24 +100,23 @@ Public NotInheritable Class VerletSolver
         Return reached
     End Function
 
-    ''' <summary>One Verlet step of h s for every movable circle.</summary>
+    ''' <summary>One Verlet step of h s for every movable body.</summary>
     Private Sub Integrate(h As Double, remaining As Double)
-        Dim circles = _world.Circles
-        Dim dragged = _world.DraggedCircle
+        Dim bodies = _world.Movables
+        Dim dragged = _world.DraggedBody
         Dim a = New Vector(0, -_world.Gravity)
         If h > _hPrevious * MaxStepRatio Then
-            For i = 0 To circles.Count - 1
-                If Not circles(i).IsFixed Then _prev(i) = Seed(circles(i), h)
+            For i = 0 To bodies.Count - 1
+                _prev(i) = Seed(bodies(i), h)
             Next
             _hPrevious = h
         End If
         Dim ratio = h / _hPrevious
         Dim kick = a * (h * (h + _hPrevious) / 2)
         Dim halfAh = a * (h / 2)
-        For i = 0 To circles.Count - 1
-            Dim c = circles(i)
+        For i = 0 To bodies.Count - 1
+            Dim c = bodies(i)
             _touched(i) = False
-            If c.IsFixed Then Continue For
             If c Is dragged Then
                 DragStep.Move(_world, c, h, remaining)
                 _touched(i) = True
@@ -132,29 +130,28 @@ Public NotInheritable Class VerletSolver
         Next
     End Sub
 
-    ''' <summary>After contacts moved or pushed some circles: make x_prev imply the velocity they now have.</summary>
+    ''' <summary>After contacts moved or pushed some bodies: make x_prev imply the velocity they now have.</summary>
     Private Sub ReseedTouched(h As Double)
-        Dim circles = _world.Circles
-        For i = 0 To circles.Count - 1
-            If _touched(i) Then _prev(i) = Seed(circles(i), h)
+        Dim bodies = _world.Movables
+        For i = 0 To bodies.Count - 1
+            If _touched(i) Then _prev(i) = Seed(bodies(i), h)
         Next
     End Sub
 
-    ''' <summary>The previous position, a step of h s ago, that makes the Verlet velocity equal the circle's velocity now.</summary>
-    Private Function Seed(c As Circle, h As Double) As Vector
+    ''' <summary>The previous position, a step of h s ago, that makes the Verlet velocity equal the body's velocity now.</summary>
+    Private Function Seed(c As Shape, h As Double) As Vector
         ' From v = (x − x_prev)/h + ½ a h, solved for x_prev; exact for motion under constant gravity.
         Return c.Position - c.Velocity * h + New Vector(0, -_world.Gravity) * (h * h / 2)
     End Function
 
     Private Sub LoadPrevious()
-        Dim circles = _world.Circles
-        If _prev.Length < circles.Count Then
-            _prev = New Vector(circles.Count - 1) {}
-            _touched = New Boolean(circles.Count - 1) {}
+        Dim bodies = _world.Movables
+        If _prev.Length < bodies.Count Then
+            _prev = New Vector(bodies.Count - 1) {}
+            _touched = New Boolean(bodies.Count - 1) {}
         End If
-        For i = 0 To circles.Count - 1
-            Dim c = circles(i)
-            If c.IsFixed Then Continue For
+        For i = 0 To bodies.Count - 1
+            Dim c = bodies(i)
             Dim p As Vector
             _prev(i) = If(_previous.TryGetValue(c, p), p, Seed(c, _hPrevious))
         Next
@@ -162,9 +159,9 @@ Public NotInheritable Class VerletSolver
 
     Private Sub SavePrevious()
         _previous.Clear()
-        Dim circles = _world.Circles
-        For i = 0 To circles.Count - 1
-            If Not circles(i).IsFixed Then _previous(circles(i)) = _prev(i)
+        Dim bodies = _world.Movables
+        For i = 0 To bodies.Count - 1
+            _previous(bodies(i)) = _prev(i)
         Next
     End Sub
 End Class

@@ -1,0 +1,13 @@
+Option Strict On
+
+''' <summary>The totals that the summary and the totals CSV report, as cli.md defines them.</summary>
+Friend Module Totals
+    ''' <summary>
+    ''' Potential energy, J: m·g·y of each movable body's centre of mass (y = 0 at the floor), plus
+    ''' ½·k·extension² of each spring. The engine has no springs yet, so the second part is zero; when
+    ''' links arrive, their elastic energy is added here, once, for both outputs.
+    ''' </summary>
+    Friend Function PotentialEnergy(world As World) As Double
+        Return world.PotentialEnergy()
+    End Function
+End Module
