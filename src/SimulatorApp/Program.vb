@@ -17,6 +17,8 @@ Public NotInheritable Class Program
 
     <STAThread>
     Public Shared Function Main(args As String()) As Integer
+        ' Before anything touches WinForms: Mono reads these settings when it starts its X11 driver.
+        X11KeyboardSafety.Apply()
         Dim trace As Action(Of String) = Nothing
         Dim benchmark As Integer? = Nothing
         Dim i = 0
@@ -41,6 +43,7 @@ Public NotInheritable Class Program
         Loop
         If benchmark.HasValue Then Return FrameBenchmark.Run(benchmark.Value, Console.Out)
 
+        trace?.Invoke("keyboard " & X11KeyboardSafety.Summary)
         Application.EnableVisualStyles()
         Application.SetCompatibleTextRenderingDefault(False)
         AddHandler Application.ThreadException, Sub(s, e) ShowError(e.Exception)
