@@ -3,7 +3,7 @@ Option Strict On
 ''' <summary>
 ''' Where a body may go: pure queries over a world's bodies, for placing a new body, carrying one
 ''' and checking a scene. A body is free at a place when it overlaps, by more than
-''' <see cref="Tolerance"/>, no body it collides with (two fixed bodies never collide) and, when it
+''' <see cref="Tolerance"/>, no body it may not overlap (<see cref="MayNotOverlap"/>) and, when it
 ''' is movable in a container with walls, lies inside the container. These are the rules a scene
 ''' file is read with, so a world kept free always saves to a file that opens again.
 ''' A body is asked about at an offset from where it is (a body not yet in the world is asked about
@@ -59,6 +59,15 @@ Public Module Placement
         Return Not (a.IsFixed AndAlso b.IsFixed)
     End Function
 
+    ''' <summary>
+    ''' Whether two bodies may not overlap: those that collide, and two circles even when both are
+    ''' fixed, because the scene reader refuses overlapping circles of any kind (a fixed ball may
+    ''' still sit on a rectangle). Every query here keeps to this, so what it calls free saves.
+    ''' </summary>
+    Public Function MayNotOverlap(a As Shape, b As Shape) As Boolean
+        Return Collide(a, b) OrElse (TypeOf a Is Circle AndAlso TypeOf b Is Circle)
+    End Function
+
     ''' <summary>How deep <paramref name="body"/>, moved by <paramref name="offset"/> (m), overlaps <paramref name="other"/>, m (≤ 0 when apart).</summary>
     Public Function OverlapDepth(body As Shape, offset As Vector, other As Shape) As Double
         Return Depth(FootprintOf(body, offset), FootprintOf(other, Vector.Zero))
@@ -86,7 +95,7 @@ Public Module Placement
         If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
         Dim f = FootprintOf(body, offset)
         For Each other In world.Bodies
-            If other Is body OrElse Not Collide(body, other) Then Continue For
+            If other Is body OrElse Not MayNotOverlap(body, other) Then Continue For
             If Depth(f, FootprintOf(other, Vector.Zero)) > Tolerance Then Return other
         Next
         Return Nothing
@@ -105,12 +114,15 @@ Public Module Placement
     ''' overlapping another may move away from it or along it, never further into it.
     ''' </summary>
     ''' <param name="blocks">which bodies stop it; Nothing for every body it collides with</param>
-    Public Function SweepTo(world As World, body As Shape, displacement As Vector, Optional blocks As Func(Of Shape, Boolean) = Nothing) As Sweep
-        Return SweepTo(world, body, Vector.Zero, displacement, blocks)
+    ''' <param name="clearance">how far (m) to keep from each body, beyond touching; Nothing for none</param>
+    Public Function SweepTo(world As World, body As Shape, displacement As Vector, Optional blocks As Func(Of Shape, Boolean) = Nothing,
+                            Optional clearance As Func(Of Shape, Double) = Nothing) As Sweep
+        Return SweepTo(world, body, Vector.Zero, displacement, blocks, clearance)
     End Function
 
-    ''' <summary>As <see cref="SweepTo(World, Shape, Vector, Func(Of Shape, Boolean))"/>, from the body moved by <paramref name="from"/> (m).</summary>
-    Public Function SweepTo(world As World, body As Shape, from As Vector, displacement As Vector, Optional blocks As Func(Of Shape, Boolean) = Nothing) As Sweep
+    ''' <summary>As <see cref="SweepTo(World, Shape, Vector, Func(Of Shape, Boolean), Func(Of Shape, Double))"/>, from the body moved by <paramref name="from"/> (m).</summary>
+    Public Function SweepTo(world As World, body As Shape, from As Vector, displacement As Vector, Optional blocks As Func(Of Shape, Boolean) = Nothing,
+                            Optional clearance As Func(Of Shape, Double) = Nothing) As Sweep
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
         If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
         If Not displacement.IsFinite OrElse Not from.IsFinite Then Throw New ArgumentException("the move must be finite", NameOf(displacement))
@@ -121,9 +133,9 @@ Public Module Placement
         Dim normal = Vector.Zero
         If displacement.LengthSquared = 0 Then Return New Sweep(1.0, Nothing, False, Vector.Zero)
         For Each other In world.Bodies
-            If other Is body OrElse Not Collide(body, other) Then Continue For
+            If other Is body OrElse Not MayNotOverlap(body, other) Then Continue For
             If blocks IsNot Nothing AndAlso Not blocks(other) Then Continue For
-            Dim o = FootprintOf(other, Vector.Zero)
+            Dim o = Grown(FootprintOf(other, Vector.Zero), If(clearance Is Nothing, 0.0, Math.Max(0.0, clearance(other))))
             Dim s As Double
             Dim n As Vector
             If Depth(start, o) > -Tolerance Then
@@ -160,12 +172,13 @@ Public Module Placement
     ''' stops it (the part of the move into the obstacle is dropped, the part along it kept), a few
     ''' times over; returns the offset (m) it reaches.
     ''' </summary>
-    Public Function SlideTo(world As World, body As Shape, displacement As Vector, Optional blocks As Func(Of Shape, Boolean) = Nothing) As Vector
+    Public Function SlideTo(world As World, body As Shape, displacement As Vector, Optional blocks As Func(Of Shape, Boolean) = Nothing,
+                            Optional clearance As Func(Of Shape, Double) = Nothing) As Vector
         Dim reached = Vector.Zero
         Dim remaining = displacement
         For attempt = 1 To 4
             If remaining.LengthSquared <= 1.0E-24 Then Exit For
-            Dim sweep = SweepTo(world, body, reached, remaining, blocks)
+            Dim sweep = SweepTo(world, body, reached, remaining, blocks, clearance)
             reached += remaining * sweep.Fraction
             If Not sweep.IsBlocked Then Exit For
             remaining = remaining * (1 - sweep.Fraction)
@@ -246,7 +259,7 @@ Public Module Placement
             If Not fa.Min.IsFinite OrElse Not fa.Max.IsFinite Then Return "'" & a.Id & "' is not at a finite place"
             For j = i + 1 To bodies.Count - 1
                 Dim b = bodies(j)
-                If Not Collide(a, b) Then Continue For
+                If Not MayNotOverlap(a, b) Then Continue For
                 Dim d = Depth(fa, FootprintOf(b, Vector.Zero))
                 If d > Tolerance Then
                     Return "'" & b.Id & "' overlaps '" & a.Id & "' by " & d.ToString("G3", Globalization.CultureInfo.InvariantCulture) & " m"
@@ -273,6 +286,16 @@ Public Module Placement
             Return New Footprint With {.IsDisc = False, .Centre = (min + max) / 2, .Min = min, .Max = max}
         End If
         Throw New NotSupportedException("placement knows circles and rectangles, not " & body.GetType().Name)
+    End Function
+
+    ''' <summary>A footprint grown by a margin (m) all round: a disc's radius, a box's sides (its corners stay square, which only keeps it further away).</summary>
+    Private Function Grown(f As Footprint, margin As Double) As Footprint
+        If margin <= 0 Then Return f
+        Dim m = New Vector(margin, margin)
+        f.Min -= m
+        f.Max += m
+        If f.IsDisc Then f.Radius += margin
+        Return f
     End Function
 
     Private Function Shifted(f As Footprint, by As Vector) As Footprint
