@@ -3,7 +3,7 @@ Imports System.Drawing
 Imports System.Windows.Forms
 Imports PhysicsEngine.Presentation
 
-''' <summary>A help window: the list of pages on the left, the chosen page on the right.</summary>
+''' <summary>A help window: the list of pages on the left, the chosen page on the right, in the main window's theme.</summary>
 Friend NotInheritable Class HelpForm
     Inherits Form
 
@@ -11,17 +11,22 @@ Friend NotInheritable Class HelpForm
     Private ReadOnly _text As New TextBox()
     Private ReadOnly _topics As IReadOnlyList(Of HelpTopic)
 
-    Public Sub New(title As String, topics As IReadOnlyList(Of HelpTopic), font As Font)
+    ''' <param name="scale">screen pixels per 96-dpi pixel</param>
+    Public Sub New(title As String, topics As IReadOnlyList(Of HelpTopic), font As Font, theme As Theme, scale As Double)
         _topics = topics
         Text = title
-        AutoScaleMode = AutoScaleMode.Dpi
+        AutoScaleMode = AutoScaleMode.None
         StartPosition = FormStartPosition.Manual
-        Location = New Point(120, 60)
-        ClientSize = New Size(1000, 640)
-        ' Never smaller than 12 pt: this window is read from the back of a classroom.
-        Me.Font = If(font IsNot Nothing AndAlso font.SizeInPoints >= 12, font, New Font(FontFamily.GenericSansSerif, 12.0F))
+        ' Over the canvas, leaving the side panel's buttons free; as large as designed, but never larger than the screen.
+        Dim area = Screen.FromPoint(Control.MousePosition).WorkingArea
+        Dim w = Math.Min(CInt(1000 * scale), CInt(area.Width * 0.6))
+        Dim h = Math.Min(CInt(640 * scale), area.Height - CInt(80 * scale))
+        Bounds = New Drawing.Rectangle(area.X + CInt(10 * scale), area.Y + CInt(40 * scale), w, h)
+        ' Never smaller than 12 pt at 96 dpi: this window is read from the back of a classroom.
+        Dim least = CSng(12 * scale)
+        Me.Font = If(font IsNot Nothing AndAlso font.SizeInPoints >= least, font, New Font(FontFamily.GenericSansSerif, least))
         _pages.Dock = DockStyle.Left
-        _pages.Width = 300
+        _pages.Width = CInt(w * 0.3)
         _pages.IntegralHeight = False
         For Each t In topics
             _pages.Items.Add(t.Title)
@@ -30,7 +35,12 @@ Friend NotInheritable Class HelpForm
         _text.Multiline = True
         _text.ReadOnly = True
         _text.ScrollBars = ScrollBars.Vertical
-        _text.BackColor = SystemColors.Window
+        If theme IsNot Nothing Then
+            For Each c As Control In {CType(_text, Control), _pages, Me}
+                c.BackColor = ScenePainter.Rgb(If(theme.IsHighContrast, theme.Panel, &HFFFFFF))
+                c.ForeColor = ScenePainter.Rgb(theme.PanelText)
+            Next
+        End If
         AddHandler _pages.SelectedIndexChanged, AddressOf OnPageChosen
         Controls.Add(_text)
         Controls.Add(_pages)
