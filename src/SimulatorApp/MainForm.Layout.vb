@@ -134,7 +134,10 @@ Partial Friend NotInheritable Class MainForm
             Next
             _logWidths(i) = widest
             Dim wanted = widest + S(16)
-            If _logList.Columns(i).Width <> wanted Then _logList.Columns(i).Width = wanted
+            If _logList.Columns(i).Width <> wanted Then
+                _logList.Columns(i).Width = wanted
+                _trace?.Invoke("log column " & i & " width " & wanted & " needs " & widest)
+            End If
         Next
     End Sub
 

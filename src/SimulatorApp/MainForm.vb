@@ -318,7 +318,10 @@ Partial Friend NotInheritable Class MainForm
     Private Sub RefreshLog(now As Double)
         If _tabs.SelectedIndex <> _tables.Count OrElse _logVersion = _presenter.Log.Version Then Return
         _logVersion = _presenter.Log.Version
-        _logList.VirtualListSize = _presenter.Log.Count
+        If _logList.VirtualListSize <> _presenter.Log.Count Then
+            _logList.VirtualListSize = _presenter.Log.Count
+            _trace?.Invoke("log rows " & _presenter.Log.Count)
+        End If
         ' Columns grow to fit what they hold (measured at most twice a second), so nothing is cut off.
         If now - _logWidthsAt > 0.5 Then
             _logWidthsAt = now
@@ -331,10 +334,16 @@ Partial Friend NotInheritable Class MainForm
         Dim page = _tabs.SelectedTab
         If page Is Nothing OrElse page.Controls.Count = 0 Then Return
         Dim list = DirectCast(page.Controls(0), BufferedListView)
-        ' Setting a column's width makes Mono lay the header out and paint it again.
-        For Each c As ColumnHeader In list.Columns
-            c.Width = c.Width
-        Next
+        ' Mono lays a details list's header out only while the list is on screen: a list whose rows or
+        ' columns changed behind another tab comes back with a blank header row. Its rows are set now
+        ' (see ShowState), and a column is nudged so the header is laid out and painted again.
+        Dim t = _tables.IndexOf(list)
+        If t >= 0 Then list.VirtualListSize = _presenter.Snapshot.RowCount(t)
+        If list.Columns.Count > 0 Then
+            Dim first = list.Columns(0)
+            first.Width += 1
+            first.Width -= 1
+        End If
         list.Refresh()
         _logVersion = -1
         _trace?.Invoke("tab " & page.Text)
@@ -347,12 +356,28 @@ Partial Friend NotInheritable Class MainForm
             e.Item = New ListViewItem(BlankRow)
             Return
         End If
-        e.Item = Row(snap.Cells(t, e.ItemIndex))
+        Dim cells = snap.Cells(t, e.ItemIndex)
+        e.Item = Row(cells)
+        TraceShown("row " & SimulationPresenter.Tables(t).Title & " " & e.ItemIndex, cells)
+    End Sub
+
+    Private ReadOnly _traced As New Dictionary(Of String, String)(StringComparer.Ordinal)
+
+    ''' <summary>With --trace: what a list has just been given to draw, when it differs from last time (GUI tests read the tables through this).</summary>
+    Private Sub TraceShown(what As String, cells As String())
+        If _trace Is Nothing Then Return
+        Dim text = String.Join(" | ", cells)
+        Dim last As String = Nothing
+        If _traced.TryGetValue(what, last) AndAlso last = text Then Return
+        _traced(what) = text
+        _trace(what & ": " & text)
     End Sub
 
     Private Sub OnRetrieveLog(sender As Object, e As RetrieveVirtualItemEventArgs)
         Dim log = _presenter.Log
-        e.Item = New ListViewItem(If(e.ItemIndex < log.Count, log(e.ItemIndex).Cells(), BlankRow))
+        Dim cells = If(e.ItemIndex < log.Count, log(e.ItemIndex).Cells(), BlankRow)
+        e.Item = New ListViewItem(cells)
+        If e.ItemIndex < log.Count Then TraceShown("log " & e.ItemIndex, cells)
     End Sub
 
     ''' <summary>A table row whose colour cell is filled with the body's colour.</summary>
@@ -463,13 +488,18 @@ Partial Friend NotInheritable Class MainForm
     Public Sub ShowState() Implements ISimulationView.ShowState
         If _presenter Is Nothing Then Return
         Dim snap = _presenter.Snapshot
-        For t = 0 To _tables.Count - 1
-            If _tables(t).VirtualListSize <> snap.RowCount(t) Then _tables(t).VirtualListSize = snap.RowCount(t)
-        Next
-        ' Only the table on show is repainted; the others read the snapshot when they are shown.
+        ' Only the table on show is sized and repainted; the others when their tab is chosen.
         Dim shown = _tabs.SelectedIndex
-        If shown >= 0 AndAlso shown < _tables.Count Then _tables(shown).Invalidate()
-        _totals.Text = WrapTotals(snap.Totals, _totals.Width - S(8))
+        If shown >= 0 AndAlso shown < _tables.Count Then
+            Dim list = _tables(shown)
+            If list.VirtualListSize <> snap.RowCount(shown) Then list.VirtualListSize = snap.RowCount(shown)
+            list.Invalidate()
+        End If
+        Dim totals = WrapTotals(snap.Totals, _totals.Width - S(8))
+        If totals <> _totals.Text Then
+            _totals.Text = totals
+            If _presenter.IsPaused Then _trace?.Invoke("totals " & totals.Replace(Environment.NewLine, " / "))
+        End If
         _canvas.Invalidate()
     End Sub
 

@@ -22,8 +22,15 @@ Public NotInheritable Class AppDriver
     Public ReadOnly Property X As XSession
 
     Public Sub New()
-        X = New XSession("--trace")
-        WaitFor("ready", TimeSpan.FromSeconds(30))
+        Me.New(New XSessionOptions())
+    End Sub
+
+    ''' <summary>Starts the app with --trace (and <paramref name="extraArgs"/>) in a session set up as <paramref name="options"/> say.</summary>
+    Public Sub New(options As XSessionOptions, ParamArray extraArgs As String())
+        Dim args As New List(Of String) From {"--trace"}
+        args.AddRange(extraArgs)
+        X = New XSession(options, args.ToArray())
+        WaitFor("^ready$", TimeSpan.FromSeconds(30))
         ReadLayout()
         ' A known starting point for the pointer (see MoveTo), outside every control.
         X.XDo("mousemove", "1", "1")
@@ -128,6 +135,27 @@ Public NotInheritable Class AppDriver
         If text.Length > 0 Then X.XDo("type", "--delay", "30", text)
         Thread.Sleep(100)
     End Sub
+
+    ''' <summary>What the text boxes held at the last "inputs" trace line, read from the boxes themselves.</summary>
+    Public Function Inputs() As Dictionary(Of String, String)
+        Dim last = Lines().LastOrDefault(Function(l) l.StartsWith("inputs ", StringComparison.Ordinal))
+        Dim result As New Dictionary(Of String, String)(StringComparer.Ordinal)
+        If last Is Nothing Then Return result
+        For Each m As Match In Regex.Matches(last, "(\w+)=\[([^\]]*)\]")
+            result(m.Groups(1).Value) = m.Groups(2).Value
+        Next
+        Return result
+    End Function
+
+    ''' <summary>The last trace line that matches, or Nothing.</summary>
+    Public Function LastMatch(pattern As String) As Match
+        Dim re As New Regex(pattern)
+        For Each line In Lines().Reverse()
+            Dim m = re.Match(line)
+            If m.Success Then Return m
+        Next
+        Return Nothing
+    End Function
 
     ''' <summary>Waits for a visible window with this title (a dialog) and returns its X id.</summary>
     Public Function WaitForWindow(title As String, Optional timeoutSeconds As Double = 10) As String
