@@ -88,13 +88,15 @@ Public NotInheritable Class SceneFileStore
         Catch ex As PathTooLongException
             Throw New IOException("the path is too long for this computer", ex)
         Catch ex As IOException
-            ' The engine writes to a temporary file beside the target first: name the target, not that.
-            Throw New IOException("it could not be written in " & folder & " (" & WithoutTemporaryName(ex.Message) & "); nothing was written", ex)
+            ' The engine writes to a temporary file beside the target first: name the folder, not that file.
+            Throw New IOException("the folder " & folder & " would not take a new file (the system said: " & WithoutTemporaryName(ex.Message) & "); nothing was written", ex)
         End Try
     End Sub
 
     Private Shared Function WithoutTemporaryName(message As String) As String
         Dim text = If(message, "").Replace(vbCr, " ").Replace(vbLf, " ").Trim()
-        Return Regex.Replace(text, "[^\s'""]*\.[^\s'""]*\.[0-9a-f]{32}\.tmp", "the file")
+        ' Drop the temporary file's name, quoted or not, and what is left of its quotes.
+        text = Regex.Replace(text, "\s*[""']?[^\s'""]*\.[0-9a-f]{32}\.tmp[""']?", "")
+        Return text.TrimEnd("."c, " "c, ":"c)
     End Function
 End Class

@@ -196,7 +196,11 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Sub FitView()
         ' The container sits above a strip kept free for the scale bar.
+        Dim before = _View
         _View = ViewTransform.Fit(World.Width, World.Height, _canvasWidth, Math.Max(1, _canvasHeight - ScaleStripPixels), CInt(16 * ScreenScale))
+        If before Is Nothing OrElse before.Scale <> _View.Scale OrElse before.OffsetX <> _View.OffsetX OrElse before.OffsetY <> _View.OffsetY Then
+            Emit("view scale " & Units.Num(_View.Scale, 4) & " origin " & Units.Num(_View.OffsetX, 2) & " " & Units.Num(_View.OffsetY, 2))
+        End If
     End Sub
 
     ''' <summary>Pauses or resumes. On pausing, the trace lists every movable body's state.</summary>

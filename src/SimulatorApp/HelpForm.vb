@@ -10,10 +10,13 @@ Friend NotInheritable Class HelpForm
     Private ReadOnly _pages As New ListBox()
     Private ReadOnly _text As New TextBox()
     Private ReadOnly _topics As IReadOnlyList(Of HelpTopic)
+    Private ReadOnly _trace As Action(Of String)
 
     ''' <param name="scale">screen pixels per 96-dpi pixel</param>
-    Public Sub New(title As String, topics As IReadOnlyList(Of HelpTopic), font As Font, theme As Theme, scale As Double)
+    ''' <param name="trace">with --trace, told each page shown (GUI tests read the text through it)</param>
+    Public Sub New(title As String, topics As IReadOnlyList(Of HelpTopic), font As Font, theme As Theme, scale As Double, trace As Action(Of String))
         _topics = topics
+        _trace = trace
         Text = title
         AutoScaleMode = AutoScaleMode.None
         StartPosition = FormStartPosition.Manual
@@ -45,6 +48,16 @@ Friend NotInheritable Class HelpForm
         Controls.Add(_text)
         Controls.Add(_pages)
         If topics.Count > 0 Then _pages.SelectedIndex = 0
+        AddHandler Shown, Sub(s, e) ShowEveryPage()
+    End Sub
+
+    ''' <summary>With --trace: every page, once, so tests can read them all; then back to the first.</summary>
+    Private Sub ShowEveryPage()
+        If _trace Is Nothing Then Return
+        For i = 1 To _topics.Count - 1
+            _pages.SelectedIndex = i
+        Next
+        If _topics.Count > 0 Then _pages.SelectedIndex = 0
     End Sub
 
     Private Sub OnPageChosen(sender As Object, e As EventArgs)
@@ -53,5 +66,6 @@ Friend NotInheritable Class HelpForm
         _text.Text = _topics(i).Title & Environment.NewLine & Environment.NewLine & _topics(i).Text.Replace(vbLf, Environment.NewLine)
         _text.SelectionStart = 0
         _text.SelectionLength = 0
+        _trace?.Invoke("help page " & _topics(i).Title & ": " & _text.Text.Replace(Environment.NewLine, " "))
     End Sub
 End Class

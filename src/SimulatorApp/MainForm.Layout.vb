@@ -21,8 +21,12 @@ Partial Friend NotInheritable Class MainForm
 
     ''' <summary>The message box's height for its text at the panel's width: up to ten lines, never fewer than two.</summary>
     Private Function MessageHeight() As Integer
-        Dim width = Math.Max(S(50), RowWidthFor(_side.Width) - S(10))
-        Dim measured = TextRenderer.MeasureText(_message.Text, _message.Font, New Size(width, Integer.MaxValue), TextFormatFlags.WordBreak).Height
+        Dim width = Math.Max(S(50), RowWidthFor(_side.Width) - S(12))
+        ' GDI+ wraps at the width given (Mono's TextRenderer measures one line whatever the flags).
+        Dim measured As Integer
+        Using g = _message.CreateGraphics()
+            measured = CInt(Math.Ceiling(g.MeasureString(_message.Text, _message.Font, width).Height))
+        End Using
         Dim line = _message.Font.Height
         Return Math.Min(10 * line, Math.Max(2 * line, measured)) + S(12)
     End Function

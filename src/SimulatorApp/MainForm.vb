@@ -144,6 +144,9 @@ Partial Friend NotInheritable Class MainForm
         Controls.Add(_tabs)
 
         _side.AutoScroll = True
+        ' With --trace, where the controls are after the panel scrolls (GUI tests click them there).
+        AddHandler _side.Scroll, Sub(s, a) TraceLayout()
+        AddHandler _side.MouseWheel, Sub(s, a) BeginInvoke(New Action(AddressOf TraceLayout))
         Controls.Add(_side)
         _message.BorderStyle = BorderStyle.FixedSingle
         _message.UseMnemonic = False
@@ -255,7 +258,7 @@ Partial Friend NotInheritable Class MainForm
     End Sub
 
     Private Sub ShowHelp(title As String, topics As IReadOnlyList(Of HelpTopic))
-        Dim f As New HelpForm(title & " — " & MainForm.Title, topics, Font, _presenter.Theme, _dpi.Scale)
+        Dim f As New HelpForm(title & " — " & MainForm.Title, topics, Font, _presenter.Theme, _dpi.Scale, _trace)
         AddHandler f.FormClosed, Sub(s, e) f.Dispose()
         f.Show(Me)
         _trace?.Invoke("help " & title)

@@ -147,14 +147,14 @@ Public NotInheritable Class AppDriver
         Return result
     End Function
 
-    ''' <summary>The last trace line that matches, or Nothing.</summary>
+    ''' <summary>The last trace line that matches; fails, showing the trace, when none does.</summary>
     Public Function LastMatch(pattern As String) As Match
         Dim re As New Regex(pattern)
         For Each line In Lines().Reverse()
             Dim m = re.Match(line)
             If m.Success Then Return m
         Next
-        Return Nothing
+        Throw New Xunit.Sdk.XunitException("no trace line matching /" & pattern & "/" & vbLf & X.AppOutput())
     End Function
 
     ''' <summary>Waits for a visible window with this title (a dialog) and returns its X id.</summary>
