@@ -19,15 +19,34 @@ Partial Friend NotInheritable Class MainForm
         Return CInt(Math.Round(px * f))
     End Function
 
+    Private _measureBitmap As Bitmap
+    Private _measure As Graphics
+
+    ''' <summary>
+    ''' The size of text as it will be drawn, wrapped at <paramref name="width"/> px when given. It is
+    ''' measured at the DPI GDI+ draws points at: Mono's own measures (Font.Height, TextRenderer) use
+    ''' the DPI it reports, which under a desktop's Xft.dpi is not the one it draws with.
+    ''' </summary>
+    Private Function Measure(text As String, font As Font, Optional width As Integer = 0) As Size
+        If _measure Is Nothing Then
+            _measureBitmap = New Bitmap(1, 1)
+            _measureBitmap.SetResolution(CSng(_dpi.Graphics), CSng(_dpi.Graphics))
+            _measure = Graphics.FromImage(_measureBitmap)
+        End If
+        Dim sz = If(width > 0, _measure.MeasureString(If(text, ""), font, width), _measure.MeasureString(If(text, ""), font))
+        Return New Size(CInt(Math.Ceiling(sz.Width)), CInt(Math.Ceiling(sz.Height)))
+    End Function
+
+    ''' <summary>The height of one line of text in <paramref name="font"/>, px.</summary>
+    Private Function LineHeight(font As Font) As Integer
+        Return Measure("Ag", font).Height
+    End Function
+
     ''' <summary>The message box's height for its text at the panel's width: up to ten lines, never fewer than two.</summary>
     Private Function MessageHeight() As Integer
         Dim width = Math.Max(S(50), RowWidthFor(_side.Width) - S(12))
-        ' GDI+ wraps at the width given (Mono's TextRenderer measures one line whatever the flags).
-        Dim measured As Integer
-        Using g = _message.CreateGraphics()
-            measured = CInt(Math.Ceiling(g.MeasureString(_message.Text, _message.Font, width).Height))
-        End Using
-        Dim line = _message.Font.Height
+        Dim measured = Measure(_message.Text, _message.Font, width).Height
+        Dim line = LineHeight(_message.Font)
         Return Math.Min(10 * line, Math.Max(2 * line, measured)) + S(12)
     End Function
 
@@ -39,8 +58,8 @@ Partial Friend NotInheritable Class MainForm
         If _presenter Is Nothing Then Return
         Dim w = ClientSize.Width, h = ClientSize.Height
         Dim large = _presenter.LargeFonts
-        Dim sideWidth = Math.Min(S(If(large, 470, 420)), Math.Max(S(330), CInt(w * 0.36)))
-        Dim line = Font.Height
+        Dim sideWidth = Math.Min(S(If(large, 470, 420)), Math.Max(S(380), CInt(w * 0.36)))
+        Dim line = LineHeight(Font)
         ' With large fonts the canvas takes more of the height (the tables less), so it grows too.
         Dim canvasHeight = CInt(h * If(large, 0.68, 0.62))
         _canvas.SetBounds(0, 0, w - sideWidth, canvasHeight)
@@ -58,12 +77,18 @@ Partial Friend NotInheritable Class MainForm
         _side.SuspendLayout()
         _side.AutoScrollPosition = New Point(0, 0)
         _side.SetBounds(w - sideWidth, 0, sideWidth, h)
-        Dim rh = Math.Max(S(26), line + S(9))
+        ' Mono centres a button's caption by the font height it reports, which a desktop's Xft.dpi can
+        ' make larger than the text drawn: rows are tall enough for that too, so captions stay inside.
+        Dim rh = Math.Max(S(26), Math.Max(line + S(9), Font.Height + S(4)))
         Dim sliderHeight = Math.Max(S(30), line + S(12))
-        Dim pairs = Not large
         _rowY = S(6)
         _rowX = S(10)
         _rowWidth = RowWidthFor(sideWidth)
+        ' Labels and boxes two to a row when every label fits its share; one to a row otherwise (large fonts).
+        Dim fieldUsable = _rowWidth - 3 * S(6)
+        Dim pairs = Not large AndAlso
+            {_radiusLabel, _widthLabel, _boxWidthLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
+            {_massLabel, _heightLabel, _boxHeightLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
 
         Row(MessageHeight(), (_message, 1.0))
         Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
@@ -71,7 +96,9 @@ Partial Friend NotInheritable Class MainForm
         Row(sliderHeight, (_speed, 1.0))
         Row(line + S(4), (_gravityLabel, 1.0))
         Row(sliderHeight, (_gravity, 1.0))
-        If pairs Then
+        ' The four planets in one row when their names and values fit there, else in two.
+        Dim quarter = (_rowWidth - 3 * S(6)) \ 4
+        If pairs AndAlso _gravityMarks.All(Function(b) TextFits(b, quarter)) Then
             Row(rh, (_gravityMarks(0), 0.25), (_gravityMarks(1), 0.25), (_gravityMarks(2), 0.25), (_gravityMarks(3), 0.25))
         Else
             Row(rh, (_gravityMarks(0), 0.5), (_gravityMarks(1), 0.5))
@@ -103,10 +130,16 @@ Partial Friend NotInheritable Class MainForm
         ShowState()
     End Sub
 
+    ''' <summary>Whether a control's caption fits in <paramref name="width"/> px (with a button's edges or a check box's box).</summary>
+    Private Function TextFits(c As Control, width As Integer) As Boolean
+        Dim room = width - If(TypeOf c Is CheckBox, S(22), S(10))
+        Return Measure(c.Text, c.Font).Width <= room
+    End Function
+
     ''' <summary>Whether the totals line, with room for its numbers to grow, fits on one line this wide.</summary>
     Private Function TotalsFitOnOneLine(width As Integer) As Boolean
         Dim sample = String.Join("     ", _presenter.Snapshot.Totals)
-        Return TextRenderer.MeasureText(sample & "  −00.0", _totals.Font).Width <= width
+        Return Measure(sample & "  −00.0", _totals.Font).Width <= width
     End Function
 
     ''' <summary>Each column as wide as its header, and the spare width shared out, so no header is clipped.</summary>
@@ -115,7 +148,7 @@ Partial Friend NotInheritable Class MainForm
         ' Headers are wider than the numbers under them, except for the id and colour columns.
         For i = 0 To widths.Length - 1
             Dim sample = If(i = 0, "ball00", If(i = 1, "#888888", "−0.000"))
-            widths(i) = Math.Max(TextRenderer.MeasureText(list.Columns(i).Text, list.Font).Width, TextRenderer.MeasureText(sample, list.Font).Width) + S(12)
+            widths(i) = Math.Max(Measure(list.Columns(i).Text, list.Font).Width, Measure(sample, list.Font).Width) + S(12)
         Next
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
         For i = 0 To widths.Length - 1
@@ -130,11 +163,11 @@ Partial Friend NotInheritable Class MainForm
     Private Sub FitLogColumns()
         Dim log = _presenter.Log
         For i = 0 To _logList.Columns.Count - 1
-            Dim widest = TextRenderer.MeasureText(_logList.Columns(i).Text, _logList.Font).Width
+            Dim widest = Measure(_logList.Columns(i).Text, _logList.Font).Width
             Dim previous As Integer
             If _logWidths.TryGetValue(i, previous) Then widest = Math.Max(widest, previous)
             For k = 0 To Math.Min(log.Count, 40) - 1
-                widest = Math.Max(widest, TextRenderer.MeasureText(log(k).Cells()(i), _logList.Font).Width)
+                widest = Math.Max(widest, Measure(log(k).Cells()(i), _logList.Font).Width)
             Next
             _logWidths(i) = widest
             Dim wanted = widest + S(16)
@@ -145,6 +178,9 @@ Partial Friend NotInheritable Class MainForm
         Next
     End Sub
 
+    ''' <summary>Shares of a row of two labelled boxes: label, box, label, box.</summary>
+    Private Shared ReadOnly FieldShares As Double() = {0.35, 0.16, 0.26, 0.23}
+
     Private Sub Gap()
         _rowY += S(4)
     End Sub
@@ -152,7 +188,7 @@ Partial Friend NotInheritable Class MainForm
     ''' <summary>Two labelled text boxes side by side, or one above the other with large fonts.</summary>
     Private Sub Fields(height As Integer, pairs As Boolean, ParamArray fields As (Label As Label, Box As TextBox)())
         If pairs Then
-            Row(height, (fields(0).Label, 0.34), (fields(0).Box, 0.2), (fields(1).Label, 0.22), (fields(1).Box, 0.24))
+            Row(height, (fields(0).Label, FieldShares(0)), (fields(0).Box, FieldShares(1)), (fields(1).Label, FieldShares(2)), (fields(1).Box, FieldShares(3)))
         Else
             For Each f In fields
                 Row(height, (f.Label, 0.55), (f.Box, 0.45))
@@ -165,15 +201,24 @@ Partial Friend NotInheritable Class MainForm
         Dim gap = S(6)
         Dim usable = _rowWidth - gap * (items.Length - 1)
         Dim x = _rowX
+        Dim tallest = height
         For Each item In items
             Dim width = CInt(usable * item.Share)
             If item.Control IsNot Nothing Then
-                Dim ctlHeight = If(TypeOf item.Control Is TextBox, Math.Min(height, item.Control.PreferredSize.Height), height)
+                ' A text box is as tall as a line of its text and a little, or as Mono insists on making
+                ' it (from the DPI it reports, later, whatever it is given).
+                Dim box = TryCast(item.Control, TextBox)
+                Dim ctlHeight = If(box IsNot Nothing, Math.Min(height, Math.Max(LineHeight(box.Font) + S(8), box.PreferredHeight)), height)
                 item.Control.SetBounds(x, _rowY + (height - ctlHeight) \ 2, width, ctlHeight)
+                ' Mono keeps a one-line text box as tall as the DPI it reports asks: the row grows to hold it.
+                If item.Control.Height > height Then
+                    item.Control.Top = _rowY
+                    tallest = Math.Max(tallest, item.Control.Height)
+                End If
             End If
             x += width + gap
         Next
-        _rowY += height + S(3)
+        _rowY += tallest + S(3)
     End Sub
 
     ''' <summary>With --trace: every control's screen rectangle and the canvas transform, for GUI tests.</summary>
@@ -181,7 +226,10 @@ Partial Friend NotInheritable Class MainForm
         If _trace Is Nothing Then Return
         Dim named As New List(Of (Name As String, Control As Control)) From {
             ("canvas", _canvas), ("totals", _totals), ("message", _message), ("pause", _pause), ("reset", _reset), ("delete-mode", _deleteMode),
-            ("speed", _speed), ("gravity", _gravity), ("restitution", _restitution),
+            ("speed-label", _speedLabel), ("speed", _speed), ("gravity-label", _gravityLabel), ("gravity", _gravity),
+            ("restitution-label", _restitutionLabel), ("restitution", _restitution),
+            ("radius-label", _radiusLabel), ("mass-label", _massLabel), ("rect-width-label", _widthLabel), ("rect-height-label", _heightLabel),
+            ("box-width-label", _boxWidthLabel), ("box-height-label", _boxHeightLabel),
             ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),
             ("radius", _radius), ("mass", _mass), ("fixed", _fixed), ("add-circle", _addCircle),
             ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("add-rectangle", _addRectangle),
@@ -190,7 +238,11 @@ Partial Friend NotInheritable Class MainForm
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
-            _trace("control " & n.Name & " " & p.X & " " & p.Y & " " & n.Control.Width & " " & n.Control.Height)
+            ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).
+            Dim c = n.Control
+            Dim captioned = TypeOf c Is Button OrElse TypeOf c Is CheckBox OrElse (TypeOf c Is Label AndAlso c IsNot _message AndAlso c IsNot _totals)
+            Dim fits = Not captioned OrElse TextFits(c, c.Width)
+            _trace("control " & n.Name & " " & p.X & " " & p.Y & " " & c.Width & " " & c.Height & " " & If(fits, "fits", "cut"))
         Next
         Dim client = PointToScreen(Point.Empty)
         _trace("window " & client.X & " " & client.Y & " " & ClientSize.Width & " " & ClientSize.Height)

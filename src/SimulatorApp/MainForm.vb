@@ -223,6 +223,8 @@ Partial Friend NotInheritable Class MainForm
     Private Sub AddField(label As Label, text As String, box As TextBox, field As InputField)
         AddLabel(label, text)
         _inputs(field) = box
+        ' The layout sets its height: Mono would otherwise size it from the DPI it reports, not the one it draws at.
+        box.AutoSize = False
         ' Every edit goes to the presenter at once, so what was typed is what it knows.
         AddHandler box.TextChanged, Sub(s, a) If Not _updating Then _presenter.InputChanged(field, box.Text)
         _side.Controls.Add(box)
@@ -499,10 +501,8 @@ Partial Friend NotInheritable Class MainForm
             list.Invalidate()
         End If
         Dim totals = WrapTotals(snap.Totals, _totals.Width - S(8))
-        If totals <> _totals.Text Then
-            _totals.Text = totals
-            If _presenter.IsPaused Then _trace?.Invoke("totals " & totals.Replace(Environment.NewLine, " / "))
-        End If
+        If totals <> _totals.Text Then _totals.Text = totals
+        If _presenter.IsPaused Then _trace?.Invoke("totals " & totals.Replace(Environment.NewLine, " / "))
         _canvas.Invalidate()
     End Sub
 
@@ -513,7 +513,7 @@ Partial Friend NotInheritable Class MainForm
         Dim line = ""
         For Each item In items
             Dim candidate = If(line.Length = 0, item, line & gap & item)
-            If line.Length > 0 AndAlso TextRenderer.MeasureText(candidate, _totals.Font).Width > width Then
+            If line.Length > 0 AndAlso Measure(candidate, _totals.Font).Width > width Then
                 lines.Add(line)
                 line = item
             Else
@@ -586,6 +586,8 @@ Partial Friend NotInheritable Class MainForm
         If disposing Then
             _timer.Dispose()
             _painter.Dispose()
+            _measure?.Dispose()
+            _measureBitmap?.Dispose()
         End If
         MyBase.Dispose(disposing)
     End Sub

@@ -6,9 +6,11 @@ Imports System.Runtime.InteropServices
 ''' <summary>
 ''' The screen's dots per inch, and how much to scale the window by. On Windows the runtime knows
 ''' (the manifest declares the app DPI-aware, so GDI+ reports the real DPI and draws points at it).
-''' Under Mono on X11, GDI+ always reports 96, so a window laid out in pixels and 10-point fonts comes
-''' out tiny on a 192-dpi screen: there the DPI is read from X itself, first the Xft.dpi resource
-''' (what GNOME, KDE and Xfce set for the user's scale), else the screen's size in millimetres.
+''' Under Mono on X11 a window laid out in pixels with 10-point fonts comes out tiny on a 192-dpi
+''' screen: Mono's GDI+ draws a point at 96 dpi whatever it reports (it reports Xft.dpi when that is
+''' set, 96 otherwise). There the DPI is read from X itself, first the Xft.dpi resource (what GNOME,
+''' KDE and Xfce set for the user's scale), else the screen's size in millimetres, and fonts are
+''' scaled from 96.
 ''' </summary>
 Friend NotInheritable Class ScreenDpi
     Private Sub New(screen As Double, graphics As Double, source As String)
@@ -19,7 +21,7 @@ Friend NotInheritable Class ScreenDpi
 
     ''' <summary>The screen's DPI.</summary>
     Public ReadOnly Property Screen As Double
-    ''' <summary>The DPI GDI+ draws points at (96 under Mono whatever the screen).</summary>
+    ''' <summary>The DPI GDI+ draws points at (96 under Mono whatever the screen or what it reports).</summary>
     Public ReadOnly Property Graphics As Double
     ''' <summary>Where <see cref="Screen"/> came from, for the trace.</summary>
     Public ReadOnly Property Source As String
@@ -47,9 +49,10 @@ Friend NotInheritable Class ScreenDpi
         If Type.GetType("Mono.Runtime") Is Nothing OrElse Not RuntimeInformation.IsOSPlatform(OSPlatform.Linux) Then
             Return New ScreenDpi(gdi, gdi, "GDI+")
         End If
+        Const monoPoints = 96.0
         Dim x = FromX11()
-        If x.Dpi > 0 Then Return New ScreenDpi(Rounded(x.Dpi), gdi, x.Source)
-        Return New ScreenDpi(gdi, gdi, "GDI+ (X11 gave none)")
+        If x.Dpi > 0 Then Return New ScreenDpi(Rounded(x.Dpi), monoPoints, x.Source)
+        Return New ScreenDpi(monoPoints, monoPoints, "96 (X11 gave none)")
     End Function
 
     ''' <summary>To the nearest quarter of 96 dpi, between 96 and 384: a sloppy monitor size must not give 97.3 dpi.</summary>

@@ -25,6 +25,11 @@ Public NotInheritable Class AppDriver
         Me.New(New XSessionOptions())
     End Sub
 
+    ''' <summary>Starts the app with --trace in a session set up as <paramref name="options"/> say.</summary>
+    Public Sub New(options As XSessionOptions)
+        Me.New(options, Array.Empty(Of String)())
+    End Sub
+
     ''' <summary>Starts the app with --trace (and <paramref name="extraArgs"/>) in a session set up as <paramref name="options"/> say.</summary>
     Public Sub New(options As XSessionOptions, ParamArray extraArgs As String())
         Dim args As New List(Of String) From {"--trace"}
@@ -41,7 +46,7 @@ Public NotInheritable Class AppDriver
     ''' <summary>Reads the last layout the app printed (it prints one after each re-layout).</summary>
     Public Sub ReadLayout()
         For Each line In Lines()
-            Dim m = Regex.Match(line, "^control (\S+) (-?\d+) (-?\d+) (\d+) (\d+)$")
+            Dim m = Regex.Match(line, "^control (\S+) (-?\d+) (-?\d+) (\d+) (\d+)( fits| cut)?$")
             If m.Success Then _controls(m.Groups(1).Value) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value), Int(m.Groups(4).Value), Int(m.Groups(5).Value))
             m = Regex.Match(line, "^view scale (\S+) origin (\S+) (\S+)$")
             If m.Success Then
