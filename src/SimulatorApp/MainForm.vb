@@ -226,7 +226,12 @@ Partial Friend NotInheritable Class MainForm
         ' The layout sets its height: Mono would otherwise size it from the DPI it reports, not the one it draws at.
         box.AutoSize = False
         ' Every edit goes to the presenter at once, so what was typed is what it knows.
-        AddHandler box.TextChanged, Sub(s, a) If Not _updating Then _presenter.InputChanged(field, box.Text)
+        AddHandler box.TextChanged,
+            Sub(s, a)
+                If _updating Then Return
+                _presenter.InputChanged(field, box.Text)
+                TraceInputs()
+            End Sub
         _side.Controls.Add(box)
     End Sub
 

@@ -58,8 +58,9 @@ Public NotInheritable Class AppDriver
         If Not _controls.ContainsKey("canvas") OrElse _scale <= 0 Then Throw New InvalidOperationException("the app printed no layout" & vbLf & X.AppOutput())
     End Sub
 
-    ''' <summary>The screen rectangle of a named control.</summary>
+    ''' <summary>The screen rectangle of a named control, where the app last laid it out (a longer message moves the panel down).</summary>
     Public Function Control(name As String) As (X As Integer, Y As Integer, W As Integer, H As Integer)
+        ReadLayout()
         Dim r As (X As Integer, Y As Integer, W As Integer, H As Integer) = Nothing
         If Not _controls.TryGetValue(name, r) Then Throw New KeyNotFoundException("no control '" & name & "' in the layout" & vbLf & X.AppOutput())
         Return r
