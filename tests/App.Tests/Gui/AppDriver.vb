@@ -79,11 +79,38 @@ Public NotInheritable Class AppDriver
         End Get
     End Property
 
-    ''' <summary>Clicks the middle of a named control with the left button.</summary>
+    ''' <summary>Clicks the middle of a named control with the left button (scrolling the side panel to it first).</summary>
     Public Sub Click(name As String)
-        Dim r = Control(name)
+        Dim r = ScrollIntoView(name)
         ClickAt(r.X + r.W \ 2, r.Y + r.H \ 2)
     End Sub
+
+    ''' <summary>
+    ''' When the side panel is scrolled (large fonts on a small screen) and the control is out of its
+    ''' view, turns the mouse wheel over the panel until it is in view; returns where it is then.
+    ''' </summary>
+    Public Function ScrollIntoView(name As String) As (X As Integer, Y As Integer, W As Integer, H As Integer)
+        Dim r = Control(name)
+        If name = "side" OrElse Not _controls.ContainsKey("side") Then Return r
+        Dim side = Control("side")
+        If r.X < side.X Then Return r
+        For attempt = 1 To 30
+            Dim wheel As String
+            If r.Y + r.H > side.Y + side.H Then
+                wheel = "5"
+            ElseIf r.Y < side.Y Then
+                wheel = "4"
+            Else
+                Exit For
+            End If
+            Dim from = Mark()
+            MoveTo(side.X + side.W \ 2, side.Y + side.H \ 2)
+            X.XDo("click", wheel)
+            WaitFor("^ready$", skip:=from)
+            r = Control(name)
+        Next
+        Return r
+    End Function
 
     ''' <summary>Clicks a screen point.</summary>
     Public Sub ClickAt(sx As Integer, sy As Integer, Optional button As Integer = 1)
@@ -138,7 +165,7 @@ Public NotInheritable Class AppDriver
         Click(name)
         X.XDo("key", "ctrl+a")
         X.XDo("key", "BackSpace")
-        If text.Length > 0 Then X.XDo("type", "--delay", "30", text)
+        If text.Length > 0 Then X.XDo("type", "--delay", "30", "--", text)
         Thread.Sleep(100)
     End Sub
 
@@ -177,7 +204,7 @@ Public NotInheritable Class AppDriver
 
     ''' <summary>Types text into whatever has the keyboard focus, then presses Return.</summary>
     Public Sub TypeAndEnter(text As String)
-        X.XDo("type", "--delay", "30", text)
+        X.XDo("type", "--delay", "30", "--", text)
         Thread.Sleep(200)
         X.XDo("key", "Return")
         Thread.Sleep(200)

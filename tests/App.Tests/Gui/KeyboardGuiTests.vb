@@ -47,7 +47,7 @@ Public Class KeyboardGuiTests
                         app.Click(Boxes(i))
                         app.X.XDo("key", "ctrl+a")
                         app.X.XDo("key", "BackSpace")
-                        app.X.XDo("type", "--delay", "20", "é€ß²µ§àçù")
+                        app.X.XDo("type", "--delay", "20", "--", "é€ß²µ§àçù")
                         For Each k In FrenchKeys
                             app.X.XDo("key", k)
                         Next
