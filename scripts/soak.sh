@@ -41,24 +41,23 @@ wait "$app" 2>/dev/null || true
 app=""
 
 grep '^stats ' "$log" || { echo "soak: no stats were printed" >&2; cat "$log" >&2; exit 1; }
-# Flat or not: the first full minute against the last, and the largest.
+# Flat or not: the mean of the first quarter of the samples against that of the last quarter (the
+# managed heap saws up and down between collections, so single samples say little), and the largest.
 awk '
   /^stats / {
-    for (i = 2; i <= NF; i++) { split($i, kv, "="); v[kv[1]] = kv[2] + 0 }
     n++
-    if (n == 1) { rss0 = v["rss_mb"]; heap0 = v["heap_mb"]; int0 = v["interval_median_ms"]; step0 = v["step_median_ms"]; paint0 = v["paint_median_ms"] }
-    rss = v["rss_mb"]; heap = v["heap_mb"]; intv = v["interval_median_ms"]; p95 = v["interval_p95_ms"]; step = v["step_median_ms"]; paint = v["paint_median_ms"]
-    if (rss > rssmax) rssmax = rss
-    if (heap > heapmax) heapmax = heap
-    if (p95 > p95max) p95max = p95
-    frames += v["frames"]
+    for (i = 2; i <= NF; i++) { split($i, kv, "="); val[n, kv[1]] = kv[2] + 0 }
   }
+  function mean(key, from, to,   s, k) { s = 0; for (k = from; k <= to; k++) s += val[k, key]; return s / (to - from + 1) }
+  function most(key,   m, k) { m = 0; for (k = 1; k <= n; k++) if (val[k, key] > m) m = val[k, key]; return m }
   END {
     if (n == 0) exit 1
-    printf "soak: %d samples, %d frames\n", n, frames
-    printf "  resident memory  %.1f MB first, %.1f MB last, %.1f MB at most (%+.1f%%)\n", rss0, rss, rssmax, 100 * (rss - rss0) / rss0
-    printf "  managed heap     %.1f MB first, %.1f MB last, %.1f MB at most\n", heap0, heap, heapmax
-    printf "  frame interval   median %.1f ms first, %.1f ms last; 95th percentile at most %.1f ms\n", int0, intv, p95max
-    printf "  engine step      median %.2f ms first, %.2f ms last\n", step0, step
-    printf "  canvas paint     median %.2f ms first, %.2f ms last\n", paint0, paint
+    q = int(n / 4); if (q < 1) q = 1
+    frames = 0; for (k = 1; k <= n; k++) frames += val[k, "frames"]
+    printf "soak: %d samples, %d frames; first quarter -> last quarter (largest)\n", n, frames
+    printf "  resident memory   %7.1f -> %7.1f MB   (%.1f MB)\n", mean("rss_mb", 1, q), mean("rss_mb", n - q + 1, n), most("rss_mb")
+    printf "  managed heap      %7.1f -> %7.1f MB   (%.1f MB)\n", mean("heap_mb", 1, q), mean("heap_mb", n - q + 1, n), most("heap_mb")
+    printf "  frame interval    %7.2f -> %7.2f ms median, 95th percentile %.2f -> %.2f ms (%.2f ms)\n", mean("interval_median_ms", 1, q), mean("interval_median_ms", n - q + 1, n), mean("interval_p95_ms", 1, q), mean("interval_p95_ms", n - q + 1, n), most("interval_p95_ms")
+    printf "  engine step       %7.2f -> %7.2f ms median (%.2f ms at the 95th percentile, worst minute)\n", mean("step_median_ms", 1, q), mean("step_median_ms", n - q + 1, n), most("step_p95_ms")
+    printf "  canvas paint      %7.2f -> %7.2f ms median (%.2f ms at the 95th percentile, worst minute)\n", mean("paint_median_ms", 1, q), mean("paint_median_ms", n - q + 1, n), most("paint_p95_ms")
   }' "$log"

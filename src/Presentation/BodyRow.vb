@@ -22,6 +22,8 @@ Public Structure BodyRow
     Public Property Size As Vector
     ''' <summary>m²</summary>
     Public Property Area As Double
+    ''' <summary>The body's sizes by the names a scene file gives them, m: ("radius", r) for a circle; ("width", w), ("height", h) for a rectangle.</summary>
+    Public Property SizeFields As IReadOnlyList(Of (Name As String, Metres As Double))
 
     ''' <summary>The row of a body now. The one place that reads each kind of body for the tables.</summary>
     Public Shared Function Capture(body As Shape) As BodyRow
@@ -33,13 +35,16 @@ Public Structure BodyRow
             row.Velocity = c.Velocity
             row.Mass = c.Mass
             row.Size = New Vector(c.Radius, 0)
+            row.SizeFields = {("radius", c.Radius)}
             Return row
         End If
         Dim r = TryCast(body, Rectangle)
         If r IsNot Nothing Then
             row.Position = r.Position
             row.Size = New Vector(r.Width, r.Height)
+            row.SizeFields = {("width", r.Width), ("height", r.Height)}
         End If
+        If row.SizeFields Is Nothing Then row.SizeFields = Array.Empty(Of (Name As String, Metres As Double))()
         Return row
     End Function
 End Structure

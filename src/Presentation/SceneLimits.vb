@@ -28,13 +28,9 @@ Public Module SceneLimits
         For i = 0 To bodies.Count - 1
             Dim place = "bodies[" & i.ToString(CultureInfo.InvariantCulture) & "]"
             Dim row = BodyRow.Capture(bodies(i))
-            Dim c = TryCast(bodies(i), Circle)
-            If c IsNot Nothing Then
-                p = Outside(place & ".radius", c.Radius, InputLimits.MinRadius, MaxSize, "m")
-            Else
-                p = If(Outside(place & ".width", row.Size.X, InputLimits.MinSide, MaxSize, "m"),
-                       Outside(place & ".height", row.Size.Y, InputLimits.MinSide, MaxSize, "m"))
-            End If
+            For Each size In row.SizeFields
+                If p Is Nothing Then p = Outside(place & "." & size.Name, size.Metres, Math.Min(InputLimits.MinRadius, InputLimits.MinSide), MaxSize, "m")
+            Next
             If p Is Nothing AndAlso Not row.IsFixed Then p = Outside(place & ".mass", row.Mass, InputLimits.MinMass, MaxFileMass, "kg")
             If p Is Nothing Then p = Outside(place & " position", row.Position.Length, 0, MaxDistance, "m from the origin")
             If p Is Nothing Then p = Outside(place & " speed", row.Velocity.Length, 0, MaxSpeed, "m/s")

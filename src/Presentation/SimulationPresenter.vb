@@ -163,6 +163,8 @@ Partial Public NotInheritable Class SimulationPresenter
             ShowMessage("That did not work: " & OneLine(ex.Message))
         Catch ex As NotSupportedException
             ShowMessage("That did not work: " & OneLine(ex.Message))
+        Catch ex As Scenes.SceneFormatException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
         End Try
     End Sub
 
@@ -407,7 +409,12 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim widest = World.Circles.Where(Function(c) Not c.IsFixed).Select(Function(c) 2 * c.Radius).DefaultIfEmpty(0).Max()
         If widest > Math.Min(w, h) Then Return "the widest ball is " & Units.Quantity(widest, "m") & " across and would not fit."
         ' Try it on a copy first: the balls are brought in and pushed apart; if they still overlap, there is no room.
-        Dim trial = Scenes.SceneFile.Load(Scenes.SceneFile.Save(World))
+        Dim trial As World
+        Try
+            trial = Scenes.SceneFile.Load(Scenes.SceneFile.Save(World))
+        Catch ex As Scenes.SceneFormatException
+            Return Nothing ' no copy to try it on: the resize itself settles the overlaps
+        End Try
         trial.Resize(w, h)
         If OverlapResolver.Resolve(trial) > Placement.Tolerance OrElse Placement.FindProblem(trial) IsNot Nothing Then
             Dim balls = World.Circles.Where(Function(c) Not c.IsFixed).Count()

@@ -222,6 +222,11 @@ Public Class TrustGuiTests
             Assert.Equal(0.0, shot.Fraction(totals.X, totals.Y, totals.X + totals.W, totals.Y + totals.H, arrowBlue))
             Assert.Equal(0.0, shot.Fraction(tabs.X, tabs.Y, tabs.X + tabs.W, tabs.Y + tabs.H, arrowBlue))
             Assert.Equal(0.0, shot.Fraction(side.X, side.Y, side.X + side.W, side.Y + side.H, arrowBlue))
+            ' The arrows' scale is shown: the key's arrow, in the strip under the box.
+            Dim canvas = app.Control("canvas")
+            Dim key = shot.Fraction(canvas.X, canvas.Y + canvas.H - 34, canvas.X + canvas.W \ 2, canvas.Y + canvas.H, arrowBlue)
+            Assert.True(key > 0.002, $"no arrow key under the canvas ({key:P2})")
+            app.WaitFor("^check texts ok$")
         End Using
     End Sub
 

@@ -264,3 +264,33 @@ Public Class MessagesAndFilesTests
         Assert.DoesNotContain("Cancel", all, StringComparison.Ordinal)
     End Sub
 End Class
+
+''' <summary>The form is a passive view: slider scaling and the error policy live in the presenter.</summary>
+Public Class PassiveViewTests
+    <Fact>
+    Public Sub Sliders_AreScaledHere_NotInTheWindow()
+        Dim h As New PresenterHarness()
+        h.P.GravitySliderMoved(981)
+        Assert.Equal(9.81, h.P.World.Gravity, 12)
+        h.P.SetGravity(24.79)
+        Assert.Equal(2479, h.P.GravityPosition)
+        h.P.GravitySliderMoved(99999)
+        Assert.Equal(GravityMark.Maximum, h.P.World.Gravity)
+        h.P.RestitutionSliderMoved(90)
+        Assert.Equal(0.9, h.P.World.Restitution, 12)
+        Assert.Equal(90, h.P.RestitutionPosition)
+        Assert.Equal("Gravity g = 100 m/s²", h.P.GravityText.Replace(Units.Nbsp, " "c))
+        Assert.Equal("Restitution e = 0.90  (1 = elastic)", h.P.RestitutionText)
+    End Sub
+
+    <Fact>
+    Public Sub WhatTheEngineRefuses_IsAMessageAndAPause_NeverACrash()
+        Dim h As New PresenterHarness(New World(8, 5, 0.0, 1.0))
+        Dim ball = h.Ball(4, 2)
+        h.P.World.SetVelocity(ball, New Vector(1.0E+200, 0))
+        h.P.Tick(1 / 60.0)
+        Assert.True(h.P.IsPaused)
+        Assert.StartsWith("The simulation stopped: ", h.View.LastMessage, StringComparison.Ordinal)
+        Assert.True(h.View.SettingsShown > 0, "the window was told to show the pause")
+    End Sub
+End Class
