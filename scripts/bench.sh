@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Speed against error: builds the benchmark in Release, runs it and rewrites docs/benchmarks.md and
-# docs/benchmark-*.svg.
-#   bash scripts/bench.sh            the full run (every scene, dt and gas size; about 10 minutes on 2 cores)
-#   bash scripts/bench.sh --quick    a run of under a minute, for CI
+# Speed against error: builds the benchmark in Release and runs it.
+#   bash scripts/bench.sh            the full run (every scene, dt and gas size; about 15 minutes on 2 cores):
+#                                    rewrites docs/benchmarks.md, docs/benchmark-*.svg and the README's figures
+#   bash scripts/bench.sh --quick    a run of about a minute, for CI: written to a scratch folder (printed at
+#                                    the end), never over the committed report; add --out DIR to keep it
 # Other options go to the benchmark, e.g. --json results.json (see: dotnet src/Benchmarks/bin/Release/net10.0/Benchmarks.dll --help).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -15,4 +16,11 @@ if [[ " $* " != *" --quick "* ]] && command -v mono >/dev/null 2>&1; then
     echo "bench: the app did not build; the frame budget section will say so" >&2
 fi
 
-exec dotnet src/Benchmarks/bin/Release/net10.0/Benchmarks.dll --out docs "$@"
+out=(--out docs --readme README.md)
+if [[ " $* " == *" --quick "* ]]; then
+  out=(--out "$(mktemp -d -t bench-quick.XXXXXX)")
+fi
+if [[ " $* " == *" --out "* ]]; then
+  out=()
+fi
+exec dotnet src/Benchmarks/bin/Release/net10.0/Benchmarks.dll "${out[@]}" "$@"

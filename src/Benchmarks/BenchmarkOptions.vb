@@ -8,7 +8,7 @@ Imports System.Globalization
 Friend NotInheritable Class BenchmarkOptions
     ''' <summary>Every scene, in report order.</summary>
     Public Shared ReadOnly Property AllScenes As IReadOnlyList(Of String) =
-        {"bouncing-apex", "bouncing-rest", "projectile", "oblique-hit", "cradle", "gas-energy", "pile"}
+        {"bouncing-apex", "bouncing-rest", "projectile", "oblique-hit", "cradle", "gas-energy", "pile", "mixed"}
 
     ''' <summary>The solvers compared, as SolverFactory names them.</summary>
     Public Shared ReadOnly Property AllSolvers As IReadOnlyList(Of String) = {"event", "euler", "verlet"}
@@ -27,16 +27,24 @@ Friend NotInheritable Class BenchmarkOptions
         "  --quick      a short run for CI (under a minute); without it every scene, dt and N (about 10 minutes)" & vbLf &
         "  --json FILE  also write every result as JSON, for comparing runs" & vbLf &
         "  --out DIR    where docs/benchmarks.md and the SVG plots go (default: docs)" & vbLf &
+        "  --readme FILE  copy the report's headline figures into FILE (README.md) between its markers" & vbLf &
+        "  --readme-only  with --readme: copy the figures of the report already in --out, and run nothing" & vbLf &
         "  --no-frame   skip the app's frame benchmark (mono + Xvfb)" & vbLf &
         "  --gas-rounds K  run every gas size K times, in rounds that take the sizes in turn and every solver" & vbLf &
         "               at a size one after the other; report the median run with the range (default 3; 1 with --quick)" & vbLf &
-        "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, and gas-scaling" & vbLf &
+        "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, mixed, and gas-scaling" & vbLf &
         "  gas-scaling also times the textbook baseline (a plain event-driven gas, not the engine) beside event"
 
     Public Property Quick As Boolean
     Public Property Help As Boolean
     Public Property JsonPath As String
     Public Property OutDir As String = "docs"
+
+    ''' <summary>README.md to copy the headline figures into (a full run writing the committed report), or Nothing.</summary>
+    Public Property ReadmePath As String
+
+    ''' <summary>Only copy the figures of the report already in <see cref="OutDir"/> into <see cref="ReadmePath"/>; run nothing.</summary>
+    Public Property ReadmeOnly As Boolean
     Public Property NoFrame As Boolean
     Public Property AppPath As String = "src/SimulatorApp/bin/Release/net48/SimulatorApp.exe"
     Public Property Scenes As IReadOnlyList(Of String) = AllScenes.Concat({GasScaling.SceneName}).ToList()
@@ -162,6 +170,8 @@ Friend NotInheritable Class BenchmarkOptions
                 Case "--no-frame" : o.NoFrame = True
                 Case "--json" : o.JsonPath = value(a)
                 Case "--out" : o.OutDir = value(a)
+                Case "--readme" : o.ReadmePath = value(a)
+                Case "--readme-only" : o.ReadmeOnly = True
                 Case "--app" : o.AppPath = value(a)
                 Case "--scenes" : o.Scenes = ParseNames(a, value(a), AllScenes.Concat({GasScaling.SceneName}).ToList())
                 Case "--solvers" : o.Solvers = ParseList(a, value(a))

@@ -2,7 +2,7 @@ Option Strict On
 
 ''' <summary>How far bodies have sunk into each other or into the walls: zero for a correct solver.</summary>
 Friend Module Overlap
-    ''' <summary>The deepest overlap between two circles or a circle and a wall, m (0 when none).</summary>
+    ''' <summary>The deepest overlap between two circles, a circle and a rectangle, or a circle and a wall, m (0 when none).</summary>
     Public Function Deepest(world As World) As Double
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
         Dim worst = 0.0
@@ -17,9 +17,28 @@ Friend Module Overlap
             End If
             For j = i + 1 To cs.Count - 1
                 Dim b = cs(j)
+                If a.IsFixed AndAlso b.IsFixed Then Continue For ' fixed bodies never collide with each other
                 worst = Math.Max(worst, a.Radius + b.Radius - (a.Position - b.Position).Length)
+            Next
+            If a.IsFixed Then Continue For
+            For Each r In world.Rectangles
+                worst = Math.Max(worst, Collider.CircleRectangle(a.Position, a.Radius, r.Min, r.Max).Depth)
             Next
         Next
         Return worst
+    End Function
+
+    ''' <summary>How many movable circles have their centre inside a fixed body (a fixed circle or a rectangle).</summary>
+    Public Function CentresInsideFixedBodies(world As World) As Integer
+        If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
+        Dim count = 0
+        For Each a In world.Circles
+            If a.IsFixed Then Continue For
+            Dim p = a.Position
+            Dim inside = world.Rectangles.Any(Function(r) p.X > r.Min.X AndAlso p.X < r.Max.X AndAlso p.Y > r.Min.Y AndAlso p.Y < r.Max.Y) OrElse
+                         world.Circles.Any(Function(f) f.IsFixed AndAlso (p - f.Position).Length < f.Radius)
+            If inside Then count += 1
+        Next
+        Return count
     End Function
 End Module

@@ -25,6 +25,7 @@ Public NotInheritable Class Program
             Return 0
         End If
         Try
+            If options.ReadmeOnly Then Return CopyFiguresToReadme(options)
             If options.ChildScene IsNot Nothing Then Return RunChildScene(options)
             If options.ChildGas > 0 Then Return RunChildGas(options)
             Return RunAll(options)
@@ -242,12 +243,26 @@ Public NotInheritable Class Program
             WriteAtomically(Path.Combine(options.OutDir, kv.Key), kv.Value)
         Next
         WriteAtomically(Path.Combine(options.OutDir, "benchmarks.md"), MarkdownReport.Render(machine, mode, options.Repeats, scenes, results, frame))
+        If options.ReadmePath IsNot Nothing Then CopyFiguresToReadme(options)
         If options.JsonPath IsNot Nothing Then
             Dim dir = Path.GetDirectoryName(Path.GetFullPath(options.JsonPath))
             Directory.CreateDirectory(dir)
             WriteAtomically(options.JsonPath, JsonReport.ToJson(machine, mode, results))
         End If
     End Sub
+
+    ''' <summary>Copies the headline figures of the report in the output folder into the README (see <see cref="ReadmeFigures"/>).</summary>
+    Private Shared Function CopyFiguresToReadme(options As BenchmarkOptions) As Integer
+        If options.ReadmePath Is Nothing Then
+            Console.Error.WriteLine("benchmarks: --readme-only needs --readme FILE")
+            Return 2
+        End If
+        Dim report = File.ReadAllText(Path.Combine(options.OutDir, "benchmarks.md"))
+        Dim readme = File.ReadAllText(options.ReadmePath)
+        WriteAtomically(options.ReadmePath, ReadmeFigures.Splice(readme, ReadmeFigures.FromReport(report)))
+        Console.Out.WriteLine("benchmarks: copied the headline figures into " & options.ReadmePath)
+        Return 0
+    End Function
 
     ''' <summary>Writes to a temporary file beside the target, then moves it into place: never half a file.</summary>
     Private Shared Sub WriteAtomically(target As String, text As String)

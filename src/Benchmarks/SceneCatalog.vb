@@ -13,6 +13,7 @@ Friend Module SceneCatalog
             Case "cradle" : Return New CradleScene()
             Case "gas-energy" : Return New GasEnergyScene(100, options.GasSeconds)
             Case "pile" : Return New PileScene()
+            Case "mixed" : Return New MixedScene(If(options.Quick, 0.02, 0.2))
             Case Else : Throw New ArgumentException("unknown scene '" & name & "'", NameOf(name))
         End Select
     End Function

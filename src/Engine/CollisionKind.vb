@@ -1,6 +1,6 @@
 Option Strict On
 
-''' <summary>What a movable circle hit.</summary>
+''' <summary>What a movable circle hit; <see cref="Other"/> for every pair with another kind of body.</summary>
 Public Enum CollisionKind
     ''' <summary>Another movable circle.</summary>
     CircleCircle
@@ -10,4 +10,6 @@ Public Enum CollisionKind
     CircleRectangle
     ''' <summary>A side of the container.</summary>
     CircleWall
+    ''' <summary>Any other pair (a box, a polygon or a segment is involved): see <see cref="CollisionRecord.KindName"/>.</summary>
+    Other
 End Enum

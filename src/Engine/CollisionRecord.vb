@@ -4,8 +4,8 @@ Option Strict On
 Public Structure CollisionRecord
     ''' <summary>Simulated time of the collision, s.</summary>
     Public ReadOnly Property Time As Double
-    ''' <summary>The movable circle.</summary>
-    Public ReadOnly Property A As Circle
+    ''' <summary>The movable body (a circle, a box or a polygon).</summary>
+    Public ReadOnly Property A As Shape
     ''' <summary>The other body, or Nothing for a wall.</summary>
     Public ReadOnly Property B As Shape
     ''' <summary>Which wall, when <see cref="B"/> is Nothing.</summary>
@@ -20,7 +20,7 @@ Public Structure CollisionRecord
     ''' <summary>m/s; zero for a fixed body or a wall.</summary>
     Public ReadOnly Property BVelocityAfter As Vector
 
-    Public Sub New(time As Double, a As Circle, b As Shape, wall As WallSide, kind As CollisionKind,
+    Public Sub New(time As Double, a As Shape, b As Shape, wall As WallSide, kind As CollisionKind,
                    aBefore As Vector, aAfter As Vector, bBefore As Vector, bAfter As Vector)
         Me.Time = time
         Me.A = a
@@ -41,15 +41,14 @@ Public Structure CollisionRecord
         End Get
     End Property
 
-    ''' <summary>The kind as the outputs spell it: circle-circle, circle-fixed, circle-rectangle, circle-wall.</summary>
+    ''' <summary>
+    ''' The kind as the outputs spell it: A-B with A the kind of <see cref="A"/> and B of <see cref="B"/>,
+    ''' each one of circle, fixed (a fixed circle), rectangle, segment, polygon or wall: circle-circle,
+    ''' circle-fixed, circle-rectangle, circle-wall, polygon-segment, rectangle-rectangle, …
+    ''' </summary>
     Public ReadOnly Property KindName As String
         Get
-            Select Case Kind
-                Case CollisionKind.CircleCircle : Return "circle-circle"
-                Case CollisionKind.CircleFixed : Return "circle-fixed"
-                Case CollisionKind.CircleRectangle : Return "circle-rectangle"
-                Case Else : Return "circle-wall"
-            End Select
+            Return If(A Is Nothing, "circle", A.KindName) & "-" & If(B Is Nothing, "wall", B.KindName)
         End Get
     End Property
 End Structure

@@ -21,6 +21,15 @@ Public Interface ISolver
     Sub Advance(duration As Double)
 
     ''' <summary>
+    ''' Like <see cref="Advance"/>, but stops early, between two events or steps, once the wall clock
+    ''' (<see cref="Diagnostics.Stopwatch.GetTimestamp"/>) passes <paramref name="deadline"/>: for a
+    ''' window that must stay responsive. Returns the simulated time (s, absolute like
+    ''' <see cref="World.Time"/>) the world has reached, with every body's state exact at that time.
+    ''' Stopping early never changes the run: what follows is what an uninterrupted advance would do.
+    ''' </summary>
+    Function AdvanceWithin(duration As Double, deadline As Long) As Double
+
+    ''' <summary>
     ''' Something changed outside the solver: <paramref name="body"/> was added, removed, moved, pushed,
     ''' dragged or released; Nothing means the world itself changed (g, e, walls, size), so every
     ''' prediction must be rebuilt.

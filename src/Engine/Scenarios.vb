@@ -118,6 +118,48 @@ Public Module Scenarios
         Return w
     End Function
 
+    ''' <summary>
+    ''' A hard mixed scene: <paramref name="count"/> balls whose radii run from 1 mm to 0.5 m (evenly
+    ''' on a log scale), with masses spread over twelve orders of magnitude and speeds from 0.1 to
+    ''' 10⁴ m/s in random directions, among four fixed rectangles (two standing partly outside the
+    ''' container) and three fixed circles, g = 9.81, e = 1, in a walled box 3 m × 7 m. Fast small
+    ''' balls bounce among large slow ones millions of times per simulated second: what a scene like
+    ''' this costs per collision is what it measures. The same seed gives the same scene.
+    ''' </summary>
+    Public Function MixedSizes(Optional count As Integer = 60, Optional seed As Integer = 1) As World
+        If count < 1 Then Throw New ArgumentOutOfRangeException(NameOf(count))
+        Dim w As New World(3.0, 7.0, 9.81, 1.0)
+        w.Add(New Rectangle(New Vector(-0.3, 1.0), 0.9, 0.4, "ledge"))
+        w.Add(New Rectangle(New Vector(2.0, -0.5), 0.6, 1.5, "block"))
+        w.Add(New Rectangle(New Vector(0.9, 3.2), 1.2, 0.15, "shelf"))
+        w.Add(New Rectangle(New Vector(2.6, 5.0), 0.6, 0.3, "sill"))
+        w.Add(Circle.CreateFixed(New Vector(0.8, 5.6), 0.25, "peg1"))
+        w.Add(Circle.CreateFixed(New Vector(1.9, 2.2), 0.15, "peg2"))
+        w.Add(Circle.CreateFixed(New Vector(0.5, 0.6), 0.1, "peg3"))
+        Dim rng As New Random(seed)
+        Dim placed = 0
+        Dim tries = 0
+        While placed < count AndAlso tries < 100000
+            tries += 1
+            Dim r = 0.001 * Math.Pow(500, rng.NextDouble())
+            Dim p = New Vector(r + rng.NextDouble() * (w.Width - 2 * r), r + rng.NextDouble() * (w.Height - 2 * r))
+            Dim clear = True
+            For Each c In w.Circles
+                If (c.Position - p).Length < c.Radius + r Then clear = False : Exit For
+            Next
+            For Each rect In w.Rectangles
+                If clear AndAlso Collider.CircleRectangle(p, r, rect.Min, rect.Max).Depth > 0 Then clear = False
+            Next
+            If Not clear Then Continue While
+            Dim density = Math.Pow(10, 8 * rng.NextDouble() - 4) ' kg/m²: masses over 10¹² with the radii
+            Dim speed = 0.1 * Math.Pow(100000, rng.NextDouble())
+            Dim angle = 2 * Math.PI * rng.NextDouble()
+            w.Add(New Circle(p, r, density * Math.PI * r * r, New Vector(speed * Math.Cos(angle), speed * Math.Sin(angle))))
+            placed += 1
+        End While
+        Return w
+    End Function
+
     ''' <summary>The app's opening scene: a few balls, a peg and a table, so something happens at once.</summary>
     Public Function Demo() As World
         Dim w As New World(8.0, 5.0, 9.81, 0.9)

@@ -10,6 +10,9 @@ Partial Public NotInheritable Class World
     Private ReadOnly _bodies As New List(Of Shape)
     Private ReadOnly _circles As New List(Of Circle)
     Private ReadOnly _rectangles As New List(Of Rectangle)
+    Private ReadOnly _segments As New List(Of Segment)
+    Private ReadOnly _polygons As New List(Of Polygon)
+    Private ReadOnly _movables As New List(Of Shape)
     Private ReadOnly _ids As New HashSet(Of String)(StringComparer.Ordinal)
     Private _width As Double
     Private _height As Double
@@ -78,9 +81,9 @@ Partial Public NotInheritable Class World
             Return _walls
         End Get
         Set(value As Boolean)
-            If value Then CheckEveryCircleFits(_width, _height)
+            If value Then CheckEveryBodyFits(_width, _height)
             _walls = value
-            If value Then BringCirclesInside()
+            If value Then BringBodiesInside()
             _solver?.Invalidate(Nothing)
         End Set
     End Property
@@ -102,10 +105,31 @@ Partial Public NotInheritable Class World
         End Get
     End Property
 
-    ''' <summary>Every rectangle, in the order added.</summary>
+    ''' <summary>Every rectangle, fixed and movable, in the order added.</summary>
     Public ReadOnly Property Rectangles As IReadOnlyList(Of Rectangle)
         Get
             Return _rectangles
+        End Get
+    End Property
+
+    ''' <summary>Every segment, in the order added.</summary>
+    Public ReadOnly Property Segments As IReadOnlyList(Of Segment)
+        Get
+            Return _segments
+        End Get
+    End Property
+
+    ''' <summary>Every polygon, fixed and movable, in the order added.</summary>
+    Public ReadOnly Property Polygons As IReadOnlyList(Of Polygon)
+        Get
+            Return _polygons
+        End Get
+    End Property
+
+    ''' <summary>Every movable body (circles, boxes, polygons), in the order added.</summary>
+    Public ReadOnly Property Movables As IReadOnlyList(Of Shape)
+        Get
+            Return _movables
         End Get
     End Property
 
@@ -115,10 +139,17 @@ Partial Public NotInheritable Class World
     ''' <summary>Called for every collision, in time order. Must not change the world.</summary>
     Public Property CollisionListener As Action(Of CollisionRecord)
 
-    ''' <summary>The circle being dragged, or Nothing.</summary>
-    Public ReadOnly Property DraggedCircle As Circle
+    ''' <summary>The body being dragged, or Nothing.</summary>
+    Public ReadOnly Property DraggedBody As Shape
 
-    ''' <summary>Where the dragged circle is heading, m. It reaches it at the end of the next <see cref="Advance"/>.</summary>
+    ''' <summary>The body being dragged if it is a circle, or Nothing.</summary>
+    Public ReadOnly Property DraggedCircle As Circle
+        Get
+            Return TryCast(_DraggedBody, Circle)
+        End Get
+    End Property
+
+    ''' <summary>Where the dragged body's reference point is heading, m. It reaches it at the end of the next <see cref="Advance"/>.</summary>
     Public ReadOnly Property DragTarget As Vector
 
     ''' <summary>The solver that moves this world. Setting it attaches it.</summary>
@@ -134,7 +165,7 @@ Partial Public NotInheritable Class World
     End Property
 
     ''' <summary>
-    ''' Adds a body. An empty id is given the next free number. A movable circle outside a walled
+    ''' Adds a body. An empty id is given the next free number. A movable body outside a walled
     ''' container is brought inside. Overlaps are allowed: the solver pushes them apart.
     ''' </summary>
     Public Sub Add(body As Shape)
@@ -150,17 +181,23 @@ Partial Public NotInheritable Class World
         ElseIf _ids.Contains(body.Id) Then
             Throw New ArgumentException("id '" & body.Id & "' is already used", NameOf(body))
         End If
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing Then
-            Admit(c, NameOf(body))
-            _circles.Add(c)
-        Else
-            _rectangles.Add(DirectCast(body, Rectangle))
-        End If
+        Admit(body, NameOf(body))
+        KindList(body).Add(body)
+        If Not body.IsFixed Then _movables.Add(body)
         _ids.Add(body.Id)
         _bodies.Add(body)
         _solver?.Invalidate(body)
     End Sub
+
+    ''' <summary>The list of the body's own kind, as a list of shapes (the same list object).</summary>
+    Private Function KindList(body As Shape) As Collections.IList
+        Select Case body.Kind
+            Case ShapeKind.Circle : Return _circles
+            Case ShapeKind.Rectangle : Return _rectangles
+            Case ShapeKind.Segment : Return _segments
+            Case Else : Return _polygons
+        End Select
+    End Function
 
     ''' <summary>
     ''' Puts <paramref name="replacement"/> where <paramref name="body"/> was, in the same place in
@@ -175,30 +212,27 @@ Partial Public NotInheritable Class World
         If replacement.GetType() IsNot body.GetType() Then Throw New ArgumentException("a body can only be replaced by one of the same kind", NameOf(replacement))
         If replacement IsNot body AndAlso _bodies.Contains(replacement) Then Throw New ArgumentException("the replacement is already in the world", NameOf(replacement))
         If replacement.Id <> body.Id Then Throw New ArgumentException("the replacement must keep the id '" & body.Id & "'", NameOf(replacement))
-        Dim c = TryCast(replacement, Circle)
-        If c IsNot Nothing Then
-            Admit(c, NameOf(replacement))
-            Dim old = DirectCast(body, Circle)
-            _circles(_circles.IndexOf(old)) = c
-            If old Is _DraggedCircle Then _DraggedCircle = Nothing
-        Else
-            _rectangles(_rectangles.IndexOf(DirectCast(body, Rectangle))) = DirectCast(replacement, Rectangle)
-        End If
+        If replacement.IsFixed <> body.IsFixed Then Throw New ArgumentException("a body can only be replaced by one that is fixed or movable as it was", NameOf(replacement))
+        Admit(replacement, NameOf(replacement))
+        Dim list = KindList(body)
+        list(list.IndexOf(body)) = replacement
+        If Not body.IsFixed Then _movables(_movables.IndexOf(body)) = replacement
+        If body Is _DraggedBody Then _DraggedBody = Nothing
         _bodies(index) = replacement
         _solver?.Invalidate(body)
         _solver?.Invalidate(replacement)
     End Sub
 
     ''' <summary>
-    ''' Readies a circle that is joining the world: its position and velocity must be finite, a fixed
+    ''' Readies a body that is joining the world: its position and velocity must be finite, a fixed
     ''' one is at rest, and a movable one in a walled container is brought inside.
     ''' </summary>
-    Private Sub Admit(c As Circle, paramName As String)
-        If Not c.Position.IsFinite OrElse Not c.Velocity.IsFinite Then Throw New ArgumentException("position and velocity must be finite", paramName)
-        If c.IsFixed Then c.Velocity = Vector.Zero
-        If _walls AndAlso Not c.IsFixed Then
-            CheckFits(c.Radius, _width, _height)
-            c.Position = Inside(c.Position, c.Radius)
+    Private Sub Admit(b As Shape, paramName As String)
+        If Not b.Position.IsFinite OrElse Not b.Velocity.IsFinite Then Throw New ArgumentException("position and velocity must be finite", paramName)
+        If b.IsFixed Then b.Velocity = Vector.Zero
+        If _walls AndAlso Not b.IsFixed Then
+            CheckFits(b, _width, _height)
+            b.Position = InsideFor(b, b.Position)
         End If
     End Sub
 
@@ -206,13 +240,9 @@ Partial Public NotInheritable Class World
     Public Function Remove(body As Shape) As Boolean
         If body Is Nothing OrElse Not _bodies.Remove(body) Then Return False
         _ids.Remove(body.Id)
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing Then
-            _circles.Remove(c)
-            If c Is _DraggedCircle Then _DraggedCircle = Nothing
-        Else
-            _rectangles.Remove(DirectCast(body, Rectangle))
-        End If
+        KindList(body).Remove(body)
+        _movables.Remove(body)
+        If body Is _DraggedBody Then _DraggedBody = Nothing
         _solver?.Invalidate(body)
         Return True
     End Function
@@ -222,9 +252,12 @@ Partial Public NotInheritable Class World
         _bodies.Clear()
         _circles.Clear()
         _rectangles.Clear()
+        _segments.Clear()
+        _polygons.Clear()
+        _movables.Clear()
         _ids.Clear()
         _nextId = 1
-        _DraggedCircle = Nothing
+        _DraggedBody = Nothing
         _Time = 0
         _solver?.Invalidate(Nothing)
     End Sub
@@ -249,6 +282,26 @@ Partial Public NotInheritable Class World
     End Sub
 
     ''' <summary>
+    ''' Advances by at most <paramref name="duration"/> seconds, stopping early once
+    ''' <paramref name="wallSeconds"/> of wall-clock time have passed (between two events or steps, so
+    ''' the state is exact and the run is the same as without the limit). Returns the simulated
+    ''' seconds advanced. For a window that must stay responsive on a scene that needs millions of
+    ''' collisions per simulated second: it shows slower time instead of freezing.
+    ''' </summary>
+    Public Function AdvanceWithin(duration As Double, wallSeconds As Double) As Double
+        If Not (duration >= 0) OrElse Double.IsInfinity(duration) Then Throw New ArgumentOutOfRangeException(NameOf(duration), "duration must be a finite number ≥ 0")
+        If Not (wallSeconds >= 0) Then Throw New ArgumentOutOfRangeException(NameOf(wallSeconds), "the wall-clock budget must be a number ≥ 0")
+        If _solver Is Nothing Then Throw New InvalidOperationException("the world has no solver")
+        If duration = 0 Then Return 0
+        CheckSpeeds()
+        Dim start = _Time
+        Dim ticks = Math.Min(wallSeconds * Diagnostics.Stopwatch.Frequency, Long.MaxValue / 4.0)
+        Dim reached = _solver.AdvanceWithin(duration, Diagnostics.Stopwatch.GetTimestamp() + CLng(ticks))
+        _Time = reached
+        Return reached - start
+    End Function
+
+    ''' <summary>
     ''' The fastest a movable circle may move when the world advances, m/s. Every solver squares speeds
     ''' (kinetic energy; the quadratics that give contact times multiply speeds by speeds and by
     ''' distances), and the square of about 1.3e154 overflows a double: the stepping solvers then produce
@@ -258,86 +311,85 @@ Partial Public NotInheritable Class World
     Public Const MaxSpeed As Double = 1.0E+150
 
     ''' <summary>
-    ''' Throws <see cref="SpeedLimitException"/> for the first movable circle faster than <see cref="MaxSpeed"/>.
+    ''' Throws <see cref="SpeedLimitException"/> for the first movable body faster than <see cref="MaxSpeed"/>.
     ''' <see cref="Advance"/> checks this first; a caller can check before it starts anything.
     ''' </summary>
     Public Sub CheckSpeeds()
-        For Each c In _circles
-            If c.IsFixed Then Continue For
-            Dim v = c.Velocity
-            If Math.Abs(v.X) + Math.Abs(v.Y) > MaxSpeed AndAlso v.Length > MaxSpeed Then Throw New SpeedLimitException(c, v.Length)
+        For Each b In _movables
+            Dim v = b.Velocity
+            If Math.Abs(v.X) + Math.Abs(v.Y) > MaxSpeed AndAlso v.Length > MaxSpeed Then Throw New SpeedLimitException(b, v.Length)
         Next
     End Sub
 
-    ''' <summary>Sets a movable circle's velocity, m/s.</summary>
-    Public Sub SetVelocity(c As Circle, velocity As Vector)
-        CheckMovable(c)
+    ''' <summary>Sets a movable body's velocity, m/s.</summary>
+    Public Sub SetVelocity(body As Shape, velocity As Vector)
+        CheckMovable(body)
         If Not velocity.IsFinite Then Throw New ArgumentException("velocity must be finite", NameOf(velocity))
-        c.Velocity = velocity
-        _solver?.Invalidate(c)
+        body.Velocity = velocity
+        _solver?.Invalidate(body)
     End Sub
 
-    ''' <summary>Moves a movable circle to a new centre, m (kept inside a walled container).</summary>
-    Public Sub SetPosition(c As Circle, position As Vector)
-        CheckMovable(c)
+    ''' <summary>Moves a movable body's reference point to a new place, m (kept inside a walled container).</summary>
+    Public Sub SetPosition(body As Shape, position As Vector)
+        CheckMovable(body)
         If Not position.IsFinite Then Throw New ArgumentException("position must be finite", NameOf(position))
-        c.Position = If(_walls, Inside(position, c.Radius), position)
-        _solver?.Invalidate(c)
+        body.Position = If(_walls, InsideFor(body, position), position)
+        _solver?.Invalidate(body)
     End Sub
 
     ''' <summary>
-    ''' Applies an impulse J (N·s) to a movable circle: Δv = J / m, so the same push moves a heavy
-    ''' ball less (F = ma integrated over the push).
+    ''' Applies an impulse J (N·s) to a movable body: Δv = J / m, so the same push moves a heavy
+    ''' body less (F = ma integrated over the push).
     ''' </summary>
-    Public Sub ApplyImpulse(c As Circle, impulse As Vector)
-        CheckMovable(c)
+    Public Sub ApplyImpulse(body As Shape, impulse As Vector)
+        CheckMovable(body)
         If Not impulse.IsFinite Then Throw New ArgumentException("impulse must be finite", NameOf(impulse))
-        c.Velocity += impulse * c.InverseMass
-        _solver?.Invalidate(c)
+        body.Velocity += impulse * body.InverseMass
+        _solver?.Invalidate(body)
     End Sub
 
     ''' <summary>
-    ''' Starts dragging a movable circle. While dragged it follows <see cref="DragTarget"/>, feels no
+    ''' Starts dragging a movable body. While dragged it follows <see cref="DragTarget"/>, feels no
     ''' gravity, pushes what it touches and is not pushed back (it acts as if of infinite mass).
     ''' </summary>
-    Public Sub BeginDrag(c As Circle)
-        CheckMovable(c)
-        If _DraggedCircle IsNot Nothing Then EndDrag(Vector.Zero)
-        _DraggedCircle = c
-        _DragTarget = c.Position
-        c.Velocity = Vector.Zero
-        _solver?.Invalidate(c)
+    Public Sub BeginDrag(body As Shape)
+        CheckMovable(body)
+        If _DraggedBody IsNot Nothing Then EndDrag(Vector.Zero)
+        _DraggedBody = body
+        _DragTarget = body.Position
+        body.Velocity = Vector.Zero
+        _solver?.Invalidate(body)
     End Sub
 
-    ''' <summary>Sets where the dragged circle is heading, m (kept inside a walled container).</summary>
+    ''' <summary>Sets where the dragged body's reference point is heading, m (kept inside a walled container).</summary>
     Public Sub DragTo(target As Vector)
-        If _DraggedCircle Is Nothing Then Return
+        If _DraggedBody Is Nothing Then Return
         If Not target.IsFinite Then Throw New ArgumentException("target must be finite", NameOf(target))
-        _DragTarget = If(_walls, Inside(target, _DraggedCircle.Radius), target)
-        _solver?.Invalidate(_DraggedCircle)
+        _DragTarget = If(_walls, InsideFor(_DraggedBody, target), target)
+        _solver?.Invalidate(_DraggedBody)
     End Sub
 
-    ''' <summary>Drops the dragged circle back into the simulation with the given velocity, m/s.</summary>
+    ''' <summary>Drops the dragged body back into the simulation with the given velocity, m/s.</summary>
     Public Sub EndDrag(releaseVelocity As Vector)
-        Dim c = _DraggedCircle
-        If c Is Nothing Then Return
-        _DraggedCircle = Nothing
-        c.Velocity = If(releaseVelocity.IsFinite, releaseVelocity, Vector.Zero)
-        _solver?.Invalidate(c)
+        Dim b = _DraggedBody
+        If b Is Nothing Then Return
+        _DraggedBody = Nothing
+        b.Velocity = If(releaseVelocity.IsFinite, releaseVelocity, Vector.Zero)
+        _solver?.Invalidate(b)
     End Sub
 
     ''' <summary>
-    ''' Changes the container's size while running. With walls on, a movable circle that the smaller
-    ''' container leaves outside is brought back inside; a size too small for the largest movable circle
+    ''' Changes the container's size while running. With walls on, a movable body that the smaller
+    ''' container leaves outside is brought back inside; a size too small for the largest movable body
     ''' is refused (ArgumentException) and nothing changes.
     ''' </summary>
     Public Sub Resize(width As Double, height As Double)
         CheckSize(width, height)
-        If _walls Then CheckEveryCircleFits(width, height)
+        If _walls Then CheckEveryBodyFits(width, height)
         _width = width
         _height = height
-        If _walls Then BringCirclesInside()
-        If _DraggedCircle IsNot Nothing AndAlso _walls Then _DragTarget = Inside(_DragTarget, _DraggedCircle.Radius)
+        If _walls Then BringBodiesInside()
+        If _DraggedBody IsNot Nothing AndAlso _walls Then _DragTarget = InsideFor(_DraggedBody, _DragTarget)
         _solver?.Invalidate(Nothing)
     End Sub
 
@@ -350,6 +402,14 @@ Partial Public NotInheritable Class World
     ''' <summary>The nearest centre to <paramref name="p"/> that keeps a circle of radius r inside the container.</summary>
     Public Function Inside(p As Vector, radius As Double) As Vector
         Return New Vector(Clamp(p.X, radius, _width - radius, _width / 2), Clamp(p.Y, radius, _height - radius, _height / 2))
+    End Function
+
+    ''' <summary>The nearest reference point to <paramref name="p"/> that keeps <paramref name="body"/>'s outline inside the container.</summary>
+    Public Function InsideFor(body As Shape, p As Vector) As Vector
+        If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
+        Dim o = body.Outline
+        Return New Vector(Clamp(p.X, -o.MinX, _width - o.MaxX, (_width - o.MinX - o.MaxX) / 2),
+                          Clamp(p.Y, -o.MinY, _height - o.MaxY, (_height - o.MinY - o.MaxY) / 2))
     End Function
 
     Private Shared Function Clamp(v As Double, lo As Double, hi As Double, middle As Double) As Double
@@ -366,11 +426,11 @@ Partial Public NotInheritable Class World
     ''' circles already inside are left to the solver (the event solver pushes them apart before it
     ''' predicts anything).
     ''' </summary>
-    Private Sub BringCirclesInside()
-        For Each c In _circles
-            If c.IsFixed Then Continue For
-            Dim r = c.Radius
-            c.Position = New Vector(Fold(c.Position.X, r, _width - r, _width / 2), Fold(c.Position.Y, r, _height - r, _height / 2))
+    Private Sub BringBodiesInside()
+        For Each b In _movables
+            Dim o = b.Outline
+            b.Position = New Vector(Fold(b.Position.X, -o.MinX, _width - o.MaxX, (_width - o.MinX - o.MaxX) / 2),
+                                    Fold(b.Position.Y, -o.MinY, _height - o.MaxY, (_height - o.MinY - o.MaxY) / 2))
         Next
     End Sub
 
@@ -385,26 +445,29 @@ Partial Public NotInheritable Class World
         Return Math.Min(Math.Max(lo + span - Math.Abs(m - span), lo), hi)
     End Function
 
-    ' A movable circle wider than a walled container could touch both of two opposite walls at once
+    ' A movable body wider than a walled container could touch both of two opposite walls at once
     ' and be pushed through one of them: such a world is refused at the boundary, with a message.
-    Private Shared Sub CheckFits(radius As Double, width As Double, height As Double)
-        If 2 * radius > width OrElse 2 * radius > height Then
-            Throw New ArgumentException("a circle of diameter " & (2 * radius).ToString("G4", Globalization.CultureInfo.InvariantCulture) &
-                " m does not fit in a container of " & width.ToString("G4", Globalization.CultureInfo.InvariantCulture) & " m × " &
-                height.ToString("G4", Globalization.CultureInfo.InvariantCulture) & " m")
+    Private Shared Sub CheckFits(b As Shape, width As Double, height As Double)
+        Dim w = b.Outline.MaxX - b.Outline.MinX, h = b.Outline.MaxY - b.Outline.MinY
+        If w > width OrElse h > height Then
+            Dim inv = Globalization.CultureInfo.InvariantCulture
+            Dim what = If(b.Kind = ShapeKind.Circle, "a circle of diameter " & w.ToString("G4", inv) & " m",
+                          "a " & b.KindName & " " & w.ToString("G4", inv) & " m × " & h.ToString("G4", inv) & " m")
+            Throw New ArgumentException(what & " does not fit in a container of " & width.ToString("G4", inv) & " m × " &
+                height.ToString("G4", inv) & " m")
         End If
     End Sub
 
-    Private Sub CheckEveryCircleFits(width As Double, height As Double)
-        For Each c In _circles
-            If Not c.IsFixed Then CheckFits(c.Radius, width, height)
+    Private Sub CheckEveryBodyFits(width As Double, height As Double)
+        For Each b In _movables
+            CheckFits(b, width, height)
         Next
     End Sub
 
-    Private Sub CheckMovable(c As Circle)
-        If c Is Nothing Then Throw New ArgumentNullException(NameOf(c))
-        If c.IsFixed Then Throw New ArgumentException("a fixed circle never moves", NameOf(c))
-        If Not _circles.Contains(c) Then Throw New ArgumentException("the circle is not in this world", NameOf(c))
+    Private Sub CheckMovable(body As Shape)
+        If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
+        If body.IsFixed Then Throw New ArgumentException("a fixed " & body.KindName & " never moves", NameOf(body))
+        If Not _movables.Contains(body) Then Throw New ArgumentException("the body is not in this world", NameOf(body))
     End Sub
 
     Private Shared Sub CheckSize(width As Double, height As Double)

@@ -25,26 +25,29 @@ Public Structure BodyRow
     ''' <summary>The body's sizes by the names a scene file gives them, m: ("radius", r) for a circle; ("width", w), ("height", h) for a rectangle.</summary>
     Public Property SizeFields As IReadOnlyList(Of (Name As String, Metres As Double))
 
-    ''' <summary>The row of a body now. The one place that reads each kind of body for the tables.</summary>
+    ''' <summary>The row of a body now. Sizes are the one thing read by kind of body.</summary>
     Public Shared Function Capture(body As Shape) As BodyRow
         If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
-        Dim row As New BodyRow With {.Id = body.Id, .Colour = If(body.Color, ""), .IsFixed = body.IsFixed, .Area = body.Area, .Mass = Double.PositiveInfinity}
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing Then
-            row.Position = c.Position
-            row.Velocity = c.Velocity
-            row.Mass = c.Mass
-            row.Size = New Vector(c.Radius, 0)
-            row.SizeFields = {("radius", c.Radius)}
-            Return row
-        End If
-        Dim r = TryCast(body, Rectangle)
-        If r IsNot Nothing Then
-            row.Position = r.Position
-            row.Size = New Vector(r.Width, r.Height)
-            row.SizeFields = {("width", r.Width), ("height", r.Height)}
-        End If
-        If row.SizeFields Is Nothing Then row.SizeFields = Array.Empty(Of (Name As String, Metres As Double))()
+        Dim row As New BodyRow With {
+            .Id = body.Id, .Colour = If(body.Color, ""), .IsFixed = body.IsFixed, .Area = body.Area,
+            .Position = body.Position, .Velocity = body.Velocity, .Mass = body.Mass}
+        Select Case body.Kind
+            Case ShapeKind.Circle
+                Dim r = DirectCast(body, Circle).Radius
+                row.Size = New Vector(r, 0)
+                row.SizeFields = {("radius", r)}
+            Case ShapeKind.Rectangle
+                Dim box = DirectCast(body, Rectangle)
+                row.Size = New Vector(box.Width, box.Height)
+                row.SizeFields = {("width", box.Width), ("height", box.Height)}
+            Case ShapeKind.Segment
+                Dim length = DirectCast(body, Segment).Length
+                row.Size = New Vector(length, 0)
+                row.SizeFields = {("length", length)}
+            Case Else
+                row.Size = body.BoundsMax - body.BoundsMin
+                row.SizeFields = Array.Empty(Of (Name As String, Metres As Double))()
+        End Select
         Return row
     End Function
 End Structure

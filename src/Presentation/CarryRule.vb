@@ -21,12 +21,11 @@ Public Module CarryRule
         If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
         If Not (frameSeconds > 0) Then Return Placement.SlideTo(world, body, displacement)
         Dim g = world.Gravity
-        ' The farthest a moving ball can go in the frame: its speed for the frame, and what gravity adds.
+        ' The farthest a moving body can go in the frame: its speed for the frame, and what gravity adds.
         Dim clearance As Func(Of Shape, Double) =
             Function(b)
-                Dim c = TryCast(b, Circle)
-                If c Is Nothing OrElse c.IsFixed Then Return 0.0
-                Return Gap + c.Velocity.Length * frameSeconds + 0.5 * g * frameSeconds * frameSeconds
+                If b.IsFixed Then Return 0.0
+                Return Gap + b.Velocity.Length * frameSeconds + 0.5 * g * frameSeconds * frameSeconds
             End Function
         Return Placement.SlideTo(world, body, displacement, clearance:=clearance)
     End Function

@@ -42,10 +42,10 @@ Public NotInheritable Class CollisionLog
     End Property
 
     ''' <summary>Takes one collision from the engine's listener. Cheap after the first few of a frame.</summary>
-    Public Sub Record(record As CollisionRecord, draggedCircle As Circle)
+    Public Sub Record(record As CollisionRecord, dragged As Shape)
         _TotalSeen += 1
         _lastTime = record.Time
-        Dim entry = CollisionLogEntry.FromRecord(record, draggedCircle)
+        Dim entry = CollisionLogEntry.FromRecord(record, dragged)
         ' A repeat of a recent pair joins its row (and brings it to the top), whatever the frame.
         For i = _rows.Count - 1 To Math.Max(0, _rows.Count - GroupWithin) Step -1
             Dim row = _rows(i)

@@ -23,7 +23,7 @@ Public NotInheritable Class CollisionLogEntry
     Public Property AName As String
     ''' <summary>The other body's id, or wall:left and so on.</summary>
     Public Property BName As String
-    ''' <summary>True when both are movable circles, so the pair's momentum is conserved.</summary>
+    ''' <summary>True when both are movable (and neither carried), so the pair's momentum is conserved.</summary>
     Public Property IsPair As Boolean
     ''' <summary>True when one of the two was being carried.</summary>
     Public Property WasCarried As Boolean
@@ -47,14 +47,14 @@ Public NotInheritable Class CollisionLogEntry
     Public Property SkippedCount As Long
 
     ''' <summary>Reads a collision as the engine reported it.</summary>
-    Public Shared Function FromRecord(record As CollisionRecord, draggedCircle As Circle) As CollisionLogEntry
+    Public Shared Function FromRecord(record As CollisionRecord, dragged As Shape) As CollisionLogEntry
         Dim a = record.A
         Dim e As New CollisionLogEntry With {
             .Time = record.Time, .FirstTime = record.Time, .AName = a.Id, .BName = record.BName,
             .ASpeedBefore = record.AVelocityBefore.Length, .ASpeedAfter = record.AVelocityAfter.Length}
-        Dim b = TryCast(record.B, Circle)
+        Dim b = record.B
         Dim massA = a.Mass
-        e.WasCarried = a Is draggedCircle OrElse (b IsNot Nothing AndAlso b Is draggedCircle)
+        e.WasCarried = a Is dragged OrElse (b IsNot Nothing AndAlso b Is dragged)
         e.IsPair = b IsNot Nothing AndAlso Not b.IsFixed AndAlso Not e.WasCarried
         If e.IsPair Then
             e.BSpeedBefore = record.BVelocityBefore.Length

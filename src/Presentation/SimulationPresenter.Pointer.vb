@@ -253,7 +253,7 @@ Partial Public NotInheritable Class SimulationPresenter
         body = Draft.Build(p + place.Value)
         World.Add(body)
         _Draft = Nothing
-        Emit("placed " & If(TypeOf body Is Circle, "circle", "rectangle") & " " & body.Id & " at " & Units.Pair(Centre(body), 3))
+        Emit("placed " & If(TypeOf body Is Circle, "circle", "rectangle") & " " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
         If clash IsNot Nothing AndAlso moved > Placement.Tolerance Then
             ShowMessage("Placed " & Units.Quantity(moved, "m") & " from the click, at the nearest free place: there it would have overlapped " & Describe(clash) & ".")
         Else
@@ -291,24 +291,22 @@ Partial Public NotInheritable Class SimulationPresenter
         TakeSnapshot()
     End Sub
 
-    ''' <summary>True while a movable ball is carried with time running: the engine moves it (balls that meet it bounce off).</summary>
+    ''' <summary>True while a movable body is carried with time running: the engine moves it (balls that meet it bounce off).</summary>
     Private ReadOnly Property IsCarriedByEngine As Boolean
         Get
-            Dim c = TryCast(_dragged, Circle)
-            Return c IsNot Nothing AndAlso Not c.IsFixed AndAlso Not IsPaused
+            Return _dragged IsNot Nothing AndAlso Not _dragged.IsFixed AndAlso Not IsPaused
         End Get
     End Property
 
     Private Sub BeginCarry(body As Shape, p As Vector)
         _dragged = body
-        _grabOffset = Reference(body) - p
-        _carryGoal = Reference(body)
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing AndAlso Not c.IsFixed AndAlso Not IsPaused Then World.BeginDrag(c)
-        Emit("drag start " & body.Id & " at " & Units.Pair(Centre(body), 3))
+        _grabOffset = body.Position - p
+        _carryGoal = body.Position
+        If Not body.IsFixed AndAlso Not IsPaused Then World.BeginDrag(body)
+        Emit("drag start " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
     End Sub
 
-    ''' <summary>Once a frame while time runs: the carried ball heads for the cursor, as far as it may this frame.</summary>
+    ''' <summary>Once a frame while time runs: the carried body heads for the cursor, as far as it may this frame.</summary>
     Private Sub CarryTowardsCursor(realSeconds As Double)
         If Not IsCarriedByEngine Then Return
         Dim diagonal = Math.Sqrt(World.Width * World.Width + World.Height * World.Height)
@@ -322,43 +320,52 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' </summary>
     Private Sub CarryTo(goal As Vector, maxStep As Double, Optional frameSeconds As Double = 0)
         Dim body = _dragged
-        Dim from = Reference(body)
+        Dim from = body.Position
         Dim wanted = goal - from
         If wanted.Length > maxStep Then wanted = wanted * (maxStep / wanted.Length)
         Dim reached = CarryRule.Reach(World, body, wanted, frameSeconds)
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing AndAlso Not c.IsFixed Then
+        If Not body.IsFixed Then
             If IsCarriedByEngine Then
                 World.DragTo(from + reached)
             Else
-                World.SetPosition(c, from + reached)
+                World.SetPosition(body, from + reached)
                 TakeSnapshot()
             End If
             Return
         End If
-        ' The engine moves only movable circles, so a fixed body is carried by replacing it with an
-        ' identical one at the new place (same id and colour, same row in the tables).
+        ' The engine never moves a fixed body, so it is carried by putting an identical one in its
+        ' place at the new position (same id and colour, same row in the tables).
         If reached.LengthSquared = 0 Then Return
-        Dim moved As Shape
-        If c IsNot Nothing Then
-            moved = Circle.CreateFixed(c.Position + reached, c.Radius, c.Id)
-        Else
-            Dim r = DirectCast(body, Rectangle)
-            moved = New Rectangle(r.Position + reached, r.Width, r.Height, r.Id)
-        End If
+        Dim moved = MovedCopy(body, reached)
         moved.Color = body.Color
         World.Replace(body, moved)
         _dragged = moved
         TakeSnapshot()
     End Sub
 
+    ''' <summary>A fixed body like <paramref name="body"/>, <paramref name="offset"/> m away: the one place that builds each kind.</summary>
+    Private Shared Function MovedCopy(body As Shape, offset As Vector) As Shape
+        Select Case body.Kind
+            Case ShapeKind.Circle
+                Return Circle.CreateFixed(body.Position + offset, DirectCast(body, Circle).Radius, body.Id)
+            Case ShapeKind.Rectangle
+                Dim r = DirectCast(body, Rectangle)
+                Return New Rectangle(r.Position + offset, r.Width, r.Height, r.Id)
+            Case ShapeKind.Segment
+                Dim s = DirectCast(body, Segment)
+                Return New Segment(s.StartPoint + offset, s.EndPoint + offset, s.Id)
+            Case Else
+                Dim corners = DirectCast(body, Polygon).Vertices.Select(Function(v) v + offset).ToArray()
+                Return Polygon.CreateFixed(corners, body.Id)
+        End Select
+    End Function
+
     Private Sub EndCarry()
         Dim body = _dragged
         _dragged = Nothing
-        If World.DraggedCircle IsNot Nothing Then World.EndDrag(Vector.Zero)
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing AndAlso Not c.IsFixed AndAlso World.Bodies.Contains(c) Then World.SetVelocity(c, Vector.Zero)
-        Emit("drag end " & body.Id & " at " & Units.Pair(Centre(body), 3))
+        If World.DraggedBody IsNot Nothing Then World.EndDrag(Vector.Zero)
+        If Not body.IsFixed AndAlso World.Bodies.Contains(body) Then World.SetVelocity(body, Vector.Zero)
+        Emit("drag end " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
         TakeSnapshot()
     End Sub
 
@@ -367,19 +374,4 @@ Partial Public NotInheritable Class SimulationPresenter
         _AimedCircle = Nothing
         If _dragged IsNot Nothing Then EndCarry()
     End Sub
-
-    ''' <summary>Where a body is named from: a circle's centre, a rectangle's centre, m.</summary>
-    Private Shared Function Centre(body As Shape) As Vector
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing Then Return c.Position
-        Dim r = DirectCast(body, Rectangle)
-        Return New Vector(r.Position.X + r.Width / 2, r.Position.Y + r.Height / 2)
-    End Function
-
-    ''' <summary>The point a body is moved by: a circle's centre, a rectangle's lower-left corner, m.</summary>
-    Private Shared Function Reference(body As Shape) As Vector
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing Then Return c.Position
-        Return DirectCast(body, Rectangle).Position
-    End Function
 End Class

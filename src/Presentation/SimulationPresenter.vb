@@ -210,11 +210,10 @@ Partial Public NotInheritable Class SimulationPresenter
         Guarded(
             Sub()
                 _IsPaused = Not _IsPaused
-                ' A ball carried across the change keeps following the cursor: while paused it is moved
-                ' directly, while running the engine carries it (so it pushes what it meets).
-                Dim carried = TryCast(_dragged, Circle)
-                If carried IsNot Nothing AndAlso Not carried.IsFixed Then
-                    If _IsPaused Then World.EndDrag(Vector.Zero) Else World.BeginDrag(carried)
+                ' A body carried across the change keeps following the cursor: while paused it is moved
+                ' directly, while running the engine carries it (balls that meet it bounce off).
+                If _dragged IsNot Nothing AndAlso Not _dragged.IsFixed Then
+                    If _IsPaused Then World.EndDrag(Vector.Zero) Else World.BeginDrag(_dragged)
                 End If
                 TakeSnapshot()
                 If _IsPaused Then
@@ -512,7 +511,7 @@ Partial Public NotInheritable Class SimulationPresenter
             ' A body without a colour in its file gets the same one every time: it follows from the id.
             If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
         Next
-        w.CollisionListener = Sub(r) Log.Record(r, w.DraggedCircle)
+        w.CollisionListener = Sub(r) Log.Record(r, w.DraggedBody)
         _World = w
         Log.Clear()
         Inputs.ContainerWidthText = Units.Input(w.Width)

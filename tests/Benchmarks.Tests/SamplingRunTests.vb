@@ -12,10 +12,16 @@ Public Class SamplingRunTests
         Public ReadOnly Property Name As String = "recording" Implements ISolver.Name
         Public ReadOnly Property TimeStep As Double? = 0.001 Implements ISolver.TimeStep
         Public Sub Attach(world As World) Implements ISolver.Attach
+            _world = world
         End Sub
+        Private _world As World
         Public Sub Advance(duration As Double) Implements ISolver.Advance
             Durations.Add(duration)
         End Sub
+        Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
+            Durations.Add(duration)
+            Return _world.Time + duration
+        End Function
         Public Sub Invalidate(body As Shape) Implements ISolver.Invalidate
         End Sub
     End Class

@@ -77,7 +77,7 @@ Public Class BoundaryInputTests
         Dim w = TestSolvers.Run(FastBall(1.0E+300), solver)
         Dim ex = Assert.Throws(Of SpeedLimitException)(Sub() w.Advance(0.1))
         Assert.StartsWith("circle 'fast' moves at 1E+300 m/s, faster than the 1E+150 m/s", ex.Message)
-        Assert.Same(w.Circles(0), ex.Circle)
+        Assert.Same(w.Circles(0), ex.Body)
         Assert.Equal(0.0, w.Time)
         Assert.Equal(New Vector(5, 5), w.Circles(0).Position)
         Assert.Equal(New Vector(2, 2), w.Circles(1).Position)

@@ -154,6 +154,30 @@ Public Class PlacementTests
     End Sub
 
     <Fact>
+    Public Sub EveryKindOfBody_IsHandledAlike_SegmentsPolygonsAndMovableBoxes()
+        Dim w As New World(10, 6, 0.0, 1.0)
+        w.Add(New Segment(New Vector(5, 0), New Vector(5, 4), "wall"))
+        w.Add(Polygon.CreateFixed({New Vector(7, 4), New Vector(9, 4), New Vector(8, 5.5)}, "roof"))
+        Dim ball As New Circle(New Vector(2, 2), 0.5, 1.0)
+        w.Add(ball)
+        ' The ball stops against the segment (x = 5), a radius short of it.
+        Dim s = Placement.SweepTo(w, ball, New Vector(6, 0))
+        Assert.Equal("wall", s.Blocker.Id)
+        Assert.Equal((5 - 0.5 - 2) / 6.0, s.Fraction, 9)
+        Dim over As New Circle(New Vector(8, 2), 0.5, 1.0)
+        Dim up = Placement.SweepTo(w, over, New Vector(0, 3))
+        Assert.Equal("roof", up.Blocker.Id)
+        Assert.Equal(1.5 / 3.0, up.Fraction, 9)
+        ' A movable box may not overlap the ball, and keeps to the walls.
+        Dim box = Rectangle.CreateMovable(New Vector(1.8, 1.8), 1, 1, 2.0)
+        Assert.Same(ball, Placement.FirstOverlap(w, box, Vector.Zero))
+        Assert.False(Placement.IsInside(w, box, New Vector(-2, 0)))
+        Dim place = Placement.NearestFree(w, box, Vector.Zero, 3.0)
+        Assert.True(place.HasValue)
+        Assert.True(Placement.IsFree(w, box, place.Value))
+    End Sub
+
+    <Fact>
     Public Sub AWorldKeptFree_SavesToAFileThatOpens()
         Dim w = Box()
         Dim rng As New Random(3)

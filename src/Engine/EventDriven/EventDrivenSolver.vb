@@ -1,102 +1,38 @@
 Option Strict On
 
-#If NET Then
-Imports System.Runtime.Intrinsics
-#End If
-
 ''' <summary>
-''' The exact, event-driven solver. Between events every free circle follows its parabola exactly;
+''' The exact, event-driven solver. Between events every free body follows its parabola exactly;
 ''' collision times are computed in closed form or by root isolation (<see cref="TimeOfImpact"/>),
 ''' never detected after the fact, so nothing tunnels at any speed. One step reads as its pipeline:
 ''' find the earliest event → advance the clock to it → resolve it → reschedule the bodies involved.
 ''' Bouncing with e &lt; 1 ends in a resting state at the exact time the infinite series of bounces
 ''' ends; piles go to sleep. See docs/event-driven.md.
+''' <para>
+''' The state has one owner per kind (<see cref="SolverState"/>): the movable bodies
+''' (<see cref="BodyTable"/>), the obstacles, the grid, the queue, the rest rules' history and the
+''' corner slides. The parts that act on it: <see cref="Predictor"/> (when is each body's next
+''' event), <see cref="Responder"/> (what happens at it), <see cref="RestRules"/> and
+''' <see cref="CornerSlides"/>; <see cref="ContactRules"/> says which maths each pair of body kinds uses.
+''' </para>
 ''' </summary>
-Partial Public NotInheritable Class EventDrivenSolver
+Public NotInheritable Class EventDrivenSolver
     Implements ISolver
 
-    ' Per movable circle. The motion (what every prediction reads) is packed in one struct per body,
-    ' one cache line, see BodyState; the rest is kept in parallel arrays.
-    Private _n As Integer
-    Private _circle As Circle() = Array.Empty(Of Circle)()
-    Private _body As BodyState() = Array.Empty(Of BodyState)()
-    Private _invMass As Double() = Array.Empty(Of Double)()
-    ''' <summary>What a resting circle rests on: rectangle index ≥ 0, or <see cref="SupportFloor"/>/<see cref="SupportOther"/>.</summary>
-    Private _support As Integer() = Array.Empty(Of Integer)()
-    ''' <summary>Time of the body's last collision, s (for the inelastic-collapse guard).</summary>
-    Private _lastHit As Double() = Array.Empty(Of Double)()
-    ''' <summary>Start (s) and size of the body's current burst of collisions (for the sleeping rule).</summary>
-    Private _burstStart As Double() = Array.Empty(Of Double)()
-    Private _burstCount As Integer() = Array.Empty(Of Integer)()
-    ''' <summary>Instant (s) of the body's last collision and how many it had at that instant (jam detection).</summary>
-    Private _sameTime As Double() = Array.Empty(Of Double)()
-    Private _sameCount As Integer() = Array.Empty(Of Integer)()
-
-    ' The next event of each body (one slot per body): its time is filed in the calendar queue, the
-    ' rest of it, with the body's counter and cell, is kept in one struct (see EventSlot).
-    Private _ev As EventSlot() = Array.Empty(Of EventSlot)()
-
-    ' Sliding over a corner: centre of the arc, its radius, direction (±1), starting speed, leave angle, start and end times.
-    Private _slideCx As Double() = Array.Empty(Of Double)()
-    Private _slideCy As Double() = Array.Empty(Of Double)()
-    Private _slideDir As Double() = Array.Empty(Of Double)()
-    Private _slideV0 As Double() = Array.Empty(Of Double)()
-    Private _slideAngle As Double() = Array.Empty(Of Double)()
-    Private _slideStart As Double() = Array.Empty(Of Double)()
-
-    ' Static obstacles: fixed circles 0 … _nFixed − 1, then rectangles (static index _nFixed + k).
-    Private _nFixed As Integer
-    Private _fixed As Circle() = Array.Empty(Of Circle)()
-    Private _fx As Double() = Array.Empty(Of Double)()
-    Private _fy As Double() = Array.Empty(Of Double)()
-    Private _fr As Double() = Array.Empty(Of Double)()
-    Private _nRect As Integer
-    Private _rect As Rectangle() = Array.Empty(Of Rectangle)()
-    Private _rx0 As Double() = Array.Empty(Of Double)()
-    Private _ry0 As Double() = Array.Empty(Of Double)()
-    Private _rx1 As Double() = Array.Empty(Of Double)()
-    Private _ry1 As Double() = Array.Empty(Of Double)()
-
-    ''' <summary>Circles too big for the grid: checked against everything.</summary>
-    Private _oversized As Integer() = Array.Empty(Of Integer)()
-    Private _nOversized As Integer
-    ''' <summary>Scratch stack for waking a column of sleeping circles (no allocation per event).</summary>
-    Private _stack As Integer() = Array.Empty(Of Integer)()
-    ''' <summary>Contact normals gathered by IsHeld (scratch, fixed size).</summary>
-    Private ReadOnly _normalX As Double() = New Double(15) {}
-    Private ReadOnly _normalY As Double() = New Double(15) {}
-    Private _nNormals As Integer
-    ''' <summary>Scratch queue of bodies being woken.</summary>
-    Private _wake As Integer() = Array.Empty(Of Integer)()
-    ''' <summary>Scratch list of the bodies of one cell being tested one by one.</summary>
-    Private _scanList As Integer() = Array.Empty(Of Integer)()
-
-    Private ReadOnly _grid As New UniformGrid()
-    Private ReadOnly _queue As New EventQueue()
-    Private ReadOnly _index As New Dictionary(Of Circle, Integer)()
-    Private ReadOnly _restTimes As New Dictionary(Of Circle, Double)()
-
-    Private _world As World
+    Private ReadOnly _s As New SolverState()
+    Private ReadOnly _slides As CornerSlides
+    Private ReadOnly _rest As RestRules
+    Private ReadOnly _predictor As Predictor
+    Private ReadOnly _responder As Responder
     Private _dirty As Boolean = True
-    ''' <summary>The solver's clock, s (absolute, like World.Time).</summary>
-    Private _now As Double
-    ' Snapshot of the world's parameters, taken at each rebuild.
-    Private _g As Double
-    Private _e As Double
-    Private _walls As Boolean
-    Private _width As Double
-    Private _height As Double
-    ''' <summary>Distance (m) within which bodies count as touching: rounding, never physics.</summary>
-    Private _slop As Double
+    ''' <summary>Events processed at the current instant so far (see <see cref="CountInstant"/>).</summary>
+    Private _instantEvents As Long
 
-    ''' <summary>Largest radius (m) of a circle in the grid.</summary>
-    Private _rMax As Double
-    ''' <summary>How many bodies are sliding round a corner (see <see cref="ReachOfPath"/>).</summary>
-    Private _sliding As Integer
-
-    Private Const SupportNone As Integer = -1
-    Private Const SupportFloor As Integer = -2
-    Private Const SupportOther As Integer = -3
+    Public Sub New()
+        _slides = New CornerSlides(_s)
+        _rest = New RestRules(_s)
+        _predictor = New Predictor(_s, _slides)
+        _responder = New Responder(_s, _rest, _slides)
+    End Sub
 
     ''' <summary>Name on the command line.</summary>
     Public ReadOnly Property Name As String Implements ISolver.Name
@@ -113,14 +49,12 @@ Partial Public NotInheritable Class EventDrivenSolver
     End Property
 
     ''' <summary>
-    ''' Runaway guard: the most events (collisions, cell crossings, …) one <see cref="Advance"/> may
-    ''' process. When reached, the rest of the advance is done ballistically, overlaps are pushed
-    ''' apart and <see cref="GuardTripped"/> is set.
+    ''' A ceiling on the events (collisions, cell crossings, …) one advance may take, for tests that
+    ''' check a scene is handled in few events: past it the advance throws. No ceiling by default: a
+    ''' scene may legitimately need millions of collisions per simulated second, and a window that
+    ''' must stay responsive uses <see cref="AdvanceWithin"/> instead.
     ''' </summary>
-    Public Property MaxEventsPerAdvance As Long = 100_000_000
-
-#If NET Then
-    Private _vectorScan As Boolean = Vector256.IsHardwareAccelerated
+    Public Property MaxEventsPerAdvance As Long = Long.MaxValue
 
     ''' <summary>
     ''' Whether pair tests run four lanes at a time (256-bit vectors, when the processor has them).
@@ -129,22 +63,23 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Friend Property VectorScan As Boolean
         Get
-            Return _vectorScan
+            Return _predictor.VectorScan
         End Get
         Set(value As Boolean)
-            _vectorScan = value
+#If NET Then
+            _predictor.VectorScan = value
+#Else
+            If value Then Throw New PlatformNotSupportedException("this build has no 256-bit vectors")
+#End If
             _dirty = True
         End Set
     End Property
-#Else
-    ''' <summary>.NET Framework has no 256-bit vectors: pair tests run one body at a time.</summary>
-    Private ReadOnly _vectorScan As Boolean
-#End If
+
     ''' <summary>Average bodies per grid cell, when set (> 0): for tests that compare the pair tests on one grid.</summary>
     Friend Property CellOccupancy As Double
 
-    ''' <summary>True once an advance hit <see cref="MaxEventsPerAdvance"/> or looped without time moving.</summary>
-    Public ReadOnly Property GuardTripped As Boolean
+    ''' <summary>Checks every lane against its body after every event (slow: for tests).</summary>
+    Friend Property CheckLanesEveryEvent As Boolean
 
     ''' <summary>Every event processed so far (collisions, cell crossings, stale re-predictions, …).</summary>
     Public ReadOnly Property EventCount As Long
@@ -154,11 +89,15 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' <see cref="EventCount"/>, the work per event, which should not grow with the number of bodies.
     ''' </summary>
     Public ReadOnly Property CellsSearched As Long
+        Get
+            Return _s.CellsSearched
+        End Get
+    End Property
 
     ''' <summary>Attaches the solver to a world; the first advance builds every prediction.</summary>
     Public Sub Attach(world As World) Implements ISolver.Attach
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
-        _world = world
+        _s.World = world
         _dirty = True
     End Sub
 
@@ -166,84 +105,210 @@ Partial Public NotInheritable Class EventDrivenSolver
     ''' When a bouncing circle came to rest: the time (s) its infinite series of ever smaller bounces
     ''' ends, t + 2 v_n / (g (1 − e)). Nothing while it is not resting.
     ''' </summary>
-    Public Function RestTime(circle As Circle) As Double?
-        If circle Is Nothing Then Return Nothing
-        Dim t As Double
-        If _restTimes.TryGetValue(circle, t) Then Return t
-        Return Nothing
+    Public Function RestTime(body As Shape) As Double?
+        Return _rest.RestTime(body)
     End Function
 
-    ''' <summary>True when the circle is asleep (part of a settled pile, acting as a fixed obstacle).</summary>
-    Public Function IsAsleep(circle As Circle) As Boolean
-        If circle Is Nothing OrElse _dirty Then Return False
-        Dim i As Integer
-        Return _index.TryGetValue(circle, i) AndAlso _body(i).Mode = BodyMode.Sleeping
+    ''' <summary>True when the body is asleep (part of a settled pile, acting as a fixed obstacle).</summary>
+    Public Function IsAsleep(body As Shape) As Boolean
+        If body Is Nothing OrElse _dirty Then Return False
+        Dim i = _s.Bodies.IndexOf(body)
+        Return i >= 0 AndAlso _s.Bodies.Mode(i) = BodyMode.Sleeping
     End Function
 
     ''' <summary>
     ''' Advances exactly <paramref name="duration"/> seconds: find the earliest event, advance the
     ''' clock to it, resolve it, reschedule the bodies involved; repeat until the next event lies
-    ''' beyond the end. Then every circle is written back at its exact state at the end.
+    ''' beyond the end. Then every body is written back at its exact state at the end.
     ''' </summary>
     Public Sub Advance(duration As Double) Implements ISolver.Advance
-        If _world Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
-        If _dirty OrElse _now <> _world.Time Then Rebuild()
-        Dim tEnd = _world.Time + duration
+        AdvanceWithin(duration, Long.MaxValue)
+    End Sub
+
+    ''' <summary>
+    ''' As <see cref="Advance"/>, stopping after the event at which the wall clock passes
+    ''' <paramref name="deadline"/> (Stopwatch ticks). The bodies are written back at that event's
+    ''' time, where the state is exact, and the next advance carries on from the same predictions.
+    ''' </summary>
+    Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
+        If _s.World Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
+        If _dirty OrElse _s.Now <> _s.World.Time Then Rebuild()
+        Dim tEnd = _s.World.Time + duration
         StartDrag(duration)
         Dim processed As Long = 0
-        Dim sameTime = 0
-        Dim sameTimeLimit = 1000 + 50 * _n
         Do
-            Dim i = _queue.Top
+            ' Find the earliest event.
+            Dim i = _s.Queue.Top
             If i < 0 Then Exit Do
-            Dim t = _queue.TimeOf(i)
+            Dim t = _s.Queue.TimeOf(i)
             If Not (t <= tEnd) Then Exit Do
-            If processed >= MaxEventsPerAdvance OrElse sameTime > sameTimeLimit Then
-                TripGuard(tEnd)
-                Return
+            If (processed And 255) = 255 AndAlso Diagnostics.Stopwatch.GetTimestamp() > deadline AndAlso t > _s.Now Then
+                ' Out of wall-clock time: stop here, between two instants.
+                _EventCount += processed
+                WriteBack(_s.Now)
+                Return _s.Now
             End If
-            If t = _now Then sameTime += 1 Else sameTime = 0
-            _now = t
-            ProcessEvent(i)
-            If CheckLanesEveryEvent Then CheckLanes()
+            If processed >= MaxEventsPerAdvance Then
+                Throw New InvalidOperationException($"more than {MaxEventsPerAdvance} events in one advance (t = {_s.Now} s)")
+            End If
+            ' Advance the clock to it.
+            CountInstant(t)
+            _s.Now = t
+            ' Resolve it, then reschedule every body it changed.
+            If _s.Bodies.Slot(i).CellTime <= _s.Bodies.Slot(i).ColTime Then
+                _predictor.CrossCell(i)
+            Else
+                _responder.Resolve(i)
+                RescheduleTouched()
+            End If
+            If CheckLanesEveryEvent Then LaneCheck.Check(_s)
             processed += 1
         Loop
         _EventCount += processed
-        _now = tEnd
+        _s.Now = tEnd
         WriteBack(tEnd)
+        Return tEnd
+    End Function
+
+    ''' <summary>
+    ''' Counts the events at one instant, across advances. Touching bodies can legitimately collide
+    ''' many times at one instant (a chain passing an impulse along, a light ball between heavy ones);
+    ''' the rest rules end such a cascade (see RestRules), so an instant that takes more events than
+    ''' this is a fault in the solver, reported rather than skipped over.
+    ''' </summary>
+    Private Sub CountInstant(t As Double)
+        If t = _s.Now Then
+            _instantEvents += 1
+            If _instantEvents > 1_000_000L + 1000L * _s.Bodies.Count Then
+                Throw New InvalidOperationException($"the event solver could not get past t = {t} s ({_instantEvents} events at that instant)")
+            End If
+        Else
+            _instantEvents = 0
+        End If
+    End Sub
+
+    Private Sub RescheduleTouched()
+        Dim touched = _s.Touched
+        For k = 0 To touched.Count - 1
+            _predictor.Reschedule(touched(k))
+        Next
+        touched.Clear()
     End Sub
 
     ''' <summary>
     ''' Keeps predictions valid after a change outside the solver. Nothing (g, e, walls, size, clear),
-    ''' a fixed body, or an added or removed circle: rebuild everything at the next advance. A movable
-    ''' circle that was pushed, moved, dragged or released: re-read it, and reschedule it (events of
+    ''' a fixed body, or an added or removed body: rebuild everything at the next advance. A movable
+    ''' body that was pushed, moved, dragged or released: re-read it, and reschedule it (events of
     ''' others with it become stale through its counter).
     ''' </summary>
     Public Sub Invalidate(body As Shape) Implements ISolver.Invalidate
-        If _dirty OrElse _world Is Nothing Then Return
-        Dim c = TryCast(body, Circle)
-        Dim i As Integer
-        If c Is Nothing OrElse c.IsFixed OrElse Not _index.TryGetValue(c, i) OrElse Not _world.Circles.Contains(c) Then
+        Dim w = _s.World
+        If _dirty OrElse w Is Nothing Then Return
+        Dim i = _s.Bodies.IndexOf(body)
+        If i < 0 OrElse body.IsFixed OrElse Not w.Movables.Contains(body) Then
             _dirty = True
             Return
         End If
-        If OverlapsSomething(c) Then
+        If OverlapsSomething(body) Then
             _dirty = True ' the rebuild pushes the overlap apart first
             Return
         End If
-        _restTimes.Remove(c)
-        LoadBody(i, c)
-        Changed(i)
-        MoveToCellOfPosition(i)
-        WakeAbove(i)
-        Reschedule(i)
+        _rest.ForgetRest(body)
+        _s.Bodies.Reload(i, w, _s.Now)
+        _s.Changed(i)
+        _s.MoveToCellOfPosition(i)
+        _rest.WakeAbove(i)
+        RescheduleTouched()
     End Sub
 
-    Private Sub TripGuard(tEnd As Double)
-        _GuardTripped = True
-        _now = tEnd
-        WriteBack(tEnd)
-        OverlapResolver.Resolve(_world)
-        _dirty = True
+    ''' <summary>Re-reads the whole world: after a global change, or when bodies were added or removed.</summary>
+    Private Sub Rebuild()
+        Dim w = _s.World
+        OverlapResolver.Resolve(w)
+        _s.G = w.Gravity
+        _s.E = w.Restitution
+        _s.Walls = w.Walls
+        _s.Width = w.Width
+        _s.Height = w.Height
+        _s.Now = w.Time
+        _s.Obstacles.Load(w)
+        _s.Bodies.Load(w, _s.Now)
+        _s.Shapes.Clear()
+        Dim n = _s.Bodies.Count
+        _s.Touched.Reset(n)
+        _predictor.Reset(n)
+        _slides.Reset(n)
+        _rest.Reset()
+        GridLayout.Lay(_s, If(CellOccupancy > 0, CellOccupancy, GridLayout.BodiesPerCell(VectorScan)))
+        _s.Queue.Reset(Enumerable.Repeat(Double.PositiveInfinity, n).ToArray(), n)
+        For i = 0 To n - 1
+            _predictor.Reschedule(i)
+        Next
+        _dirty = False
     End Sub
+
+    ''' <summary>Whether body c (just moved or added by the user) overlaps anything it collides with, beyond rounding.</summary>
+    Private Function OverlapsSomething(c As Shape) As Boolean
+        Dim tol = SolverState.SlopAt(c.Position.X, c.Position.Y)
+        For Each o In _s.World.Bodies
+            If o Is c Then Continue For
+            Dim depth As Double
+            If c.Kind = ShapeKind.Circle AndAlso o.Kind = ShapeKind.Circle Then
+                depth = c.Outline.Radius + o.Outline.Radius - (c.Position - o.Position).Length
+            Else
+                depth = OutlineContact.Penetration(_s.Shapes.Difference(o.Outline, c.Outline), c.Position - o.Position).Depth
+            End If
+            If depth > tol Then Return True
+        Next
+        Return False
+    End Function
+
+    ''' <summary>The dragged body moves in a straight line to its target over this advance, with no gravity.</summary>
+    Private Sub StartDrag(duration As Double)
+        Dim i = _s.Bodies.IndexOf(_s.World.DraggedBody)
+        If i < 0 Then Return
+        _s.Sync(i)
+        Dim target = _s.World.DragTarget
+        Dim b = _s.Bodies
+        b.SetMode(i, BodyMode.Dragged)
+        b.Motion(i).Ay = 0
+        b.Motion(i).Ax = 0
+        b.InverseMass(i) = 0
+        b.Motion(i).Vx = (target.X - b.Motion(i).Px) / duration
+        b.Motion(i).Vy = (target.Y - b.Motion(i).Py) / duration
+        _s.Changed(i)
+        RescheduleTouched()
+    End Sub
+
+    ''' <summary>Writes every movable body's exact state at <paramref name="t"/> back to the model.</summary>
+    Private Sub WriteBack(t As Double)
+        Dim b = _s.Bodies
+        Dim dragged = _s.World.DraggedBody
+        For i = 0 To b.Count - 1
+            Dim c = b.Shapes(i)
+            If b.Mode(i) = BodyMode.Rounding Then
+                Dim position, velocity As Vector
+                _slides.StateAt(i, t, position, velocity)
+                c.Position = position
+                c.Velocity = velocity
+                Continue For
+            End If
+            Dim x, y, vx, vy As Double
+            b.Motion(i).StateAt(t, x, y, vx, vy)
+            c.Position = New Vector(x, y)
+            c.Velocity = New Vector(vx, vy)
+            If c Is dragged Then c.Position = _s.World.DragTarget
+        Next
+    End Sub
+
+    ''' <summary>Gridded bodies that did not fit in their cell's lanes (for tests).</summary>
+    Friend ReadOnly Property OverflowCount As Integer
+        Get
+            Dim count = 0
+            For i = 0 To _s.Bodies.Count - 1
+                If _s.Bodies.Slot(i).Cell >= 0 AndAlso _s.Grid.LaneOf(i) < 0 Then count += 1
+            Next
+            Return count
+        End Get
+    End Property
 End Class

@@ -1,19 +1,17 @@
 Option Strict On
 
-''' <summary>What a scheduled event is.</summary>
+''' <summary>What a body's next collision-type event is (its next cell crossing is kept apart).</summary>
 Friend Enum EventKind As Byte
     ''' <summary>Nothing scheduled (time +∞).</summary>
     None
-    ''' <summary>Two movable circles touch.</summary>
-    Circle
-    ''' <summary>A movable circle touches a fixed circle.</summary>
-    FixedCircle
-    ''' <summary>A movable circle touches a rectangle (face or corner in the feature).</summary>
-    Rectangle
-    ''' <summary>A movable circle touches a side of the container.</summary>
+    ''' <summary>It touches another movable body.</summary>
+    Body
+    ''' <summary>It touches a fixed obstacle (the feature says which face or corner).</summary>
+    Obstacle
+    ''' <summary>It touches a side of the container.</summary>
     Wall
-    ''' <summary>A resting circle's centre reaches the edge of the rectangle it rests on.</summary>
-    EdgeLeave
-    ''' <summary>A circle sliding over a corner leaves it.</summary>
-    SlideEnd
+    ''' <summary>A supported body reaches the end of what holds it.</summary>
+    LeaveSupport
+    ''' <summary>A body sliding round a corner leaves it.</summary>
+    CornerEnd
 End Enum

@@ -100,7 +100,11 @@ Friend NotInheritable Class EventQueue
         Return _node(i).Time
     End Function
 
-    ''' <summary>The body with the earliest time (one of them, on a tie); −1 when there are no bodies.</summary>
+    ''' <summary>
+    ''' The body with the earliest time, the lowest-numbered on a tie; −1 when there are no bodies.
+    ''' The answer depends only on the times filed, never on the buckets' layout (which adapts to the
+    ''' traffic, and so to how a run is cut into advances): a run is the same however it is sampled.
+    ''' </summary>
     Friend Function Top() As Integer
         If _n = 0 Then Return -1
         If _perSecond = 0 Then
@@ -119,7 +123,7 @@ Friend NotInheritable Class EventQueue
                 j = node(j).NextBody
                 While j >= 0
                     _scanned += 1
-                    If node(j).Time < bestTime Then
+                    If node(j).Time < bestTime OrElse (node(j).Time = bestTime AndAlso j < best) Then
                         best = j
                         bestTime = node(j).Time
                     End If

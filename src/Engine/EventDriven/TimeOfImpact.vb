@@ -25,6 +25,16 @@ Public Module TimeOfImpact
     ''' </summary>
     Public Function CircleCircle(dx As Double, dy As Double, dvx As Double, dvy As Double, dAy As Double,
                                  sumRadii As Double, slop As Double, Optional speedScale As Double = 0) As Double
+        Return CircleCircle(dx, dy, dvx, dvy, 0, dAy, sumRadii, slop, speedScale)
+    End Function
+
+    ''' <summary>
+    ''' <see cref="CircleCircle(Double, Double, Double, Double, Double, Double, Double, Double)"/> with a relative
+    ''' acceleration that may have a horizontal part too (dAx, dAy, m/s²): a body sliding down a slope.
+    ''' |Δp + Δv t + ½ Δa t²|² = R² is a quartic whenever Δa ≠ 0.
+    ''' </summary>
+    Public Function CircleCircle(dx As Double, dy As Double, dvx As Double, dvy As Double, dAx As Double, dAy As Double,
+                                 sumRadii As Double, slop As Double, Optional speedScale As Double = 0) As Double
         Dim c0 = dx * dx + dy * dy - sumRadii * sumRadii
         Dim c1 = 2 * (dx * dvx + dy * dvy)
         Dim tol = 2 * sumRadii * slop
@@ -32,7 +42,7 @@ Public Module TimeOfImpact
         ' what rounding leaves after a perfectly inelastic (e = 0) collision, where the relative
         ' velocity should be exactly zero but is a few ulps of the bodies' own speeds.
         Dim slopeTol = ApproachFraction * 2 * sumRadii * (Math.Sqrt(dvx * dvx + dvy * dvy) + speedScale)
-        If dAy = 0 Then
+        If dAy = 0 AndAlso dAx = 0 Then
             ' Straight-line relative motion, inlined for the elastic gas: the hot path of the solver.
             If c0 <= tol Then Return If(c1 < -slopeTol, 0.0, Double.PositiveInfinity)
             If c1 >= 0 Then Return Double.PositiveInfinity
@@ -44,9 +54,11 @@ Public Module TimeOfImpact
             ' Smaller root c/q with q = −½(b − √disc) > 0: no cancellation.
             Return 2 * c0 / (-c1 + Math.Sqrt(disc))
         End If
-        Dim alpha = 0.5 * dAy
+        ' |Δp + Δv t + α t²|² with α = ½ Δa: t⁴ |α|², t³ 2 α·Δv, t² (|Δv|² + 2 α·Δp), t 2 Δp·Δv, 1 |Δp|² − R².
+        Dim alphaX = 0.5 * dAx, alphaY = 0.5 * dAy
         If Math.Abs(c1) <= slopeTol AndAlso c0 <= tol Then c1 = 0
-        Return RootFinding.EarliestEntry(alpha * alpha, 2 * alpha * dvy, dvx * dvx + dvy * dvy + 2 * alpha * dy, c1, c0, tol)
+        Return RootFinding.EarliestEntry(alphaX * alphaX + alphaY * alphaY, 2 * (alphaX * dvx + alphaY * dvy),
+                                         dvx * dvx + dvy * dvy + 2 * (alphaX * dx + alphaY * dy), c1, c0, tol)
     End Function
 
     ''' <summary>
@@ -72,7 +84,21 @@ Public Module TimeOfImpact
     Public Function CircleRectangle(px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
                                     x0 As Double, y0 As Double, x1 As Double, y1 As Double, slop As Double,
                                     ByRef feature As Integer) As Double
+        Return CircleRectangle(px, py, vx, vy, ay, r, x0, y0, x1, y1, slop, Double.PositiveInfinity, feature)
+    End Function
+
+    ''' <summary>
+    ''' <see cref="CircleRectangle(Double, Double, Double, Double, Double, Double, Double, Double, Double, Double, Double, ByRef Integer)"/>,
+    ''' looking no further than <paramref name="horizon"/> s ahead: a corner the path's bounding box
+    ''' cannot reach by then is not solved for (its quartic is the costly part).
+    ''' </summary>
+    Public Function CircleRectangle(px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double,
+                                    x0 As Double, y0 As Double, x1 As Double, y1 As Double, slop As Double, horizon As Double,
+                                    ByRef feature As Integer) As Double
         Dim best = Double.PositiveInfinity
+        Dim xlo = Double.NegativeInfinity, xhi = Double.PositiveInfinity, ylo = Double.NegativeInfinity, yhi = Double.PositiveInfinity
+        If horizon < Double.PositiveInfinity Then PathBox.Bounds(px, py, vx, vy, ay, horizon, xlo, xhi, ylo, yhi)
+        Dim reach = r + slop
         feature = -1
         Dim t As Double
         ' Faces: x is linear, y quadratic in t.
@@ -88,6 +114,8 @@ Public Module TimeOfImpact
         For k = 0 To 3
             Dim cx = If((k And 1) = 0, x0, x1)
             Dim cy = If((k And 2) = 0, y0, y1)
+            ' Written so that NaN still solves.
+            If xhi + reach < cx OrElse xlo - reach > cx OrElse yhi + reach < cy OrElse ylo - reach > cy Then Continue For
             t = CircleCircle(px - cx, py - cy, vx, vy, ay, r, slop)
             If t < best Then
                 Dim hx = px + vx * t - cx

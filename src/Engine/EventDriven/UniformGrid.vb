@@ -142,7 +142,7 @@ Friend NotInheritable Class UniformGrid
     End Sub
 
     ''' <summary>Copies body i's motion (and next collision time, s) into its lane; nothing when it has none.</summary>
-    Friend Sub Publish(i As Integer, ByRef state As BodyState, colTime As Double)
+    Friend Sub Publish(i As Integer, ByRef state As Motion, colTime As Double)
         Dim lane = LaneOf(i)
         If lane < 0 Then Return
 #If NET Then

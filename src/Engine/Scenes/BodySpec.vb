@@ -5,24 +5,33 @@ Namespace Scenes
     Friend NotInheritable Class BodySpec
         ''' <summary>0-based position in the file's "bodies" array.</summary>
         Friend Property Index As Integer
-        Friend Property IsRectangle As Boolean
+        Friend Property Kind As ShapeKind
         Friend Property Id As String
-        ''' <summary>Centre of a circle, lower-left corner of a rectangle, m.</summary>
+        ''' <summary>A circle's centre, a rectangle's lower-left corner, a segment's first end, m (a polygon: unused).</summary>
         Friend Property X As Double
         Friend Property Y As Double
+        ''' <summary>A segment's second end, m.</summary>
+        Friend Property X2 As Double
+        Friend Property Y2 As Double
         ''' <summary>m (circles).</summary>
         Friend Property Radius As Double
-        ''' <summary>kg (movable circles).</summary>
-        Friend Property Mass As Double
-        ''' <summary>m/s (movable circles).</summary>
-        Friend Property Vx As Double
-        Friend Property Vy As Double
-        Friend Property IsFixed As Boolean
         ''' <summary>m (rectangles).</summary>
         Friend Property Width As Double
         Friend Property Height As Double
+        ''' <summary>A polygon's corners, m, as given.</summary>
+        Friend Property Vertices As IReadOnlyList(Of Vector)
+        ''' <summary>kg (movable bodies).</summary>
+        Friend Property Mass As Double
+        ''' <summary>m/s (movable bodies).</summary>
+        Friend Property Vx As Double
+        Friend Property Vy As Double
+        Friend Property IsFixed As Boolean
         ''' <summary>"#rrggbb" or Nothing.</summary>
         Friend Property Color As String
+        ''' <summary>The body's shape as offsets from <see cref="Position"/>.</summary>
+        Friend Property Outline As Outline
+        ''' <summary>Its reference point, m (a polygon's centroid).</summary>
+        Friend Property Position As Vector
 
         ''' <summary>Where error messages point: "bodies[3]".</summary>
         Friend ReadOnly Property Place As String
@@ -31,35 +40,48 @@ Namespace Scenes
             End Get
         End Property
 
-        Friend ReadOnly Property IsMovableCircle As Boolean
-            Get
-                Return Not IsRectangle AndAlso Not IsFixed
-            End Get
-        End Property
-
         ''' <summary>Bounding box, m.</summary>
         Friend ReadOnly Property MinX As Double
             Get
-                Return If(IsRectangle, X, X - Radius)
+                Return Position.X + Outline.MinX
             End Get
         End Property
 
         Friend ReadOnly Property MaxX As Double
             Get
-                Return If(IsRectangle, X + Width, X + Radius)
+                Return Position.X + Outline.MaxX
             End Get
         End Property
 
         Friend ReadOnly Property MinY As Double
             Get
-                Return If(IsRectangle, Y, Y - Radius)
+                Return Position.Y + Outline.MinY
             End Get
         End Property
 
         Friend ReadOnly Property MaxY As Double
             Get
-                Return If(IsRectangle, Y + Height, Y + Radius)
+                Return Position.Y + Outline.MaxY
             End Get
         End Property
+
+        ''' <summary>Builds the model body this spec describes.</summary>
+        Friend Function ToShape() As Shape
+            Dim p = New Vector(X, Y)
+            Dim v = New Vector(Vx, Vy)
+            Dim body As Shape
+            Select Case Kind
+                Case ShapeKind.Circle
+                    body = If(IsFixed, Circle.CreateFixed(p, Radius, Id), New Circle(p, Radius, Mass, v, Id))
+                Case ShapeKind.Rectangle
+                    body = If(IsFixed, New Rectangle(p, Width, Height, Id), Rectangle.CreateMovable(p, Width, Height, Mass, v, Id))
+                Case ShapeKind.Segment
+                    body = New Segment(p, New Vector(X2, Y2), Id)
+                Case Else
+                    body = If(IsFixed, Polygon.CreateFixed(Vertices, Id), New Polygon(Vertices, Mass, v, Id))
+            End Select
+            body.Color = Color
+            Return body
+        End Function
     End Class
 End Namespace

@@ -86,6 +86,11 @@ Namespace Scenes
             Return New SceneFormatException(place, "must be " & expected & ", not " & actual)
         End Function
 
+        ''' <summary>A JSON number that must be finite, at <paramref name="place"/> (an array element, say).</summary>
+        Friend Shared Function Number(e As XElement, place As String) As Double
+            Return AsNumber(e, place)
+        End Function
+
         Private Shared Function AsNumber(e As XElement, place As String) As Double
             If JsonType(e) <> "number" Then Throw WrongType(e, place, "a number")
             Dim problem As String = Nothing

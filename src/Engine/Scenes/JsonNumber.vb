@@ -31,16 +31,21 @@ Namespace Scenes
                 problem = "must be a finite number (" & token & " is too large)"
                 Return Nothing
             End If
+            ' .NET Framework and Mono read "-0" (and a negative number too small to hold) as +0, .NET
+            ' Core as −0: the sign is restored so that a zero velocity reads back bit for bit.
+            If value = 0 AndAlso token(0) = "-"c Then value = -Math.Abs(value)
             problem = Nothing
             Return value
         End Function
 
         ''' <summary>
         ''' The shortest text that reads back as exactly <paramref name="value"/>. "R" is checked because
-        ''' on .NET Framework it can lose the last bit; G17 always round-trips.
+        ''' on .NET Framework it can lose the last bit; G17 always round-trips. Zero keeps its sign,
+        ''' which .NET Framework and Mono drop ("0" for −0).
         ''' </summary>
         Friend Function Format(value As Double) As String
             If Double.IsNaN(value) OrElse Double.IsInfinity(value) Then Throw New ArgumentOutOfRangeException(NameOf(value), "a scene file holds only finite numbers")
+            If value = 0 Then Return If(BitConverter.DoubleToInt64Bits(value) < 0, "-0", "0")
             Dim text = value.ToString("R", CultureInfo.InvariantCulture)
             If Double.Parse(text, NumberStyles.Float, CultureInfo.InvariantCulture) <> value Then text = value.ToString("G17", CultureInfo.InvariantCulture)
             Return text

@@ -2,10 +2,10 @@ Option Strict On
 
 Namespace Scenes
     ''' <summary>
-    ''' Finds the first body (in file order) that overlaps an earlier one by more than 1e-9 m: two
-    ''' circles, or a movable circle and a rectangle. Touching is allowed (Newton's cradle). A uniform
-    ''' grid keeps it near O(N) for scenes of 100 000 circles; bodies much larger than a cell are kept
-    ''' in a short list and checked against everything.
+    ''' Finds the first body (in file order) that overlaps an earlier one by more than 1e-9 m, among pairs
+    ''' that collide with each other (any pair but two fixed bodies). Touching is allowed (Newton's
+    ''' cradle). A uniform grid keeps it near O(N) for scenes of 100 000 circles; bodies much larger than
+    ''' a cell are kept in a short list and checked against everything.
     ''' </summary>
     Friend Module OverlapCheck
         ''' <summary>Overlap allowed for rounding, m.</summary>
@@ -21,7 +21,7 @@ Namespace Scenes
         Friend Sub Check(bodies As IReadOnlyList(Of BodySpec))
             If bodies Is Nothing Then Throw New ArgumentNullException(NameOf(bodies))
             Dim cell = CellSize(bodies)
-            If cell = 0 Then Return ' no circles: rectangles never clash with each other
+            If Not (cell > 0) Then cell = 1 ' only segments (no size): any cell will do
             Dim grid As New Dictionary(Of Long, List(Of Integer))(CellKeyComparer.Instance)
             Dim large As New List(Of Integer)
             For j = 0 To bodies.Count - 1
@@ -81,38 +81,29 @@ Namespace Scenes
             End If
         End Sub
 
-        ''' <summary>How deep two bodies overlap, m (≤ 0 when apart or when the pair may overlap).</summary>
+        ''' <summary>
+        ''' How deep two bodies overlap, m (≤ 0 when apart, and 0 for two fixed bodies, which never collide
+        ''' and so may overlap). Circles by their centres; any other pair through the Minkowski difference
+        ''' of their outlines (see <see cref="OutlineContact.Penetration"/>).
+        ''' </summary>
         Friend Function OverlapDepth(a As BodySpec, b As BodySpec) As Double
-            If a.IsRectangle AndAlso b.IsRectangle Then Return 0
-            If Not a.IsRectangle AndAlso Not b.IsRectangle Then
+            If a.IsFixed AndAlso b.IsFixed Then Return 0
+            If a.Kind = ShapeKind.Circle AndAlso b.Kind = ShapeKind.Circle Then
                 Return a.Radius + b.Radius - Vector.Hypot(a.X - b.X, a.Y - b.Y)
             End If
-            Dim c = If(a.IsRectangle, b, a)
-            Dim r = If(a.IsRectangle, a, b)
-            If c.IsFixed Then Return 0 ' fixed bodies never collide with each other
-            Return CircleRectangleDepth(c.X, c.Y, c.Radius, r.X, r.Y, r.X + r.Width, r.Y + r.Height)
+            Dim k = Outline.MinkowskiDifference(b.Outline, a.Outline)
+            Return OutlineContact.Penetration(k, a.Position - b.Position).Depth
         End Function
 
-        ''' <summary>Depth of a circle (centre x, y, radius r) into the box [x0, x1] × [y0, y1], m.</summary>
-        Friend Function CircleRectangleDepth(x As Double, y As Double, r As Double, x0 As Double, y0 As Double, x1 As Double, y1 As Double) As Double
-            If x > x0 AndAlso x < x1 AndAlso y > y0 AndAlso y < y1 Then
-                ' Centre inside: it must travel to the nearest side and a radius more to get out.
-                Return r + Math.Min(Math.Min(x - x0, x1 - x), Math.Min(y - y0, y1 - y))
-            End If
-            Dim qx = Math.Min(Math.Max(x, x0), x1)
-            Dim qy = Math.Min(Math.Max(y, y0), y1)
-            Return r - Vector.Hypot(x - qx, y - qy)
-        End Function
-
-        ''' <summary>Twice the median circle radius, m; 0 when there are no circles.</summary>
+        ''' <summary>Twice the median half-size of the bodies (the larger side of each one's bounding box), m; 0 when there are none.</summary>
         Private Function CellSize(bodies As IReadOnlyList(Of BodySpec)) As Double
-            Dim radii As New List(Of Double)
+            Dim sizes As New List(Of Double)
             For Each b In bodies
-                If Not b.IsRectangle Then radii.Add(b.Radius)
+                sizes.Add(Math.Max(b.MaxX - b.MinX, b.MaxY - b.MinY) / 2)
             Next
-            If radii.Count = 0 Then Return 0
-            radii.Sort()
-            Return 2 * radii(radii.Count \ 2)
+            If sizes.Count = 0 Then Return 0
+            sizes.Sort()
+            Return 2 * sizes(sizes.Count \ 2)
         End Function
 
         Private Function CellIndex(v As Double, cell As Double) As Long

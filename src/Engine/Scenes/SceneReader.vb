@@ -158,38 +158,111 @@ Namespace Scenes
         End Function
 
         Private Function ReadBody(f As JsonFields, index As Integer, owners As Dictionary(Of String, Integer)) As BodySpec
-            Dim kind = f.RequiredString("type")
-            If kind <> "circle" AndAlso kind <> "rectangle" Then
-                Throw New SceneFormatException(f.PlaceOf("type"), "unknown type """ & kind & """ (expected ""circle"" or ""rectangle"")")
-            End If
-            Dim body As New BodySpec With {.Index = index, .IsRectangle = (kind = "rectangle"), .Id = ReadId(f, index, owners)}
-            body.X = f.RequiredNumber("x")
-            body.Y = f.RequiredNumber("y")
-            If body.IsRectangle Then
-                body.Width = Positive(f, "width", f.RequiredNumber("width"))
-                body.Height = Positive(f, "height", f.RequiredNumber("height"))
-                body.IsFixed = True
-            Else
-                body.Radius = Positive(f, "radius", f.RequiredNumber("radius"))
-                body.IsFixed = f.OptionalBoolean("fixed", False)
-                ' A fixed circle's mass and velocity mean nothing, but a wrong one is still a mistake worth naming.
-                If body.IsFixed Then
-                    If f.Find("mass") IsNot Nothing Then Positive(f, "mass", f.RequiredNumber("mass"))
-                Else
-                    body.Mass = Positive(f, "mass", f.RequiredNumber("mass"))
-                End If
-                Dim vx = f.OptionalNumber("vx", 0.0)
-                Dim vy = f.OptionalNumber("vy", 0.0)
-                If Not body.IsFixed Then
-                    body.Vx = vx
-                    body.Vy = vy
-                End If
-            End If
+            Dim typeName = f.RequiredString("type")
+            Dim kind As ShapeKind
+            Select Case typeName
+                Case "circle" : kind = ShapeKind.Circle
+                Case "rectangle" : kind = ShapeKind.Rectangle
+                Case "segment" : kind = ShapeKind.Segment
+                Case "polygon" : kind = ShapeKind.Polygon
+                Case Else
+                    Throw New SceneFormatException(f.PlaceOf("type"), "unknown type """ & typeName & """ (expected ""circle"", ""rectangle"", ""segment"" or ""polygon"")")
+            End Select
+            Dim body As New BodySpec With {.Index = index, .Kind = kind, .Id = ReadId(f, index, owners)}
+            Select Case kind
+                Case ShapeKind.Circle
+                    body.X = f.RequiredNumber("x")
+                    body.Y = f.RequiredNumber("y")
+                    body.Radius = Positive(f, "radius", f.RequiredNumber("radius"))
+                    ReadMotion(f, body, fixedByDefault:=False)
+                    body.Outline = Outline.Point(body.Radius)
+                    body.Position = New Vector(body.X, body.Y)
+                Case ShapeKind.Rectangle
+                    body.X = f.RequiredNumber("x")
+                    body.Y = f.RequiredNumber("y")
+                    body.Width = Positive(f, "width", f.RequiredNumber("width"))
+                    body.Height = Positive(f, "height", f.RequiredNumber("height"))
+                    ReadMotion(f, body, fixedByDefault:=True)
+                    body.Outline = Outline.Box(body.Width, body.Height)
+                    body.Position = New Vector(body.X, body.Y)
+                Case ShapeKind.Segment
+                    body.X = f.RequiredNumber("x1")
+                    body.Y = f.RequiredNumber("y1")
+                    body.X2 = f.RequiredNumber("x2")
+                    body.Y2 = f.RequiredNumber("y2")
+                    body.IsFixed = True
+                    If body.X = body.X2 AndAlso body.Y = body.Y2 Then
+                        Throw New SceneFormatException(body.Place, "a segment's two ends must differ (both are at x = " & Brief(body.X) & ", y = " & Brief(body.Y) & ")")
+                    End If
+                    body.Outline = Outline.Segment(Vector.Zero, New Vector(body.X2 - body.X, body.Y2 - body.Y))
+                    body.Position = New Vector(body.X, body.Y)
+                Case Else
+                    body.Vertices = ReadVertices(f)
+                    Dim core As Outline
+                    Try
+                        core = Outline.Polygon(body.Vertices)
+                    Catch ex As ArgumentException
+                        Throw New SceneFormatException(f.PlaceOf("vertices"), PolygonProblem(ex.Message), ex)
+                    End Try
+                    ReadMotion(f, body, fixedByDefault:=False)
+                    body.Position = core.Centroid
+                    body.Outline = core.Translated(-core.Centroid)
+                    body.X = body.Position.X
+                    body.Y = body.Position.Y
+            End Select
             body.Color = f.OptionalString("color")
             If body.Color IsNot Nothing AndAlso Not ColorPattern.IsMatch(body.Color) Then
                 Throw New SceneFormatException(f.PlaceOf("color"), "must be a colour ""#rrggbb"" such as ""#e53935"", not """ & body.Color & """")
             End If
             Return body
+        End Function
+
+        ''' <summary>
+        ''' "fixed", "mass", "vx", "vy" of a body that may move. A fixed body's mass and velocity mean
+        ''' nothing, but a wrong one is still a mistake worth naming.
+        ''' </summary>
+        Private Sub ReadMotion(f As JsonFields, body As BodySpec, fixedByDefault As Boolean)
+            body.IsFixed = f.OptionalBoolean("fixed", fixedByDefault)
+            If body.IsFixed Then
+                If f.Find("mass") IsNot Nothing Then Positive(f, "mass", f.RequiredNumber("mass"))
+            Else
+                body.Mass = Positive(f, "mass", f.RequiredNumber("mass"))
+            End If
+            Dim vx = f.OptionalNumber("vx", 0.0)
+            Dim vy = f.OptionalNumber("vy", 0.0)
+            If Not body.IsFixed Then
+                body.Vx = vx
+                body.Vy = vy
+            End If
+        End Sub
+
+        ''' <summary>A polygon's "vertices": an array of at least 3 [x, y] pairs of finite numbers.</summary>
+        Private Function ReadVertices(f As JsonFields) As IReadOnlyList(Of Vector)
+            Dim place = f.PlaceOf("vertices")
+            Dim e = f.Require("vertices")
+            If JsonFields.JsonType(e) <> "array" Then Throw JsonFields.WrongType(e, place, "an array of [x, y] pairs")
+            Dim corners As New List(Of Vector)
+            Dim k = 0
+            For Each item In e.Elements()
+                Dim itemPlace = place & "[" & k.ToString(CultureInfo.InvariantCulture) & "]"
+                If JsonFields.JsonType(item) <> "array" Then Throw JsonFields.WrongType(item, itemPlace, "an [x, y] pair")
+                Dim xy = item.Elements().ToList()
+                If xy.Count <> 2 Then Throw New SceneFormatException(itemPlace, "must be an [x, y] pair, not " & xy.Count.ToString(CultureInfo.InvariantCulture) & " numbers")
+                corners.Add(New Vector(JsonFields.Number(xy(0), itemPlace & "[0]"), JsonFields.Number(xy(1), itemPlace & "[1]")))
+                k += 1
+            Next
+            If corners.Count < 3 Then
+                Throw New SceneFormatException(place, "a polygon needs at least 3 corners, not " & corners.Count.ToString(CultureInfo.InvariantCulture))
+            End If
+            Return corners
+        End Function
+
+        ''' <summary>The geometry's reason, as the reader says it.</summary>
+        Private Function PolygonProblem(message As String) As String
+            If message.Contains("not convex") OrElse message.Contains("intersects itself") Then Return "the polygon is not convex (its corners must go round it once, turning the same way at every corner)"
+            If message.Contains("zero area") Then Return "the polygon has zero area"
+            If message.Contains("distinct corners") Then Return "a polygon needs at least 3 distinct corners"
+            Return message
         End Function
 
         Private Function ReadId(f As JsonFields, index As Integer, owners As Dictionary(Of String, Integer)) As String
@@ -212,16 +285,26 @@ Namespace Scenes
 
         Private Sub CheckInside(bodies As List(Of BodySpec), s As WorldSettings)
             For Each b In bodies
-                If Not b.IsMovableCircle Then Continue For
+                If b.IsFixed Then Continue For
                 Dim where As String = Nothing
-                If b.X - b.Radius < -WallTolerance Then
-                    where = "on the left (x - radius = " & Brief(b.X - b.Radius) & " m < 0)"
-                ElseIf b.X + b.Radius > s.Width + WallTolerance Then
-                    where = "on the right (x + radius = " & Brief(b.X + b.Radius) & " m > width = " & Brief(s.Width) & " m)"
-                ElseIf b.Y - b.Radius < -WallTolerance Then
-                    where = "at the bottom (y - radius = " & Brief(b.Y - b.Radius) & " m < 0)"
-                ElseIf b.Y + b.Radius > s.Height + WallTolerance Then
-                    where = "at the top (y + radius = " & Brief(b.Y + b.Radius) & " m > height = " & Brief(s.Height) & " m)"
+                If b.Kind = ShapeKind.Circle Then
+                    If b.X - b.Radius < -WallTolerance Then
+                        where = "on the left (x - radius = " & Brief(b.X - b.Radius) & " m < 0)"
+                    ElseIf b.X + b.Radius > s.Width + WallTolerance Then
+                        where = "on the right (x + radius = " & Brief(b.X + b.Radius) & " m > width = " & Brief(s.Width) & " m)"
+                    ElseIf b.Y - b.Radius < -WallTolerance Then
+                        where = "at the bottom (y - radius = " & Brief(b.Y - b.Radius) & " m < 0)"
+                    ElseIf b.Y + b.Radius > s.Height + WallTolerance Then
+                        where = "at the top (y + radius = " & Brief(b.Y + b.Radius) & " m > height = " & Brief(s.Height) & " m)"
+                    End If
+                ElseIf b.MinX < -WallTolerance Then
+                    where = "on the left (its left side is at x = " & Brief(b.MinX) & " m < 0)"
+                ElseIf b.MaxX > s.Width + WallTolerance Then
+                    where = "on the right (its right side is at x = " & Brief(b.MaxX) & " m > width = " & Brief(s.Width) & " m)"
+                ElseIf b.MinY < -WallTolerance Then
+                    where = "at the bottom (its bottom is at y = " & Brief(b.MinY) & " m < 0)"
+                ElseIf b.MaxY > s.Height + WallTolerance Then
+                    where = "at the top (its top is at y = " & Brief(b.MaxY) & " m > height = " & Brief(s.Height) & " m)"
                 End If
                 If where IsNot Nothing Then
                     Throw New SceneFormatException(b.Place, "is not wholly inside the container: it sticks out " & where)
@@ -237,16 +320,7 @@ Namespace Scenes
         Private Function Build(s As WorldSettings, bodies As List(Of BodySpec)) As World
             Dim w As New World(s.Width, s.Height, s.Gravity, s.Restitution, s.Walls)
             For Each b In bodies
-                Dim body As Shape
-                If b.IsRectangle Then
-                    body = New Rectangle(New Vector(b.X, b.Y), b.Width, b.Height, b.Id)
-                ElseIf b.IsFixed Then
-                    body = Circle.CreateFixed(New Vector(b.X, b.Y), b.Radius, b.Id)
-                Else
-                    body = New Circle(New Vector(b.X, b.Y), b.Radius, b.Mass, New Vector(b.Vx, b.Vy), b.Id)
-                End If
-                body.Color = b.Color
-                w.Add(body)
+                w.Add(b.ToShape())
             Next
             Return w
         End Function

@@ -28,17 +28,32 @@ Namespace Scenes
 
         Private Function BodyElement(b As Shape) As XElement
             Dim e = JsonObject("item", JsonValue("id", b.Id))
-            Dim c = TryCast(b, Circle)
-            If c IsNot Nothing Then
-                e.Add(JsonValue("type", "circle"), JsonValue("x", c.Position.X), JsonValue("y", c.Position.Y), JsonValue("radius", c.Radius))
-                If c.IsFixed Then
-                    e.Add(JsonValue("fixed", True))
-                Else
-                    e.Add(JsonValue("mass", c.Mass), JsonValue("vx", c.Velocity.X), JsonValue("vy", c.Velocity.Y))
-                End If
+            Select Case b.Kind
+                Case ShapeKind.Circle
+                    Dim c = DirectCast(b, Circle)
+                    e.Add(JsonValue("type", "circle"), JsonValue("x", c.Position.X), JsonValue("y", c.Position.Y), JsonValue("radius", c.Radius))
+                Case ShapeKind.Rectangle
+                    Dim r = DirectCast(b, Rectangle)
+                    e.Add(JsonValue("type", "rectangle"), JsonValue("x", r.Position.X), JsonValue("y", r.Position.Y), JsonValue("width", r.Width), JsonValue("height", r.Height))
+                Case ShapeKind.Segment
+                    Dim sg = DirectCast(b, Segment)
+                    e.Add(JsonValue("type", "segment"), JsonValue("x1", sg.StartPoint.X), JsonValue("y1", sg.StartPoint.Y),
+                          JsonValue("x2", sg.EndPoint.X), JsonValue("y2", sg.EndPoint.Y))
+                Case Else
+                    Dim corners As New XElement("vertices", New XAttribute("type", "array"))
+                    For Each v In DirectCast(b, Polygon).Vertices
+                        corners.Add(New XElement("item", New XAttribute("type", "array"),
+                                                 New XElement("item", New XAttribute("type", "number"), JsonNumber.Format(v.X)),
+                                                 New XElement("item", New XAttribute("type", "number"), JsonNumber.Format(v.Y))))
+                    Next
+                    e.Add(JsonValue("type", "polygon"), corners)
+            End Select
+            ' Every kind says whether it is fixed where that is not its default, and a movable body its mass and velocity.
+            If b.IsFixed Then
+                If b.Kind = ShapeKind.Circle OrElse b.Kind = ShapeKind.Polygon Then e.Add(JsonValue("fixed", True))
             Else
-                Dim r = DirectCast(b, Rectangle)
-                e.Add(JsonValue("type", "rectangle"), JsonValue("x", r.Position.X), JsonValue("y", r.Position.Y), JsonValue("width", r.Width), JsonValue("height", r.Height))
+                If b.Kind = ShapeKind.Rectangle Then e.Add(JsonValue("fixed", False))
+                e.Add(JsonValue("mass", b.Mass), JsonValue("vx", b.Velocity.X), JsonValue("vy", b.Velocity.Y))
             End If
             If b.Color IsNot Nothing Then e.Add(JsonValue("color", b.Color))
             Return e

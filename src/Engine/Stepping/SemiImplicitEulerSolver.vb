@@ -1,7 +1,7 @@
 Option Strict On
 
 ''' <summary>
-''' The seed's algorithm, kept as the baseline: semi-implicit Euler (v += a dt, then x += v dt with the
+''' The textbook game-engine algorithm, kept as the baseline: semi-implicit (symplectic) Euler (v += a dt, then x += v dt with the
 ''' new v) in fixed sub-steps, then static resolution (push overlapping bodies apart) and dynamic
 ''' resolution (an impulse along the normal). Collisions are found after the fact, so a ball that moves
 ''' more than its diameter in one step can tunnel through a thin obstacle. First order: position and
@@ -49,17 +49,24 @@ Public NotInheritable Class SemiImplicitEulerSolver
 
     ''' <summary>Advances by exactly <paramref name="duration"/> s in steps of at most <see cref="TimeStep"/>.</summary>
     Public Sub Advance(duration As Double) Implements ISolver.Advance
+        AdvanceWithin(duration, Long.MaxValue)
+    End Sub
+
+    ''' <summary>As <see cref="Advance"/>, stopping after the first whole sub-step that ends past <paramref name="deadline"/> (Stopwatch ticks).</summary>
+    Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
         If _world Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
-        If Not (duration > 0) Then Return
         Dim t0 = _world.Time
+        If Not (duration > 0) Then Return t0
         Dim n = SubSteps.Count(duration, _dt)
         For k = 1L To n
             Dim h = SubSteps.Length(k, n, duration, _dt)
             Dim offset = SubSteps.EndOffset(k, n, duration, _dt)
             Integrate(h, duration - offset + h)
             _contacts.Resolve(_world, t0 + offset, h, Nothing)
+            If k < n AndAlso Diagnostics.Stopwatch.GetTimestamp() > deadline Then Return t0 + offset
         Next
-    End Sub
+        Return t0 + duration
+    End Function
 
     ''' <summary>One step of h s: v += a h, then x += v h (the new v, which is what makes it semi-implicit and stable).</summary>
     Private Sub Integrate(h As Double, remaining As Double)

@@ -2,7 +2,7 @@ Option Strict On
 
 ''' <summary>
 ''' Contact handling shared by the stepping solvers, run after each sub-step. Collisions are found after
-''' the fact (the bodies already overlap), so each contact is handled in two parts, as in the seed:
+''' the fact (the bodies already overlap), so each contact is handled in two parts, as many game engines do:
 ''' static resolution pushes the bodies apart along the normal, shared in proportion to inverse mass;
 ''' dynamic resolution applies the impulse j = −(1 + e)(v_rel · n) / (1/m_A + 1/m_B) along the normal,
 ''' which leaves the tangential velocity alone (no friction), so a ball resting on a floor can still slide.
@@ -18,6 +18,8 @@ Friend NotInheritable Class StepContacts
     Private Const MinimumSpeed As Double = 1.0E-9
     ' Support passes per step at most: each is one sweep over the pairs.
     Private Const MaxSupportPasses As Integer = 8
+    ' Final passes over the fixed bodies and walls at most (a circle pushed out of one into another).
+    Private Const MaxFixedPasses As Integer = 4
 
     Private ReadOnly _broadPhase As New BroadPhase()
     Private ReadOnly _pairs As New List(Of (A As Integer, B As Integer))
@@ -27,6 +29,10 @@ Friend NotInheritable Class StepContacts
     Private _gravity As Double
     Private _restingSpeed As Double
     Private _touched As Boolean()
+    ' Where each movable circle started the step (m), to tell which side of a fixed body it came from.
+    Private _start As Vector() = Array.Empty(Of Vector)()
+    ' Whether the current pass over the fixed bodies moved any circle.
+    Private _moved As Boolean
     ' Per circle: the sum of the normals of what holds it (obstacles, walls, circles that are held), or zero.
     Private _support As Vector() = Array.Empty(Of Vector)()
     Private _pairKeys As Double() = Array.Empty(Of Double)()
@@ -48,8 +54,15 @@ Friend NotInheritable Class StepContacts
         _restingSpeed = 2 * _gravity * h + MinimumSpeed
         _touched = touched
         Dim circles = world.Circles
-        If _support.Length < circles.Count Then _support = New Vector(circles.Count - 1) {}
+        If _support.Length < circles.Count Then
+            _support = New Vector(circles.Count - 1) {}
+            _start = New Vector(circles.Count - 1) {}
+        End If
         Array.Clear(_support, 0, circles.Count)
+        For i = 0 To circles.Count - 1
+            ' The integrator has just moved it by about v h: where it came from, near enough to tell the side.
+            _start(i) = circles(i).Position - circles(i).Velocity * h
+        Next
 
         _broadPhase.FindOverlaps(circles, _pairs)
         If _gravity > 0 Then SortBottomUp(circles)
@@ -63,8 +76,14 @@ Friend NotInheritable Class StepContacts
             For pass = 1 To MaxSupportPasses
                 If Not ResolveSupport() Then Exit For
             Next
-            ResolveWalls()   ' 4. the support pass may push a circle into a wall: walls have the last word
         End If
+        ' 4. Fixed bodies and walls have the last word: a pair or support push (a heavy ball on a light
+        ' one) may have moved a circle into one, and no centre may end a step inside a fixed body.
+        For pass = 1 To MaxFixedPasses
+            _moved = False
+            ResolveObstacles()
+            If Not _moved Then Exit For
+        Next
     End Sub
 
     Private Sub ResolvePairs()
@@ -135,16 +154,19 @@ Friend NotInheritable Class StepContacts
                 Dim a = circles(i)
                 If a.IsFixed Then Continue For
                 For Each f In _fixedCircles
+                    ' The box of the step's path (from where it started to where it is), so a circle
+                    ' that went right through is caught too.
                     Dim reach = a.Radius + f.Radius
-                    If Math.Abs(a.Position.X - f.Position.X) > reach OrElse Math.Abs(a.Position.Y - f.Position.Y) > reach Then Continue For
-                    Dim contact = Collider.CircleCircle(a.Position, a.Radius, f.Position, f.Radius)
+                    If Math.Max(a.Position.X, _start(i).X) + reach < f.Position.X OrElse Math.Min(a.Position.X, _start(i).X) - reach > f.Position.X OrElse
+                       Math.Max(a.Position.Y, _start(i).Y) + reach < f.Position.Y OrElse Math.Min(a.Position.Y, _start(i).Y) - reach > f.Position.Y Then Continue For
+                    Dim contact = Collider.CircleCircleFrom(a.Position, a.Radius, f.Position, f.Radius, _start(i))
                     If contact.Depth > 0 Then Respond(i, a, -1, f, contact, CollisionKind.CircleFixed, WallSide.None, False)
                 Next
                 For Each r In rectangles
                     Dim lo = r.Min, hi = r.Max
-                    If a.Position.X + a.Radius < lo.X OrElse a.Position.X - a.Radius > hi.X OrElse
-                       a.Position.Y + a.Radius < lo.Y OrElse a.Position.Y - a.Radius > hi.Y Then Continue For
-                    Dim contact = Collider.CircleRectangle(a.Position, a.Radius, lo, hi)
+                    If Math.Max(a.Position.X, _start(i).X) + a.Radius < lo.X OrElse Math.Min(a.Position.X, _start(i).X) - a.Radius > hi.X OrElse
+                       Math.Max(a.Position.Y, _start(i).Y) + a.Radius < lo.Y OrElse Math.Min(a.Position.Y, _start(i).Y) - a.Radius > hi.Y Then Continue For
+                    Dim contact = Collider.CircleRectangleFrom(a.Position, a.Radius, lo, hi, _start(i))
                     If contact.Depth > 0 Then Respond(i, a, -1, r, contact, CollisionKind.CircleRectangle, WallSide.None, False)
                 Next
             Next
@@ -255,6 +277,7 @@ Friend NotInheritable Class StepContacts
     End Sub
 
     Private Sub MarkTouched(i As Integer)
+        _moved = True
         If _touched IsNot Nothing AndAlso i >= 0 Then _touched(i) = True
     End Sub
 End Class

@@ -1,7 +1,7 @@
 Option Strict On
 
 ''' <summary>
-''' Position Verlet (the second seed's method): x_{n+1} = x_n + (x_n − x_{n−1}) + a h², keeping each
+''' Position Verlet (Störmer–Verlet in its position form): x_{n+1} = x_n + (x_n − x_{n−1}) + a h², keeping each
 ''' circle's previous position instead of integrating its velocity. The velocity shown is
 ''' v_{n+1} = (x_{n+1} − x_n)/h + ½ a h, which is the central difference (x_{n+2} − x_n)/(2h) with the
 ''' x_{n+2} that the next step will produce: second order, and known at the end of the step rather than a
@@ -72,11 +72,17 @@ Public NotInheritable Class VerletSolver
 
     ''' <summary>Advances by exactly <paramref name="duration"/> s in steps of at most <see cref="TimeStep"/>.</summary>
     Public Sub Advance(duration As Double) Implements ISolver.Advance
+        AdvanceWithin(duration, Long.MaxValue)
+    End Sub
+
+    ''' <summary>As <see cref="Advance"/>, stopping after the first whole sub-step that ends past <paramref name="deadline"/> (Stopwatch ticks).</summary>
+    Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
         If _world Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
-        If Not (duration > 0) Then Return
-        LoadPrevious()
         Dim t0 = _world.Time
+        If Not (duration > 0) Then Return t0
+        LoadPrevious()
         Dim n = SubSteps.Count(duration, _dt)
+        Dim reached = t0 + duration
         For k = 1L To n
             Dim h = SubSteps.Length(k, n, duration, _dt)
             Dim offset = SubSteps.EndOffset(k, n, duration, _dt)
@@ -86,9 +92,14 @@ Public NotInheritable Class VerletSolver
                 ReseedTouched(h)
                 _hPrevious = h
             End If
+            If k < n AndAlso Diagnostics.Stopwatch.GetTimestamp() > deadline Then
+                reached = t0 + offset
+                Exit For
+            End If
         Next
         SavePrevious()
-    End Sub
+        Return reached
+    End Function
 
     ''' <summary>One Verlet step of h s for every movable circle.</summary>
     Private Sub Integrate(h As Double, remaining As Double)

@@ -100,7 +100,7 @@ Public Class LaneTests
             s.CellOccupancy = 2.0 ' the same grid for both (each would choose its own)
             Dim index = w.Circles.Select(Function(c, k) (c, k)).ToDictionary(Function(x) x.c, Function(x) x.k)
             Dim seen As New List(Of (Double, Integer, Integer))()
-            w.CollisionListener = Sub(r) If seen.Count < 3000 Then seen.Add((r.Time, index(r.A), If(r.B Is Nothing, -1, index(DirectCast(r.B, Circle)))))
+            w.CollisionListener = Sub(r) If seen.Count < 3000 Then seen.Add((r.Time, index(DirectCast(r.A, Circle)), If(r.B Is Nothing, -1, index(DirectCast(r.B, Circle)))))
             While seen.Count < 3000
                 w.Advance(0.05)
             End While

@@ -49,7 +49,7 @@ Public Class ReferenceGasTests
         For k = 0 To compared - 1
             Dim expected = reference(k)
             Dim actual = seen(k)
-            Dim a = index(actual.A)
+            Dim a = index(DirectCast(actual.A, Circle))
             Dim b = If(actual.Kind = CollisionKind.CircleCircle, index(DirectCast(actual.B, Circle)), -1 - CInt(actual.Wall))
             Dim pairOk = (a = expected.A AndAlso b = expected.B) OrElse (a = expected.B AndAlso b = expected.A)
             Assert.True(pairOk, $"collision {k}: solver had {a}–{b} at {actual.Time}, reference {expected.A}–{expected.B} at {expected.Time}")

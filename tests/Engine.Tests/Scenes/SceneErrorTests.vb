@@ -95,8 +95,8 @@ Public Class SceneErrorTests
     <InlineData("[1]", "bodies[0]: must be an object, not a number")>
     <InlineData("[{'type':'circle','x':1,'y':1,'radius':0.1,'mass':1},[]]", "bodies[1]: must be an object, not an array")>
     <InlineData("[{'x':1,'y':1,'radius':0.1,'mass':1}]", "bodies[0].type: is required")>
-    <InlineData("[{'type':'triangle','x':1,'y':1}]", "bodies[0].type: unknown type ""triangle"" (expected ""circle"" or ""rectangle"")")>
-    <InlineData("[{'type':'Circle','x':1,'y':1,'radius':0.1,'mass':1}]", "bodies[0].type: unknown type ""Circle"" (expected ""circle"" or ""rectangle"")")>
+    <InlineData("[{'type':'triangle','x':1,'y':1}]", "bodies[0].type: unknown type ""triangle"" (expected ""circle"", ""rectangle"", ""segment"" or ""polygon"")")>
+    <InlineData("[{'type':'Circle','x':1,'y':1,'radius':0.1,'mass':1}]", "bodies[0].type: unknown type ""Circle"" (expected ""circle"", ""rectangle"", ""segment"" or ""polygon"")")>
     <InlineData("[{'type':3,'x':1,'y':1}]", "bodies[0].type: must be a string, not a number")>
     <InlineData("[{'type':'circle','y':1,'radius':0.1,'mass':1}]", "bodies[0].x: is required")>
     <InlineData("[{'type':'circle','x':1,'radius':0.1,'mass':1}]", "bodies[0].y: is required")>
@@ -155,7 +155,6 @@ Public Class SceneErrorTests
     <InlineData("{'type':'circle','x':1,'y':1,'radius':0.1,'mass':1},{'type':'circle','x':1.1,'y':1,'radius':0.1,'mass':1}", "bodies[1]: overlaps bodies[0] by 0.1 m")>
     <InlineData("{'type':'circle','x':1,'y':1,'radius':0.1,'mass':1},{'type':'circle','x':5,'y':1,'radius':0.1,'mass':1},{'type':'circle','x':1,'y':1.15,'radius':0.1,'mass':1}", "bodies[2]: overlaps bodies[0] by 0.05 m")>
     <InlineData("{'type':'circle','x':1,'y':1,'radius':0.1,'fixed':true},{'type':'circle','x':1.1,'y':1,'radius':0.1,'mass':1}", "bodies[1]: overlaps bodies[0] by 0.1 m")>
-    <InlineData("{'type':'circle','x':1,'y':1,'radius':0.1,'fixed':true},{'type':'circle','x':1.1,'y':1,'radius':0.1,'fixed':true}", "bodies[1]: overlaps bodies[0] by 0.1 m")>
     <InlineData("{'type':'rectangle','x':2,'y':0,'width':2,'height':1},{'type':'circle','x':3,'y':1.05,'radius':0.1,'mass':1}", "bodies[1]: overlaps bodies[0] by 0.05 m")>
     <InlineData("{'type':'circle','x':3,'y':1.05,'radius':0.1,'mass':1},{'type':'rectangle','x':2,'y':0,'width':2,'height':1}", "bodies[1]: overlaps bodies[0] by 0.05 m")>
     <InlineData("{'type':'rectangle','x':2,'y':0,'width':2,'height':1},{'type':'circle','x':3,'y':0.9,'radius':0.1,'mass':1}", "bodies[1]: overlaps bodies[0] by 0.2 m")>
@@ -177,9 +176,86 @@ Public Class SceneErrorTests
     <InlineData("{'type':'rectangle','x':-1,'y':-1,'width':10,'height':0.5},{'type':'circle','x':-3,'y':9,'radius':1,'fixed':true}")>
     <InlineData("{'type':'circle','x':0.1,'y':0.1,'radius':0.1,'mass':1},{'type':'circle','x':7.9,'y':4.9,'radius':0.1,'mass':1}")>
     <InlineData("{'type':'circle','x':0.2,'y':0.1,'radius':0.1,'mass':1},{'type':'circle','x':0.1,'y':0.30000000000000004,'radius':0.1,'mass':1}")>
+    <InlineData("{'type':'circle','x':1,'y':1,'radius':0.1,'fixed':true},{'type':'circle','x':1.1,'y':1,'radius':0.1,'fixed':true}")>
+    <InlineData("{'type':'segment','x1':0,'y1':0,'x2':3,'y2':3},{'type':'rectangle','x':1,'y':1,'width':1,'height':1}")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1],[1.5,2]],'fixed':true},{'type':'circle','x':1.5,'y':1.2,'radius':0.5,'fixed':true}")>
+    <InlineData("{'type':'segment','x1':0,'y1':1,'x2':4,'y2':1},{'type':'rectangle','x':1,'y':1,'width':1,'height':1,'fixed':false,'mass':2}")>
+    <InlineData("{'type':'rectangle','x':1,'y':0,'width':1,'height':1,'fixed':false,'mass':2},{'type':'rectangle','x':2,'y':0,'width':1,'height':1,'fixed':false,'mass':2}")>
     Public Sub TouchingFixedOverlapsAndFixedOutside_AreAllowed(bodies As String)
         Dim json = Q("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[" & bodies & "]}")
         Assert.Equal(2, SceneFile.Load(json).Bodies.Count)
+    End Sub
+
+    <Theory>
+    <InlineData("{'type':'segment','x1':1,'y1':1,'x2':1,'y2':1}", "bodies[0]: a segment's two ends must differ (both are at x = 1, y = 1)")>
+    <InlineData("{'type':'segment','y1':1,'x2':2,'y2':1}", "bodies[0].x1: is required")>
+    <InlineData("{'type':'segment','x1':1,'y1':1,'x2':2}", "bodies[0].y2: is required")>
+    <InlineData("{'type':'segment','x1':1,'y1':1,'x2':'2','y2':1}", "bodies[0].x2: must be a number, not a string")>
+    <InlineData("{'type':'polygon','mass':1}", "bodies[0].vertices: is required")>
+    <InlineData("{'type':'polygon','vertices':{},'mass':1}", "bodies[0].vertices: must be an array of [x, y] pairs, not an object")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1]],'mass':1}", "bodies[0].vertices: a polygon needs at least 3 corners, not 2")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1],3],'mass':1}", "bodies[0].vertices[2]: must be an [x, y] pair, not a number")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1],[3]],'mass':1}", "bodies[0].vertices[2]: must be an [x, y] pair, not 1 numbers")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1],[3,'a']],'mass':1}", "bodies[0].vertices[2][1]: must be a number, not a string")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1],[3,NaN]],'mass':1}", "bodies[0].vertices[2][1]: must be a finite number, not NaN")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1],[3,1]],'mass':1}", "bodies[0].vertices: the polygon has zero area")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[3,1],[2,1.5],[3,3],[1,3]],'mass':1}", "bodies[0].vertices: the polygon is not convex (its corners must go round it once, turning the same way at every corner)")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[1,1],[1,1]],'mass':1}", "bodies[0].vertices: a polygon needs at least 3 distinct corners")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1],[1,2]]}", "bodies[0].mass: is required")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1],[1,2]],'mass':0}", "bodies[0].mass: must be greater than 0")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[2,1],[1,2]],'fixed':'no'}", "bodies[0].fixed: must be true or false, not a string")>
+    <InlineData("{'type':'rectangle','x':1,'y':1,'width':1,'height':1,'fixed':false}", "bodies[0].mass: is required")>
+    <InlineData("{'type':'rectangle','x':1,'y':1,'width':1,'height':1,'fixed':false,'mass':-1}", "bodies[0].mass: must be greater than 0")>
+    <InlineData("{'type':'rectangle','x':1,'y':1,'width':1,'height':1,'fixed':false,'mass':1,'vx':'x'}", "bodies[0].vx: must be a number, not a string")>
+    Public Sub NewBodyKinds_Errors(body As String, expected As String)
+        Dim ex = Fails(Q("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[" & body & "]}"))
+        Assert.Equal(expected, ex.Message)
+    End Sub
+
+    <Theory>
+    <InlineData("{'type':'rectangle','x':-0.5,'y':1,'width':1,'height':1,'fixed':false,'mass':1}", "bodies[0]: is not wholly inside the container: it sticks out on the left (its left side is at x = -0.5 m < 0)")>
+    <InlineData("{'type':'polygon','vertices':[[7,1],[8.5,1],[7,2]],'mass':1}", "bodies[0]: is not wholly inside the container: it sticks out on the right (its right side is at x = 8.5 m > width = 8 m)")>
+    <InlineData("{'type':'polygon','vertices':[[1,-1],[2,1],[1,2]],'mass':1}", "bodies[0]: is not wholly inside the container: it sticks out at the bottom (its bottom is at y = -1 m < 0)")>
+    <InlineData("{'type':'rectangle','x':1,'y':4.5,'width':1,'height':1,'fixed':false,'mass':1}", "bodies[0]: is not wholly inside the container: it sticks out at the top (its top is at y = 5.5 m > height = 5 m)")>
+    Public Sub MovableBoxOrPolygonOutsideAWalledContainer_IsAnError(body As String, expected As String)
+        Dim ex = Fails(Q("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[" & body & "]}"))
+        Assert.Equal("bodies[0]", ex.Place)
+        Assert.Equal(expected, ex.Message)
+    End Sub
+
+    <Theory>
+    <InlineData("{'type':'segment','x1':0,'y1':1,'x2':4,'y2':1},{'type':'circle','x':2,'y':1.05,'radius':0.1,'mass':1}", "bodies[1]: overlaps bodies[0] by 0.05 m")>
+    <InlineData("{'type':'rectangle','x':1,'y':0,'width':1,'height':1},{'type':'rectangle','x':1.5,'y':0.75,'width':1,'height':1,'fixed':false,'mass':2}", "bodies[1]: overlaps bodies[0] by 0.25 m")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[3,1],[2,2]],'mass':1},{'type':'circle','x':2,'y':0.95,'radius':0.1,'fixed':true}", "bodies[1]: overlaps bodies[0] by 0.05 m")>
+    <InlineData("{'type':'polygon','vertices':[[1,1],[3,1],[2,2]],'mass':1},{'type':'polygon','vertices':[[1.5,0.5],[2.5,0.5],[2,1.2]],'mass':1}", "bodies[1]: overlaps bodies[0] by 0.2 m")>
+    Public Sub NewBodyKinds_Overlaps_AreErrors(bodies As String, expected As String)
+        Dim ex = Fails(Q("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[" & bodies & "]}"))
+        Assert.Equal(expected, ex.Message)
+    End Sub
+
+    <Fact>
+    Public Sub NewBodyKinds_Load_WithTheirDefaults()
+        Dim w = SceneFile.Load(Q("{'format':'physics-scene/1','world':{'width':8,'height':5},'bodies':[" &
+            "{'id':'ramp','type':'segment','x1':0,'y1':2,'x2':3,'y2':0.5}," &
+            "{'id':'box','type':'rectangle','x':4,'y':0,'width':1,'height':0.5,'fixed':false,'mass':3,'vx':2}," &
+            "{'id':'table','type':'rectangle','x':6,'y':0,'width':1,'height':1}," &
+            "{'id':'tri','type':'polygon','vertices':[[1,3],[1,4],[2,3]],'mass':1.5}," &
+            "{'id':'wedge','type':'polygon','vertices':[[5,3],[6,3],[5.5,4]],'fixed':true}]}"))
+        Assert.Equal(5, w.Bodies.Count)
+        Dim ramp = DirectCast(w.Find("ramp"), Segment)
+        Assert.True(ramp.IsFixed)
+        Assert.Equal(New Vector(3, 0.5), ramp.EndPoint)
+        Dim box = DirectCast(w.Find("box"), Rectangle)
+        Assert.False(box.IsFixed)
+        Assert.Equal(3.0, box.Mass)
+        Assert.Equal(New Vector(2, 0), box.Velocity)
+        Assert.True(w.Find("table").IsFixed)
+        Dim tri = DirectCast(w.Find("tri"), Polygon)
+        Assert.False(tri.IsFixed)
+        Assert.Equal(4.0 / 3, tri.Position.X, 12)
+        Assert.Equal(10.0 / 3, tri.Position.Y, 12)
+        Assert.True(w.Find("wedge").IsFixed)
+        Assert.Equal("box,tri", String.Join(",", w.Movables.Select(Function(b) b.Id)))
     End Sub
 
     <Fact>

@@ -4,7 +4,7 @@ Imports Xunit
 
 ''' <summary>
 ''' A ball at rest on the floor or on a rectangle, with e &lt; 1: it must not jitter, sink, or flood the log,
-''' and it must still slide when pushed (the seed's bug: a ball resting on a rectangle could not be pushed
+''' and it must still slide when pushed (a classic bug of contact resolution: a ball resting on a rectangle could not be pushed
 ''' sideways, because every resting contact multiplied its velocity by e).
 ''' </summary>
 Public Class RestingContactTests

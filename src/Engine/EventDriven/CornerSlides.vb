@@ -1,0 +1,178 @@
+Option Strict On
+
+''' <summary>
+''' Bodies sliding round a corner (<see cref="BodyMode.Rounding"/>): a rounded corner of the pair
+''' shape of a body and the fixed body it slides on (a rectangle's corner, a segment's end, a fixed
+''' circle, a body asleep), round which its reference point moves on a circular arc. This owns where
+''' each arc is and how its slide started, and answers where the body is on it, when the slide ends,
+''' and when a neighbour comes within reach. The maths is <see cref="CornerSlide"/>'s: angles θ are
+''' measured from the upward vertical, increasing in the direction of travel.
+''' </summary>
+Friend NotInheritable Class CornerSlides
+    Private ReadOnly _s As SolverState
+    ' Per body: the corner (centre of the arc, m), the arc's radius (m), the direction (±1: +1 clockwise),
+    ' the angle and speed at the start (rad, m/s), the angle where the slide ends (rad), whether it ends
+    ' there on the next face (rather than by leaving the corner), and when it started (s).
+    Private _cx As Double() = Array.Empty(Of Double)()
+    Private _cy As Double() = Array.Empty(Of Double)()
+    Private _radius As Double() = Array.Empty(Of Double)()
+    Private _dir As Double() = Array.Empty(Of Double)()
+    Private _theta0 As Double() = Array.Empty(Of Double)()
+    Private _v0 As Double() = Array.Empty(Of Double)()
+    Private _endAngle As Double() = Array.Empty(Of Double)()
+    Private _ontoFace As Boolean() = Array.Empty(Of Boolean)()
+    Private _start As Double() = Array.Empty(Of Double)()
+    ''' <summary>Scratch list of a body's neighbours (no allocation per event).</summary>
+    Private _neighbours As Integer() = Array.Empty(Of Integer)()
+
+    Friend Sub New(state As SolverState)
+        _s = state
+    End Sub
+
+    Friend Sub Reset(n As Integer)
+        If _cx.Length >= n Then Return
+        _cx = New Double(n - 1) {}
+        _cy = New Double(n - 1) {}
+        _radius = New Double(n - 1) {}
+        _dir = New Double(n - 1) {}
+        _theta0 = New Double(n - 1) {}
+        _v0 = New Double(n - 1) {}
+        _endAngle = New Double(n - 1) {}
+        _ontoFace = New Boolean(n - 1) {}
+        _start = New Double(n - 1) {}
+        _neighbours = New Integer(n - 1) {}
+    End Sub
+
+    ''' <summary>
+    ''' Body i, at the clock, its reference point <paramref name="radius"/> m from the corner
+    ''' (<paramref name="cx"/>, <paramref name="cy"/>) along <paramref name="normal"/>, moving at
+    ''' <paramref name="velocity"/> (m/s, along the arc's tangent), starts sliding round it. It leaves
+    ''' when the normal force vanishes, or reaches the next face first (the corner's normals end at
+    ''' <paramref name="endNormal"/>; Nothing for a full circle). Returns False, doing nothing, when it
+    ''' is too fast to follow the corner at all (it flies off at once).
+    ''' </summary>
+    Friend Function Start(i As Integer, cx As Double, cy As Double, radius As Double, normal As Vector, velocity As Vector, endNormal As Vector?) As Boolean
+        Dim g = _s.G
+        Dim phi = Math.Atan2(normal.X, normal.Y)
+        Dim tangent = New Vector(Math.Cos(phi), -Math.Sin(phi)) ' clockwise
+        Dim vt = Vector.Dot(velocity, tangent)
+        ' Which way round: as it moves, or (at rest) the way gravity pulls it.
+        Dim dir = If(vt <> 0, Math.Sign(vt), If(normal.X <> 0, Math.Sign(normal.X), 1))
+        Dim theta0 = dir * phi
+        Dim speed = Math.Abs(vt)
+        If speed = 0 AndAlso theta0 = 0 Then Return False ' at rest exactly on top: it stays
+        Dim leave = CornerSlide.LeaveAngle(speed, g, radius, theta0)
+        If leave <= theta0 Then Return False
+        Dim finish = leave
+        Dim ontoFace = False
+        If endNormal.HasValue Then
+            ' The arc ends where the next face begins: beyond that the face holds it.
+            Dim phiEnd = Math.Atan2(endNormal.Value.X, endNormal.Value.Y)
+            Dim thetaEnd = dir * phiEnd
+            While thetaEnd < theta0
+                thetaEnd += 2 * Math.PI
+            End While
+            If thetaEnd < leave Then
+                finish = thetaEnd
+                ontoFace = True
+            End If
+        End If
+        Dim b = _s.Bodies
+        b.SetMode(i, BodyMode.Rounding)
+        b.Motion(i).Ay = Double.NaN ' not a parabola: no prediction may read it as one
+        b.Motion(i).Ax = 0
+        _cx(i) = cx
+        _cy(i) = cy
+        _radius(i) = radius
+        _dir(i) = dir
+        _theta0(i) = theta0
+        _v0(i) = speed
+        _endAngle(i) = finish
+        _ontoFace(i) = ontoFace
+        _start(i) = _s.Now
+        Return True
+    End Function
+
+    ''' <summary>Time (s, from now) until sliding body i leaves its corner or reaches the next face.</summary>
+    Friend Function TimeToEnd(i As Integer) As Double
+        Return Math.Max(0, CornerSlide.Duration(_v0(i), _s.G, _radius(i), _theta0(i), _endAngle(i)) - (_s.Now - _start(i)))
+    End Function
+
+    ''' <summary>
+    ''' When body k first comes within reach of sliding body j: j's reference point stays within the arc's
+    ''' radius of its corner, and its shape within its reach of that, so k can touch it only inside the
+    ''' disc of radius (arc + reach j + reach k) about the corner. Reaching that disc ends the exact slide
+    ''' early (see <see cref="Interrupt"/>); +∞ if k never gets there.
+    ''' </summary>
+    Friend Function TimeToReach(j As Integer, k As Integer) As Double
+        Dim b = _s.Bodies
+        Dim mk = b.Slot(k).Mode
+        If mk = BodyMode.Rounding OrElse mk = BodyMode.Sleeping Then Return Double.PositiveInfinity
+        Dim xk, yk, vxk, vyk As Double
+        b.Motion(k).StateAt(_s.Now, xk, yk, vxk, vyk)
+        Return TimeOfImpact.CircleCircle(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay,
+                                         b.Reach(k) + _radius(j) + b.Reach(j), SolverState.SlopAt(xk, yk))
+    End Function
+
+    ''' <summary>Fills the scratch list with body i's grid neighbours (see <see cref="Neighbour"/>); returns how many.</summary>
+    Friend Function Neighbours(i As Integer) As Integer
+        Return GridNeighbours.Collect(_s, i, _neighbours)
+    End Function
+
+    Friend Function Neighbour(q As Integer) As Integer
+        Return _neighbours(q)
+    End Function
+
+    ''' <summary>Sliding body i's reference point (m) and velocity (m/s) at time t (s), exactly on its arc.</summary>
+    Friend Sub StateAt(i As Integer, t As Double, ByRef position As Vector, ByRef velocity As Vector)
+        Dim theta = AngleAt(i, t)
+        Dim speed = CornerSlide.SpeedAt(_v0(i), _s.G, _radius(i), _theta0(i), theta)
+        Dim s = _dir(i)
+        position = New Vector(_cx(i) + s * _radius(i) * Math.Sin(theta), _cy(i) + _radius(i) * Math.Cos(theta))
+        velocity = New Vector(s * speed * Math.Cos(theta), -speed * Math.Sin(theta))
+    End Sub
+
+    Private Function AngleAt(i As Integer, t As Double) As Double
+        Return CornerSlide.AngleAfter(_v0(i), _s.G, _radius(i), _theta0(i), _endAngle(i), t - _start(i))
+    End Function
+
+    ''' <summary>
+    ''' Ends a slide early (a neighbour came within reach): the body becomes free at its exact place
+    ''' and velocity on the arc. If it is still pressed against the corner, the contact rules take
+    ''' over (it hops round the rest of the corner).
+    ''' </summary>
+    Friend Sub Interrupt(i As Integer)
+        Launch(i, AngleAt(i, _s.Now), _radius(i))
+    End Sub
+
+    ''' <summary>
+    ''' The slide is over. Leaving the corner, it goes off tangentially, touching it with zero normal
+    ''' speed: it starts a hair (far below any physical scale) outside, so rounding cannot turn the
+    ''' tangent into a collision. Reaching the next face, it goes on from exactly there, and the face's
+    ''' own contact takes over.
+    ''' </summary>
+    Friend Sub Finish(i As Integer)
+        Dim r = _radius(i)
+        Launch(i, _endAngle(i), If(_ontoFace(i), r, r + 10 * SolverState.SlopAt(_cx(i), _cy(i)) + 1.0E-9 * r))
+    End Sub
+
+    ''' <summary>
+    ''' Turns body i into a free body at angle θ on its arc, its reference point <paramref name="arc"/> m
+    ''' from the corner, moving along the tangent at the slide's speed there.
+    ''' </summary>
+    Private Sub Launch(i As Integer, theta As Double, arc As Double)
+        Dim b = _s.Bodies
+        Dim s = _dir(i)
+        Dim speed = CornerSlide.SpeedAt(_v0(i), _s.G, _radius(i), _theta0(i), theta)
+        b.Motion(i).Px = _cx(i) + s * arc * Math.Sin(theta)
+        b.Motion(i).Py = _cy(i) + arc * Math.Cos(theta)
+        b.Motion(i).Vx = s * speed * Math.Cos(theta)
+        b.Motion(i).Vy = -speed * Math.Sin(theta)
+        b.Motion(i).T0 = _s.Now
+        b.SetMode(i, BodyMode.Free)
+        b.Motion(i).Ay = -_s.G
+        b.Support(i) = BodyTable.SupportNone
+        _s.Changed(i)
+        _s.MoveToCellOfPosition(i)
+    End Sub
+End Class

@@ -1,0 +1,66 @@
+Option Strict On
+
+''' <summary>How the event-driven solver lays its grid over the container and files the bodies in it.</summary>
+Friend Module GridLayout
+    ''' <summary>
+    ''' How many bodies a cell should hold on average: bigger cells mean fewer crossings but more
+    ''' pairs to test. Testing a whole cell's lanes at once (vectors) makes pairs cheap, so about 2;
+    ''' one at a time (.NET Framework, Mono), about 1.2. Both measured on the elastic gas.
+    ''' </summary>
+    Friend Function BodiesPerCell(vectorScan As Boolean) As Double
+        Return If(vectorScan, 2.0, 1.2)
+    End Function
+
+    ''' <summary>
+    ''' Cells holding about <paramref name="perCell"/> bodies each (few crossings, few neighbours),
+    ''' never narrower than the largest gridded diameter. Bodies reaching more than four times the median
+    ''' from their reference point are "oversized": kept out of the grid and checked against every body, so one giant does not
+    ''' make every cell huge. Every body is filed in its cell and published; every obstacle is listed
+    ''' in the cells it can be touched from.
+    ''' </summary>
+    Friend Sub Lay(s As SolverState, perCell As Double)
+        Dim b = s.Bodies
+        Dim n = b.Count
+        Dim limit = Double.PositiveInfinity
+        If n > 0 Then
+            Dim radii = New Double(n - 1) {}
+            For k = 0 To n - 1
+                radii(k) = b.Reach(k)
+            Next
+            Array.Sort(radii)
+            limit = 4 * radii(n \ 2)
+        End If
+        If s.Oversized.Length < n Then s.Oversized = New Integer(n - 1) {}
+        Dim rMax = 0.0
+        s.OversizedCount = 0
+        For i = 0 To n - 1
+            If b.Reach(i) > limit Then
+                s.Oversized(s.OversizedCount) = i
+                s.OversizedCount += 1
+            Else
+                rMax = Math.Max(rMax, b.Reach(i))
+            End If
+        Next
+        s.RMax = rMax
+        Dim gridded = Math.Max(1, n - s.OversizedCount)
+        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(perCell * s.Width * s.Height / gridded))
+        s.Grid.Layout(s.Width, s.Height, cell, n, 4 * n + 64)
+        For i = 0 To n - 1
+            If b.Reach(i) > limit Then
+                b.Slot(i).Cell = -1
+            Else
+                b.Slot(i).Col = s.Grid.ColumnOf(b.Motion(i).Px)
+                b.Slot(i).Row = s.Grid.RowOf(b.Motion(i).Py)
+                b.Slot(i).Cell = b.Slot(i).Row * s.Grid.Nx + b.Slot(i).Col
+                s.Grid.Insert(i, b.Slot(i).Cell)
+                s.Publish(i)
+            End If
+        Next
+        Dim o = s.Obstacles
+        Dim x0 = New Double(o.Count - 1) {}, y0 = New Double(o.Count - 1) {}, x1 = New Double(o.Count - 1) {}, y1 = New Double(o.Count - 1) {}
+        For k = 0 To o.Count - 1
+            o.Bounds(k, x0(k), y0(k), x1(k), y1(k))
+        Next
+        s.Grid.SetStatics(x0, y0, x1, y1, o.Count)
+    End Sub
+End Module

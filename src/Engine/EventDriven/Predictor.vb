@@ -1,0 +1,504 @@
+Option Strict On
+
+#If NET Then
+Imports System.Numerics
+Imports System.Runtime.Intrinsics
+#End If
+
+''' <summary>
+''' Prediction: the earliest event of one body against the walls, the obstacles and the movable
+''' bodies near it, and its next grid-cell crossing, filed in the queue. Only the cells around it
+''' that are within reach of its path are searched (see <see cref="ReachOfPath"/>), so the cost per
+''' event stays flat as the number of bodies grows. Which time-of-impact function a pair uses is
+''' decided in one place, <see cref="ContactRules"/>; this class only decides whom to ask.
+''' </summary>
+Friend NotInheritable Class Predictor
+    Private ReadOnly _s As SolverState
+    Private ReadOnly _slides As CornerSlides
+    ''' <summary>Scratch list of the bodies of one cell being tested one by one.</summary>
+    Private _scanList As Integer() = Array.Empty(Of Integer)()
+
+#If NET Then
+    ''' <summary>Whether pair tests run four lanes at a time (256-bit vectors, when the processor has them).</summary>
+    Friend VectorScan As Boolean = Vector256.IsHardwareAccelerated
+#Else
+    ''' <summary>.NET Framework has no 256-bit vectors: pair tests run one body at a time.</summary>
+    Friend ReadOnly VectorScan As Boolean
+#End If
+
+    Friend Sub New(state As SolverState, slides As CornerSlides)
+        _s = state
+        _slides = slides
+    End Sub
+
+    ''' <summary>Room for n bodies in the scratch lists.</summary>
+    Friend Sub Reset(n As Integer)
+        If _scanList.Length < n Then _scanList = New Integer(n - 1) {}
+    End Sub
+
+    ''' <summary>Recomputes body i's next event at the solver's clock and files it in the queue.</summary>
+    Friend Sub Reschedule(i As Integer)
+        Dim b = _s.Bodies
+        Dim best = Double.PositiveInfinity
+        Dim kind = EventKind.None
+        Dim other = -1
+        Dim feature = 0
+        Dim m = b.Slot(i).Mode
+        If m = BodyMode.Rounding Then
+            ' Its slide ends, or a neighbour reaches the disc the sliding ball sweeps round the corner.
+            best = _slides.TimeToEnd(i)
+            kind = EventKind.CornerEnd
+            Dim count = _slides.Neighbours(i)
+            For q = 0 To count - 1
+                Dim k = _slides.Neighbour(q)
+                Dim ts = _slides.TimeToReach(i, k)
+                If ts < best Then best = ts : kind = EventKind.Body : other = k
+            Next
+            File(i, best, kind, other, 0, Double.PositiveInfinity, 0)
+            Return
+        End If
+        Dim ay = b.Motion(i).Ay
+        Dim ax = b.Motion(i).Ax
+        Dim px, py, vx, vy As Double
+        b.Motion(i).StateAt(_s.Now, px, py, vx, vy)
+        Dim r = b.Motion(i).R
+        Dim slop = SolverState.SlopAt(px, py)
+        Dim asleep = m = BodyMode.Sleeping
+        Dim dir = 0
+        Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, dir)
+        Dim moving = m = BodyMode.Free OrElse m = BodyMode.Supported
+        If moving Then
+            If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
+            If b.Slot(i).Cell >= 0 Then
+                ' An obstacle is listed in every cell within half a cell of it, so the body's own cell
+                ' suffices, and only until it leaves the cell: the next cell's obstacles are tested then.
+                Dim c = b.Slot(i).Cell
+                For s = _s.Grid.StaticStart(c) To _s.Grid.StaticStart(c + 1) - 1
+                    CheckObstacle(i, _s.Grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
+                Next
+            Else
+                For s = 0 To _s.Obstacles.Count - 1
+                    CheckObstacle(i, s, px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
+                Next
+            End If
+        End If
+        ' Movable neighbours: those in the cells within reach of its path (see ReachOfPath).
+        If b.Slot(i).Cell >= 0 Then
+            Dim c0, c1, r0, r1 As Integer
+            ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
+            ScanCells(i, c0, c1, r0, r1, -1, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+            CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
+        Else
+            For j = 0 To b.Count - 1
+                If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+            Next
+        End If
+        ' A supported body reaching an end of the face it rests on.
+        If m = BodyMode.Supported AndAlso b.Support(i) >= 0 Then
+            Dim farEnd As Boolean
+            Dim t = ContactRules.TimeToLeaveFace(_s, i, b.Support(i), b.SupportEdge(i), New Vector(px, py), New Vector(vx, vy), New Vector(ax, ay), farEnd)
+            If t < best Then best = Math.Max(0, t) : kind = EventKind.LeaveSupport : other = b.Support(i) : feature = If(farEnd, 1, 0)
+        End If
+        File(i, best, kind, other, feature, exitTime, dir)
+    End Sub
+
+    ''' <summary>
+    ''' Body i's reference point enters the next cell. Its collision prediction stays valid (its own
+    ''' motion did not change); the walls and obstacles of the new cell, and the cells within reach of
+    ''' its new stretch of path except the one it came from, are searched (docs/event-driven.md §4).
+    ''' </summary>
+    Friend Sub CrossCell(i As Integer)
+        Dim b = _s.Bodies
+        Dim dir = b.Slot(i).CellDir
+        Dim col = b.Slot(i).Col, row = b.Slot(i).Row
+        Select Case dir
+            Case 0 : col -= 1
+            Case 1 : col += 1
+            Case 2 : row -= 1
+            Case Else : row += 1
+        End Select
+        Dim previous = b.Slot(i).Cell
+        _s.MoveToCell(i, col, row)
+        Dim target = b.Slot(i).Cell
+        Dim kind = b.Slot(i).Kind
+        If kind = EventKind.Body AndAlso b.Slot(b.Slot(i).Other).Count <> b.Slot(i).OtherCount Then
+            Reschedule(i) ' the kept prediction went stale: start afresh
+            Return
+        End If
+        Dim best = b.Slot(i).ColTime - _s.Now
+        Dim other = b.Slot(i).Other
+        Dim feature = b.Slot(i).Feature
+        Dim m = b.Slot(i).Mode
+        Dim ay = b.Motion(i).Ay
+        Dim px, py, vx, vy As Double
+        b.Motion(i).StateAt(_s.Now, px, py, vx, vy)
+        Dim r = b.Motion(i).R
+        Dim ax = b.Motion(i).Ax
+        Dim slop = SolverState.SlopAt(px, py)
+        Dim asleep = m = BodyMode.Sleeping
+        Dim exitDir = 0
+        Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, exitDir)
+        If m = BodyMode.Free OrElse m = BodyMode.Supported Then
+            If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
+            For s = _s.Grid.StaticStart(target) To _s.Grid.StaticStart(target + 1) - 1
+                CheckObstacle(i, _s.Grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
+            Next
+        End If
+        Dim c0, c1, r0, r1 As Integer
+        ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
+        ScanCells(i, c0, c1, r0, r1, previous, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+        CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
+        File(i, best, kind, other, feature, exitTime, exitDir)
+    End Sub
+
+    ''' <summary>
+    ''' Body i against the movable bodies in cells col0 … col1 × row0 … row1: in each cell, any
+    ''' overflow one by one, then the lanes, four at a time where the processor has 256-bit vectors.
+    ''' </summary>
+    Private Sub ScanCells(i As Integer, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, skip As Integer, asleep As Boolean,
+                          px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
+                          ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        Dim grid = _s.Grid
+        Dim c0 = Math.Max(0, col0), c1 = Math.Min(grid.Nx - 1, col1)
+        Dim r0 = Math.Max(0, row0), r1 = Math.Min(grid.Ny - 1, row1)
+        _s.CellsSearched += (c1 - c0 + 1) * (r1 - r0 + 1)
+        If skip >= 0 Then
+            Dim sr = skip \ grid.Nx, sc = skip - sr * grid.Nx
+            If sc >= c0 AndAlso sc <= c1 AndAlso sr >= r0 AndAlso sr <= r1 Then _s.CellsSearched -= 1
+        End If
+        ' A body asleep, not a circle, or whose acceleration is not vertical (sliding down a slope), takes no hot path.
+        Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0 OrElse Not _s.Bodies.IsCircle(i)
+#If NET Then
+        If VectorScan Then
+            ScanLanesVector(i, c0, c1, r0, r1, skip, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+            Return
+        End If
+#End If
+        ScanBodies(i, c0, c1, r0, r1, skip, True, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+    End Sub
+
+    ''' <summary>
+    ''' Cells c0 … c1 × r0 … r1, one body at a time, from the bodies' own state: each cell's overflow
+    ''' and then (when <paramref name="withLanes"/>) its lanes are listed, then tested in one loop.
+    ''' <paramref name="slowOnly"/>: the scanning body takes no hot path (asleep, or not falling freely).
+    ''' </summary>
+    Private Sub ScanBodies(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, withLanes As Boolean,
+                           slowOnly As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
+                           ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        Dim grid = _s.Grid
+        Dim count = grid.Count, laneBody = grid.LaneBody, nx = grid.Nx, listed = _scanList
+        Dim motion = _s.Bodies.Motion, slot = _s.Bodies.Slot
+        Dim now = _s.Now
+        Dim asleep = _s.Bodies.Slot(i).Mode = BodyMode.Sleeping
+        For rr = r0 To r1
+            For cell = rr * nx + c0 To rr * nx + c1
+                If cell = skip Then Continue For
+                Dim n = 0
+                Dim o = grid.OverflowHead(cell)
+                While o >= 0
+                    listed(n) = o
+                    n += 1
+                    o = grid.OverflowNext(o)
+                End While
+                If withLanes Then
+                    For lane = cell * UniformGrid.Lanes To cell * UniformGrid.Lanes + count(cell) - 1
+                        listed(n) = laneBody(lane)
+                        n += 1
+                    Next
+                End If
+                For q = 0 To n - 1
+                    Dim j = listed(q)
+                    If motion(j).Ay = ay AndAlso motion(j).Ax = 0 AndAlso motion(j).R > 0 AndAlso Not slowOnly Then
+                        ' Hot path (the elastic gas): the same acceleration, so the relative motion is a
+                        ' straight line and the contact time is the smaller root of a quadratic. The root
+                        ' is computed for every candidate and the tests combined into one condition: which
+                        ' pairs meet is random, and a mispredicted branch costs more than the square root.
+                        Dim xj, yj, vxj, vyj As Double
+                        motion(j).StateAt(now, xj, yj, vxj, vyj)
+                        Dim dx = px - xj
+                        Dim dy = py - yj
+                        Dim dvx = vx - vxj
+                        Dim dvy = vy - vyj
+                        Dim b = dx * dvx + dy * dvy
+                        Dim sumR = r + motion(j).R
+                        Dim c = dx * dx + dy * dy - sumR * sumR
+                        If c <= 2 * sumR * slop Then
+                            ' Touching (common in a pile): only an approach can be a collision now.
+                            If b < 0 AndAlso j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+                        Else
+                            Dim a = dvx * dvx + dvy * dvy
+                            Dim disc = b * b - a * c
+                            Dim t = c / (Math.Sqrt(disc) - b)
+                            ' Approaching, not a graze, earlier than the best so far, and not after the
+                            ' partner's own next collision (it is rescheduled then and finds this pair
+                            ' again, so filing it here would only go stale).
+                            Dim hit = (b < 0) And (disc > TimeOfImpact.GrazeFraction * b * b) And (t < best)
+                            If hit AndAlso now + t <= slot(j).ColTime Then
+                                best = t
+                                kind = EventKind.Body
+                                other = j
+                            End If
+                        End If
+                    ElseIf j <> i Then
+                        CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+                    End If
+                Next
+            Next
+        Next
+    End Sub
+
+#If NET Then
+    ''' <summary>
+    ''' Cells c0 … c1 × r0 … r1, four lanes at a time, from the published copies (any overflow first,
+    ''' one by one, as in <see cref="ScanBodies"/>): the pair test of <see cref="ScanBodies"/> with
+    ''' the same arithmetic, lane by lane. Lanes whose body does not share the scanning body's
+    ''' acceleration, and touching pairs, go to <see cref="CheckPair"/>; a hit earlier than the best
+    ''' so far is taken in lane order, as the scalar loop would.
+    ''' </summary>
+    Private Sub ScanLanesVector(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, slowOnly As Boolean,
+                                px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
+                                ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        Dim grid = _s.Grid
+        Dim blocks = grid.Blocks, count = grid.Count, laneBody = grid.LaneBody, overflow = grid.OverflowHead
+        Dim nx = grid.Nx
+        Dim now = _s.Now
+        Dim asleep = _s.Bodies.Slot(i).Mode = BodyMode.Sleeping
+        Dim vNow = Vector256.Create(now)
+        Dim vPx = Vector256.Create(px), vPy = Vector256.Create(py)
+        Dim vVx = Vector256.Create(vx), vVy = Vector256.Create(vy)
+        Dim vAy = Vector256.Create(ay), vHalfAy = Vector256.Create(0.5 * ay)
+        ' A body that takes no hot path matches no lane: NaN equals nothing.
+        Dim vMatch = Vector256.Create(If(slowOnly, Double.NaN, ay))
+        Dim vR = Vector256.Create(r), vTwo = Vector256.Create(2.0), vSlop = Vector256.Create(slop)
+        Dim vGraze = Vector256.Create(TimeOfImpact.GrazeFraction)
+        Dim vZero = Vector256(Of Double).Zero
+        Dim laneIndex = Vector256.Create(0.0, 1.0, 2.0, 3.0)
+        Dim vMargin = Vector256.Create(1 + 1.0E-6)
+        Dim bestSeen = best, vInvBest = Vector256.Create(1 / best)
+        For rr = r0 To r1
+            For cell = rr * nx + c0 To rr * nx + c1
+                If cell = skip Then Continue For
+                If overflow(cell) >= 0 Then
+                    Dim col = cell - rr * nx
+                    ScanBodies(i, col, col, rr, rr, -1, False, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+                End If
+                Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
+                Dim hot = valid And Vector256.Equals(blocks(cell).Ay, vMatch)
+                Dim tj = vNow - blocks(cell).T0
+                Dim jvx = blocks(cell).Vx
+                Dim jvy = blocks(cell).Vy
+                Dim dx = vPx - (blocks(cell).Px + jvx * tj)
+                Dim dy = vPy - (blocks(cell).Py + (jvy + vHalfAy * tj) * tj)
+                Dim dvx = vVx - jvx
+                Dim dvy = vVy - (jvy + vAy * tj)
+                Dim b = dx * dvx + dy * dvy
+                Dim sumR = vR + blocks(cell).R
+                Dim c = dx * dx + dy * dy - sumR * sumR
+                Dim touching = Vector256.LessThanOrEqual(c, vTwo * sumR * vSlop)
+                Dim approaching = Vector256.LessThan(b, vZero)
+                Dim a = dvx * dvx + dvy * dvy
+                Dim disc = b * b - a * c
+                If best <> bestSeen Then
+                    bestSeen = best
+                    vInvBest = Vector256.Create(1 / best)
+                End If
+                ' Which lanes can hit before the best so far, without the square root and the division
+                ' (the slow part of the pair test): t = c / (√disc − b) < best exactly when
+                ' √disc > u = c / best + b, that is u < 0 or disc > u². The margin makes it a filter
+                ' that lets through every lane the exact test below accepts.
+                Dim u = c * vInvBest + b
+                Dim candidate = Vector256.AndNot(hot And approaching, touching) And
+                                Vector256.GreaterThan(disc, vGraze * b * b) And
+                                (Vector256.LessThan(u, vZero) Or Vector256.GreaterThan(disc * vMargin, u * u))
+                Dim slow = Vector256.AndNot(valid, hot) Or (hot And touching And approaching)
+                Dim special = Vector256.ExtractMostSignificantBits(slow)
+                Dim maybe = Vector256.ExtractMostSignificantBits(candidate)
+                If (maybe Or special) = 0 Then Continue For
+                Dim t = c / (Vector256.Sqrt(disc) - b)
+                Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, blocks(cell).ColTime) And
+                          Vector256.LessThan(t, Vector256.Create(best))
+                ' Only the lanes that need a look, in lane order (as the one-at-a-time loop takes them).
+                Dim look = special Or Vector256.ExtractMostSignificantBits(hit)
+                While look <> 0
+                    Dim k = BitOperations.TrailingZeroCount(look)
+                    look = look And (look - 1UI)
+                    Dim j = laneBody(cell * UniformGrid.Lanes + k)
+                    If ((special >> k) And 1UI) <> 0 Then
+                        If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+                    ElseIf t.GetElement(k) < best Then
+                        best = t.GetElement(k)
+                        kind = EventKind.Body
+                        other = j
+                    End If
+                End While
+            Next
+        Next
+    End Sub
+#End If
+
+    ''' <summary>Files body i's next collision-type event and its next cell exit (times from now, s).</summary>
+    Private Sub File(i As Integer, dt As Double, kind As EventKind, other As Integer, feature As Integer,
+                     exitDt As Double, exitDir As Integer)
+        Dim slot = _s.Bodies.Slot
+        Dim now = _s.Now
+        slot(i).Kind = kind
+        slot(i).Other = other
+        slot(i).OtherCount = If(kind = EventKind.Body, slot(other).Count, 0)
+        slot(i).Feature = feature
+        slot(i).ColTime = If(dt < Double.PositiveInfinity, now + dt, Double.PositiveInfinity)
+        slot(i).CellTime = If(exitDt < Double.PositiveInfinity, now + exitDt, Double.PositiveInfinity)
+        slot(i).CellDir = exitDir
+        _s.Queue.Update(i, Math.Min(slot(i).ColTime, slot(i).CellTime))
+        ' Only the time: its motion was published when it last changed (see SolverState.Changed).
+        _s.Grid.PublishColTime(i, slot(i).ColTime)
+    End Sub
+
+    ''' <summary>
+    ''' Body i against the container's walls (the floor and the ceiling only when it is free). The
+    ''' cells tile the container and are wider than any gridded body, so a gridded body touches a wall
+    ''' only from a cell along that wall, and it crosses into one (an event) before it gets there:
+    ''' only the walls its own cell lies along are tested, on a prediction and on entering the cell.
+    ''' </summary>
+    Private Sub CheckWalls(i As Integer, free As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
+                           r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef feature As Integer)
+        Dim slot = _s.Bodies.Slot
+        Dim o = _s.Bodies.Outlines(i)
+        Dim ax = _s.Bodies.Motion(i).Ax
+        Dim all = slot(i).Cell < 0
+        Dim col = slot(i).Col, row = slot(i).Row
+        ' Each wall's gap is measured along one axis (from the outline's extent on that side), so its
+        ' tolerance follows that coordinate alone.
+        Dim slop = SolverState.SlopAlong(px)
+        Dim t As Double
+        If all OrElse col = 0 Then
+            t = TimeOfImpact.GapCloses(px + o.MinX, vx, ax, slop)
+            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Left
+        End If
+        If all OrElse col = _s.Grid.Nx - 1 Then
+            t = TimeOfImpact.GapCloses(_s.Width - o.MaxX - px, -vx, -ax, slop)
+            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Right
+        End If
+        If Not free Then Return
+        slop = SolverState.SlopAlong(py)
+        If all OrElse row = 0 Then
+            t = TimeOfImpact.GapCloses(py + o.MinY, vy, ay, slop)
+            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Bottom
+        End If
+        If all OrElse row = _s.Grid.Ny - 1 Then
+            t = TimeOfImpact.GapCloses(_s.Height - o.MaxY - py, -vy, -ay, slop)
+            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Top
+        End If
+    End Sub
+
+    ''' <summary>Body i against obstacle s, looking no further ahead than the best so far or <paramref name="until"/> (s from now).</summary>
+    Private Sub CheckObstacle(i As Integer, s As Integer, px As Double, py As Double, vx As Double, vy As Double, ax As Double, ay As Double,
+                              slop As Double, until As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
+        Dim f As Integer
+        Dim t = ContactRules.TimeToObstacle(_s, i, s, px, py, vx, vy, ax, ay, slop, Math.Min(best, until), f)
+        If t < best Then best = t : kind = EventKind.Obstacle : other = s : feature = f
+    End Sub
+
+    ''' <summary>
+    ''' Gridded body i against the bodies too large for the grid, looking only as far ahead as its next
+    ''' cell crossing: they are tested again on every crossing, and an oversized body that changes
+    ''' course tests every body itself.
+    ''' </summary>
+    Private Sub CheckOversized(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
+                               ay As Double, r As Double, slop As Double, until As Double,
+                               ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+        For k = 0 To _s.OversizedCount - 1
+            CheckPair(i, _s.Oversized(k), asleep, px, py, vx, vy, ay, r, slop, best, kind, other, until)
+        Next
+    End Sub
+
+    Private Sub CheckPair(i As Integer, j As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
+                          ay As Double, r As Double, slop As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer,
+                          Optional until As Double = Double.PositiveInfinity)
+        Dim b = _s.Bodies
+        Dim mj = b.Slot(j).Mode
+        If mj = BodyMode.Rounding Then
+            Dim ts = _slides.TimeToReach(j, i)
+            If ts < best Then
+                best = ts
+                kind = EventKind.Body
+                other = j
+            End If
+            Return
+        End If
+        If asleep AndAlso mj = BodyMode.Sleeping Then Return
+        Dim f As Integer
+        Dim t = ContactRules.TimeBetweenBodies(_s, i, j, slop, Math.Min(best, until), f)
+        If t < best Then
+            best = t
+            kind = EventKind.Body
+            other = j
+        End If
+    End Sub
+
+    ''' <summary>
+    ''' The cells (columns c0 … c1, rows r0 … r1, within its 3 × 3 block) that a partner touching body i
+    ''' in the next <paramref name="span"/> seconds could be in. Until it leaves its cell, or meets what it
+    ''' has already found, its reference point stays on the stretch of its path that follows; a partner
+    ''' touching it there has its reference point within r + r_max of that stretch, so only cells that
+    ''' near the stretch's bounding box can hold one. A body moving away from a side of its cell never
+    ''' needs the cells beyond it. Every pair is still found: of the two bodies, the one that searched
+    ''' last searched with both final courses and the other's cell (docs/event-driven.md §4).
+    ''' </summary>
+    Private Sub ReachOfPath(i As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
+                            span As Double, ByRef c0 As Integer, ByRef c1 As Integer, ByRef r0 As Integer, ByRef r1 As Integer)
+        Dim slot = _s.Bodies.Slot
+        Dim grid = _s.Grid
+        Dim ax = _s.Bodies.Motion(i).Ax
+        Dim col = slot(i).Col, row = slot(i).Row
+        c0 = col - 1 : c1 = col + 1 : r0 = row - 1 : r1 = row + 1
+        If vx = 0 AndAlso vy = 0 AndAlso ay = 0 AndAlso ax = 0 Then span = 0 ' at rest: its path is a point
+        If Not (span < Double.PositiveInfinity) OrElse ax <> 0 Then Return
+        Dim xlo, xhi, ylo, yhi As Double
+        PathBox.Bounds(px, py, vx, vy, ay, span, xlo, xhi, ylo, yhi)
+        ' A body sliding round a corner is listed where it started the slide but can reach 3 r_max
+        ' beyond; the margin covers rounding and the touching tolerance.
+        Dim reach = _s.Bodies.Reach(i) + If(_s.Bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
+        ' Written so that NaN keeps the neighbour.
+        If xlo - reach >= col * grid.CellWidth Then c0 = col
+        If xhi + reach <= (col + 1) * grid.CellWidth Then c1 = col
+        If ylo - reach >= row * grid.CellHeight Then r0 = row
+        If yhi + reach <= (row + 1) * grid.CellHeight Then r1 = row
+    End Sub
+
+    ''' <summary>
+    ''' When the reference point leaves its cell: x is linear and y quadratic in t, each against the
+    ''' cell's two boundaries (the outermost cells have no outer boundary). <paramref name="dir"/>: 0 −x,
+    ''' 1 +x, 2 −y, 3 +y. A point that rounding left a hair beyond a boundary of its cell counts as on
+    ''' it, so if it moves on outwards it leaves at once; otherwise it would never leave, and its
+    ''' searches would be centred on the wrong cell.
+    ''' </summary>
+    Private Function CellExit(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
+                              ByRef dir As Integer) As Double
+        Dim best = Double.PositiveInfinity
+        Dim slot = _s.Bodies.Slot
+        Dim grid = _s.Grid
+        Dim ax = _s.Bodies.Motion(i).Ax
+        Dim cell = slot(i).Cell
+        If cell < 0 OrElse asleep OrElse (vx = 0 AndAlso vy = 0 AndAlso ay = 0 AndAlso ax = 0) Then Return best
+        Dim col = slot(i).Col, row = slot(i).Row
+        Dim t As Double
+        dir = -1
+        If col > 0 Then
+            t = TimeOfImpact.GapCloses(Math.Max(0, px - col * grid.CellWidth), vx, ax, 0)
+            If t < best Then best = t : dir = 0
+        End If
+        If col < grid.Nx - 1 Then
+            t = TimeOfImpact.GapCloses(Math.Max(0, (col + 1) * grid.CellWidth - px), -vx, -ax, 0)
+            If t < best Then best = t : dir = 1
+        End If
+        If row > 0 Then
+            t = TimeOfImpact.GapCloses(Math.Max(0, py - row * grid.CellHeight), vy, ay, 0)
+            If t < best Then best = t : dir = 2
+        End If
+        If row < grid.Ny - 1 Then
+            t = TimeOfImpact.GapCloses(Math.Max(0, (row + 1) * grid.CellHeight - py), -vy, -ay, 0)
+            If t < best Then best = t : dir = 3
+        End If
+        Return best
+    End Function
+End Class

@@ -1,0 +1,191 @@
+Option Strict On
+
+''' <summary>
+''' Resolving one event (docs/event-driven.md §3): bring the bodies to the event time, apply the
+''' impulse along the contact normal (<see cref="Impulse.Resolve"/>), report it, and apply the
+''' resting and sleeping rules (<see cref="RestRules"/>). Every body whose motion it changes is
+''' marked (<see cref="SolverState.Changed"/>) and rescheduled by the solver afterwards.
+''' </summary>
+Friend NotInheritable Class Responder
+    Private ReadOnly _s As SolverState
+    Private ReadOnly _rest As RestRules
+    Private ReadOnly _slides As CornerSlides
+    Private ReadOnly _clusters As ClusterResponse
+
+    Friend Sub New(state As SolverState, rest As RestRules, slides As CornerSlides)
+        _s = state
+        _rest = rest
+        _slides = slides
+        _clusters = New ClusterResponse(state, rest)
+    End Sub
+
+    ''' <summary>Resolves body i's collision-type event, which is due now.</summary>
+    Friend Sub Resolve(i As Integer)
+        Dim slot = _s.Bodies.Slot
+        Select Case slot(i).Kind
+            Case EventKind.Body
+                Dim j = slot(i).Other
+                If slot(j).Count <> slot(i).OtherCount Then
+                    _s.Touched.Add(i) ' stale: the partner's motion changed since this was predicted
+                ElseIf slot(i).Mode = BodyMode.Rounding OrElse slot(j).Mode = BodyMode.Rounding Then
+                    ' Something reached a sliding ball's corner: stop following the slide exactly.
+                    If slot(i).Mode = BodyMode.Rounding Then _slides.Interrupt(i)
+                    If slot(j).Mode = BodyMode.Rounding Then _slides.Interrupt(j)
+                    _s.Touched.Add(i)
+                    _s.Touched.Add(j)
+                Else
+                    CollideBodies(i, j)
+                End If
+            Case EventKind.Obstacle
+                CollideObstacle(i, slot(i).Other, slot(i).Feature)
+            Case EventKind.Wall
+                CollideWall(i, CType(slot(i).Feature, WallSide))
+            Case EventKind.LeaveSupport
+                LeaveSupport(i, slot(i).Other, slot(i).Feature = 1)
+            Case EventKind.CornerEnd
+                _slides.Finish(i)
+            Case Else
+                _s.Touched.Add(i)
+        End Select
+    End Sub
+
+    Private Sub CollideWall(i As Integer, side As WallSide)
+        _s.Sync(i)
+        Dim m = _s.Bodies.Motion
+        Dim o = _s.Bodies.Outlines(i)
+        Dim n As Vector
+        ' Snap onto the wall: the contact is exact, so rounding never accumulates over many bounces.
+        Select Case side
+            Case WallSide.Left : n = New Vector(1, 0) : m(i).Px = -o.MinX
+            Case WallSide.Right : n = New Vector(-1, 0) : m(i).Px = _s.Width - o.MaxX
+            Case WallSide.Bottom : n = New Vector(0, 1) : m(i).Py = -o.MinY
+            Case Else : n = New Vector(0, -1) : m(i).Py = _s.Height - o.MaxY
+        End Select
+        CollideImmovable(i, n, Nothing, side, If(side = WallSide.Bottom, BodyTable.SupportFloor, BodyTable.SupportNone), -1)
+    End Sub
+
+    Private Sub CollideObstacle(i As Integer, s As Integer, feature As Integer)
+        _s.Sync(i)
+        Dim m = _s.Bodies.Motion
+        Dim n = ContactRules.NormalAtObstacle(_s, i, s, feature, m(i).Px, m(i).Py)
+        ' What it could rest on: a face of the obstacle (which one, to slide along and to leave at its
+        ' ends), or a rounded corner (a fixed circle, a rectangle's corner), which holds only from right above.
+        Dim edge = ContactRules.FaceOf(_s, i, s, feature)
+        Dim support = If(edge >= 0, s, If(ContactRules.IsRoundedCorner(_s, i, s, feature), BodyTable.SupportBody, BodyTable.SupportNone))
+        CollideImmovable(i, n, _s.Obstacles.Shapes(s), WallSide.None, support, edge)
+    End Sub
+
+    ''' <summary>
+    ''' Body i (already at the clock) hits something of infinite mass along unit normal n (pointing
+    ''' towards i). <paramref name="support"/> names what it would rest on if n points straight up
+    ''' (and <paramref name="edge"/> which face of it).
+    ''' </summary>
+    Private Sub CollideImmovable(i As Integer, n As Vector, other As Shape, side As WallSide, support As Integer, edge As Integer)
+        If _rest.HitTooOften(i) Then
+            _clusters.Resolve(i)
+            Return
+        End If
+        Dim b = _s.Bodies
+        Dim before = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
+        Dim approach = Vector.Dot(before, n)
+        Dim after = Impulse.Resolve(before, 1.0, Vector.Zero, 0.0, n, _s.E).A
+        If approach < 0 AndAlso after = before Then
+            Dim slop = _s.SlopOf(i) ' see CollideBodies: an approach too small to resolve
+            b.Motion(i).Px += n.X * 4 * slop
+            b.Motion(i).Py += n.Y * 4 * slop
+        End If
+        b.Motion(i).Vx = after.X
+        b.Motion(i).Vy = after.Y
+        If approach < 0 Then
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), other, side, ContactRules.KindOf(b.Shapes(i), other),
+                                                         before, after, Vector.Zero, Vector.Zero))
+            _rest.NoteHit(i)
+        End If
+        If b.Mode(i) = BodyMode.Supported AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then _rest.MakeFree(i)
+        If b.Mode(i) = BodyMode.Free Then _rest.AfterSupportContact(i, n, support, edge, 0, 0)
+        _s.Changed(i)
+    End Sub
+
+    Private Sub CollideBodies(i As Integer, j As Integer)
+        _s.Sync(i)
+        _s.Sync(j)
+        Dim b = _s.Bodies
+        If _rest.HitTooOften(i) Or _rest.HitTooOften(j) Then
+            ' The cluster grows from a body that can move (the other may be asleep or dragged).
+            _clusters.Resolve(If(_clusters.CanMove(i), i, j))
+            Return
+        End If
+        Dim m = b.Motion
+        Dim n = If(b.IsCircle(i) AndAlso b.IsCircle(j),
+                   New Vector(m(i).Px - m(j).Px, m(i).Py - m(j).Py).Normalized(New Vector(0, 1)),
+                   ContactRules.NormalBetweenBodies(_s, i, j))
+        Dim vi = New Vector(m(i).Vx, m(i).Vy), vj = New Vector(m(j).Vx, m(j).Vy)
+        Dim approach = Vector.Dot(vi - vj, n)
+        Dim gentle = -approach < _rest.GentleSpeed(i, j)
+        ' A gentle touch on a body at rest treats it as a support (infinite mass); a real hit wakes it.
+        Dim invI = _rest.InverseMassFor(i, j, gentle)
+        Dim invJ = _rest.InverseMassFor(j, i, gentle)
+        Dim result = Impulse.Resolve(vi, invI, vj, invJ, n, _rest.EffectiveRestitution(i, j))
+        If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then
+            ' The approach was below what the velocities can resolve in floating point (after an
+            ' e = 0 contact): part them by a few slops instead, so the pair stops being "touching".
+            Dim wi = If(invI > 0 OrElse invJ = 0, 0.5, 0.0), wj = If(invJ > 0 OrElse invI = 0, 0.5, 0.0)
+            Dim sep = 4 * Math.Max(_s.SlopOf(i), _s.SlopOf(j)) / Math.Max(wi + wj, 0.5)
+            m(i).Px += n.X * sep * wi
+            m(i).Py += n.Y * sep * wi
+            m(j).Px -= n.X * sep * wj
+            m(j).Py -= n.Y * sep * wj
+        End If
+        m(i).Vx = result.A.X
+        m(i).Vy = result.A.Y
+        m(j).Vx = result.B.X
+        m(j).Vy = result.B.Y
+        ' Publish the new courses before waking anything above (which predicts against them).
+        _s.Publish(i)
+        _s.Publish(j)
+        If approach < 0 AndAlso (invI > 0 OrElse invJ > 0) Then
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), b.Shapes(j), WallSide.None, ContactRules.KindOf(b.Shapes(i), b.Shapes(j)), vi, result.A, vj, result.B))
+            _rest.NoteHit(i)
+            _rest.NoteHit(j)
+        End If
+        ' Whoever moved leaves rest; a body still asleep stays a support.
+        If result.A <> vi AndAlso b.Mode(i) <> BodyMode.Dragged Then _rest.WakeFrom(i)
+        If result.B <> vj AndAlso b.Mode(j) <> BodyMode.Dragged Then _rest.WakeFrom(j)
+        If b.Mode(i) = BodyMode.Free AndAlso invJ = 0 AndAlso b.Mode(j) <> BodyMode.Dragged Then
+            _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy)
+        ElseIf b.Mode(i) = BodyMode.Free Then
+            _rest.SleepIfSettled(i)
+        End If
+        If b.Mode(j) = BodyMode.Free AndAlso invI = 0 AndAlso b.Mode(i) <> BodyMode.Dragged Then
+            _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy)
+        ElseIf b.Mode(j) = BodyMode.Free Then
+            _rest.SleepIfSettled(j)
+        End If
+        _s.Changed(i)
+        _s.Changed(j)
+    End Sub
+
+    ''' <summary>
+    ''' A supported body reached an end of the face it rests on (the far end when <paramref name="farEnd"/>).
+    ''' Round a rounded corner (a circle's radius) it slides on until the normal force vanishes or the
+    ''' next face takes it, or flies off if it is too fast to follow the curve; past a sharp corner
+    ''' (a box's), it simply flies on.
+    ''' </summary>
+    Private Sub LeaveSupport(i As Integer, s As Integer, farEnd As Boolean)
+        _s.Sync(i)
+        Dim b = _s.Bodies
+        Dim k = _s.Shapes.Difference(_s.Obstacles.Outlines(s), b.Outlines(i))
+        Dim e = b.SupportEdge(i)
+        Dim c = If(farEnd, (e + 1) Mod k.VertexCount, e)
+        Dim nextFace = If(farEnd, (e + 1) Mod k.EdgeCount, (e - 1 + k.EdgeCount) Mod k.EdgeCount)
+        Dim corner = New Vector(_s.Obstacles.X0(s), _s.Obstacles.Y0(s)) + k.Corners(c)
+        Dim n = k.EdgeNormals(e)
+        ' Exactly at the end of the face.
+        b.Motion(i).Px = corner.X + n.X * k.Radius
+        b.Motion(i).Py = corner.Y + n.Y * k.Radius
+        Dim v = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
+        _rest.MakeFree(i)
+        If k.Radius > 0 Then _slides.Start(i, corner.X, corner.Y, k.Radius, n, v, k.EdgeNormals(nextFace))
+        _s.Changed(i)
+    End Sub
+End Class

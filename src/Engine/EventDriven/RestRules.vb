@@ -1,0 +1,348 @@
+Option Strict On
+
+''' <summary>
+''' How bodies come to rest (docs/event-driven.md §5–6): the end of a bounce series on a level
+''' support, sleeping in a pile, waking, and the guards against inelastic collapse. This owns each
+''' body's recent contact history (last collision, bursts, hits at one instant) and the rest times.
+''' </summary>
+Friend NotInheritable Class RestRules
+    Private ReadOnly _s As SolverState
+    ''' <summary>Time of the body's last collision, s (for the inelastic-collapse guard).</summary>
+    Private _lastHit As Double() = Array.Empty(Of Double)()
+    ''' <summary>Start (s) and size of the body's current burst of collisions (for the sleeping rule).</summary>
+    Private _burstStart As Double() = Array.Empty(Of Double)()
+    Private _burstCount As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Instant (s) of the body's last collision and how many it had at that instant (jam detection).</summary>
+    Private _sameTime As Double() = Array.Empty(Of Double)()
+    Private _sameCount As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>When each supported body's series of ever smaller bounces ends, s.</summary>
+    Private ReadOnly _restTimes As New Dictionary(Of Shape, Double)()
+    ''' <summary>Contact normals gathered by IsHeld (scratch, fixed size).</summary>
+    Private ReadOnly _normalX As Double() = New Double(15) {}
+    Private ReadOnly _normalY As Double() = New Double(15) {}
+    Private _nNormals As Integer
+    ''' <summary>Scratch: bodies being woken, and one body's neighbours.</summary>
+    Private _wake As Integer() = Array.Empty(Of Integer)()
+    Private _neighbours As Integer() = Array.Empty(Of Integer)()
+
+    ''' <summary>Hits at one instant after which a body's cluster is resolved at once (see <see cref="HitTooOften"/>).</summary>
+    Private Const JamHits As Integer = 16
+    ''' <summary>Collisions within √(r/g)/10 that count as a burst (the start of inelastic collapse).</summary>
+    Private Const BurstCollisions As Integer = 20
+
+    Friend Sub New(state As SolverState)
+        _s = state
+    End Sub
+
+    ''' <summary>Forgets every body's history (after a rebuild); rest times survive while the body still sits still.</summary>
+    Friend Sub Reset()
+        Dim n = _s.Bodies.Count
+        If _lastHit.Length < n Then
+            Dim capacity = Math.Max(n, 2 * _lastHit.Length)
+            _lastHit = New Double(capacity - 1) {}
+            _burstStart = New Double(capacity - 1) {}
+            _burstCount = New Integer(capacity - 1) {}
+            _sameTime = New Double(capacity - 1) {}
+            _sameCount = New Integer(capacity - 1) {}
+            _wake = New Integer(capacity - 1) {}
+            _neighbours = New Integer(capacity - 1) {}
+        End If
+        Dim stillResting As New HashSet(Of Shape)()
+        For i = 0 To n - 1
+            _lastHit(i) = Double.NegativeInfinity
+            _burstStart(i) = Double.NegativeInfinity
+            _burstCount(i) = 0
+            _sameTime(i) = Double.NaN
+            _sameCount(i) = 0
+            Dim body = _s.Bodies.Shapes(i)
+            If _restTimes.ContainsKey(body) AndAlso _s.Bodies.Mode(i) = BodyMode.Free AndAlso _s.Bodies.Motion(i).Vy = 0 Then stillResting.Add(body)
+        Next
+        Dim stale As New List(Of Shape)()
+        For Each body In _restTimes.Keys
+            If Not stillResting.Contains(body) Then stale.Add(body)
+        Next
+        For Each body In stale
+            _restTimes.Remove(body)
+        Next
+    End Sub
+
+    ''' <summary>When the body's bounce series ended (s), or Nothing while it is not resting.</summary>
+    Friend Function RestTime(body As Shape) As Double?
+        Dim t As Double
+        If body IsNot Nothing AndAlso _restTimes.TryGetValue(body, t) Then Return t
+        Return Nothing
+    End Function
+
+    ''' <summary>The body was moved from outside: whatever rest it had is over.</summary>
+    Friend Sub ForgetRest(body As Shape)
+        _restTimes.Remove(body)
+    End Sub
+
+    ''' <summary>Records that body i collided now (for the inelastic-collapse guard).</summary>
+    Friend Sub NoteHit(i As Integer)
+        _lastHit(i) = _s.Now
+    End Sub
+
+    ''' <summary>
+    ''' Body i's inverse mass in a collision with <paramref name="partner"/>. The dragged body is
+    ''' immovable. A sleeping body hit by a free body from above acts as part of its support (the floor
+    ''' beneath takes the blow); a body at rest touched gently also stays put; anything else moves it.
+    ''' </summary>
+    Friend Function InverseMassFor(i As Integer, partner As Integer, gentle As Boolean) As Double
+        Dim b = _s.Bodies
+        Dim mode = b.Mode(i)
+        Select Case mode
+            Case BodyMode.Dragged
+                Return 0
+            Case BodyMode.Sleeping, BodyMode.Supported
+                If b.Mode(partner) = BodyMode.Free Then
+                    ' Only a sleeper (which never moves) may take a blow from above as the ground does:
+                    ' treating a moving body as immovable can trap a ball in a cycle of instantaneous hits.
+                    Dim dy = b.Motion(partner).Py - b.Motion(i).Py
+                    Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (b.Scale(i) + b.Scale(partner))
+                    If above OrElse gentle Then Return 0
+                End If
+                Return b.InverseMass(i)
+            Case Else
+                Return b.InverseMass(i)
+        End Select
+    End Function
+
+    ''' <summary>
+    ''' Inelastic-collapse guard (the "TC model" of Luding and McNamara): two bodies that both collided
+    ''' within the last 10⁻⁴ √(r/g) collide elastically, so an infinite cascade cannot form in finite time.
+    ''' </summary>
+    Friend Function EffectiveRestitution(i As Integer, j As Integer) As Double
+        If _s.E >= 1 OrElse _s.G = 0 Then Return _s.E
+        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_s.Bodies.Scale(i), _s.Bodies.Scale(j)) / _s.G)
+        If _s.Now - _lastHit(i) < tc AndAlso _s.Now - _lastHit(j) < tc Then Return 1.0
+        Return _s.E
+    End Function
+
+    ''' <summary>Normal speed (m/s) below which a touch on a resting body does not wake it: 10 % of √(g r).</summary>
+    Friend Function GentleSpeed(i As Integer, j As Integer) As Double
+        Return 0.1 * Math.Sqrt(_s.G * Math.Min(_s.Bodies.Scale(i), _s.Bodies.Scale(j)))
+    End Function
+
+    ''' <summary>
+    ''' Counts a collision of body i at the clock's instant and says whether it has now been hit more
+    ''' than <see cref="JamHits"/> times at that one instant: pairwise impulses are then not getting
+    ''' past it (a light body squeezed between heavy ones, a ball wedged in a narrow gap), and its
+    ''' cluster of touching bodies should be resolved at once (see <see cref="ClusterResponse"/>).
+    ''' </summary>
+    Friend Function HitTooOften(i As Integer) As Boolean
+        If _sameTime(i) = _s.Now Then
+            _sameCount(i) += 1
+        Else
+            _sameTime(i) = _s.Now
+            _sameCount(i) = 0
+        End If
+        Return _sameCount(i) >= JamHits
+    End Function
+
+    ''' <summary>Starts body i's count of hits at this instant afresh (its cluster was just resolved).</summary>
+    Friend Sub ForgetHits(i As Integer)
+        _sameCount(i) = 0
+    End Sub
+
+    ''' <summary>
+    ''' After a free body touched something that does not give way (floor, rectangle, fixed circle,
+    ''' a body at rest, moving at (sx, sy) m/s) with normal n: the resting and sleeping rules that end
+    ''' the Zeno series. Speeds are relative to the support.
+    ''' </summary>
+    Friend Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, edge As Integer, sx As Double, sy As Double)
+        If _s.G = 0 OrElse n.Y <= 0 Then Return
+        Dim b = _s.Bodies
+        Dim r = b.Scale(i)
+        Dim rx = b.Motion(i).Vx - sx, ry = b.Motion(i).Vy - sy
+        Dim vn = rx * n.X + ry * n.Y
+        Dim speedScale = Math.Sqrt(_s.G * r)
+        ' Resting rule: the rest of the bounce series is a geometric series of flight times, 2 v_n / (g (1 − e)).
+        ' It is summed once what is left is shorter than RestWindow, so the state shown is at rest
+        ' no more than that before the series really ends (or once the hops are far below rounding).
+        Dim restSpeed = Math.Sqrt(2 * _s.G * RestHeight(r))
+        Dim level = n.Y >= 1 - 1.0E-12 AndAlso support <> BodyTable.SupportNone
+        Dim seriesLeft = If(_s.E < 1, 2 * vn / (_s.G * (1 - _s.E)), Double.PositiveInfinity)
+        Dim ended = seriesLeft <= RestWindow OrElse vn < 1.0E-6 * restSpeed
+        If level AndAlso ended AndAlso (support <> BodyTable.SupportBody OrElse Math.Abs(rx) < 0.02 * speedScale) Then
+            EnterRest(i, support, edge, vn)
+            Return
+        End If
+        ' On a level support the bounce series is followed exactly down to restSpeed.
+        If level AndAlso support <> BodyTable.SupportBody Then Return
+        ' Sleeping rule: slow and held from below (one level support, or supports on both sides).
+        If sx = 0 AndAlso sy = 0 Then
+            SleepIfSettled(i)
+            If b.Mode(i) = BodyMode.Sleeping Then Return
+        End If
+        ' Zeno guard on a slope: never leave a support slower than restSpeed, so a body sliding
+        ' down a curved support hops down it in finitely many events instead of infinitely many.
+        If vn < restSpeed Then
+            b.Motion(i).Vx += n.X * (restSpeed - vn)
+            b.Motion(i).Vy += n.Y * (restSpeed - vn)
+        End If
+    End Sub
+
+    ''' <summary>
+    ''' After a collision between free bodies: one that is now slow and held by what it touches
+    ''' sleeps. A body caught in a burst of collisions (the start of inelastic collapse: more than
+    ''' <see cref="BurstCollisions"/> within √(r/g)/10) sleeps as soon as it is held, at any speed
+    ''' below √(g r): that chatter is a resting contact the event picture cannot end by itself.
+    ''' </summary>
+    Friend Sub SleepIfSettled(i As Integer)
+        If _s.G = 0 Then Return
+        Dim m = _s.Bodies.Motion(i)
+        Dim size = _s.Bodies.Scale(i)
+        Dim speed2 = m.Vx * m.Vx + m.Vy * m.Vy
+        Dim scale2 = _s.G * size
+        Dim window = 0.1 * Math.Sqrt(size / _s.G)
+        If _s.Now - _burstStart(i) > window Then
+            _burstStart(i) = _s.Now
+            _burstCount(i) = 0
+        End If
+        _burstCount(i) += 1
+        Dim limit2 = If(_burstCount(i) > BurstCollisions, scale2, 0.0004 * scale2)
+        If speed2 < limit2 AndAlso IsHeld(i) Then Sleep(i)
+    End Sub
+
+    ''' <summary>
+    ''' The bounce series on a level support is followed exactly until what is left of it is shorter
+    ''' than this, s: a state sampled later than the rest time minus this is truly at rest.
+    ''' </summary>
+    Friend Const RestWindow As Double = 0.0001
+
+    ''' <summary>Bounce height (m) of the slowest hop a body may leave a slope with: 10⁻⁶ of its radius.</summary>
+    Private Shared Function RestHeight(r As Double) As Double
+        Return Math.Max(1.0E-6 * r, 1.0E-12)
+    End Function
+
+    Private Sub EnterRest(i As Integer, support As Integer, edge As Integer, vn As Double)
+        Dim b = _s.Bodies
+        Dim body = b.Shapes(i)
+        Dim flight = If(_s.E < 1, 2 * vn / (_s.G * (1 - _s.E)), 0.0)
+        Dim known As Double
+        If Not (vn = 0 AndAlso _restTimes.TryGetValue(body, known)) Then _restTimes(body) = _s.Now + flight
+        b.Motion(i).Vy = 0
+        b.Motion(i).Ay = 0
+        b.Support(i) = support
+        b.SupportEdge(i) = edge
+        b.SetMode(i, BodyMode.Supported)
+        ' Slow enough along a level support: asleep (a pile's floor layer must settle to hold the rest).
+        If Math.Abs(b.Motion(i).Vx) < 0.05 * Math.Sqrt(_s.G * b.Scale(i)) AndAlso support <> BodyTable.SupportNone Then Sleep(i)
+    End Sub
+
+    Friend Sub Sleep(i As Integer)
+        Dim b = _s.Bodies
+        b.Motion(i).Vx = 0
+        b.Motion(i).Vy = 0
+        b.Motion(i).Ay = 0
+        b.Motion(i).Ax = 0
+        b.SetMode(i, BodyMode.Sleeping)
+    End Sub
+
+    ''' <summary>A resting or sleeping body that was moved by a hit flies again, and so does what rests on it.</summary>
+    Friend Sub WakeFrom(i As Integer)
+        Dim m = _s.Bodies.Mode(i)
+        If m <> BodyMode.Sleeping AndAlso m <> BodyMode.Supported Then Return
+        MakeFree(i)
+        WakeAbove(i)
+    End Sub
+
+    ''' <summary>Body i flies freely under gravity from now on (its rest, if any, is over).</summary>
+    Friend Sub MakeFree(i As Integer)
+        Dim b = _s.Bodies
+        b.SetMode(i, BodyMode.Free)
+        b.Motion(i).Ay = -_s.G
+        b.Motion(i).Ax = 0
+        b.Support(i) = BodyTable.SupportNone
+        b.SupportEdge(i) = -1
+        _restTimes.Remove(b.Shapes(i))
+        ' Its lane shows it free at once, before anything is predicted against it (the vector and the
+        ' one-at-a-time pair tests must see the same mode, or they take different branches).
+        _s.Publish(i)
+    End Sub
+
+    ''' <summary>Wakes every sleeping or resting body that (directly or through others) rests on body i.</summary>
+    Friend Sub WakeAbove(i As Integer)
+        Dim b = _s.Bodies
+        Dim head = 0, tail = 0
+        _wake(tail) = i
+        tail += 1
+        While head < tail
+            Dim k = _wake(head)
+            head += 1
+            Dim here = b.PositionAt(k, _s.Now)
+            Dim kx = here.X, ky = here.Y
+            Dim count = GridNeighbours.Collect(_s, k, _neighbours)
+            For q = 0 To count - 1
+                Dim j = _neighbours(q)
+                Dim mj = b.Mode(j)
+                If mj <> BodyMode.Sleeping AndAlso mj <> BodyMode.Supported Then Continue For
+                Dim dx = b.Motion(j).Px - kx, dy = b.Motion(j).Py - ky
+                If dy <= 0 Then Continue For
+                Dim c = ContactRules.OverlapWithBody(_s, j, k, New Vector(b.Motion(j).Px, b.Motion(j).Py), here)
+                If c.Depth < -1.0E-3 * Math.Min(b.Scale(j), b.Scale(k)) OrElse c.Normal.Y <= 0 Then Continue For
+                _s.Sync(j)
+                MakeFree(j)
+                _s.Changed(j)
+                If tail < _wake.Length Then
+                    _wake(tail) = j
+                    tail += 1
+                End If
+            Next
+        End While
+    End Sub
+
+    ''' <summary>
+    ''' Whether body i is held against gravity by what it touches (within 10⁻³ r): the upward
+    ''' vertical lies in the cone of its contact normals, so normal forces alone can balance its
+    ''' weight (one level support, or two on either side of the vertical, or a cage). Neighbours count
+    ''' whether asleep or not (a settling pile freezes as a whole); only nearby cells are searched.
+    ''' </summary>
+    Private Function IsHeld(i As Integer) As Boolean
+        Dim b = _s.Bodies
+        Dim p = b.PositionAt(i, _s.Now)
+        Dim px = p.X, py = p.Y
+        Dim o = b.Outlines(i)
+        Dim gap = 1.0E-3 * b.Scale(i) + SolverState.SlopAt(px, py)
+        _nNormals = 0
+        If _s.Walls Then
+            If py + o.MinY <= gap Then Return True
+            If px + o.MinX <= gap Then AddNormal(1, 0)
+            If _s.Width - o.MaxX - px <= gap Then AddNormal(-1, 0)
+            If _s.Height - o.MaxY - py <= gap Then AddNormal(0, -1)
+        End If
+        ' Rectangles, then the other fixed bodies: the order the normals were always gathered in.
+        For pass = 0 To 1
+            For k = 0 To _s.Obstacles.Count - 1
+                If (_s.Obstacles.Kind(k) = ShapeKind.Rectangle) <> (pass = 0) Then Continue For
+                Dim c = ContactRules.OverlapWithObstacle(_s, i, k, p)
+                If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
+            Next
+        Next
+        Dim count = GridNeighbours.Collect(_s, i, _neighbours)
+        For q = 0 To count - 1
+            Dim j = _neighbours(q)
+            If b.Mode(j) = BodyMode.Rounding OrElse b.Mode(j) = BodyMode.Dragged Then Continue For
+            Dim c = ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now))
+            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
+        Next
+        ' Up = (0, 1) lies between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.
+        For a = 0 To _nNormals - 1
+            If _normalY(a) > 0.999 Then Return True
+            For k = 0 To _nNormals - 1
+                If _normalX(a) >= 0 AndAlso _normalX(k) <= 0 AndAlso
+                   _normalX(a) * _normalY(k) - _normalY(a) * _normalX(k) > 0 Then Return True
+            Next
+        Next
+        Return False
+    End Function
+
+    Private Sub AddNormal(x As Double, y As Double)
+        If _nNormals < _normalX.Length Then
+            _normalX(_nNormals) = x
+            _normalY(_nNormals) = y
+            _nNormals += 1
+        End If
+    End Sub
+End Class

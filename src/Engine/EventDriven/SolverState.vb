@@ -1,0 +1,101 @@
+Option Strict On
+
+''' <summary>
+''' What every part of the event-driven solver shares: the world and the settings read from it, the
+''' solver's clock, and the owners of its state (the movable bodies, the obstacles, the grid and the
+''' queue). The parts (<see cref="Predictor"/>, <see cref="Responder"/>, <see cref="RestRules"/>,
+''' <see cref="CornerSlides"/>) hold no state of their own beyond what they say they own.
+''' </summary>
+Friend NotInheritable Class SolverState
+    Friend ReadOnly Bodies As New BodyTable()
+    Friend ReadOnly Obstacles As New Obstacles()
+    Friend ReadOnly Grid As New UniformGrid()
+    Friend ReadOnly Queue As New EventQueue()
+    ''' <summary>The pairs' Minkowski differences (see <see cref="ContactRules"/>).</summary>
+    Friend ReadOnly Shapes As New ContactShapes()
+
+    Friend World As World
+    ''' <summary>The solver's clock, s (absolute, like World.Time).</summary>
+    Friend Now As Double
+    ''' <summary>g, m/s² (towards −y); e; the walls; the container, m.</summary>
+    Friend G As Double
+    Friend E As Double
+    Friend Walls As Boolean
+    Friend Width As Double
+    Friend Height As Double
+    ''' <summary>Largest reach (m) of a body in the grid from its reference point (a circle's radius).</summary>
+    Friend RMax As Double
+    ''' <summary>Bodies too big for the grid, checked against every body.</summary>
+    Friend Oversized As Integer() = Array.Empty(Of Integer)()
+    Friend OversizedCount As Integer
+
+    ''' <summary>Grid cells searched for partners so far (see <see cref="EventDrivenSolver.CellsSearched"/>).</summary>
+    Friend CellsSearched As Long
+
+    ''' <summary>The bodies an event changed, to be rescheduled once it is resolved (each once, in the order they changed).</summary>
+    Friend ReadOnly Touched As New TouchedList()
+
+    ''' <summary>Touching tolerance relative to the coordinates involved: 10⁻¹² of them, and never below 10⁻¹² m.</summary>
+    Friend Const SlopFraction As Double = 1.0E-12
+
+    ''' <summary>
+    ''' Distance (m) within which bodies at (x, y) count as touching: rounding, never physics. It is
+    ''' local, because rounding is: a coordinate of 10⁶ m carries errors a million times those of one
+    ''' of 1 m, and a container 10¹² m wide says nothing about a ball bouncing on its floor.
+    ''' </summary>
+    Friend Shared Function SlopAt(x As Double, y As Double) As Double
+        Return SlopFraction * Math.Max(1.0, Math.Max(Math.Abs(x), Math.Abs(y)))
+    End Function
+
+    ''' <summary>Like <see cref="SlopAt"/>, for a gap measured along one axis from coordinate v (m).</summary>
+    Friend Shared Function SlopAlong(v As Double) As Double
+        Return SlopFraction * Math.Max(1.0, Math.Abs(v))
+    End Function
+
+    ''' <summary>The touching tolerance (m) for body i where it is now.</summary>
+    Friend Function SlopOf(i As Integer) As Double
+        Return SlopAt(Bodies.Motion(i).Px, Bodies.Motion(i).Py)
+    End Function
+
+    ''' <summary>
+    ''' Body i's motion changed: predictions made with its old motion become stale (its counter), its
+    ''' lane shows the new motion at once (before anything is predicted against it), and it is
+    ''' rescheduled when the event is resolved.
+    ''' </summary>
+    Friend Sub Changed(i As Integer)
+        Bodies.Slot(i).Count += 1
+        Publish(i)
+        Touched.Add(i)
+    End Sub
+
+    ''' <summary>Copies body i's motion and next collision time into its grid lane (see UniformGrid).</summary>
+    Friend Sub Publish(i As Integer)
+        Grid.Publish(i, Bodies.Motion(i), Bodies.Slot(i).ColTime)
+    End Sub
+
+    ''' <summary>Moves body i's reference point to the clock, exactly along its path (not while it slides round a corner).</summary>
+    Friend Sub Sync(i As Integer)
+        If Now = Bodies.Motion(i).T0 OrElse Bodies.Slot(i).Mode = BodyMode.Rounding Then Return
+        Bodies.Motion(i).MoveTo(Now)
+        Publish(i)
+    End Sub
+
+    ''' <summary>Moves gridded body i to the cell at (col, row), if it is not there already, and publishes it there.</summary>
+    Friend Sub MoveToCell(i As Integer, col As Integer, row As Integer)
+        Dim cell = row * Grid.Nx + col
+        If cell = Bodies.Slot(i).Cell Then Return
+        Dim pulled = Grid.Remove(i, Bodies.Slot(i).Cell)
+        If pulled >= 0 Then Publish(pulled)
+        Grid.Insert(i, cell)
+        Bodies.Slot(i).Cell = cell
+        Bodies.Slot(i).Col = col
+        Bodies.Slot(i).Row = row
+        Publish(i)
+    End Sub
+
+    ''' <summary>Moves gridded body i to the cell its reference point is in now.</summary>
+    Friend Sub MoveToCellOfPosition(i As Integer)
+        If Bodies.Slot(i).Cell < 0 Then Return
+        MoveToCell(i, Grid.ColumnOf(Bodies.Motion(i).Px), Grid.RowOf(Bodies.Motion(i).Py))
+    End Sub
+End Class

@@ -1,0 +1,65 @@
+Option Strict On
+
+Namespace Checking
+    ''' <summary>
+    ''' Kinetic plus potential energy (Σ ½ m v² + m g y over movable circles, J) may never grow when e ≤ 1:
+    ''' nothing in the model adds energy. Two allowances, both far below a real leak:
+    ''' <list type="bullet">
+    ''' <item>Rounding: 1e-9 of the energy's scale (the sum of the magnitudes of every body's kinetic and
+    ''' potential energy at the start, so a scene whose total is near zero, with walls off and balls below
+    ''' y = 0, still has a scale). Each collision rounds each velocity to about 1e-16 relative; the engine's
+    ''' own invariant tests see about 1e-12 of the energy over thousands of collisions. A real leak, such as
+    ''' lifting a ball by a step's penetration without paying for it, is 1e-3 of that ball's energy.</item>
+    ''' <item>The overlaps a scene may start with: the format accepts 1e-9 m, and pushing such an overlap
+    ''' apart may lift a body by that much, once: m g · 1e-9 m for every movable body.</item>
+    ''' </list>
+    ''' </summary>
+    Friend NotInheritable Class EnergyBudget
+        ''' <summary>Allowed growth, as a fraction of the energy's scale.</summary>
+        Friend Const RelativeTolerance As Double = 0.000000001
+
+        Private ReadOnly _start As Double
+        Private ReadOnly _allowed As Double
+
+        ''' <summary>Takes the world's state now as the start.</summary>
+        Friend Sub New(world As World)
+            If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
+            _start = Total(world)
+            Dim scale = 0.0, lift = 0.0
+            For Each c In world.Circles
+                If c.IsFixed Then Continue For
+                scale += c.KineticEnergy + c.Mass * world.Gravity * Math.Abs(c.Position.Y)
+                lift += c.Mass * world.Gravity * StateChecks.Tolerance
+            Next
+            _allowed = RelativeTolerance * scale + lift
+        End Sub
+
+        ''' <summary>The energy at the start, J.</summary>
+        Friend ReadOnly Property Start As Double
+            Get
+                Return _start
+            End Get
+        End Property
+
+        ''' <summary>How far above the start the energy may go, J.</summary>
+        Friend ReadOnly Property Allowed As Double
+            Get
+                Return _allowed
+            End Get
+        End Property
+
+        ''' <summary>Nothing, or a line saying by how much the energy grew beyond the allowance.</summary>
+        Friend Function Check(world As World) As String
+            Dim now = Total(world)
+            If now <= _start + _allowed Then Return Nothing
+            Return "energy grew from " & _start.ToString("R", Globalization.CultureInfo.InvariantCulture) & " J to " &
+                now.ToString("R", Globalization.CultureInfo.InvariantCulture) & " J (+" & StateChecks.Brief(now - _start) &
+                " J; allowed " & StateChecks.Brief(_allowed) & " J)"
+        End Function
+
+        ''' <summary>Kinetic plus potential energy of the movable circles, J, as the command line's summary gives it.</summary>
+        Friend Shared Function Total(world As World) As Double
+            Return world.KineticEnergy() + world.PotentialEnergy()
+        End Function
+    End Class
+End Namespace

@@ -1,0 +1,91 @@
+Option Strict On
+Imports System.Diagnostics
+Imports PhysicsEngine.Scenes
+
+Namespace Checking
+    ''' <summary>
+    ''' Runs one scene, loaded from its text as the command line loads it, with one solver at its default
+    ''' step, advancing to each sample time of <see cref="SampleClock"/> exactly as the command line's run
+    ''' does, and checks the state at every sample. So a failure seen here is the failure that
+    ''' <c>SimulatorCli run FILE --time T --solver S --sample S</c> shows.
+    ''' </summary>
+    Friend Module SceneRunner
+        ''' <summary>
+        ''' One run. Stops at a non-finite state, a thrown exception, the wall-time cap (checked after each
+        ''' sample's advance: one advance cannot be interrupted, which is why campaigns run scenes in worker
+        ''' processes), or the first violation of <paramref name="stopAt"/> when one is given.
+        ''' </summary>
+        ''' <param name="text">physics-scene/1 text; a <see cref="SceneFormatException"/> is left to the caller</param>
+        Friend Function Run(text As String, solver As String, total As Double, sample As Double, cap As Double,
+                            Optional stopAt As String = Nothing, Optional keepLog As Boolean = False) As RunOutcome
+            Dim world = SceneFile.Load(text)
+            world.Solver = SolverFactory.Create(solver)
+            Dim isEvent = TypeOf world.Solver Is EventDrivenSolver
+            Dim outcome As New RunOutcome()
+            If keepLog Then
+                Dim log As New CollisionLog()
+                outcome.Log = log
+                world.CollisionListener = AddressOf log.Add
+            End If
+            Dim energy = If(isEvent, New EnergyBudget(world), Nothing)
+            Dim clock = Stopwatch.StartNew()
+            Dim seen As New HashSet(Of String)(StringComparer.Ordinal)
+            Dim report =
+                Function(invariant As String, t As Double, message As String) As Boolean
+                    If message Is Nothing OrElse Not seen.Add(invariant) Then Return False
+                    outcome.Violations.Add(New Violation(invariant, solver, sample, t, message))
+                    Return invariant = stopAt
+                End Function
+            Dim stopped = False
+            For Each t In SampleClock.Times(total, sample)
+                Try
+                    world.Advance(t - world.Time)
+                Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
+                    report(Invariants.Crash, t, ex.GetType().Name & " between t = " & world.Time.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s and t = " &
+                        t.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s: " & OneLine(ex.Message))
+                    stopped = True
+                    Exit For
+                End Try
+                Dim notFinite = StateChecks.NotFinite(world)
+                If notFinite IsNot Nothing Then
+                    report(Invariants.NotFinite, t, notFinite)
+                    stopped = True
+                    Exit For
+                End If
+                Dim hit = report(Invariants.Outside, t, StateChecks.Outside(world))
+                hit = report(Invariants.CentreInside, t, StateChecks.CentreInside(world)) OrElse hit
+                If isEvent Then
+                    hit = report(Invariants.Overlap, t, StateChecks.Overlap(world)) OrElse hit
+                    hit = report(Invariants.Energy, t, energy.Check(world)) OrElse hit
+                End If
+                If hit Then
+                    stopped = True
+                    Exit For
+                End If
+                If clock.Elapsed.TotalSeconds > cap Then
+                    Dim inv = Globalization.CultureInfo.InvariantCulture
+                    Dim collisions = world.CollisionCount.ToString(inv) & " collisions"
+                    If t < total Then
+                        report(Invariants.WallTime, t, "reached only t = " & t.ToString("R", inv) & " s of " & total.ToString("R", inv) &
+                            " s in the cap of " & cap.ToString("R", inv) & " s (" & collisions & ")")
+                        stopped = True
+                        Exit For
+                    End If
+                    report(Invariants.WallTime, t, "took " & clock.Elapsed.TotalSeconds.ToString("0.0", inv) & " s, over the cap of " & cap.ToString("R", inv) & " s (" & collisions & ")")
+                End If
+            Next
+            clock.Stop()
+            outcome.WallSeconds = clock.Elapsed.TotalSeconds
+            outcome.Collisions = world.CollisionCount
+            outcome.Completed = Not stopped
+            If Not stopped Then outcome.Final = New FinalState(world)
+            Return outcome
+        End Function
+
+        ''' <summary>A message on one line (worker lines and failure lines are one line each).</summary>
+        Friend Function OneLine(message As String) As String
+            If message Is Nothing Then Return ""
+            Return String.Join(" ", message.Split({ChrW(13), ChrW(10), ChrW(9)}, StringSplitOptions.RemoveEmptyEntries)).Trim()
+        End Function
+    End Module
+End Namespace

@@ -1,0 +1,36 @@
+Option Strict On
+
+''' <summary>
+''' The size of the quick pass that runs with every test run (and so in CI): how many generated scenes,
+''' from which seed, and the wall-time cap of one run. FUZZ_QUICK_SCENES and FUZZ_QUICK_SEED override
+''' the first two, for a longer pass or another stretch of seeds without a rebuild.
+''' </summary>
+Public NotInheritable Class QuickPass
+    Private Sub New()
+    End Sub
+
+    ''' <summary>Scenes in the quick pass: each runs with every solver (the event solver twice).</summary>
+    Public Shared ReadOnly Property Scenes As Integer = FromEnvironment("FUZZ_QUICK_SCENES", 400)
+
+    ''' <summary>The first scene's seed; the others follow it.</summary>
+    Public Shared ReadOnly Property FirstSeed As Integer = FromEnvironment("FUZZ_QUICK_SEED", 1)
+
+    ''' <summary>Simulated time of a run, s (fast scenes run shorter: see Campaign.PlanFor).</summary>
+    Public Const Time As Double = 1.0
+
+    ''' <summary>Bodies in a scene, at most about (obstacles come on top).</summary>
+    Public Const MaxBodies As Integer = 40
+
+    ''' <summary>
+    ''' Wall-clock seconds one run may take. The scenes are small (at most about 40 bodies, 1 s): most run in
+    ''' well under a second, and a run ten times slower than that is a runaway, not a slow machine.
+    ''' </summary>
+    Public Const Cap As Double = 10.0
+
+    Private Shared Function FromEnvironment(name As String, fallback As Integer) As Integer
+        Dim text = Environment.GetEnvironmentVariable(name)
+        Dim value As Integer
+        If text IsNot Nothing AndAlso Integer.TryParse(text, Globalization.NumberStyles.Integer, Globalization.CultureInfo.InvariantCulture, value) AndAlso value > 0 Then Return value
+        Return fallback
+    End Function
+End Class
