@@ -1,13 +1,13 @@
 #!/usr/bin/env bash
 # Installs, from the distribution, what this project needs beyond the .NET SDK.
 #   install-deps.sh app    Mono + WinForms + libgdiplus (to build and run the net48 app)
-#   install-deps.sh test   the above + Xvfb, xdotool, ImageMagick, xwininfo (GUI tests)
+#   install-deps.sh test   the above + Xvfb, xdotool, ImageMagick, xwininfo, xprop, setxkbmap (GUI tests)
 # Installs only what is missing; needs root (or sudo) only when something is missing.
 set -euo pipefail
 
 want=(mono-runtime mono-devel libmono-system-windows-forms4.0-cil libgdiplus fonts-dejavu-core)
 if [ "${1:-app}" = "test" ]; then
-  want+=(xvfb xdotool imagemagick x11-utils)
+  want+=(xvfb xdotool imagemagick x11-utils x11-xkb-utils)
 fi
 
 missing=()

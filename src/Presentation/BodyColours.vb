@@ -20,10 +20,28 @@ Public NotInheritable Class BodyColours
 
     ''' <summary>A new random colour, "#rrggbb", that shows on both canvases.</summary>
     Public Function NextColour() As String
+        Return Pick(_random)
+    End Function
+
+    ''' <summary>
+    ''' The colour of a body that has none in its file: the same for the same id every time the file
+    ''' is opened, on every machine (a hash of the id, not .NET's string hash, which changes from run
+    ''' to run), and one that shows on both canvases.
+    ''' </summary>
+    Public Shared Function ForId(id As String) As String
+        ' FNV-1a over the UTF-16 code units, kept to 32 bits (a ULong holds the product without overflow).
+        Dim h As ULong = 2166136261UL
+        For Each ch In If(id, "")
+            h = ((h Xor CULng(AscW(ch))) * 16777619UL) And &HFFFFFFFFUL
+        Next
+        Return Pick(New Random(CInt(h And &H7FFFFFFFUL)))
+    End Function
+
+    Private Shared Function Pick(random As Random) As String
         For attempt = 1 To 1000
-            Dim h = _random.NextDouble() * 360.0
-            Dim s = 0.65 + 0.35 * _random.NextDouble()
-            Dim v = 0.45 + 0.5 * _random.NextDouble()
+            Dim h = random.NextDouble() * 360.0
+            Dim s = 0.65 + 0.35 * random.NextDouble()
+            Dim v = 0.45 + 0.5 * random.NextDouble()
             Dim rgb = FromHsv(h, s, v)
             If ShowsOnBothCanvases(rgb) Then Return ToHex(rgb)
         Next

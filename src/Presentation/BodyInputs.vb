@@ -1,22 +1,88 @@
 Option Strict On
 
 ''' <summary>
-''' The text in the window's input boxes, as the presenter last accepted (and clamped) it. The
-''' window writes what was typed into the presenter's Add/Resize calls and shows these back.
+''' The text in the window's input boxes, exactly as the teacher typed it: the window passes every
+''' edit here, so nothing the presenter does (pause, reset, add, open) can put an older value back.
+''' The presenter changes a text only when it says so in a message (a value brought to a limit) or
+''' when a scene with another container is opened, and then asks the window to show the inputs.
 ''' </summary>
 Public NotInheritable Class BodyInputs
+    Private ReadOnly _texts As New Dictionary(Of InputField, String) From {
+        {InputField.Radius, "0.25"}, {InputField.Mass, "1"},
+        {InputField.RectangleWidth, "1"}, {InputField.RectangleHeight, "0.5"},
+        {InputField.ContainerWidth, ""}, {InputField.ContainerHeight, ""}}
+
+    ''' <summary>The text of one box.</summary>
+    Default Public Property Item(field As InputField) As String
+        Get
+            Return _texts(field)
+        End Get
+        Set(value As String)
+            If Not _texts.ContainsKey(field) Then Throw New ArgumentOutOfRangeException(NameOf(field))
+            _texts(field) = If(value, "")
+        End Set
+    End Property
+
     ''' <summary>Circle radius, m.</summary>
-    Public Property RadiusText As String = "0.25"
+    Public Property RadiusText As String
+        Get
+            Return Item(InputField.Radius)
+        End Get
+        Set(value As String)
+            Item(InputField.Radius) = value
+        End Set
+    End Property
+
     ''' <summary>Circle mass, kg.</summary>
-    Public Property MassText As String = "1"
+    Public Property MassText As String
+        Get
+            Return Item(InputField.Mass)
+        End Get
+        Set(value As String)
+            Item(InputField.Mass) = value
+        End Set
+    End Property
+
     ''' <summary>Whether the next circle is fixed.</summary>
     Public Property IsFixed As Boolean
+
     ''' <summary>Rectangle width, m.</summary>
-    Public Property WidthText As String = "1"
+    Public Property WidthText As String
+        Get
+            Return Item(InputField.RectangleWidth)
+        End Get
+        Set(value As String)
+            Item(InputField.RectangleWidth) = value
+        End Set
+    End Property
+
     ''' <summary>Rectangle height, m.</summary>
-    Public Property HeightText As String = "0.5"
+    Public Property HeightText As String
+        Get
+            Return Item(InputField.RectangleHeight)
+        End Get
+        Set(value As String)
+            Item(InputField.RectangleHeight) = value
+        End Set
+    End Property
+
     ''' <summary>Container width, m.</summary>
-    Public Property ContainerWidthText As String = ""
+    Public Property ContainerWidthText As String
+        Get
+            Return Item(InputField.ContainerWidth)
+        End Get
+        Set(value As String)
+            Item(InputField.ContainerWidth) = value
+        End Set
+    End Property
+
     ''' <summary>Container height, m.</summary>
-    Public Property ContainerHeightText As String = ""
+    Public Property ContainerHeightText As String
+        Get
+            Return Item(InputField.ContainerHeight)
+        End Get
+        Set(value As String)
+            Item(InputField.ContainerHeight) = value
+        End Set
+    End Property
 End Class

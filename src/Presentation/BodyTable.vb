@@ -1,31 +1,53 @@
 Option Strict On
 
 ''' <summary>
-''' The two tables under the canvas, as text: headers with units and the cells of one row, read by
-''' the window's virtual-mode lists only for the rows on screen.
+''' One of the tables under the canvas: its tab's title, its column headers (with units), which
+''' bodies it lists, and the cells of a row. A new kind of body gets a table here and is listed in
+''' <see cref="All"/>; the window makes one tab per table.
 ''' </summary>
-Public Module BodyTable
-    ''' <summary>Column headers of the circles table.</summary>
-    Public ReadOnly Property CircleHeaders As IReadOnlyList(Of String) = {
-        "Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Radius (m)", "Density (kg/m²)"}
+Public NotInheritable Class BodyTable
+    Private ReadOnly _lists As Func(Of Shape, Boolean)
+    Private ReadOnly _cells As Func(Of BodyRow, String())
 
-    ''' <summary>Column headers of the rectangles table.</summary>
-    Public ReadOnly Property RectangleHeaders As IReadOnlyList(Of String) = {
-        "Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Width × height (m)", "Area (m²)"}
+    Private Sub New(title As String, headers As String(), lists As Func(Of Shape, Boolean), cells As Func(Of BodyRow, String()))
+        Me.Title = title
+        Me.Headers = headers
+        _lists = lists
+        _cells = cells
+    End Sub
 
-    ''' <summary>The cells of a circle's row.</summary>
-    Public Function CircleRow(c As Circle) As String()
-        If c Is Nothing Then Throw New ArgumentNullException(NameOf(c))
-        Return {c.Id, If(c.Color, ""), Units.Num(c.Position.X), Units.Num(c.Position.Y),
-                Units.Num(c.Velocity.X), Units.Num(c.Velocity.Y), Units.Num(c.Velocity.Length),
-                If(c.IsFixed, "fixed (∞)", Units.Num(c.Mass)), Units.Num(c.Radius, 3),
-                If(c.IsFixed, "—", Units.Num(c.Density))}
+    ''' <summary>The tab's title.</summary>
+    Public ReadOnly Property Title As String
+    ''' <summary>Column headers, with units.</summary>
+    Public ReadOnly Property Headers As IReadOnlyList(Of String)
+
+    ''' <summary>Whether this table lists the body.</summary>
+    Public Function Lists(body As Shape) As Boolean
+        Return _lists(body)
     End Function
 
-    ''' <summary>The cells of a rectangle's row (rectangles are fixed: no velocity, infinite mass). x, y is the lower-left corner.</summary>
-    Public Function RectangleRow(r As Rectangle) As String()
-        If r Is Nothing Then Throw New ArgumentNullException(NameOf(r))
-        Return {r.Id, If(r.Color, ""), Units.Num(r.Position.X), Units.Num(r.Position.Y),
-                "0.00", "0.00", "0.00", "fixed (∞)", Units.Num(r.Width) & " × " & Units.Num(r.Height), Units.Num(r.Area)}
+    ''' <summary>The cells of one row, one per header.</summary>
+    Public Function Cells(row As BodyRow) As String()
+        Return _cells(row)
     End Function
-End Module
+
+    ''' <summary>Every circle, movable and fixed.</summary>
+    Public Shared ReadOnly Property Circles As New BodyTable("Circles",
+        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Radius (m)", "Density (kg/m²)"},
+        Function(b) TypeOf b Is Circle,
+        Function(r) {r.Id, r.Colour, Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
+                     Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
+                     If(r.IsFixed, "fixed", Units.Sig(r.Mass)), Units.Sig(r.Size.X),
+                     If(r.IsFixed, "—", Units.Sig(r.Mass / r.Area))})
+
+    ''' <summary>Every rectangle (fixed: no velocity, no finite mass). x, y is the lower-left corner.</summary>
+    Public Shared ReadOnly Property Rectangles As New BodyTable("Rectangles",
+        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Width × height (m)", "Area (m²)"},
+        Function(b) TypeOf b Is Rectangle,
+        Function(r) {r.Id, r.Colour, Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
+                     Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
+                     If(r.IsFixed, "fixed", Units.Sig(r.Mass)), Units.Sig(r.Size.X) & " × " & Units.Sig(r.Size.Y), Units.Sig(r.Area)})
+
+    ''' <summary>The tables, in the order of their tabs.</summary>
+    Public Shared ReadOnly Property All As IReadOnlyList(Of BodyTable) = {Circles, Rectangles}
+End Class

@@ -1,27 +1,29 @@
 Option Strict On
 
 ''' <summary>
-''' The last few hundred collisions, newest first, kept cheap when thousands happen each second:
-''' within one frame only the first few are itemised and the rest are counted into one summary line,
-''' and the oldest lines fall off the end.
+''' The last few hundred collisions, newest first, kept readable and cheap. A collision of a pair
+''' that is already among the newest rows joins that row, which counts it and moves to the top ("3
+''' bounced 180 times on the floor"), so a ball resting at e = 1 does not flood the log. Within one
+''' frame only the first few new rows are made; the rest are counted into one summary row. The
+''' oldest rows fall off the end.
 ''' </summary>
 Public NotInheritable Class CollisionLog
-    ''' <summary>Lines kept.</summary>
+    ''' <summary>Rows kept.</summary>
     Public Const Capacity As Integer = 300
-    ''' <summary>Collisions itemised per frame; the rest are counted.</summary>
+    ''' <summary>Rows itemised per frame; further collisions are counted.</summary>
     Public Const PerFrame As Integer = 12
+    ''' <summary>How many of the newest rows a repeated pair is looked for in.</summary>
+    Public Const GroupWithin As Integer = 12
 
-    Private ReadOnly _ring(Capacity - 1) As CollisionLogEntry
-    Private _head As Integer ' index of the next write
-    Private _count As Integer
+    Private ReadOnly _rows As New List(Of CollisionLogEntry)(Capacity + 1) ' oldest first
     Private _inFrame As Integer
     Private _skipped As Long
     Private _lastTime As Double
 
-    ''' <summary>Lines held, at most <see cref="Capacity"/>.</summary>
+    ''' <summary>Rows held, at most <see cref="Capacity"/>.</summary>
     Public ReadOnly Property Count As Integer
         Get
-            Return _count
+            Return _rows.Count
         End Get
     End Property
 
@@ -31,27 +33,37 @@ Public NotInheritable Class CollisionLog
     ''' <summary>Bumped on every change, so the window redraws the list only when needed.</summary>
     Public ReadOnly Property Version As Long
 
-    ''' <summary>The i-th line, newest first (i = 0 is the latest).</summary>
+    ''' <summary>The i-th row, newest first (i = 0 is the latest).</summary>
     Default Public ReadOnly Property Item(index As Integer) As CollisionLogEntry
         Get
-            If index < 0 OrElse index >= _count Then Throw New ArgumentOutOfRangeException(NameOf(index))
-            Return _ring((_head - 1 - index + 2 * Capacity) Mod Capacity)
+            If index < 0 OrElse index >= _rows.Count Then Throw New ArgumentOutOfRangeException(NameOf(index))
+            Return _rows(_rows.Count - 1 - index)
         End Get
     End Property
 
     ''' <summary>Takes one collision from the engine's listener. Cheap after the first few of a frame.</summary>
-    Public Sub Record(record As CollisionRecord, draggedCircle As Circle)
+    Public Sub Record(record As CollisionRecord, dragged As Shape)
         _TotalSeen += 1
         _lastTime = record.Time
+        Dim entry = CollisionLogEntry.FromRecord(record, dragged)
+        ' A repeat of a recent pair joins its row (and brings it to the top), whatever the frame.
+        For i = _rows.Count - 1 To Math.Max(0, _rows.Count - GroupWithin) Step -1
+            Dim row = _rows(i)
+            If row.SkippedCount = 0 AndAlso row.AName = entry.AName AndAlso row.BName = entry.BName Then
+                _rows.RemoveAt(i)
+                Push(entry.Following(row))
+                Return
+            End If
+        Next
         If _inFrame >= PerFrame Then
             _skipped += 1
             Return
         End If
         _inFrame += 1
-        Push(CollisionLogEntry.FromRecord(record, draggedCircle))
+        Push(entry)
     End Sub
 
-    ''' <summary>Closes a frame: the collisions that were only counted become one summary line.</summary>
+    ''' <summary>Closes a frame: the collisions that were only counted become one summary row.</summary>
     Public Sub EndFrame()
         If _skipped > 0 Then Push(CollisionLogEntry.Skipped(_lastTime, _skipped))
         _skipped = 0
@@ -60,9 +72,7 @@ Public NotInheritable Class CollisionLog
 
     ''' <summary>Empties the log.</summary>
     Public Sub Clear()
-        Array.Clear(_ring, 0, Capacity)
-        _head = 0
-        _count = 0
+        _rows.Clear()
         _inFrame = 0
         _skipped = 0
         _TotalSeen = 0
@@ -70,9 +80,8 @@ Public NotInheritable Class CollisionLog
     End Sub
 
     Private Sub Push(entry As CollisionLogEntry)
-        _ring(_head) = entry
-        _head = (_head + 1) Mod Capacity
-        If _count < Capacity Then _count += 1
+        _rows.Add(entry)
+        If _rows.Count > Capacity Then _rows.RemoveAt(0)
         _Version += 1
     End Sub
 End Class

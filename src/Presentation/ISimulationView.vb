@@ -5,14 +5,17 @@ Option Strict On
 ''' forwards the teacher's actions. Tests implement it with a recorder.
 ''' </summary>
 Public Interface ISimulationView
-    ''' <summary>Shows a one-line message to the teacher (an error or a hint); an empty string clears it.</summary>
+    ''' <summary>Shows a message to the teacher (an error or a hint), whole, however long; an empty string clears it.</summary>
     Sub ShowMessage(text As String)
 
-    ''' <summary>Gravity, restitution, speed, pause, mode or container size changed: update sliders, labels and buttons.</summary>
+    ''' <summary>Gravity, restitution, speed, pause, mode, the Fixed box or the container changed: update sliders, labels and buttons.</summary>
     Sub ShowSettings()
 
-    ''' <summary>Bodies were added or removed: update the tables' row counts.</summary>
-    Sub ShowBodies()
+    ''' <summary>The presenter changed what an input box should hold (a value brought to a limit, a scene's container): show <see cref="SimulationPresenter.Inputs"/>.</summary>
+    Sub ShowInputs()
+
+    ''' <summary>A new snapshot of the tables and totals is ready (bodies added, removed, moved, pushed, or time went on).</summary>
+    Sub ShowState()
 
     ''' <summary>Large fonts or high contrast changed: restyle the window.</summary>
     Sub ShowTheme()

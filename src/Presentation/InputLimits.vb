@@ -1,14 +1,23 @@
 Option Strict On
 
 ''' <summary>
-''' The bounds on what the teacher can type, and the messages the seed's tests ask for. A value over
-''' a bound is clamped to it; empty, zero or negative values bring a message asking for valid values.
+''' The bounds on what the teacher can type, and the messages the seed's tests ask for. A value
+''' beyond a bound is brought to it, and the message says so; empty, zero, negative or non-numeric
+''' values bring a message asking for suitable values. The lower bounds keep every derived number
+''' finite and readable: a 1 cm ball is still drawn, its density and the cue's Δv = J/m stay below
+''' 10⁶, and kinetic energy never overflows.
 ''' </summary>
 Public Module InputLimits
+    ''' <summary>Smallest circle radius, m.</summary>
+    Public Const MinRadius As Double = 0.01
     ''' <summary>Largest circle radius, m.</summary>
     Public Const MaxRadius As Double = 2.0
+    ''' <summary>Smallest mass, kg.</summary>
+    Public Const MinMass As Double = 0.01
     ''' <summary>Largest mass, kg.</summary>
     Public Const MaxMass As Double = 1000.0
+    ''' <summary>Smallest rectangle side, m.</summary>
+    Public Const MinSide As Double = 0.01
     ''' <summary>Largest rectangle side, m.</summary>
     Public Const MaxSide As Double = 20.0
     ''' <summary>Largest container side, m.</summary>

@@ -7,34 +7,41 @@ Public Structure NumberInput
     Public ReadOnly Property IsValid As Boolean
     ''' <summary>The value to use, clamped to the bound; 0 when not valid.</summary>
     Public ReadOnly Property Value As Double
-    ''' <summary>True when the typed value was above the bound and was brought down to it.</summary>
+    ''' <summary>True when the typed value was beyond a bound and was brought to it.</summary>
     Public ReadOnly Property WasClamped As Boolean
+    ''' <summary>True when it was brought up to the lower bound (False: down to the upper one, or not at all).</summary>
+    Public ReadOnly Property WasRaised As Boolean
     ''' <summary>Why the text was refused, naming the field, or "" when valid.</summary>
     Public ReadOnly Property Problem As String
 
-    Private Sub New(isValid As Boolean, value As Double, wasClamped As Boolean, problem As String)
+    Private Sub New(isValid As Boolean, value As Double, wasClamped As Boolean, problem As String, Optional wasRaised As Boolean = False)
         Me.IsValid = isValid
         Me.Value = value
         Me.WasClamped = wasClamped
+        Me.WasRaised = wasRaised
         Me.Problem = problem
     End Sub
 
     ''' <summary>
-    ''' Reads a number that must be greater than 0 and at most <paramref name="maximum"/>: empty,
-    ''' non-numeric, zero or negative text is refused; a value over the bound is clamped to it.
-    ''' Accepts the invariant form (0.5) and the current culture's (0,5 in many European locales).
+    ''' Reads a number that must be greater than 0: empty, non-numeric, zero or negative text is
+    ''' refused; a value above <paramref name="maximum"/> or below <paramref name="minimum"/> is
+    ''' brought to that bound. Accepts the invariant form (0.5) and the current culture's (0,5 in
+    ''' many European locales).
     ''' </summary>
     ''' <param name="text">what was typed</param>
     ''' <param name="label">the field's name with its unit, for the message, e.g. "radius (m)"</param>
     ''' <param name="maximum">upper bound, in the field's unit</param>
-    Public Shared Function ReadPositive(text As String, label As String, maximum As Double) As NumberInput
+    ''' <param name="minimum">lower bound, in the field's unit (0: none beyond "greater than 0")</param>
+    Public Shared Function ReadPositive(text As String, label As String, maximum As Double, Optional minimum As Double = 0) As NumberInput
         Dim t = If(text, "").Trim()
         If t.Length = 0 Then Return Refuse(label & " is empty")
         Dim v As Double
+        If t.Length > 40 Then Return Refuse(label & " is too long to be a number")
         If Not TryParse(t, v) Then Return Refuse(label & " '" & t & "' is not a number")
         If Double.IsNaN(v) OrElse Double.IsInfinity(v) Then Return Refuse(label & " '" & t & "' is not a finite number")
         If v <= 0 Then Return Refuse(label & " must be greater than 0, not " & t)
         If v > maximum Then Return New NumberInput(True, maximum, True, "")
+        If v < minimum Then Return New NumberInput(True, minimum, True, "", wasRaised:=True)
         Return New NumberInput(True, v, False, "")
     End Function
 

@@ -3,8 +3,19 @@ Option Strict On
 ' What the mouse does on the canvas: place a new body, delete one, carry one (right button) or
 ' push one with the cue (left button).
 Partial Public NotInheritable Class SimulationPresenter
+    ''' <summary>How far from the click a new body may be moved to find room, in its own sizes (at least <see cref="MinPlacementReach"/>).</summary>
+    Private Const PlacementReachSizes As Double = 3.0
+    ''' <summary>The least distance searched for room around a click, m.</summary>
+    Private Const MinPlacementReach As Double = 0.5
+    ''' <summary>
+    ''' How fast a ball carried while time runs may follow the cursor, in container diagonals per
+    ''' second of real time: a flick of the mouse does not fire the balls it meets across the room.
+    ''' </summary>
+    Private Const CarryDiagonalsPerSecond As Double = 2.0
+
     Private _dragged As Shape
     Private _grabOffset As Vector ' body reference point minus cursor, m
+    Private _carryGoal As Vector ' where the cursor wants the carried body's reference point, m
     Private _aimCursor As Vector
 
     ''' <summary>The body waiting to be placed, or Nothing.</summary>
@@ -35,66 +46,100 @@ Partial Public NotInheritable Class SimulationPresenter
         End Get
     End Property
 
-    ''' <summary>"J = 2.40 N·s, Δv = 1.20 m/s" while aiming, "" otherwise.</summary>
+    ''' <summary>"J = 2.40 N·s   Δv = J/m = 1.20 m/s" while aiming, "" otherwise.</summary>
     Public ReadOnly Property CueLabel As String
         Get
             If AimedCircle Is Nothing Then Return ""
             Dim j = CueImpulse.Length
-            Return "J = " & Units.Num(j) & " N·s   Δv = J/m = " & Units.Num(j * AimedCircle.InverseMass) & " m/s"
+            Return "J = " & Units.Quantity(j, "N·s") & "   Δv = J/m = " & Units.Quantity(j * AimedCircle.InverseMass, "m/s")
         End Get
     End Property
 
-    ''' <summary>Asks for a circle from the typed radius (m) and mass (kg); it then follows the cursor until a click.</summary>
+    ''' <summary>Whether the body waiting to be placed could go where the cursor is now (the preview is drawn red when not).</summary>
+    Public ReadOnly Property DraftFits As Boolean
+        Get
+            If Draft Is Nothing OrElse Not Draft.HasCentre Then Return True
+            Dim body = Draft.Build(Draft.Centre)
+            Return Placement.IsFree(World, body, Vector.Zero)
+        End Get
+    End Property
+
+    ''' <summary>Asks for a circle from the typed radius (m), mass (kg) and Fixed box; it then follows the cursor until a click.</summary>
+    Public Sub BeginAddCircle()
+        BeginAddCircle(Inputs.RadiusText, Inputs.MassText, Inputs.IsFixed)
+    End Sub
+
+    ''' <summary>Asks for a circle of the given radius (m) and mass (kg); it then follows the cursor until a click.</summary>
     Public Sub BeginAddCircle(radiusText As String, massText As String, isFixed As Boolean)
         If Draft IsNot Nothing Then
             ShowMessage(InputLimits.SpawnFirstMessage)
             Return
         End If
-        Dim r = NumberInput.ReadPositive(radiusText, "radius (m)", InputLimits.MaxRadius)
-        ' A fixed circle has no mass to ask for.
-        Dim m = If(isFixed, NumberInput.ReadPositive("1", "mass (kg)", InputLimits.MaxMass), NumberInput.ReadPositive(massText, "mass (kg)", InputLimits.MaxMass))
+        Inputs.RadiusText = radiusText
+        Inputs.MassText = massText
         Inputs.IsFixed = isFixed
-        If Not r.IsValid OrElse Not m.IsValid Then
-            ShowMessage(InputLimits.CircleMessage & " " & Problems(r, m))
-            Return
-        End If
-        Inputs.RadiusText = Units.Input(r.Value)
-        If Not isFixed Then Inputs.MassText = Units.Input(m.Value)
-        _Draft = BodyDraft.ForCircle(r.Value, m.Value, isFixed, _colours.NextColour())
-        EndGestures()
-        _Mode = ClickMode.Move
-        Dim clamped = ClampNote(("radius", r, InputLimits.MaxRadius, "m"), ("mass", If(isFixed, Nothing, CType(m, NumberInput?)), InputLimits.MaxMass, "kg"))
-        Emit("adding " & If(isFixed, "fixed ", "") & "circle r " & Units.Num(r.Value, 3) & " m" & If(isFixed, "", " m " & Units.Num(m.Value, 3) & " kg"))
-        ShowMessage(clamped & "Click on the canvas to place the circle (Esc cancels).")
-        _window.ShowSettings()
+        Guarded(
+            Sub()
+                Dim r = NumberInput.ReadPositive(radiusText, "radius (m)", InputLimits.MaxRadius, InputLimits.MinRadius)
+                ' A fixed circle has no mass to ask for.
+                Dim m = If(isFixed, NumberInput.ReadPositive("1", "mass (kg)", InputLimits.MaxMass),
+                                    NumberInput.ReadPositive(massText, "mass (kg)", InputLimits.MaxMass, InputLimits.MinMass))
+                If Not r.IsValid OrElse Not m.IsValid Then
+                    ShowMessage(InputLimits.CircleMessage & " " & Problems(r, m))
+                    Return
+                End If
+                ' The boxes keep what was typed; only a value brought to a limit is written back (and said).
+                If r.WasClamped Then Inputs.RadiusText = Units.Input(r.Value)
+                If m.WasClamped AndAlso Not isFixed Then Inputs.MassText = Units.Input(m.Value)
+                If r.WasClamped OrElse (m.WasClamped AndAlso Not isFixed) Then _window.ShowInputs()
+                _Draft = BodyDraft.ForCircle(r.Value, m.Value, isFixed, _colours.NextColour())
+                EndGestures()
+                _Mode = ClickMode.Move
+                Dim clamped = ClampNote(("radius", r, "m"), ("mass", If(isFixed, Nothing, CType(m, NumberInput?)), "kg"))
+                Emit("adding " & If(isFixed, "fixed ", "") & "circle r " & Units.Num(r.Value, 3) & " m" & If(isFixed, "", " m " & Units.Num(m.Value, 3) & " kg"))
+                ShowMessage(clamped & "Click on the canvas to place the circle (Esc cancels).")
+                _window.ShowSettings()
+            End Sub)
     End Sub
 
-    ''' <summary>Asks for a fixed rectangle from the typed width and height, m; it then follows the cursor until a click.</summary>
+    ''' <summary>Asks for a fixed rectangle from the typed width and height (m); it then follows the cursor until a click.</summary>
+    Public Sub BeginAddRectangle()
+        BeginAddRectangle(Inputs.WidthText, Inputs.HeightText)
+    End Sub
+
+    ''' <summary>Asks for a fixed rectangle of the given width and height, m; it then follows the cursor until a click.</summary>
     Public Sub BeginAddRectangle(widthText As String, heightText As String)
         If Draft IsNot Nothing Then
             ShowMessage(InputLimits.SpawnFirstMessage)
             Return
         End If
-        Dim w = NumberInput.ReadPositive(widthText, "width (m)", InputLimits.MaxSide)
-        Dim h = NumberInput.ReadPositive(heightText, "height (m)", InputLimits.MaxSide)
-        If Not w.IsValid OrElse Not h.IsValid Then
-            ShowMessage(InputLimits.RectangleMessage & " " & Problems(w, h))
-            Return
-        End If
-        Inputs.WidthText = Units.Input(w.Value)
-        Inputs.HeightText = Units.Input(h.Value)
-        _Draft = BodyDraft.ForRectangle(w.Value, h.Value, _colours.NextColour())
-        EndGestures()
-        _Mode = ClickMode.Move
-        Dim clamped = ClampNote(("width", w, InputLimits.MaxSide, "m"), ("height", h, InputLimits.MaxSide, "m"))
-        Emit("adding rectangle " & Units.Num(w.Value, 3) & " x " & Units.Num(h.Value, 3) & " m")
-        ShowMessage(clamped & "Click on the canvas to place the rectangle (Esc cancels).")
-        _window.ShowSettings()
+        Inputs.WidthText = widthText
+        Inputs.HeightText = heightText
+        Guarded(
+            Sub()
+                Dim w = NumberInput.ReadPositive(widthText, "width (m)", InputLimits.MaxSide, InputLimits.MinSide)
+                Dim h = NumberInput.ReadPositive(heightText, "height (m)", InputLimits.MaxSide, InputLimits.MinSide)
+                If Not w.IsValid OrElse Not h.IsValid Then
+                    ShowMessage(InputLimits.RectangleMessage & " " & Problems(w, h))
+                    Return
+                End If
+                If w.WasClamped Then Inputs.WidthText = Units.Input(w.Value)
+                If h.WasClamped Then Inputs.HeightText = Units.Input(h.Value)
+                If w.WasClamped OrElse h.WasClamped Then _window.ShowInputs()
+                _Draft = BodyDraft.ForRectangle(w.Value, h.Value, _colours.NextColour())
+                EndGestures()
+                _Mode = ClickMode.Move
+                Dim clamped = ClampNote(("width", w, "m"), ("height", h, "m"))
+                Emit("adding rectangle " & Units.Num(w.Value, 3) & " x " & Units.Num(h.Value, 3) & " m")
+                ShowMessage(clamped & "Click on the canvas to place the rectangle (Esc cancels).")
+                _window.ShowSettings()
+            End Sub)
     End Sub
 
-    Private Shared Function ClampNote(ParamArray fields As (Name As String, Input As NumberInput?, Max As Double, Unit As String)()) As String
+    ''' <summary>"radius set to the maximum, 2 m. " for each value brought to a limit; "" when none was.</summary>
+    Private Shared Function ClampNote(ParamArray fields As (Name As String, Input As NumberInput?, Unit As String)()) As String
         Dim notes = fields.Where(Function(f) f.Input.HasValue AndAlso f.Input.Value.WasClamped).
-            Select(Function(f) f.Name & " set to the maximum, " & Units.Num(f.Max, 0) & " " & f.Unit).ToList()
+            Select(Function(f) f.Name & " set to the " & If(f.Input.Value.WasRaised, "minimum", "maximum") & ", " & Units.Sig(f.Input.Value.Value) & " " & f.Unit).ToList()
         If notes.Count = 0 Then Return ""
         Return String.Join(", ", notes) & ". "
     End Function
@@ -110,57 +155,70 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>A mouse button went down on the canvas at (x, y) px.</summary>
     Public Sub PointerDown(button As PointerButton, x As Double, y As Double)
-        Dim p = View.ToWorld(x, y)
-        If Not p.IsFinite Then Return
-        If Draft IsNot Nothing Then
-            If button = PointerButton.Left Then Place(p)
-            Return
-        End If
-        Dim body = BodyAt(p)
-        If button = PointerButton.Left Then
-            If Mode = ClickMode.Delete Then
-                If body IsNot Nothing Then Delete(body)
-                Return
-            End If
-            Dim c = TryCast(body, Circle)
-            If c IsNot Nothing AndAlso Not c.IsFixed AndAlso _dragged Is Nothing Then
-                _AimedCircle = c
-                _aimCursor = p
-                Emit("aiming at " & c.Id)
-            End If
-        ElseIf button = PointerButton.Right AndAlso body IsNot Nothing AndAlso AimedCircle Is Nothing AndAlso Mode = ClickMode.Move Then
-            BeginCarry(body, p)
-        End If
+        Guarded(
+            Sub()
+                Dim p = View.ToWorld(x, y)
+                If Not p.IsFinite Then Return
+                If Draft IsNot Nothing Then
+                    If button = PointerButton.Left Then Place(p)
+                    Return
+                End If
+                Dim body = BodyAt(p)
+                If button = PointerButton.Left Then
+                    If Mode = ClickMode.Delete Then
+                        If body IsNot Nothing Then Delete(body)
+                        Return
+                    End If
+                    Dim c = TryCast(body, Circle)
+                    If c IsNot Nothing AndAlso Not c.IsFixed AndAlso _dragged Is Nothing Then
+                        _AimedCircle = c
+                        _aimCursor = p
+                        Emit("aiming at " & c.Id)
+                    End If
+                ElseIf button = PointerButton.Right AndAlso body IsNot Nothing AndAlso AimedCircle Is Nothing AndAlso Mode = ClickMode.Move Then
+                    BeginCarry(body, p)
+                End If
+            End Sub)
     End Sub
 
     ''' <summary>The mouse moved over the canvas to (x, y) px.</summary>
     Public Sub PointerMove(x As Double, y As Double)
-        Dim p = View.ToWorld(x, y)
-        If Not p.IsFinite Then Return
-        If Draft IsNot Nothing Then
-            Draft.Centre = p
-            Draft.HasCentre = True
-        End If
-        If AimedCircle IsNot Nothing Then _aimCursor = p
-        If _dragged IsNot Nothing Then Carry(p)
+        Guarded(
+            Sub()
+                Dim p = View.ToWorld(x, y)
+                If Not p.IsFinite Then Return
+                If Draft IsNot Nothing Then
+                    Draft.Centre = p
+                    Draft.HasCentre = True
+                End If
+                If AimedCircle IsNot Nothing Then _aimCursor = p
+                If _dragged IsNot Nothing Then
+                    _carryGoal = p + _grabOffset
+                    ' While time runs, a movable ball follows in the frames (see CarryTowardsCursor); otherwise at once.
+                    If Not IsCarriedByEngine Then CarryTo(_carryGoal, Double.PositiveInfinity)
+                End If
+            End Sub)
     End Sub
 
     ''' <summary>A mouse button came up at (x, y) px.</summary>
     Public Sub PointerUp(button As PointerButton, x As Double, y As Double)
-        Dim p = View.ToWorld(x, y)
-        If button = PointerButton.Left AndAlso AimedCircle IsNot Nothing Then
-            If p.IsFinite Then _aimCursor = p
-            Fire()
-        ElseIf button = PointerButton.Right AndAlso _dragged IsNot Nothing Then
-            If p.IsFinite Then Carry(p)
-            EndCarry()
-        End If
+        Guarded(
+            Sub()
+                Dim p = View.ToWorld(x, y)
+                If button = PointerButton.Left AndAlso AimedCircle IsNot Nothing Then
+                    If p.IsFinite Then _aimCursor = p
+                    Fire()
+                ElseIf button = PointerButton.Right AndAlso _dragged IsNot Nothing Then
+                    If p.IsFinite AndAlso Not IsCarriedByEngine Then CarryTo(p + _grabOffset, Double.PositiveInfinity)
+                    EndCarry()
+                End If
+            End Sub)
     End Sub
 
     ''' <summary>The topmost body under point <paramref name="p"/> (m): circles over rectangles, later over earlier.</summary>
     Public Function BodyAt(p As Vector) As Shape
         ' A few pixels of slack so that small balls can still be picked on a projector.
-        Dim slack = 4.0 / View.Scale
+        Dim slack = 4.0 * ScreenScale / View.Scale
         Dim circles = World.Circles
         For i = circles.Count - 1 To 0 Step -1
             Dim c = circles(i)
@@ -175,28 +233,47 @@ Partial Public NotInheritable Class SimulationPresenter
         Return Nothing
     End Function
 
+    ''' <summary>
+    ''' Puts the body waiting to be placed where the teacher clicked, or, when it would overlap a body
+    ''' it collides with there, at the nearest free place and says so; when there is no room near the
+    ''' click it stays on the cursor and the message says why.
+    ''' </summary>
     Private Sub Place(p As Vector)
         Dim body = Draft.Build(p)
-        Try
-            World.Add(body)
-        Catch ex As ArgumentException
-            ' For example a ball wider than the container: say so, and keep it on the cursor (Esc cancels).
-            ShowMessage("It cannot go there: " & ex.Message & ".")
+        Dim size = Math.Max(Draft.Width, Draft.Height)
+        Dim reach = Math.Max(MinPlacementReach, PlacementReachSizes * size)
+        Dim clash = Placement.FirstOverlap(World, body, Vector.Zero)
+        Dim place = Placement.NearestFree(World, body, Vector.Zero, reach)
+        If Not place.HasValue Then
+            Dim why = If(clash IsNot Nothing, "it would overlap " & Describe(clash), "it does not fit in the container")
+            ShowMessage("There is no room for the " & Draft.KindName & " there: " & why & ". Click on a free place (Esc cancels).")
             Return
-        End Try
+        End If
+        Dim moved = place.Value.Length
+        body = Draft.Build(p + place.Value)
+        World.Add(body)
         _Draft = Nothing
-        Emit("placed " & If(TypeOf body Is Circle, "circle", "rectangle") & " " & body.Id & " at " & Units.Pair(Centre(body), 3))
-        ShowMessage("")
-        _window.ShowBodies()
+        Emit("placed " & If(TypeOf body Is Circle, "circle", "rectangle") & " " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
+        If clash IsNot Nothing AndAlso moved > Placement.Tolerance Then
+            ShowMessage("Placed " & Units.Quantity(moved, "m") & " from the click, at the nearest free place: there it would have overlapped " & Describe(clash) & ".")
+        Else
+            ShowMessage("")
+        End If
+        TakeSnapshot()
         _window.ShowSettings()
     End Sub
+
+    ''' <summary>"circle 3", "fixed rectangle table": the kind of body and its id, for messages.</summary>
+    Private Shared Function Describe(body As Shape) As String
+        Return If(body.IsFixed, "fixed ", "") & body.GetType().Name.ToLowerInvariant() & " " & body.Id
+    End Function
 
     Private Sub Delete(body As Shape)
         If body Is _dragged Then EndCarry()
         If body Is AimedCircle Then _AimedCircle = Nothing
         World.Remove(body)
         Emit("deleted " & body.Id)
-        _window.ShowBodies()
+        TakeSnapshot()
     End Sub
 
     Private Sub Fire()
@@ -210,45 +287,86 @@ Partial Public NotInheritable Class SimulationPresenter
         End If
         World.ApplyImpulse(c, j)
         Emit("fired " & c.Id & " J " & Units.Pair(j, 3) & " N·s dv " & Units.Pair(j * c.InverseMass, 3) & " m/s v " & Units.Pair(c.Velocity, 3) & " m/s")
+        ' The table, the totals and the arrow all show the new velocity at once, paused or not.
+        TakeSnapshot()
     End Sub
+
+    ''' <summary>True while a movable body is carried with time running: the engine moves it (balls that meet it bounce off).</summary>
+    Private ReadOnly Property IsCarriedByEngine As Boolean
+        Get
+            Return _dragged IsNot Nothing AndAlso Not _dragged.IsFixed AndAlso Not IsPaused
+        End Get
+    End Property
 
     Private Sub BeginCarry(body As Shape, p As Vector)
         _dragged = body
-        _grabOffset = Reference(body) - p
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing AndAlso Not c.IsFixed AndAlso Not IsPaused Then World.BeginDrag(c)
-        Emit("drag start " & body.Id & " at " & Units.Pair(Centre(body), 3))
+        _grabOffset = body.Position - p
+        _carryGoal = body.Position
+        If Not body.IsFixed AndAlso Not IsPaused Then World.BeginDrag(body)
+        Emit("drag start " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
     End Sub
 
-    Private Sub Carry(p As Vector)
-        Dim target = p + _grabOffset
-        Dim c = TryCast(_dragged, Circle)
-        If c IsNot Nothing AndAlso Not c.IsFixed Then
-            If World.DraggedCircle Is c Then World.DragTo(target) Else World.SetPosition(c, target)
+    ''' <summary>Once a frame while time runs: the carried body heads for the cursor, as far as it may this frame.</summary>
+    Private Sub CarryTowardsCursor(realSeconds As Double)
+        If Not IsCarriedByEngine Then Return
+        Dim diagonal = Math.Sqrt(World.Width * World.Width + World.Height * World.Height)
+        CarryTo(_carryGoal, CarryDiagonalsPerSecond * diagonal * realSeconds, realSeconds * Speed)
+    End Sub
+
+    ''' <summary>
+    ''' Moves the carried body towards <paramref name="goal"/> (its reference point, m), at most
+    ''' <paramref name="maxStep"/> metres, only as far as <see cref="CarryRule"/> lets it go in a
+    ''' frame of <paramref name="frameSeconds"/> simulated seconds (0: at once, nothing else moving).
+    ''' </summary>
+    Private Sub CarryTo(goal As Vector, maxStep As Double, Optional frameSeconds As Double = 0)
+        Dim body = _dragged
+        Dim from = body.Position
+        Dim wanted = goal - from
+        If wanted.Length > maxStep Then wanted = wanted * (maxStep / wanted.Length)
+        Dim reached = CarryRule.Reach(World, body, wanted, frameSeconds)
+        If Not body.IsFixed Then
+            If IsCarriedByEngine Then
+                World.DragTo(from + reached)
+            Else
+                World.SetPosition(body, from + reached)
+                TakeSnapshot()
+            End If
             Return
         End If
-        ' The engine moves only movable circles, so a fixed body is carried by replacing it with
-        ' an identical one at the new place (same id and colour).
-        Dim moved As Shape
-        If c IsNot Nothing Then
-            moved = Circle.CreateFixed(target, c.Radius, c.Id)
-        Else
-            Dim r = DirectCast(_dragged, Rectangle)
-            moved = New Rectangle(target, r.Width, r.Height, r.Id)
-        End If
-        moved.Color = _dragged.Color
-        World.Replace(_dragged, moved) ' in its own place: it keeps its row in the tables
+        ' The engine never moves a fixed body, so it is carried by putting an identical one in its
+        ' place at the new position (same id and colour, same row in the tables).
+        If reached.LengthSquared = 0 Then Return
+        Dim moved = MovedCopy(body, reached)
+        moved.Color = body.Color
+        World.Replace(body, moved)
         _dragged = moved
+        TakeSnapshot()
     End Sub
+
+    ''' <summary>A fixed body like <paramref name="body"/>, <paramref name="offset"/> m away: the one place that builds each kind.</summary>
+    Private Shared Function MovedCopy(body As Shape, offset As Vector) As Shape
+        Select Case body.Kind
+            Case ShapeKind.Circle
+                Return Circle.CreateFixed(body.Position + offset, DirectCast(body, Circle).Radius, body.Id)
+            Case ShapeKind.Rectangle
+                Dim r = DirectCast(body, Rectangle)
+                Return New Rectangle(r.Position + offset, r.Width, r.Height, r.Id)
+            Case ShapeKind.Segment
+                Dim s = DirectCast(body, Segment)
+                Return New Segment(s.StartPoint + offset, s.EndPoint + offset, s.Id)
+            Case Else
+                Dim corners = DirectCast(body, Polygon).Vertices.Select(Function(v) v + offset).ToArray()
+                Return Polygon.CreateFixed(corners, body.Id)
+        End Select
+    End Function
 
     Private Sub EndCarry()
         Dim body = _dragged
         _dragged = Nothing
-        If World.DraggedCircle IsNot Nothing Then World.EndDrag(Vector.Zero)
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing AndAlso Not c.IsFixed AndAlso World.Bodies.Contains(c) Then World.SetVelocity(c, Vector.Zero)
-        Emit("drag end " & body.Id & " at " & Units.Pair(Centre(body), 3))
-        _window.ShowBodies()
+        If World.DraggedBody IsNot Nothing Then World.EndDrag(Vector.Zero)
+        If Not body.IsFixed AndAlso World.Bodies.Contains(body) Then World.SetVelocity(body, Vector.Zero)
+        Emit("drag end " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
+        TakeSnapshot()
     End Sub
 
     ''' <summary>Ends any drag or aim in progress (before a reset, a mode change or a new scene).</summary>
@@ -256,19 +374,4 @@ Partial Public NotInheritable Class SimulationPresenter
         _AimedCircle = Nothing
         If _dragged IsNot Nothing Then EndCarry()
     End Sub
-
-    ''' <summary>Where a body is named from: a circle's centre, a rectangle's centre, m.</summary>
-    Private Shared Function Centre(body As Shape) As Vector
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing Then Return c.Position
-        Dim r = DirectCast(body, Rectangle)
-        Return New Vector(r.Position.X + r.Width / 2, r.Position.Y + r.Height / 2)
-    End Function
-
-    ''' <summary>The point a body is moved by: a circle's centre, a rectangle's lower-left corner, m.</summary>
-    Private Shared Function Reference(body As Shape) As Vector
-        Dim c = TryCast(body, Circle)
-        If c IsNot Nothing Then Return c.Position
-        Return DirectCast(body, Rectangle).Position
-    End Function
 End Class

@@ -1,6 +1,5 @@
 Option Strict On
 
-
 ' Opening and saving scene files (physics-scene/1) through the ISceneStore.
 Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>True when Open and Save can work (a scene store is present).</summary>
@@ -9,6 +8,9 @@ Partial Public NotInheritable Class SimulationPresenter
             Return SceneStore IsNot Nothing
         End Get
     End Property
+
+    ''' <summary>The folder the Open and Save dialogs start in: the example scenes at first, then the last one used.</summary>
+    Public Property SceneFolder As String
 
     ''' <summary>Opens the scene file at <paramref name="path"/>; on any problem shows a message and keeps the current scene.</summary>
     Public Sub OpenScene(path As String)
@@ -23,16 +25,26 @@ Partial Public NotInheritable Class SimulationPresenter
             ShowMessage("Could not open " & SafeName(path) & ": " & Reason(ex, path))
             Return
         End Try
-        EndGestures()
-        _Draft = Nothing
-        Attach(loaded)
-        Emit("opened " & SafeName(path) & ": " & loaded.Bodies.Count & " bodies")
-        ShowMessage("Opened " & SafeName(path) & ".")
-        _window.ShowSettings()
-        _window.ShowBodies()
+        Dim tooMuch = SceneLimits.Problem(loaded)
+        If tooMuch IsNot Nothing Then
+            ShowMessage("Could not open " & SafeName(path) & ": " & tooMuch & ". The scene on screen is kept.")
+            Return
+        End If
+        Remember(path)
+        Guarded(
+            Sub()
+                EndGestures()
+                _Draft = Nothing
+                Attach(loaded)
+                Emit("opened " & SafeName(path) & ": " & loaded.Bodies.Count & " bodies")
+                ShowMessage("Opened " & SafeName(path) & "." & If(loaded.Walls, "", " This scene has no walls: balls can leave the box."))
+                TakeSnapshot()
+                _window.ShowInputs()
+                _window.ShowSettings()
+            End Sub)
     End Sub
 
-    ''' <summary>Saves the scene to <paramref name="path"/>; on any problem shows a message.</summary>
+    ''' <summary>Saves the scene to <paramref name="path"/>; on any problem shows a message naming the file and why.</summary>
     Public Sub SaveScene(path As String)
         If SceneStore Is Nothing Then
             ShowMessage("Saving scene files is not available in this build.")
@@ -44,8 +56,18 @@ Partial Public NotInheritable Class SimulationPresenter
             ShowMessage("Could not save " & SafeName(path) & ": " & Reason(ex, path))
             Return
         End Try
+        Remember(path)
         Emit("saved " & SafeName(path) & ": " & World.Bodies.Count & " bodies")
         ShowMessage("Saved " & SafeName(path) & ".")
+    End Sub
+
+    Private Sub Remember(path As String)
+        Try
+            Dim folder = IO.Path.GetDirectoryName(IO.Path.GetFullPath(path))
+            If Not String.IsNullOrEmpty(folder) Then SceneFolder = folder
+        Catch ex As Exception When TypeOf ex Is ArgumentException OrElse TypeOf ex Is NotSupportedException OrElse TypeOf ex Is IO.PathTooLongException OrElse TypeOf ex Is Security.SecurityException
+            ' Keep the folder there was.
+        End Try
     End Sub
 
     ''' <summary>Every exception a bad file or path can raise; programming errors (null references) still surface.</summary>
@@ -83,9 +105,5 @@ Partial Public NotInheritable Class SimulationPresenter
         Catch ex As Security.SecurityException
             Return Nothing
         End Try
-    End Function
-
-    Private Shared Function OneLine(text As String) As String
-        Return If(text, "").Replace(vbCr, " ").Replace(vbLf, " ").Trim()
     End Function
 End Class

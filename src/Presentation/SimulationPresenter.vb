@@ -3,7 +3,8 @@ Option Strict On
 ''' <summary>
 ''' Sits between the window and the engine (Passive View): the form forwards the teacher's actions
 ''' here, this decides what they mean, changes the world and tells the view what to show. Every
-''' behaviour of the app is a method here, so tests drive it without a window.
+''' behaviour of the app is a method here, so tests drive it without a window. The window reads
+''' what to show from here too (labels, slider positions, table rows, totals), never from the world.
 ''' </summary>
 Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Gravity after a reset, m/s².</summary>
@@ -12,16 +13,19 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Const DefaultRestitution As Double = 1.0
     ''' <summary>The longest real time one frame may advance, s: after a stall the simulation slows rather than jumps.</summary>
     Public Const MaxFrameSeconds As Double = 0.1
+    ''' <summary>Real time between snapshots of the tables while time runs, s (about ten a second: readable, and cheap).</summary>
+    Public Const SnapshotSeconds As Double = 0.1
 
     Private ReadOnly _window As ISimulationView
     Private ReadOnly _colours As BodyColours
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
+    Private _sinceSnapshot As Double
 
     ''' <param name="view">the window (or a test's recorder)</param>
     ''' <param name="store">reads and writes scene files; Nothing when this build has none</param>
     ''' <param name="world">the opening scene; Nothing for <see cref="Scenarios.Demo"/></param>
-    ''' <param name="colourSeed">seed of the random body colours</param>
+    ''' <param name="colourSeed">seed of the random colours of new bodies</param>
     Public Sub New(view As ISimulationView, Optional store As ISceneStore = Nothing, Optional world As World = Nothing,
                    Optional colourSeed As Integer = 12345)
         If view Is Nothing Then Throw New ArgumentNullException(NameOf(view))
@@ -31,7 +35,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Attach(If(world, Scenarios.Demo()))
     End Sub
 
-    ''' <summary>The world being shown. Replaced when a scene is opened.</summary>
+    ''' <summary>The world being shown. Replaced when a scene is opened. The window draws it; it never changes it.</summary>
     Public ReadOnly Property World As World
 
     ''' <summary>Reads and writes scene files; Nothing disables Open and Save with a message.</summary>
@@ -43,7 +47,7 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The last collisions, newest first.</summary>
     Public ReadOnly Property Log As New CollisionLog()
 
-    ''' <summary>What the input boxes should show.</summary>
+    ''' <summary>The text of the input boxes, as typed.</summary>
     Public ReadOnly Property Inputs As New BodyInputs()
 
     ''' <summary>What the message box shows when there is no message: how to use the mouse.</summary>
@@ -71,13 +75,13 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Bigger text everywhere, for projectors.</summary>
     Public ReadOnly Property LargeFonts As Boolean
 
-    ''' <summary>The dark, high-contrast canvas.</summary>
+    ''' <summary>The dark, high-contrast theme (canvas and controls).</summary>
     Public ReadOnly Property HighContrast As Boolean
 
     ''' <summary>Whether velocity arrows (with components) are drawn.</summary>
     Public ReadOnly Property ShowArrows As Boolean = True
 
-    ''' <summary>The canvas colours in use.</summary>
+    ''' <summary>The colours in use.</summary>
     Public ReadOnly Property Theme As Theme
         Get
             Return If(HighContrast, Theme.Dark, Theme.Light)
@@ -87,26 +91,89 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Metres ↔ canvas pixels for the current container and canvas size.</summary>
     Public ReadOnly Property View As ViewTransform
 
+    ''' <summary>The velocity arrows' scale, following the scene.</summary>
+    Public ReadOnly Property Arrows As New ArrowScale()
+
+    ''' <summary>The tables and totals of the last snapshot: what the window shows under the canvas.</summary>
+    Public ReadOnly Property Snapshot As TableSnapshot
+
+    ''' <summary>The tables under the canvas, in tab order.</summary>
+    Public Shared ReadOnly Property Tables As IReadOnlyList(Of BodyTable)
+        Get
+            Return BodyTable.All
+        End Get
+    End Property
+
+    ''' <summary>The totals line as one string (the items of <see cref="Snapshot"/>, spaced).</summary>
+    Public ReadOnly Property TotalsText As String
+        Get
+            Return String.Join("    ", Snapshot.Totals)
+        End Get
+    End Property
+
+    ''' <summary>Whether the container's sides reflect balls (drawn solid) or not (drawn faint and dashed).</summary>
+    Public ReadOnly Property HasWalls As Boolean
+        Get
+            Return World.Walls
+        End Get
+    End Property
+
     ''' <summary>Called once per frame with the real time since the last frame, s.</summary>
     Public Sub Tick(realSeconds As Double)
-        If IsPaused OrElse Not (realSeconds > 0) Then Return
-        Try
-            World.Advance(Math.Min(realSeconds, MaxFrameSeconds) * Speed)
-        Catch ex As ArgumentException
-            Fail("The simulation stopped: " & ex.Message)
-        Catch ex As InvalidOperationException
-            Fail("The simulation stopped: " & ex.Message)
-        Catch ex As ArithmeticException
-            ' Overflow or a non-finite number from an extreme scene: pause with a message, never crash.
-            Fail("The simulation stopped: " & ex.Message)
-        End Try
-        Log.EndFrame()
+        If Not (realSeconds > 0) OrElse Double.IsInfinity(realSeconds) Then Return
+        Dim dt = Math.Min(realSeconds, MaxFrameSeconds)
+        If Not IsPaused Then
+            Try
+                CarryTowardsCursor(dt)
+                World.Advance(dt * Speed)
+            Catch ex As ArgumentException
+                Fail("The simulation stopped: " & ex.Message)
+            Catch ex As InvalidOperationException
+                Fail("The simulation stopped: " & ex.Message)
+            Catch ex As ArithmeticException
+                ' Overflow or a non-finite number from an extreme scene: pause with a message, never crash.
+                Fail("The simulation stopped: " & ex.Message)
+            End Try
+            Log.EndFrame()
+        End If
+        _sinceSnapshot += realSeconds
+        If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
     End Sub
 
     Private Sub Fail(text As String)
         _IsPaused = True
+        EndGestures()
         ShowMessage(text)
+        TakeSnapshot()
         _window.ShowSettings()
+    End Sub
+
+    ''' <summary>
+    ''' Runs one of the teacher's actions. Anything the engine refuses becomes a message, never a
+    ''' crash; the tables are brought up to date either way.
+    ''' </summary>
+    Private Sub Guarded(action As Action)
+        Try
+            action()
+        Catch ex As ArgumentException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        Catch ex As InvalidOperationException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        Catch ex As ArithmeticException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        Catch ex As NotSupportedException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        Catch ex As Scenes.SceneFormatException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        End Try
+    End Sub
+
+    ''' <summary>Copies the world's state for the tables and totals, follows it with the arrows' scale, and tells the window.</summary>
+    Private Sub TakeSnapshot()
+        _sinceSnapshot = 0
+        _Snapshot = TableSnapshot.Take(World, Log.TotalSeen)
+        Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
+        _window.ShowState()
     End Sub
 
     ''' <summary>The canvas changed size, px.</summary>
@@ -116,48 +183,103 @@ Partial Public NotInheritable Class SimulationPresenter
         FitView()
     End Sub
 
-    ''' <summary>Height of the strip under the container that holds the scale bar, px.</summary>
+    ''' <summary>Height of the strip under the container that holds the scale bar and the arrow key, px at 96 dpi.</summary>
     Public Const ScaleStrip As Integer = 34
+
+    ''' <summary>Pixels per 96-dpi pixel of the window's screen (2 at 192 dpi): the strip and margins grow with it.</summary>
+    Public Property ScreenScale As Double = 1.0
+
+    ''' <summary>Height of the scale strip on this screen, px.</summary>
+    Public ReadOnly Property ScaleStripPixels As Integer
+        Get
+            Return CInt(Math.Round(ScaleStrip * ScreenScale * If(LargeFonts, 1.3, 1.0)))
+        End Get
+    End Property
 
     Private Sub FitView()
         ' The container sits above a strip kept free for the scale bar.
-        _View = ViewTransform.Fit(World.Width, World.Height, _canvasWidth, Math.Max(1, _canvasHeight - ScaleStrip), 16)
+        Dim before = _View
+        _View = ViewTransform.Fit(World.Width, World.Height, _canvasWidth, Math.Max(1, _canvasHeight - ScaleStripPixels), CInt(16 * ScreenScale))
+        If before Is Nothing OrElse before.Scale <> _View.Scale OrElse before.OffsetX <> _View.OffsetX OrElse before.OffsetY <> _View.OffsetY Then
+            Emit("view scale " & Units.Num(_View.Scale, 4) & " origin " & Units.Num(_View.OffsetX, 2) & " " & Units.Num(_View.OffsetY, 2))
+        End If
     End Sub
 
     ''' <summary>Pauses or resumes. On pausing, the trace lists every movable body's state.</summary>
     Public Sub TogglePause()
-        _IsPaused = Not _IsPaused
-        ' A body carried across the change keeps following the cursor: while paused it is moved
-        ' directly, while running the engine carries it (so it pushes what it meets).
-        Dim carried = TryCast(_dragged, Circle)
-        If carried IsNot Nothing AndAlso Not carried.IsFixed Then
-            If _IsPaused Then World.EndDrag(Vector.Zero) Else World.BeginDrag(carried)
-        End If
-        If _IsPaused Then
-            Emit("paused t=" & Units.Num(World.Time, 3) & " s")
-            For Each c In World.Circles
-                If Not c.IsFixed Then Emit("body " & c.Id & " at " & Units.Pair(c.Position, 3) & " m v " & Units.Pair(c.Velocity, 3) & " m/s")
-            Next
-        Else
-            Emit("resumed")
-        End If
-        _window.ShowSettings()
+        Guarded(
+            Sub()
+                _IsPaused = Not _IsPaused
+                ' A body carried across the change keeps following the cursor: while paused it is moved
+                ' directly, while running the engine carries it (balls that meet it bounce off).
+                If _dragged IsNot Nothing AndAlso Not _dragged.IsFixed Then
+                    If _IsPaused Then World.EndDrag(Vector.Zero) Else World.BeginDrag(_dragged)
+                End If
+                TakeSnapshot()
+                If _IsPaused Then
+                    Emit("paused t=" & Units.Num(World.Time, 3) & " s")
+                    For Each c In World.Circles
+                        If Not c.IsFixed Then Emit("body " & c.Id & " at " & Units.Pair(c.Position, 3) & " m v " & Units.Pair(c.Velocity, 3) & " m/s")
+                    Next
+                    EmitScreenCheck()
+                Else
+                    Emit("resumed")
+                End If
+                _window.ShowSettings()
+            End Sub)
+    End Sub
+
+    ''' <summary>The gravity slider: its steps (0 to 100 m/s² in hundredths).</summary>
+    Public Shared ReadOnly Property GravitySlider As New SliderScale(GravityMark.Minimum, GravityMark.Maximum, 10000)
+
+    ''' <summary>The restitution slider: 0 to 1 in hundredths.</summary>
+    Public Shared ReadOnly Property RestitutionSlider As New SliderScale(0.0, 1.0, 100)
+
+    ''' <summary>Where the gravity slider's thumb belongs.</summary>
+    Public ReadOnly Property GravityPosition As Integer
+        Get
+            Return GravitySlider.PositionOf(World.Gravity)
+        End Get
+    End Property
+
+    ''' <summary>Where the restitution slider's thumb belongs.</summary>
+    Public ReadOnly Property RestitutionPosition As Integer
+        Get
+            Return RestitutionSlider.PositionOf(World.Restitution)
+        End Get
+    End Property
+
+    ''' <summary>The gravity slider was moved to a position.</summary>
+    Public Sub GravitySliderMoved(position As Integer)
+        SetGravity(GravitySlider.ValueAt(position))
+    End Sub
+
+    ''' <summary>The restitution slider was moved to a position.</summary>
+    Public Sub RestitutionSliderMoved(position As Integer)
+        SetRestitution(RestitutionSlider.ValueAt(position))
     End Sub
 
     ''' <summary>Sets g, m/s², clamped to the slider's range.</summary>
     Public Sub SetGravity(g As Double)
         If Double.IsNaN(g) Then Return
-        World.Gravity = Math.Max(GravityMark.Minimum, Math.Min(GravityMark.Maximum, g))
-        Emit("gravity " & Units.Num(World.Gravity))
-        _window.ShowSettings()
+        Guarded(
+            Sub()
+                World.Gravity = Math.Max(GravityMark.Minimum, Math.Min(GravityMark.Maximum, g))
+                Emit("gravity " & Units.Num(World.Gravity))
+                TakeSnapshot()
+                _window.ShowSettings()
+            End Sub)
     End Sub
 
     ''' <summary>Sets e, clamped to [0, 1].</summary>
     Public Sub SetRestitution(e As Double)
         If Double.IsNaN(e) Then Return
-        World.Restitution = Math.Max(0.0, Math.Min(1.0, e))
-        Emit("restitution " & Units.Num(World.Restitution))
-        _window.ShowSettings()
+        Guarded(
+            Sub()
+                World.Restitution = Math.Max(0.0, Math.Min(1.0, e))
+                Emit("restitution " & Units.Num(World.Restitution))
+                _window.ShowSettings()
+            End Sub)
     End Sub
 
     ''' <summary>Moves the speed slider to position <paramref name="index"/> (clamped).</summary>
@@ -167,66 +289,154 @@ Partial Public NotInheritable Class SimulationPresenter
         _window.ShowSettings()
     End Sub
 
+    ''' <summary>"Speed: 1× (real time)".</summary>
+    Public ReadOnly Property SpeedText As String
+        Get
+            Return "Speed: " & SpeedSteps.Label(Speed)
+        End Get
+    End Property
+
+    ''' <summary>"Gravity g = 9.81 m/s²".</summary>
+    Public ReadOnly Property GravityText As String
+        Get
+            Return "Gravity g = " & Units.Quantity(World.Gravity, "m/s²")
+        End Get
+    End Property
+
+    ''' <summary>"Restitution e = 0.90 (1 = elastic)".</summary>
+    Public ReadOnly Property RestitutionText As String
+        Get
+            Return "Restitution e = " & World.Restitution.ToString("0.00", Globalization.CultureInfo.InvariantCulture) & "  (1 = elastic)"
+        End Get
+    End Property
+
+    ''' <summary>The text of a gravity mark's button: "Moon 1.62".</summary>
+    Public Shared Function GravityMarkText(mark As GravityMark) As String
+        If mark Is Nothing Then Throw New ArgumentNullException(NameOf(mark))
+        Return mark.Name & " " & mark.Value.ToString("0.00", Globalization.CultureInfo.InvariantCulture)
+    End Function
+
     ''' <summary>Removes every body and sets e = 1, g = 9.81 m/s² and real-time speed. The container keeps its size.</summary>
     Public Sub Reset()
-        EndGestures()
-        _Draft = Nothing
-        World.Clear()
-        World.Gravity = DefaultGravity
-        World.Restitution = DefaultRestitution
-        _SpeedIndex = SpeedSteps.RealTimeIndex
-        _Mode = ClickMode.Move
-        Log.Clear()
-        Emit("reset: " & World.Bodies.Count & " bodies, g " & Units.Num(World.Gravity) & ", e " & Units.Num(World.Restitution) & ", speed " & SpeedSteps.Label(Speed))
-        ShowMessage("")
-        _window.ShowSettings()
-        _window.ShowBodies()
+        Guarded(
+            Sub()
+                EndGestures()
+                _Draft = Nothing
+                World.Clear()
+                World.Gravity = DefaultGravity
+                World.Restitution = DefaultRestitution
+                _SpeedIndex = SpeedSteps.RealTimeIndex
+                _Mode = ClickMode.Move
+                Log.Clear()
+                Emit("reset: " & World.Bodies.Count & " bodies, g " & Units.Num(World.Gravity) & ", e " & Units.Num(World.Restitution) & ", speed " & SpeedSteps.Label(Speed))
+                ShowMessage("")
+                TakeSnapshot()
+                _window.ShowSettings()
+            End Sub)
     End Sub
 
     ''' <summary>Switches between moving and deleting.</summary>
     Public Sub ToggleDeleteMode()
-        EndGestures()
-        _Mode = If(_Mode = ClickMode.Delete, ClickMode.Move, ClickMode.Delete)
-        Emit("mode " & If(_Mode = ClickMode.Delete, "delete", "move"))
-        ShowMessage(If(_Mode = ClickMode.Delete, "Delete mode: click a body to remove it. Press Delete mode again to stop.", ""))
+        Guarded(
+            Sub()
+                EndGestures()
+                _Mode = If(_Mode = ClickMode.Delete, ClickMode.Move, ClickMode.Delete)
+                Emit("mode " & If(_Mode = ClickMode.Delete, "delete", "move"))
+                ShowMessage(If(_Mode = ClickMode.Delete, "Delete mode: click a body to remove it. Press Delete mode again to stop.", ""))
+                _window.ShowSettings()
+            End Sub)
+    End Sub
+
+    ''' <summary>A text box changed: keeps what was typed, exactly.</summary>
+    Public Sub InputChanged(field As InputField, text As String)
+        Inputs(field) = text
+    End Sub
+
+    ''' <summary>The Fixed box was ticked or cleared.</summary>
+    Public Sub FixedChanged(isFixed As Boolean)
+        Inputs.IsFixed = isFixed
         _window.ShowSettings()
     End Sub
 
-    ''' <summary>Changes the container's size from the typed width and height, m.</summary>
+    ''' <summary>Changes the container's size from the typed width and height (m).</summary>
+    Public Sub ResizeContainer()
+        ResizeContainer(Inputs.ContainerWidthText, Inputs.ContainerHeightText)
+    End Sub
+
+    ''' <summary>
+    ''' Changes the container's size to the width and height typed (m). A size whose walls would
+    ''' leave the balls no room (a ball wider than the box, or more balls than fit without
+    ''' overlapping) is refused with the reason, and nothing changes; otherwise balls left outside are
+    ''' brought in and overlaps pushed apart at once, so the scene stays sound even while paused.
+    ''' </summary>
     Public Sub ResizeContainer(widthText As String, heightText As String)
-        Dim w = NumberInput.ReadPositive(widthText, "container width (m)", InputLimits.MaxContainer)
-        Dim h = NumberInput.ReadPositive(heightText, "container height (m)", InputLimits.MaxContainer)
-        If Not w.IsValid OrElse Not h.IsValid Then
-            ShowMessage(InputLimits.ContainerMessage & " " & Problems(w, h))
-            Return
-        End If
-        If w.Value < InputLimits.MinContainer OrElse h.Value < InputLimits.MinContainer Then
-            ShowMessage(InputLimits.ContainerMessage & " Each side must be at least " & Units.Num(InputLimits.MinContainer) & " m.")
-            Return
-        End If
+        Inputs.ContainerWidthText = widthText
+        Inputs.ContainerHeightText = heightText
+        Guarded(
+            Sub()
+                Dim w = NumberInput.ReadPositive(widthText, "container width (m)", InputLimits.MaxContainer)
+                Dim h = NumberInput.ReadPositive(heightText, "container height (m)", InputLimits.MaxContainer)
+                If Not w.IsValid OrElse Not h.IsValid Then
+                    ShowMessage(InputLimits.ContainerMessage & " " & Problems(w, h))
+                    Return
+                End If
+                If w.Value < InputLimits.MinContainer OrElse h.Value < InputLimits.MinContainer Then
+                    ShowMessage(InputLimits.ContainerMessage & " Each side must be at least " & Units.Quantity(InputLimits.MinContainer, "m") & ".")
+                    Return
+                End If
+                Dim refusal = ContainerRefusal(w.Value, h.Value)
+                If refusal IsNot Nothing Then
+                    ShowMessage("The container cannot be " & Units.Sig(w.Value) & " m × " & Units.Sig(h.Value) & " m: " & refusal & " It keeps its size.")
+                    Return
+                End If
+                World.Resize(w.Value, h.Value)
+                SettleOverlaps()
+                FitView()
+                If w.WasClamped Then Inputs.ContainerWidthText = Units.Input(w.Value)
+                If h.WasClamped Then Inputs.ContainerHeightText = Units.Input(h.Value)
+                If w.WasClamped OrElse h.WasClamped Then _window.ShowInputs()
+                Emit("container " & Units.Num(w.Value) & " x " & Units.Num(h.Value) & " m")
+                ShowMessage(If(w.WasClamped OrElse h.WasClamped, "The container is at most " & Units.Quantity(InputLimits.MaxContainer, "m") & " on each side: set to the maximum.", ""))
+                TakeSnapshot()
+                _window.ShowSettings()
+            End Sub)
+    End Sub
+
+    ''' <summary>Why the world's balls could not live in a container of w × h m, or Nothing when they can.</summary>
+    Private Function ContainerRefusal(w As Double, h As Double) As String
+        If Not World.Walls Then Return Nothing
+        Dim widest = World.Circles.Where(Function(c) Not c.IsFixed).Select(Function(c) 2 * c.Radius).DefaultIfEmpty(0).Max()
+        If widest > Math.Min(w, h) Then Return "the widest ball is " & Units.Quantity(widest, "m") & " across and would not fit."
+        ' Try it on a copy first: the balls are brought in and pushed apart; if they still overlap, there is no room.
+        Dim trial As World
         Try
-            World.Resize(w.Value, h.Value)
-        Catch ex As ArgumentException
-            ' Smaller than the largest ball: the container keeps its size.
-            ShowMessage(InputLimits.ContainerMessage & " " & ex.Message & ".")
-            Return
+            trial = Scenes.SceneFile.Load(Scenes.SceneFile.Save(World))
+        Catch ex As Scenes.SceneFormatException
+            Return Nothing ' no copy to try it on: the resize itself settles the overlaps
         End Try
-        FitView()
-        Inputs.ContainerWidthText = Units.Num(w.Value)
-        Inputs.ContainerHeightText = Units.Num(h.Value)
-        Emit("container " & Units.Num(w.Value) & " x " & Units.Num(h.Value) & " m")
-        ShowMessage(If(w.WasClamped OrElse h.WasClamped, "The container is at most " & Units.Num(InputLimits.MaxContainer, 0) & " m on each side: clamped.", ""))
-        _window.ShowSettings()
+        trial.Resize(w, h)
+        If OverlapResolver.Resolve(trial) > Placement.Tolerance OrElse Placement.FindProblem(trial) IsNot Nothing Then
+            Dim balls = World.Circles.Where(Function(c) Not c.IsFixed).Count()
+            Return "its " & balls & " balls would not fit in it without overlapping. Remove some balls, or choose a larger size."
+        End If
+        Return Nothing
+    End Function
+
+    ''' <summary>Pushes overlapping balls apart now (after the container shrank), and tells the solver.</summary>
+    Private Sub SettleOverlaps()
+        OverlapResolver.Resolve(World)
+        World.Solver?.Invalidate(Nothing)
     End Sub
 
     ''' <summary>Bigger text, for projectors.</summary>
     Public Sub SetLargeFonts(value As Boolean)
         _LargeFonts = value
         Emit("large fonts " & If(value, "on", "off"))
+        FitView()
         _window.ShowTheme()
     End Sub
 
-    ''' <summary>The dark, high-contrast canvas.</summary>
+    ''' <summary>The dark, high-contrast theme.</summary>
     Public Sub SetHighContrast(value As Boolean)
         _HighContrast = value
         Emit("high contrast " & If(value, "on", "off"))
@@ -240,15 +450,17 @@ Partial Public NotInheritable Class SimulationPresenter
         _window.ShowTheme()
     End Sub
 
-    ''' <summary>The totals line: momentum, kinetic and potential energy of the moving balls, and the collision count.</summary>
-    Public ReadOnly Property TotalsText As String
+    ''' <summary>"❚❚ Pause" or "▶ Resume".</summary>
+    Public ReadOnly Property PauseText As String
         Get
-            Dim p = World.Momentum()
-            Dim ke = World.KineticEnergy()
-            Dim pe = World.PotentialEnergy()
-            Return "t = " & Units.Num(World.Time, 2) & " s    Σp = " & Units.Pair(p) & " kg·m/s  (|Σp| = " & Units.Num(p.Length) & ")    " &
-                "ΣKE = " & Units.Num(ke) & " J    ΣPE = " & Units.Num(pe) & " J    KE + PE = " & Units.Num(ke + pe) & " J    collisions: " &
-                Log.TotalSeen.ToString(Globalization.CultureInfo.InvariantCulture)
+            Return If(IsPaused, "▶ Resume", "❚❚ Pause")
+        End Get
+    End Property
+
+    ''' <summary>"Delete mode" or "Delete mode: ON".</summary>
+    Public ReadOnly Property DeleteModeText As String
+        Get
+            Return If(Mode = ClickMode.Delete, "Delete mode: ON", "Delete mode")
         End Get
     End Property
 
@@ -263,21 +475,49 @@ Partial Public NotInheritable Class SimulationPresenter
         Trace?.Invoke(line)
     End Sub
 
+    ''' <summary>
+    ''' With a trace: a check of the scene and of every text the window shows now, for tests (is any
+    ''' body where a file would refuse it; does any text read "NaN" or "∞").
+    ''' </summary>
+    Private Sub EmitScreenCheck()
+        If Trace Is Nothing Then Return
+        Dim problem = Placement.FindProblem(World)
+        Emit("check scene " & If(problem, "ok"))
+        Dim texts As New List(Of String) From {Message, TotalsText, SpeedText, GravityText, RestitutionText, CueLabel}
+        For t = 0 To Tables.Count - 1
+            For i = 0 To Snapshot.RowCount(t) - 1
+                texts.AddRange(Snapshot.Cells(t, i))
+            Next
+        Next
+        For i = 0 To Log.Count - 1
+            texts.AddRange(Log(i).Cells())
+        Next
+        Dim bad = texts.FirstOrDefault(Function(s) s IsNot Nothing AndAlso (s.Contains("NaN") OrElse s.Contains("∞"c) OrElse s.Contains("not a number")))
+        Emit("check texts " & If(bad Is Nothing, "ok", "bad: " & bad))
+    End Sub
+
     Private Shared Function Problems(ParamArray inputs As NumberInput()) As String
         Return String.Join("; ", inputs.Where(Function(i) Not i.IsValid).Select(Function(i) i.Problem)) & "."
     End Function
 
-    ''' <summary>Makes <paramref name="w"/> the world on show: solver, collision log, colours, view.</summary>
+    Private Shared Function OneLine(text As String) As String
+        Return If(text, "").Replace(vbCr, " ").Replace(vbLf, " ").Trim()
+    End Function
+
+    ''' <summary>Makes <paramref name="w"/> the world on show: solver, collision log, colours, view, tables.</summary>
     Private Sub Attach(w As World)
         w.Solver = SolverFactory.Create("auto")
         For Each b In w.Bodies
-            If String.IsNullOrEmpty(b.Color) Then b.Color = _colours.NextColour()
+            ' A body without a colour in its file gets the same one every time: it follows from the id.
+            If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
         Next
-        w.CollisionListener = Sub(r) Log.Record(r, w.DraggedCircle)
+        w.CollisionListener = Sub(r) Log.Record(r, w.DraggedBody)
         _World = w
         Log.Clear()
-        Inputs.ContainerWidthText = Units.Num(w.Width)
-        Inputs.ContainerHeightText = Units.Num(w.Height)
+        Inputs.ContainerWidthText = Units.Input(w.Width)
+        Inputs.ContainerHeightText = Units.Input(w.Height)
         FitView()
+        _Snapshot = TableSnapshot.Take(w, 0)
+        Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(w.Width, w.Height))
     End Sub
 End Class

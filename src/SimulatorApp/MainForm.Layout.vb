@@ -3,97 +3,152 @@ Imports System.Drawing
 Imports System.Windows.Forms
 Imports PhysicsEngine.Presentation
 
-' Where everything goes: a fixed layout computed from the window size and the font, so it is the
-' same on every machine (and GUI tests can find controls from the --trace output).
+' Where everything goes: a layout computed from the window's size, the screen's DPI and the font,
+' the same on every machine (and GUI tests find the controls from the --trace output). At 96 dpi
+' and normal fonts the side panel fits a 1280 × 720 window without scrolling; when it cannot fit
+' (large fonts on a small screen) it scrolls, and relaying it out keeps where it was scrolled to.
 Partial Friend NotInheritable Class MainForm
     Private _rowY As Integer
     Private _rowX As Integer
     Private _rowWidth As Integer
+    Private ReadOnly _logWidths As New Dictionary(Of Integer, Integer)
 
     ''' <summary>Pixels at 96 dpi to pixels on this screen.</summary>
     Private Function S(px As Double) As Integer
-        Dim f = If(CurrentAutoScaleDimensions.Width > 0, CurrentAutoScaleDimensions.Width / 96.0, 1.0)
+        Dim f = If(_dpi IsNot Nothing, _dpi.Scale, 1.0)
         Return CInt(Math.Round(px * f))
     End Function
 
+    Private _measureBitmap As Bitmap
+    Private _measure As Graphics
+
+    ''' <summary>
+    ''' The size of text as it will be drawn, wrapped at <paramref name="width"/> px when given. It is
+    ''' measured at the DPI GDI+ draws points at: Mono's own measures (Font.Height, TextRenderer) use
+    ''' the DPI it reports, which under a desktop's Xft.dpi is not the one it draws with.
+    ''' </summary>
+    Private Function Measure(text As String, font As Font, Optional width As Integer = 0) As Size
+        If _measure Is Nothing Then
+            _measureBitmap = New Bitmap(1, 1)
+            _measureBitmap.SetResolution(CSng(_dpi.Graphics), CSng(_dpi.Graphics))
+            _measure = Graphics.FromImage(_measureBitmap)
+        End If
+        Dim sz = If(width > 0, _measure.MeasureString(If(text, ""), font, width), _measure.MeasureString(If(text, ""), font))
+        Return New Size(CInt(Math.Ceiling(sz.Width)), CInt(Math.Ceiling(sz.Height)))
+    End Function
+
+    ''' <summary>The height of one line of text in <paramref name="font"/>, px.</summary>
+    Private Function LineHeight(font As Font) As Integer
+        Return Measure("Ag", font).Height
+    End Function
+
+    ''' <summary>The message box's height for its text at the panel's width: up to ten lines, never fewer than two.</summary>
+    Private Function MessageHeight() As Integer
+        Dim width = Math.Max(S(50), RowWidthFor(_side.Width) - S(12))
+        Dim measured = Measure(_message.Text, _message.Font, width).Height
+        Dim line = LineHeight(_message.Font)
+        Return Math.Min(10 * line, Math.Max(2 * line, measured)) + S(12)
+    End Function
+
+    Private Function RowWidthFor(sideWidth As Integer) As Integer
+        Return sideWidth - S(10) - S(22) ' room for the vertical scroll bar
+    End Function
+
     Private Sub ArrangeControls()
+        If _presenter Is Nothing Then Return
         Dim w = ClientSize.Width, h = ClientSize.Height
-        Dim sideWidth = S(If(_presenter.LargeFonts, 480, 420))
-        Dim line = Font.Height
-        Dim canvasHeight = CInt(h * 0.62)
+        Dim large = _presenter.LargeFonts
+        Dim sideWidth = Math.Min(S(If(large, 470, 420)), Math.Max(S(380), CInt(w * 0.36)))
+        Dim line = LineHeight(Font)
+        ' With large fonts the canvas takes more of the height (the tables less), so it grows too.
+        Dim canvasHeight = CInt(h * If(large, 0.68, 0.62))
         _canvas.SetBounds(0, 0, w - sideWidth, canvasHeight)
-        ' With large fonts the totals take two lines rather than being cut short.
-        _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), If(_presenter.LargeFonts, 2 * line + S(8), line + S(10)))
+        Dim totalsLines = If(TotalsFitOnOneLine(w - sideWidth - S(20)), 1, 2)
+        _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), totalsLines * line + S(8))
         Dim tabsTop = _totals.Bottom
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
-        _side.SetBounds(w - sideWidth, 0, sideWidth, h)
-        For Each list In {_circleTable, _rectangleTable}
+        For Each list In _tables
             FitColumns(list, w - sideWidth - S(28))
         Next
-        ' Each log column as wide as its header or a typical entry, whichever is wider; the list scrolls sideways.
-        For i = 0 To _logList.Columns.Count - 1
-            Dim c = _logList.Columns(i)
-            c.Width = Math.Max(TextRenderer.MeasureText(c.Text, _logList.Font).Width, TextRenderer.MeasureText(LogSamples(i), _logList.Font).Width) + S(16)
-        Next
+        FitLogColumns()
 
-        Dim rh = Math.Max(S(30), line + S(12))
-        Dim sliderHeight = Math.Max(S(45), _speed.PreferredSize.Height)
-        Dim pairs = Not _presenter.LargeFonts
+        ' Keep the panel where it was scrolled to: rows are placed relative to its current scroll.
+        Dim scrolled = _side.AutoScrollPosition
+        _side.SuspendLayout()
         _side.AutoScrollPosition = New Point(0, 0)
-        _rowY = S(8)
+        _side.SetBounds(w - sideWidth, 0, sideWidth, h)
+        ' Mono centres a button's caption by the font height it reports, which a desktop's Xft.dpi can
+        ' make larger than the text drawn: rows are tall enough for that too, so captions stay inside.
+        Dim rh = Math.Max(S(26), Math.Max(line + S(9), Font.Height + S(4)))
+        Dim sliderHeight = Math.Max(S(30), line + S(12))
+        _rowY = S(6)
         _rowX = S(10)
-        _rowWidth = sideWidth - S(10) - S(24) ' room for the vertical scroll bar
+        _rowWidth = RowWidthFor(sideWidth)
+        ' Labels and boxes two to a row when every label fits its share; one to a row otherwise (large fonts).
+        Dim fieldUsable = _rowWidth - 3 * S(6)
+        Dim pairs = Not large AndAlso
+            {_radiusLabel, _widthLabel, _boxWidthLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
+            {_massLabel, _heightLabel, _boxHeightLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
 
-        Row(2 * line + S(14), (_message, 1.0))
-        Row(rh + S(6), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
-        Gap()
-        Row(rh, (_speedLabel, 1.0))
+        Row(MessageHeight(), (_message, 1.0))
+        Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
+        Row(line + S(4), (_speedLabel, 1.0))
         Row(sliderHeight, (_speed, 1.0))
-        Row(rh, (_gravityLabel, 1.0))
+        Row(line + S(4), (_gravityLabel, 1.0))
         Row(sliderHeight, (_gravity, 1.0))
-        If pairs Then
+        ' The four planets in one row when their names and values fit there, else in two.
+        Dim quarter = (_rowWidth - 3 * S(6)) \ 4
+        If pairs AndAlso _gravityMarks.All(Function(b) TextFits(b, quarter)) Then
             Row(rh, (_gravityMarks(0), 0.25), (_gravityMarks(1), 0.25), (_gravityMarks(2), 0.25), (_gravityMarks(3), 0.25))
         Else
             Row(rh, (_gravityMarks(0), 0.5), (_gravityMarks(1), 0.5))
             Row(rh, (_gravityMarks(2), 0.5), (_gravityMarks(3), 0.5))
         End If
-        Gap()
-        Row(rh, (_restitutionLabel, 1.0))
+        Row(line + S(4), (_restitutionLabel, 1.0))
         Row(sliderHeight, (_restitution, 1.0))
-        Row(rh, (_addCircleLabel, 1.0))
+        Gap()
         Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
-        Row(rh + S(4), (_fixed, 0.35), (_addCircle, 0.65))
+        Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
         Gap()
-        Row(rh, (_addRectangleLabel, 1.0))
         Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
-        Row(rh + S(4), (Nothing, 0.35), (_addRectangle, 0.65))
+        Row(rh + S(2), (Nothing, 0.35), (_addRectangle, 0.65))
         Gap()
-        Row(rh, (_containerLabel, 1.0))
         Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
-        Row(rh + S(4), (Nothing, 0.35), (_resize, 0.65))
+        Row(rh + S(2), (Nothing, 0.35), (_resize, 0.65))
         Gap()
         If pairs Then
-            Row(rh, (_largeFonts, 0.38), (_highContrast, 0.4), (_arrows, 0.22))
+            Row(rh, (_largeFonts, 0.36), (_highContrast, 0.4), (_arrows, 0.24))
+            Row(rh + S(2), (_tutorial, 0.24), (_maths, 0.28), (_open, 0.24), (_save, 0.24))
         Else
-            Row(rh, (_largeFonts, 1.0))
-            Row(rh, (_highContrast, 1.0))
+            Row(rh, (_largeFonts, 0.5), (_highContrast, 0.5))
             Row(rh, (_arrows, 1.0))
+            Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
+            Row(rh + S(2), (_open, 0.5), (_save, 0.5))
         End If
-        If pairs Then
-            Row(rh + S(4), (_tutorial, 0.25), (_maths, 0.27), (_open, 0.24), (_save, 0.24))
-        Else
-            Row(rh + S(4), (_tutorial, 0.5), (_maths, 0.5))
-            Row(rh + S(4), (_open, 0.5), (_save, 0.5))
-        End If
+        _side.ResumeLayout(True)
+        _side.AutoScrollPosition = New Point(0, -scrolled.Y)
+        ShowState()
     End Sub
+
+    ''' <summary>Whether a control's caption fits in <paramref name="width"/> px (with a button's edges or a check box's box).</summary>
+    Private Function TextFits(c As Control, width As Integer) As Boolean
+        Dim room = width - If(TypeOf c Is CheckBox, S(22), S(10))
+        Return Measure(c.Text, c.Font).Width <= room
+    End Function
+
+    ''' <summary>Whether the totals line, with room for its numbers to grow, fits on one line this wide.</summary>
+    Private Function TotalsFitOnOneLine(width As Integer) As Boolean
+        Dim sample = String.Join("     ", _presenter.Snapshot.Totals)
+        Return Measure(sample & "  −00.0", _totals.Font).Width <= width
+    End Function
 
     ''' <summary>Each column as wide as its header, and the spare width shared out, so no header is clipped.</summary>
     Private Sub FitColumns(list As BufferedListView, available As Integer)
         Dim widths(list.Columns.Count - 1) As Integer
         ' Headers are wider than the numbers under them, except for the id and colour columns.
         For i = 0 To widths.Length - 1
-            Dim sample = If(i = 0, "ball00", If(i = 1, "#888888", ""))
-            widths(i) = Math.Max(TextRenderer.MeasureText(list.Columns(i).Text, list.Font).Width, TextRenderer.MeasureText(sample, list.Font).Width) + S(10)
+            Dim sample = If(i = 0, "ball00", If(i = 1, "#888888", "−0.000"))
+            widths(i) = Math.Max(Measure(list.Columns(i).Text, list.Font).Width, Measure(sample, list.Font).Width) + S(12)
         Next
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
         For i = 0 To widths.Length - 1
@@ -101,14 +156,39 @@ Partial Friend NotInheritable Class MainForm
         Next
     End Sub
 
+    ''' <summary>
+    ''' Each log column as wide as the widest of its header and the rows it holds (it only grows, so
+    ''' columns do not jump about); the list scrolls sideways when they are wider than it.
+    ''' </summary>
+    Private Sub FitLogColumns()
+        Dim log = _presenter.Log
+        For i = 0 To _logList.Columns.Count - 1
+            Dim widest = Measure(_logList.Columns(i).Text, _logList.Font).Width
+            Dim previous As Integer
+            If _logWidths.TryGetValue(i, previous) Then widest = Math.Max(widest, previous)
+            For k = 0 To Math.Min(log.Count, 40) - 1
+                widest = Math.Max(widest, Measure(log(k).Cells()(i), _logList.Font).Width)
+            Next
+            _logWidths(i) = widest
+            Dim wanted = widest + S(16)
+            If _logList.Columns(i).Width <> wanted Then
+                _logList.Columns(i).Width = wanted
+                _trace?.Invoke("log column " & i & " width " & wanted & " needs " & widest)
+            End If
+        Next
+    End Sub
+
+    ''' <summary>Shares of a row of two labelled boxes: label, box, label, box.</summary>
+    Private Shared ReadOnly FieldShares As Double() = {0.35, 0.16, 0.26, 0.23}
+
     Private Sub Gap()
-        _rowY += S(3)
+        _rowY += S(4)
     End Sub
 
     ''' <summary>Two labelled text boxes side by side, or one above the other with large fonts.</summary>
     Private Sub Fields(height As Integer, pairs As Boolean, ParamArray fields As (Label As Label, Box As TextBox)())
         If pairs Then
-            Row(height, (fields(0).Label, 0.27), (fields(0).Box, 0.22), (fields(1).Label, 0.27), (fields(1).Box, 0.24))
+            Row(height, (fields(0).Label, FieldShares(0)), (fields(0).Box, FieldShares(1)), (fields(1).Label, FieldShares(2)), (fields(1).Box, FieldShares(3)))
         Else
             For Each f In fields
                 Row(height, (f.Label, 0.55), (f.Box, 0.45))
@@ -121,33 +201,51 @@ Partial Friend NotInheritable Class MainForm
         Dim gap = S(6)
         Dim usable = _rowWidth - gap * (items.Length - 1)
         Dim x = _rowX
+        Dim tallest = height
         For Each item In items
             Dim width = CInt(usable * item.Share)
             If item.Control IsNot Nothing Then
-                Dim ctlHeight = If(TypeOf item.Control Is TextBox, Math.Min(height, item.Control.PreferredSize.Height), height)
+                ' A text box is as tall as a line of its text and a little, or as Mono insists on making
+                ' it (from the DPI it reports, later, whatever it is given).
+                Dim box = TryCast(item.Control, TextBox)
+                Dim ctlHeight = If(box IsNot Nothing, Math.Min(height, Math.Max(LineHeight(box.Font) + S(8), box.PreferredHeight)), height)
                 item.Control.SetBounds(x, _rowY + (height - ctlHeight) \ 2, width, ctlHeight)
+                ' Mono keeps a one-line text box as tall as the DPI it reports asks: the row grows to hold it.
+                If item.Control.Height > height Then
+                    item.Control.Top = _rowY
+                    tallest = Math.Max(tallest, item.Control.Height)
+                End If
             End If
             x += width + gap
         Next
-        _rowY += height + S(4)
+        _rowY += tallest + S(3)
     End Sub
 
     ''' <summary>With --trace: every control's screen rectangle and the canvas transform, for GUI tests.</summary>
     Private Sub TraceLayout()
         If _trace Is Nothing Then Return
-        Dim named As (Name As String, Control As Control)() = {
-            ("canvas", _canvas), ("pause", _pause), ("reset", _reset), ("delete-mode", _deleteMode),
-            ("speed", _speed), ("gravity", _gravity), ("restitution", _restitution),
+        Dim named As New List(Of (Name As String, Control As Control)) From {
+            ("canvas", _canvas), ("totals", _totals), ("message", _message), ("pause", _pause), ("reset", _reset), ("delete-mode", _deleteMode),
+            ("speed-label", _speedLabel), ("speed", _speed), ("gravity-label", _gravityLabel), ("gravity", _gravity),
+            ("restitution-label", _restitutionLabel), ("restitution", _restitution),
+            ("radius-label", _radiusLabel), ("mass-label", _massLabel), ("rect-width-label", _widthLabel), ("rect-height-label", _heightLabel),
+            ("box-width-label", _boxWidthLabel), ("box-height-label", _boxHeightLabel),
             ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),
             ("radius", _radius), ("mass", _mass), ("fixed", _fixed), ("add-circle", _addCircle),
             ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("add-rectangle", _addRectangle),
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
-            ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs)}
+            ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
-            _trace("control " & n.Name & " " & p.X & " " & p.Y & " " & n.Control.Width & " " & n.Control.Height)
+            ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).
+            Dim c = n.Control
+            Dim captioned = TypeOf c Is Button OrElse TypeOf c Is CheckBox OrElse (TypeOf c Is Label AndAlso c IsNot _message AndAlso c IsNot _totals)
+            Dim fits = Not captioned OrElse TextFits(c, c.Width)
+            _trace("control " & n.Name & " " & p.X & " " & p.Y & " " & c.Width & " " & c.Height & " " & If(fits, "fits", "cut"))
         Next
+        Dim client = PointToScreen(Point.Empty)
+        _trace("window " & client.X & " " & client.Y & " " & ClientSize.Width & " " & ClientSize.Height)
         Dim v = _presenter.View
         _trace("view scale " & Units.Num(v.Scale, 4) & " origin " & Units.Num(v.OffsetX, 2) & " " & Units.Num(v.OffsetY, 2))
         _trace("ready")

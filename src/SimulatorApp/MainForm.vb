@@ -4,37 +4,35 @@ Imports System.Windows.Forms
 Imports PhysicsEngine.Presentation
 
 ''' <summary>
-''' The main window: a thin view over <see cref="SimulationPresenter"/>. Its handlers forward the
-''' teacher's actions to the presenter; what to show comes back through <see cref="ISimulationView"/>.
+''' The main window: a passive view over <see cref="SimulationPresenter"/>. Its handlers forward the
+''' teacher's actions to the presenter, which also decides what every label, slider and table shows
+''' and what happens when something fails; this class only lays the controls out and draws.
 ''' </summary>
 Partial Friend NotInheritable Class MainForm
     Inherits Form
     Implements ISimulationView
 
     Public Const Title As String = "Collision Simulator"
-    ''' <summary>Frames between refreshes of the tables and totals (about 10 per second).</summary>
-    Private Const TableEvery As Integer = 6
+    ''' <summary>The window's size at 96 dpi when the screen has room for it, px.</summary>
+    Private Shared ReadOnly PreferredSize96 As New Size(1280, 800)
 
     Private Shared ReadOnly BlankRow As String() = New String(9) {}
-    Private Shared ReadOnly LogSamples As String() = {
-        "00.000", "green ↔ wall:bottom", "blue: 4.17 → 4.15, green: 2.70 → 2.58", "100.00 → 100.00", "100%",
-        "(-14.37, -17.94) → (-14.37, -17.94)  (green only: wall:bottom is fixed, p not conserved)"}
 
     Private ReadOnly _presenter As SimulationPresenter
-    Private ReadOnly _painter As New ScenePainter()
+    Private ReadOnly _painter As ScenePainter
     Private ReadOnly _trace As Action(Of String)
+    Private ReadOnly _dpi As ScreenDpi
     Private ReadOnly _timer As New Timer()
     Private ReadOnly _clock As Diagnostics.Stopwatch = Diagnostics.Stopwatch.StartNew()
     Private _lastTick As Double
-    Private _frame As Long
     Private _updating As Boolean
     Private _logVersion As Long = -1
+    Private _logWidthsAt As Double = -1
 
     Private ReadOnly _canvas As New PictureBox()
     Private ReadOnly _totals As New Label()
     Private ReadOnly _tabs As New TabControl()
-    Private ReadOnly _circleTable As New BufferedListView()
-    Private ReadOnly _rectangleTable As New BufferedListView()
+    Private ReadOnly _tables As New List(Of BufferedListView)
     Private ReadOnly _logList As New BufferedListView()
     Private ReadOnly _side As New Panel()
     Private ReadOnly _message As New Label()
@@ -48,20 +46,17 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _gravityMarks As New List(Of Button)
     Private ReadOnly _restitutionLabel As New Label()
     Private ReadOnly _restitution As New TrackBar()
-    Private ReadOnly _addCircleLabel As New Label()
     Private ReadOnly _radiusLabel As New Label()
     Private ReadOnly _radius As New TextBox()
     Private ReadOnly _massLabel As New Label()
     Private ReadOnly _mass As New TextBox()
     Private ReadOnly _fixed As New CheckBox()
     Private ReadOnly _addCircle As New Button()
-    Private ReadOnly _addRectangleLabel As New Label()
     Private ReadOnly _widthLabel As New Label()
     Private ReadOnly _rectWidth As New TextBox()
     Private ReadOnly _heightLabel As New Label()
     Private ReadOnly _rectHeight As New TextBox()
     Private ReadOnly _addRectangle As New Button()
-    Private ReadOnly _containerLabel As New Label()
     Private ReadOnly _boxWidthLabel As New Label()
     Private ReadOnly _boxWidth As New TextBox()
     Private ReadOnly _boxHeightLabel As New Label()
@@ -74,42 +69,57 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _maths As New Button()
     Private ReadOnly _open As New Button()
     Private ReadOnly _save As New Button()
+    Private ReadOnly _inputs As New Dictionary(Of InputField, TextBox)
 
     ''' <param name="trace">receives one line per action when the app runs with --trace; Nothing otherwise</param>
     ''' <param name="store">scene files; Nothing disables Open and Save</param>
-    Public Sub New(trace As Action(Of String), store As ISceneStore)
+    ''' <param name="world">the opening scene; Nothing for the demo</param>
+    ''' <param name="sceneFolder">where Open and Save start</param>
+    Public Sub New(trace As Action(Of String), store As ISceneStore, Optional world As World = Nothing, Optional sceneFolder As String = Nothing)
         _trace = trace
+        _dpi = ScreenDpi.Detect()
+        _painter = New ScenePainter(_dpi.FontScale)
         SuspendLayout()
-        AutoScaleDimensions = New SizeF(96.0F, 96.0F)
-        AutoScaleMode = AutoScaleMode.Dpi
+        ' Sizes are computed here from the screen's DPI (see S), so the runtime must not scale them again.
+        AutoScaleMode = AutoScaleMode.None
         Text = Title
-        StartPosition = FormStartPosition.Manual
-        Location = New Point(0, 0)
-        ClientSize = New Size(1280, 800)
-        MinimumSize = New Size(900, 600)
         KeyPreview = True
+        FitToScreen()
         BuildControls()
         ResumeLayout(False)
 
-        _presenter = New SimulationPresenter(Me, store) With {.Trace = trace}
-        ShowSettings()
-        ShowBodies()
+        _presenter = New SimulationPresenter(Me, store, world) With {.Trace = trace, .ScreenScale = _dpi.Scale, .SceneFolder = sceneFolder}
+        _trace?.Invoke("dpi " & Units.Num(_dpi.Screen, 0) & " (" & _dpi.Source & "), gdi+ " & Units.Num(_dpi.Graphics, 0) & ", scale " & Units.Num(_dpi.Scale, 2))
         ShowTheme()
+        ShowSettings()
+        ShowInputs()
+        ShowState()
         ShowMessage("")
 
         _timer.Interval = 16
         AddHandler _timer.Tick, AddressOf OnTimerTick
     End Sub
 
-    ''' <summary>The presenter, for the frame benchmark's sake of painting the same way.</summary>
+    ''' <summary>The presenter (the frame benchmark paints through it the same way).</summary>
     Friend ReadOnly Property Presenter As SimulationPresenter
         Get
             Return _presenter
         End Get
     End Property
 
+    ''' <summary>Opens as large as it was designed (1280 × 800 at 96 dpi, more on a denser screen), but never larger than the screen the cursor is on.</summary>
+    Private Sub FitToScreen()
+        StartPosition = FormStartPosition.Manual
+        Dim area = Screen.FromPoint(Control.MousePosition).WorkingArea
+        Dim wanted = New Size(S(PreferredSize96.Width), S(PreferredSize96.Height))
+        Dim chrome = Size - ClientSize ' title bar and borders, where a window manager draws them
+        Dim w = Math.Min(wanted.Width + chrome.Width, area.Width)
+        Dim h = Math.Min(wanted.Height + chrome.Height, area.Height)
+        Bounds = New Drawing.Rectangle(area.X, area.Y, w, h)
+        MinimumSize = New Size(Math.Min(S(800), area.Width), Math.Min(S(560), area.Height))
+    End Sub
+
     Private Sub BuildControls()
-        _canvas.BackColor = Color.White
         AddHandler _canvas.Paint, AddressOf OnCanvasPaint
         AddHandler _canvas.MouseDown, AddressOf OnCanvasMouseDown
         AddHandler _canvas.MouseMove, AddressOf OnCanvasMouseMove
@@ -118,76 +128,74 @@ Partial Friend NotInheritable Class MainForm
         Controls.Add(_canvas)
 
         _totals.TextAlign = ContentAlignment.MiddleLeft
-        _totals.AutoEllipsis = True
         _totals.UseMnemonic = False
         Controls.Add(_totals)
 
-        SetUpTable(_circleTable, BodyTable.CircleHeaders, AddressOf OnRetrieveCircle)
-        SetUpTable(_rectangleTable, BodyTable.RectangleHeaders, AddressOf OnRetrieveRectangle)
+        For Each t In SimulationPresenter.Tables
+            Dim list As New BufferedListView()
+            SetUpTable(list, t.Headers, AddressOf OnRetrieveRow)
+            AddTab(t.Title, list)
+            _tables.Add(list)
+        Next
         SetUpTable(_logList, CollisionLogEntry.Headers, AddressOf OnRetrieveLog)
-        AddTab("Circles", _circleTable)
-        AddTab("Rectangles", _rectangleTable)
-        AddTab("Collision log", _logList)
+        AddTab(Captions.CollisionLog, _logList)
+        ' Mono leaves a details list's header unpainted when its tab comes back: repaint the list then.
+        AddHandler _tabs.SelectedIndexChanged, AddressOf OnTabChanged
         Controls.Add(_tabs)
 
         _side.AutoScroll = True
+        ' With --trace, where the controls are after the panel scrolls (GUI tests click them there).
+        AddHandler _side.Scroll, Sub(s, a) TraceLayout()
+        AddHandler _side.MouseWheel, Sub(s, a) BeginInvoke(New Action(AddressOf TraceLayout))
         Controls.Add(_side)
-        _message.BackColor = Color.FromArgb(255, 248, 196)
-        _message.ForeColor = Color.FromArgb(120, 20, 0)
         _message.BorderStyle = BorderStyle.FixedSingle
-        _message.Padding = New Padding(4)
+        _message.UseMnemonic = False
         _side.Controls.Add(_message)
 
         AddButton(_pause, "Pause", Sub() _presenter.TogglePause())
-        AddButton(_reset, "Reset", Sub() _presenter.Reset())
+        AddButton(_reset, Captions.Reset, Sub() _presenter.Reset())
         AddButton(_deleteMode, "Delete mode", Sub() _presenter.ToggleDeleteMode())
 
         AddLabel(_speedLabel, "")
-        SetUpSlider(_speed, 0, SpeedSteps.Values.Count - 1, 1, Sub() _presenter.SetSpeedIndex(_speed.Value))
+        SetUpSlider(_speed, SpeedSteps.Values.Count - 1, 1, Sub() _presenter.SetSpeedIndex(_speed.Value))
         AddLabel(_gravityLabel, "")
-        SetUpSlider(_gravity, 0, CInt(GravityMark.Maximum * 100), 500, Sub() _presenter.SetGravity(_gravity.Value / 100.0))
-        _gravity.SmallChange = 10
-        _gravity.LargeChange = 100
+        Dim g = SimulationPresenter.GravitySlider
+        SetUpSlider(_gravity, g.Steps, g.PositionOf(10) - g.PositionOf(0), Sub() _presenter.GravitySliderMoved(_gravity.Value))
+        _gravity.SmallChange = g.PositionOf(0.1) - g.PositionOf(0)
+        _gravity.LargeChange = g.PositionOf(1) - g.PositionOf(0)
         For Each mark In GravityMark.All
             Dim b As New Button()
             Dim value = mark.Value
-            AddButton(b, mark.Name & " " & Units.Num(mark.Value), Sub() _presenter.SetGravity(value))
+            AddButton(b, SimulationPresenter.GravityMarkText(mark), Sub() _presenter.SetGravity(value))
             _gravityMarks.Add(b)
         Next
         AddLabel(_restitutionLabel, "")
-        SetUpSlider(_restitution, 0, 100, 10, Sub() _presenter.SetRestitution(_restitution.Value / 100.0))
-        _restitution.LargeChange = 10
+        Dim rs = SimulationPresenter.RestitutionSlider
+        SetUpSlider(_restitution, rs.Steps, rs.PositionOf(0.1), Sub() _presenter.RestitutionSliderMoved(_restitution.Value))
+        _restitution.LargeChange = rs.PositionOf(0.1)
 
-        AddLabel(_addCircleLabel, "Add a circle")
-        AddLabel(_radiusLabel, "Radius (m)")
-        _side.Controls.Add(_radius)
-        AddLabel(_massLabel, "Mass (kg)")
-        _side.Controls.Add(_mass)
-        _fixed.Text = "Fixed"
+        AddField(_radiusLabel, "Radius (m)", _radius, InputField.Radius)
+        AddField(_massLabel, "Mass (kg)", _mass, InputField.Mass)
+        _fixed.Text = Captions.Fixed
+        AddHandler _fixed.CheckedChanged, Sub(s, a) If Not _updating Then _presenter.FixedChanged(_fixed.Checked)
         _side.Controls.Add(_fixed)
-        AddButton(_addCircle, "Add circle", Sub() _presenter.BeginAddCircle(_radius.Text, _mass.Text, _fixed.Checked))
+        AddButton(_addCircle, Captions.AddCircle, Sub() _presenter.BeginAddCircle())
 
-        AddLabel(_addRectangleLabel, "Add a rectangle (always fixed)")
-        AddLabel(_widthLabel, "Width (m)")
-        _side.Controls.Add(_rectWidth)
-        AddLabel(_heightLabel, "Height (m)")
-        _side.Controls.Add(_rectHeight)
-        AddButton(_addRectangle, "Add rectangle", Sub() _presenter.BeginAddRectangle(_rectWidth.Text, _rectHeight.Text))
+        AddField(_widthLabel, "Rectangle w (m)", _rectWidth, InputField.RectangleWidth)
+        AddField(_heightLabel, "h (m)", _rectHeight, InputField.RectangleHeight)
+        AddButton(_addRectangle, Captions.AddRectangle, Sub() _presenter.BeginAddRectangle())
 
-        AddLabel(_containerLabel, "Container")
-        AddLabel(_boxWidthLabel, "Width (m)")
-        _side.Controls.Add(_boxWidth)
-        AddLabel(_boxHeightLabel, "Height (m)")
-        _side.Controls.Add(_boxHeight)
-        AddButton(_resize, "Resize", Sub() _presenter.ResizeContainer(_boxWidth.Text, _boxHeight.Text))
+        AddField(_boxWidthLabel, "Container w (m)", _boxWidth, InputField.ContainerWidth)
+        AddField(_boxHeightLabel, "h (m)", _boxHeight, InputField.ContainerHeight)
+        AddButton(_resize, Captions.ResizeContainer, Sub() _presenter.ResizeContainer())
 
-        AddCheck(_largeFonts, "Large fonts", Sub() _presenter.SetLargeFonts(_largeFonts.Checked))
-        AddCheck(_highContrast, "High contrast", Sub() _presenter.SetHighContrast(_highContrast.Checked))
-        AddCheck(_arrows, "Arrows", Sub() _presenter.SetShowArrows(_arrows.Checked))
-        AddButton(_tutorial, "Tutorial", Sub() ShowHelp("Tutorial", HelpTexts.Tutorial))
-        AddButton(_maths, "Maths used", Sub() ShowHelp("Maths used", HelpTexts.Maths))
-        AddButton(_open, "Open…", AddressOf OnOpen)
-        AddButton(_save, "Save…", AddressOf OnSave)
+        AddCheck(_largeFonts, Captions.LargeFonts, Sub() _presenter.SetLargeFonts(_largeFonts.Checked))
+        AddCheck(_highContrast, Captions.HighContrast, Sub() _presenter.SetHighContrast(_highContrast.Checked))
+        AddCheck(_arrows, Captions.Arrows, Sub() _presenter.SetShowArrows(_arrows.Checked))
+        AddButton(_tutorial, Captions.Tutorial, Sub() ShowHelp(Captions.Tutorial, HelpTexts.Tutorial))
+        AddButton(_maths, Captions.MathsUsed, Sub() ShowHelp(Captions.MathsUsed, HelpTexts.Maths))
+        AddButton(_open, Captions.OpenScene, AddressOf OnOpen)
+        AddButton(_save, Captions.SaveScene, AddressOf OnSave)
     End Sub
 
     Private Sub AddTab(title As String, list As BufferedListView)
@@ -207,12 +215,29 @@ Partial Friend NotInheritable Class MainForm
     Private Sub AddLabel(label As Label, text As String)
         label.Text = text
         label.AutoSize = False
+        label.UseMnemonic = False
         label.TextAlign = ContentAlignment.MiddleLeft
         _side.Controls.Add(label)
     End Sub
 
+    Private Sub AddField(label As Label, text As String, box As TextBox, field As InputField)
+        AddLabel(label, text)
+        _inputs(field) = box
+        ' The layout sets its height: Mono would otherwise size it from the DPI it reports, not the one it draws at.
+        box.AutoSize = False
+        ' Every edit goes to the presenter at once, so what was typed is what it knows.
+        AddHandler box.TextChanged,
+            Sub(s, a)
+                If _updating Then Return
+                _presenter.InputChanged(field, box.Text)
+                TraceInputs()
+            End Sub
+        _side.Controls.Add(box)
+    End Sub
+
     Private Sub AddButton(button As Button, text As String, action As Action)
         button.Text = text
+        button.UseMnemonic = False
         AddHandler button.Click, Sub(s, e) Act(action)
         _side.Controls.Add(button)
     End Sub
@@ -223,29 +248,24 @@ Partial Friend NotInheritable Class MainForm
         _side.Controls.Add(box)
     End Sub
 
-    Private Sub SetUpSlider(slider As TrackBar, min As Integer, max As Integer, tick As Integer, action As Action)
-        slider.Minimum = min
+    Private Sub SetUpSlider(slider As TrackBar, max As Integer, tick As Integer, action As Action)
+        slider.Minimum = 0
         slider.Maximum = max
-        slider.TickFrequency = tick
+        slider.TickFrequency = Math.Max(1, tick)
         slider.TickStyle = TickStyle.BottomRight
+        slider.AutoSize = False
         AddHandler slider.ValueChanged, Sub(s, e) If Not _updating Then Act(action)
         _side.Controls.Add(slider)
     End Sub
 
-    ''' <summary>Runs a teacher's action; anything unexpected becomes a message, never a crash.</summary>
+    ''' <summary>Runs a teacher's action and redraws. The presenter turns failures into messages.</summary>
     Private Sub Act(action As Action)
-        Try
-            action()
-        Catch ex As ArgumentException
-            ShowMessage("That did not work: " & ex.Message)
-        Catch ex As InvalidOperationException
-            ShowMessage("That did not work: " & ex.Message)
-        End Try
+        action()
         _canvas.Invalidate()
     End Sub
 
     Private Sub ShowHelp(title As String, topics As IReadOnlyList(Of HelpTopic))
-        Dim f As New HelpForm(title & " — " & MainForm.Title, topics, Font)
+        Dim f As New HelpForm(title & " — " & MainForm.Title, topics, Font, _presenter.Theme, _dpi.Scale, _trace)
         AddHandler f.FormClosed, Sub(s, e) f.Dispose()
         f.Show(Me)
         _trace?.Invoke("help " & title)
@@ -256,7 +276,7 @@ Partial Friend NotInheritable Class MainForm
             _presenter.OpenScene(Nothing)
             Return
         End If
-        Using d As New OpenFileDialog() With {.Filter = "Scene files (*.json)|*.json|All files (*.*)|*.*", .Title = "Open a scene"}
+        Using d As New OpenFileDialog() With {.Filter = "Scene files (*.json)|*.json|All files (*.*)|*.*", .Title = "Open a scene", .InitialDirectory = If(_presenter.SceneFolder, "")}
             If d.ShowDialog(Me) = DialogResult.OK Then _presenter.OpenScene(d.FileName)
         End Using
     End Sub
@@ -266,7 +286,7 @@ Partial Friend NotInheritable Class MainForm
             _presenter.SaveScene(Nothing)
             Return
         End If
-        Using d As New SaveFileDialog() With {.Filter = "Scene files (*.json)|*.json", .Title = "Save the scene", .DefaultExt = "json", .AddExtension = True}
+        Using d As New SaveFileDialog() With {.Filter = "Scene files (*.json)|*.json", .Title = "Save the scene", .DefaultExt = "json", .AddExtension = True, .InitialDirectory = If(_presenter.SceneFolder, "")}
             If d.ShowDialog(Me) = DialogResult.OK Then _presenter.SaveScene(d.FileName)
         End Using
     End Sub
@@ -289,7 +309,7 @@ Partial Friend NotInheritable Class MainForm
 
     Protected Overrides Sub OnResize(e As EventArgs)
         MyBase.OnResize(e)
-        If IsHandleCreated Then ArrangeControls()
+        If IsHandleCreated AndAlso _presenter IsNot Nothing Then ArrangeControls()
     End Sub
 
     Private Sub OnTimerTick(sender As Object, e As EventArgs)
@@ -297,52 +317,87 @@ Partial Friend NotInheritable Class MainForm
         Dim dt = now - _lastTick
         _lastTick = now
         _presenter.Tick(dt)
-        _frame += 1
         _canvas.Invalidate()
-        If _frame Mod TableEvery = 0 Then RefreshTables()
+        RefreshLog(now)
+        FrameStats?.Record(dt, _clock.Elapsed.TotalSeconds - now)
     End Sub
 
-    Private Sub RefreshTables()
-        _totals.Text = _presenter.TotalsText
-        If _circleTable.VirtualListSize <> _presenter.World.Circles.Count OrElse _rectangleTable.VirtualListSize <> _presenter.World.Rectangles.Count Then ShowBodies()
-        Select Case _tabs.SelectedIndex
-            Case 0 : If Not _presenter.IsPaused OrElse _presenter.DraggedBody IsNot Nothing Then _circleTable.Invalidate()
-            Case 1 : _rectangleTable.Invalidate()
-            Case 2
-                If _logVersion <> _presenter.Log.Version Then
-                    _logVersion = _presenter.Log.Version
-                    _logList.VirtualListSize = _presenter.Log.Count
-                    _logList.Invalidate()
-                End If
-        End Select
+    ''' <summary>Frame timing for --stats; Nothing when not asked for.</summary>
+    Friend Property FrameStats As FrameStats
+
+    Private Sub RefreshLog(now As Double)
+        If _tabs.SelectedIndex <> _tables.Count OrElse _logVersion = _presenter.Log.Version Then Return
+        _logVersion = _presenter.Log.Version
+        If _logList.VirtualListSize <> _presenter.Log.Count Then
+            _logList.VirtualListSize = _presenter.Log.Count
+            _trace?.Invoke("log rows " & _presenter.Log.Count)
+        End If
+        ' Columns grow to fit what they hold (measured at most twice a second), so nothing is cut off.
+        If now - _logWidthsAt > 0.5 Then
+            _logWidthsAt = now
+            FitLogColumns()
+        End If
+        _logList.Invalidate()
     End Sub
 
-    Private Sub OnRetrieveCircle(sender As Object, e As RetrieveVirtualItemEventArgs)
-        Dim circles = _presenter.World.Circles
-        If e.ItemIndex >= circles.Count Then
+    Private Sub OnTabChanged(sender As Object, e As EventArgs)
+        Dim page = _tabs.SelectedTab
+        If page Is Nothing OrElse page.Controls.Count = 0 Then Return
+        Dim list = DirectCast(page.Controls(0), BufferedListView)
+        ' Mono lays a details list's header out only while the list is on screen: a list whose rows or
+        ' columns changed behind another tab comes back with a blank header row. Its rows are set now
+        ' (see ShowState), and a column is nudged so the header is laid out and painted again.
+        Dim t = _tables.IndexOf(list)
+        If t >= 0 Then list.VirtualListSize = _presenter.Snapshot.RowCount(t)
+        If list.Columns.Count > 0 Then
+            Dim first = list.Columns(0)
+            first.Width += 1
+            first.Width -= 1
+        End If
+        list.Refresh()
+        _logVersion = -1
+        _trace?.Invoke("tab " & page.Text)
+    End Sub
+
+    Private Sub OnRetrieveRow(sender As Object, e As RetrieveVirtualItemEventArgs)
+        Dim t = _tables.IndexOf(DirectCast(sender, BufferedListView))
+        Dim snap = _presenter.Snapshot
+        If t < 0 OrElse e.ItemIndex >= snap.RowCount(t) Then
             e.Item = New ListViewItem(BlankRow)
             Return
         End If
-        e.Item = Row(BodyTable.CircleRow(circles(e.ItemIndex)))
+        Dim cells = snap.Cells(t, e.ItemIndex)
+        e.Item = Row(cells)
+        TraceShown("row " & SimulationPresenter.Tables(t).Title & " " & e.ItemIndex, cells)
     End Sub
 
-    Private Sub OnRetrieveRectangle(sender As Object, e As RetrieveVirtualItemEventArgs)
-        Dim rects = _presenter.World.Rectangles
-        If e.ItemIndex >= rects.Count Then
-            e.Item = New ListViewItem(BlankRow)
-            Return
-        End If
-        e.Item = Row(BodyTable.RectangleRow(rects(e.ItemIndex)))
+    Private ReadOnly _traced As New Dictionary(Of String, String)(StringComparer.Ordinal)
+
+    ''' <summary>With --trace: what a list has just been given to draw, when it differs from last time (GUI tests read the tables through this).</summary>
+    Private Sub TraceShown(what As String, cells As String())
+        If _trace Is Nothing Then Return
+        Dim text = String.Join(" | ", cells)
+        Dim last As String = Nothing
+        If _traced.TryGetValue(what, last) AndAlso last = text Then Return
+        _traced(what) = text
+        _trace(what & ": " & text)
     End Sub
 
     Private Sub OnRetrieveLog(sender As Object, e As RetrieveVirtualItemEventArgs)
         Dim log = _presenter.Log
-        e.Item = New ListViewItem(If(e.ItemIndex < log.Count, log(e.ItemIndex).Cells(), BlankRow))
+        Dim cells = If(e.ItemIndex < log.Count, log(e.ItemIndex).Cells(), BlankRow)
+        e.Item = New ListViewItem(cells)
+        If e.ItemIndex < log.Count Then TraceShown("log " & e.ItemIndex, cells)
     End Sub
 
     ''' <summary>A table row whose colour cell is filled with the body's colour.</summary>
-    Private Shared Function Row(cells As String()) As ListViewItem
+    Private Function Row(cells As String()) As ListViewItem
         Dim item As New ListViewItem(cells) With {.UseItemStyleForSubItems = False}
+        Dim theme = _presenter.Theme
+        For Each s As ListViewItem.ListViewSubItem In item.SubItems
+            s.BackColor = ScenePainter.Rgb(theme.Panel)
+            s.ForeColor = ScenePainter.Rgb(theme.PanelText)
+        Next
         Dim colour = BodyColours.Parse(cells(1), -1)
         If colour >= 0 Then
             item.SubItems(1).BackColor = ScenePainter.Rgb(colour)
@@ -352,7 +407,9 @@ Partial Friend NotInheritable Class MainForm
     End Function
 
     Private Sub OnCanvasPaint(sender As Object, e As PaintEventArgs)
+        Dim start = _clock.Elapsed.TotalSeconds
         _painter.Paint(e.Graphics, _presenter, _canvas.ClientSize.Width, _canvas.ClientSize.Height)
+        FrameStats?.RecordPaint(_clock.Elapsed.TotalSeconds - start)
     End Sub
 
     Private Shared Function ToPointer(b As MouseButtons) As PointerButton
@@ -376,77 +433,166 @@ Partial Friend NotInheritable Class MainForm
     End Sub
 
     Public Sub ShowMessage(text As String) Implements ISimulationView.ShowMessage
-        ' No message: a quiet reminder of what the mouse does, in grey rather than on yellow.
+        If _presenter Is Nothing Then Return
+        ' No message: a quiet reminder of what the mouse does, in grey rather than highlighted.
         Dim quiet = String.IsNullOrEmpty(text)
+        Dim theme = _presenter.Theme
         _message.Text = If(quiet, SimulationPresenter.MouseHint, text)
-        _message.BackColor = If(quiet, SystemColors.Control, Color.FromArgb(255, 248, 196))
-        _message.ForeColor = If(quiet, Color.DimGray, Color.FromArgb(120, 20, 0))
+        _message.BackColor = ScenePainter.Rgb(If(quiet, theme.Panel, theme.MessageBack))
+        _message.ForeColor = ScenePainter.Rgb(If(quiet, theme.HintText, theme.MessageText))
+        ' A longer message makes the box taller (the panel below moves down), so it is never cut off.
+        If IsHandleCreated AndAlso MessageHeight() <> _message.Height Then
+            ArrangeControls()
+            TraceLayout()
+        End If
+        _trace?.Invoke("message shown " & _message.Height & " px, needs " & MessageHeight() & " px")
     End Sub
 
     Public Sub ShowSettings() Implements ISimulationView.ShowSettings
         If _presenter Is Nothing Then Return
         _updating = True
         Try
-            Dim w = _presenter.World
+            Dim theme = _presenter.Theme
             _speed.Value = _presenter.SpeedIndex
-            _speedLabel.Text = "Speed: " & SpeedSteps.Label(_presenter.Speed)
-            _gravity.Value = CInt(Math.Round(w.Gravity * 100))
-            _gravityLabel.Text = "Gravity g = " & Units.Num(w.Gravity) & " m/s²"
-            _restitution.Value = CInt(Math.Round(w.Restitution * 100))
-            _restitutionLabel.Text = "Restitution e = " & Units.Num(w.Restitution) & "  (1 = elastic)"
-            _pause.Text = If(_presenter.IsPaused, "▶ Resume", "❚❚ Pause")
-            _pause.ForeColor = If(_presenter.IsPaused, Color.DarkGreen, Color.DarkRed)
-            _deleteMode.Text = If(_presenter.Mode = ClickMode.Delete, "Delete mode: ON", "Delete mode")
-            _deleteMode.BackColor = If(_presenter.Mode = ClickMode.Delete, Color.FromArgb(255, 205, 210), SystemColors.Control)
-            Dim i = _presenter.Inputs
-            _radius.Text = i.RadiusText
-            _mass.Text = i.MassText
-            _fixed.Checked = i.IsFixed
-            _mass.Enabled = Not i.IsFixed
-            _rectWidth.Text = i.WidthText
-            _rectHeight.Text = i.HeightText
-            _boxWidth.Text = i.ContainerWidthText
-            _boxHeight.Text = i.ContainerHeightText
+            _speedLabel.Text = _presenter.SpeedText
+            _gravity.Value = _presenter.GravityPosition
+            _gravityLabel.Text = _presenter.GravityText
+            _restitution.Value = _presenter.RestitutionPosition
+            _restitutionLabel.Text = _presenter.RestitutionText
+            _pause.Text = _presenter.PauseText
+            _pause.ForeColor = ScenePainter.Rgb(If(_presenter.IsPaused, If(theme.IsHighContrast, &H69F0AE, &H1B5E20), theme.Alert))
+            _deleteMode.Text = _presenter.DeleteModeText
+            _deleteMode.BackColor = ScenePainter.Rgb(If(_presenter.Mode = ClickMode.Delete, theme.AlertBack, theme.Button))
+            _fixed.Checked = _presenter.Inputs.IsFixed
+            _mass.Enabled = Not _presenter.Inputs.IsFixed
             _largeFonts.Checked = _presenter.LargeFonts
             _highContrast.Checked = _presenter.HighContrast
             _arrows.Checked = _presenter.ShowArrows
         Finally
             _updating = False
         End Try
+        TraceInputs()
         _canvas.Invalidate()
     End Sub
 
-    Public Sub ShowBodies() Implements ISimulationView.ShowBodies
+    Public Sub ShowInputs() Implements ISimulationView.ShowInputs
         If _presenter Is Nothing Then Return
-        _circleTable.VirtualListSize = _presenter.World.Circles.Count
-        _rectangleTable.VirtualListSize = _presenter.World.Rectangles.Count
-        _circleTable.Invalidate()
-        _rectangleTable.Invalidate()
-        _totals.Text = _presenter.TotalsText
+        _updating = True
+        Try
+            For Each field In _inputs
+                Dim wanted = _presenter.Inputs(field.Key)
+                If field.Value.Text <> wanted Then field.Value.Text = wanted
+            Next
+        Finally
+            _updating = False
+        End Try
+        TraceInputs()
     End Sub
+
+    ''' <summary>With --trace: what the text boxes hold now, read from the boxes themselves.</summary>
+    Private Sub TraceInputs()
+        If _trace Is Nothing Then Return
+        _trace("inputs " & String.Join(" ", _inputs.Select(Function(f) f.Key.ToString() & "=[" & f.Value.Text & "]")))
+    End Sub
+
+    Public Sub ShowState() Implements ISimulationView.ShowState
+        If _presenter Is Nothing Then Return
+        Dim snap = _presenter.Snapshot
+        ' Only the table on show is sized and repainted; the others when their tab is chosen.
+        Dim shown = _tabs.SelectedIndex
+        If shown >= 0 AndAlso shown < _tables.Count Then
+            Dim list = _tables(shown)
+            If list.VirtualListSize <> snap.RowCount(shown) Then list.VirtualListSize = snap.RowCount(shown)
+            list.Invalidate()
+        End If
+        Dim totals = WrapTotals(snap.Totals, _totals.Width - S(8))
+        If totals <> _totals.Text Then _totals.Text = totals
+        If _presenter.IsPaused Then _trace?.Invoke("totals " & totals.Replace(Environment.NewLine, " / "))
+        _canvas.Invalidate()
+    End Sub
+
+    ''' <summary>The totals' items on as few lines as fit, breaking only between items.</summary>
+    Private Function WrapTotals(items As IReadOnlyList(Of String), width As Integer) As String
+        Const gap As String = "     "
+        Dim lines As New List(Of String)
+        Dim line = ""
+        For Each item In items
+            Dim candidate = If(line.Length = 0, item, line & gap & item)
+            If line.Length > 0 AndAlso Measure(candidate, _totals.Font).Width > width Then
+                lines.Add(line)
+                line = item
+            Else
+                line = candidate
+            End If
+        Next
+        If line.Length > 0 Then lines.Add(line)
+        Return String.Join(Environment.NewLine, lines)
+    End Function
 
     Public Sub ShowTheme() Implements ISimulationView.ShowTheme
         If _presenter Is Nothing Then Return
-        Dim size = If(_presenter.LargeFonts, 14.0F, 10.0F)
+        Dim size = CSng(If(_presenter.LargeFonts, 14.0, 10.0) * _dpi.FontScale)
         Dim old = Font
         Font = New Font(FontFamily.GenericSansSerif, size)
         If old IsNot Nothing AndAlso Not ReferenceEquals(old, DefaultFont) Then old.Dispose()
         Dim bold As New Font(Font, FontStyle.Bold)
-        For Each l In {_addCircleLabel, _addRectangleLabel, _containerLabel, _speedLabel, _gravityLabel, _restitutionLabel}
+        For Each l In {_speedLabel, _gravityLabel, _restitutionLabel}
             l.Font = bold
         Next
-        _canvas.BackColor = ScenePainter.Rgb(_presenter.Theme.Background)
+        ApplyColours(_presenter.Theme)
         If IsHandleCreated Then
             ArrangeControls()
             TraceLayout()
         End If
-        _canvas.Invalidate()
+        ShowMessage(_presenter.Message)
+        ShowSettings()
+        ShowState()
+        For Each list In _tables
+            list.Invalidate()
+        Next
+        _logList.Invalidate()
+    End Sub
+
+    ''' <summary>The theme on every control: high contrast darkens the whole window, not the canvas alone.</summary>
+    Private Sub ApplyColours(theme As Theme)
+        Dim panel = ScenePainter.Rgb(theme.Panel), text = ScenePainter.Rgb(theme.PanelText)
+        BackColor = panel
+        ForeColor = text
+        _canvas.BackColor = ScenePainter.Rgb(theme.Background)
+        _totals.BackColor = panel
+        _totals.ForeColor = text
+        _side.BackColor = panel
+        For Each c As Control In _side.Controls
+            c.ForeColor = text
+            If TypeOf c Is Button Then
+                Dim b = DirectCast(c, Button)
+                b.BackColor = ScenePainter.Rgb(theme.Button)
+                b.FlatStyle = If(theme.IsHighContrast, FlatStyle.Flat, FlatStyle.Standard)
+                b.FlatAppearance.BorderColor = text
+                b.FlatAppearance.BorderSize = If(theme.IsHighContrast, 2, 1)
+                b.UseVisualStyleBackColor = Not theme.IsHighContrast
+            ElseIf TypeOf c Is TextBox Then
+                c.BackColor = ScenePainter.Rgb(theme.Field)
+            ElseIf c IsNot _message Then
+                c.BackColor = panel
+            End If
+        Next
+        For Each page As TabPage In _tabs.TabPages
+            page.BackColor = panel
+            page.ForeColor = text
+        Next
+        For Each list In _tables.Concat({_logList})
+            list.BackColor = panel
+            list.ForeColor = text
+        Next
     End Sub
 
     Protected Overrides Sub Dispose(disposing As Boolean)
         If disposing Then
             _timer.Dispose()
             _painter.Dispose()
+            _measure?.Dispose()
+            _measureBitmap?.Dispose()
         End If
         MyBase.Dispose(disposing)
     End Sub

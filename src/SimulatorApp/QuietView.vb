@@ -11,7 +11,10 @@ Friend NotInheritable Class QuietView
     Public Sub ShowSettings() Implements ISimulationView.ShowSettings
     End Sub
 
-    Public Sub ShowBodies() Implements ISimulationView.ShowBodies
+    Public Sub ShowInputs() Implements ISimulationView.ShowInputs
+    End Sub
+
+    Public Sub ShowState() Implements ISimulationView.ShowState
     End Sub
 
     Public Sub ShowTheme() Implements ISimulationView.ShowTheme

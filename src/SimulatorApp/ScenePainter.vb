@@ -11,13 +11,14 @@ Imports PhysicsEngine.Presentation
 Friend NotInheritable Class ScenePainter
     Implements IDisposable
 
-    ''' <summary>Drawn velocity per speed: an arrow is this many metres long per m/s.</summary>
-    Private Const ArrowMetresPerMps As Double = 0.25
-    ''' <summary>Shorter arrows (px) are not drawn: they would be a blob on the ball.</summary>
+    ''' <summary>Shorter arrows (px at 96 dpi) are not drawn: they would be a blob on the ball.</summary>
     Private Const MinArrowPx As Single = 8
     ''' <summary>With more balls than this, drawing turns off anti-aliasing, labels and arrows to keep the frame rate.</summary>
     Private Const BusyScene As Integer = 80
+    ''' <summary>The smallest radius a ball is drawn with, px at 96 dpi, so a 1 cm ball in a 100 m box still shows.</summary>
+    Private Const MinBallPx As Single = 2
 
+    Private ReadOnly _fontScale As Double
     Private ReadOnly _brushes As New Dictionary(Of String, SolidBrush)(StringComparer.Ordinal)
     Private ReadOnly _solid As New Dictionary(Of Integer, SolidBrush)
     Private ReadOnly _pens As New Dictionary(Of Long, Pen)
@@ -26,24 +27,41 @@ Friend NotInheritable Class ScenePainter
     Private _fontsLarge As Boolean = True ' forces the first build
     Private ReadOnly _arrowPoints(2) As PointF
     Private ReadOnly _pullPen As New Pen(Color.Gray, 2) With {.DashStyle = DashStyle.Dash}
+    Private ReadOnly _openPen As New Pen(Color.Gray, 1) With {.DashStyle = DashStyle.Dash}
+
+    ''' <param name="fontScale">how much point sizes grow to be drawn at the screen's DPI (see <see cref="ScreenDpi"/>)</param>
+    Public Sub New(Optional fontScale As Double = 1.0)
+        _fontScale = If(fontScale > 0, fontScale, 1.0)
+    End Sub
 
     ''' <summary>Paints the whole canvas of <paramref name="width"/> × <paramref name="height"/> px.</summary>
     Public Sub Paint(g As Graphics, p As SimulationPresenter, width As Integer, height As Integer)
         Dim theme = p.Theme
         Dim view = p.View
         Dim world = p.World
+        Dim k = CSng(p.ScreenScale)
         Dim busy = world.Circles.Count > BusyScene
         EnsureFonts(p.LargeFonts)
         g.SmoothingMode = If(busy, SmoothingMode.HighSpeed, SmoothingMode.AntiAlias)
         g.TextRenderingHint = Text.TextRenderingHint.AntiAlias
         g.Clear(Rgb(theme.Background))
-        Dim thick = If(theme.IsHighContrast, 3.0F, 2.0F)
+        Dim thick = k * If(theme.IsHighContrast, 3.0F, 2.0F)
         Dim ink = PenOf(theme.Ink, thick)
-        Dim outline = PenOf(theme.Ink, If(theme.IsHighContrast, 2.0F, 1.0F))
+        Dim outline = PenOf(theme.Ink, k * If(theme.IsHighContrast, 2.0F, 1.0F))
+        Dim strip = p.ScaleStripPixels
+        ' Nothing of the scene is drawn over the strip that holds the scale bar and the arrows' key.
+        g.SetClip(New RectangleF(0, 0, width, Math.Max(1, height - strip)))
 
-        ' The container.
+        ' The container: solid walls, or a faint dashed outline when balls may leave it.
         Dim tl = view.ToScreen(New Vector(0, world.Height))
-        g.DrawRectangle(ink, CSng(tl.X), CSng(tl.Y), CSng(view.ToPixels(world.Width)), CSng(view.ToPixels(world.Height)))
+        Dim cw = CSng(view.ToPixels(world.Width)), ch = CSng(view.ToPixels(world.Height))
+        If p.HasWalls Then
+            g.DrawRectangle(ink, CSng(tl.X), CSng(tl.Y), cw, ch)
+        Else
+            _openPen.Color = Rgb(theme.Grid)
+            _openPen.Width = k
+            g.DrawRectangle(_openPen, CSng(tl.X), CSng(tl.Y), cw, ch)
+        End If
 
         For Each r In world.Rectangles
             Dim c = view.ToScreen(New Vector(r.Min.X, r.Max.Y))
@@ -55,99 +73,129 @@ Friend NotInheritable Class ScenePainter
         Dim labels = Not busy AndAlso world.Circles.Count <= 60
         For Each c In world.Circles
             Dim s = view.ToScreen(c.Position)
-            Dim rad = CSng(view.ToPixels(c.Radius))
+            Dim rad = Math.Max(MinBallPx * k, CSng(view.ToPixels(c.Radius)))
             Dim x = CSng(s.X) - rad, y = CSng(s.Y) - rad, d = 2 * rad
             g.FillEllipse(BrushOf(c.Color), x, y, d, d)
             If Not busy OrElse rad >= 3 Then g.DrawEllipse(outline, x, y, d, d)
-            If c.IsFixed AndAlso rad > 6 Then
+            If c.IsFixed AndAlso rad > 6 * k Then
                 ' A cross marks a fixed ball: it is pinned where it is.
-                Dim k = rad * 0.5F
-                g.DrawLine(ink, CSng(s.X) - k, CSng(s.Y) - k, CSng(s.X) + k, CSng(s.Y) + k)
-                g.DrawLine(ink, CSng(s.X) - k, CSng(s.Y) + k, CSng(s.X) + k, CSng(s.Y) - k)
+                Dim arm = rad * 0.5F
+                g.DrawLine(ink, CSng(s.X) - arm, CSng(s.Y) - arm, CSng(s.X) + arm, CSng(s.Y) + arm)
+                g.DrawLine(ink, CSng(s.X) - arm, CSng(s.Y) + arm, CSng(s.X) + arm, CSng(s.Y) - arm)
             End If
-            If labels AndAlso rad >= 12 Then
-                Dim sz = g.MeasureString(c.Id, _font)
-                If sz.Width < 2 * rad - 2 Then g.DrawString(c.Id, _font, SolidOf(&HFFFFFF), CSng(s.X) - sz.Width / 2, CSng(s.Y) - sz.Height / 2)
-            End If
+            If labels Then DrawLabel(g, c.Id, CSng(s.X), CSng(s.Y), rad, theme)
         Next
 
-        If p.ShowArrows AndAlso Not busy Then
-            Dim scale = view.ToPixels(ArrowMetresPerMps)
-            Dim main = PenOf(theme.Arrow, 3)
-            Dim xPen = PenOf(theme.ArrowX, 2)
-            Dim yPen = PenOf(theme.ArrowY, 2)
-            For Each c In world.Circles
-                If c.IsFixed Then Continue For
-                Dim s = view.ToScreen(c.Position)
-                Dim vx = CSng(c.Velocity.X * scale), vy = CSng(-c.Velocity.Y * scale)
-                If vx * vx + vy * vy < MinArrowPx * MinArrowPx Then Continue For
-                Dim sx = CSng(s.X), sy = CSng(s.Y)
-                If Math.Abs(vx) >= MinArrowPx Then Arrow(g, xPen, sx, sy, sx + vx, sy)
-                If Math.Abs(vy) >= MinArrowPx Then Arrow(g, yPen, sx, sy, sx, sy + vy)
-                Arrow(g, main, sx, sy, sx + vx, sy + vy)
-            Next
-        End If
+        If p.ShowArrows AndAlso Not busy Then DrawArrows(g, p, view, theme, k)
 
         Dim carried = TryCast(p.DraggedBody, Circle)
         If carried IsNot Nothing Then
             Dim s = view.ToScreen(carried.Position)
-            Dim rad = CSng(view.ToPixels(carried.Radius)) + 5
-            g.DrawEllipse(PenOf(theme.Cue, 3), CSng(s.X) - rad, CSng(s.Y) - rad, 2 * rad, 2 * rad)
+            Dim rad = CSng(view.ToPixels(carried.Radius)) + 5 * k
+            g.DrawEllipse(PenOf(theme.Cue, 3 * k), CSng(s.X) - rad, CSng(s.Y) - rad, 2 * rad, 2 * rad)
         End If
 
-        DrawDraft(g, p, view, outline)
-        DrawCue(g, p, view, theme)
-        DrawScaleBar(g, view, theme, height)
+        DrawDraft(g, p, view, outline, theme, k)
+        DrawCue(g, p, view, theme, k)
+        g.ResetClip()
+        DrawScaleBar(g, p, view, theme, height, k)
         DrawBanner(g, p, theme, width, height)
     End Sub
 
-    Private Sub DrawDraft(g As Graphics, p As SimulationPresenter, view As ViewTransform, outline As Pen)
+    ''' <summary>The id inside the ball when it fits there, else just above and to the right of it, on a backing so it reads over anything.</summary>
+    Private Sub DrawLabel(g As Graphics, id As String, x As Single, y As Single, rad As Single, theme As Theme)
+        Dim sz = g.MeasureString(id, _font)
+        If sz.Width < 2 * rad - 2 AndAlso sz.Height < 2 * rad Then
+            g.DrawString(id, _font, SolidOf(&HFFFFFF), x - sz.Width / 2, y - sz.Height / 2)
+            Return
+        End If
+        Dim lx = x + rad * 0.7F, ly = y - rad * 0.7F - sz.Height
+        g.FillRectangle(SolidOf(theme.Background, 200), lx, ly, sz.Width, sz.Height)
+        g.DrawString(id, _font, SolidOf(theme.Ink), lx, ly)
+    End Sub
+
+    ''' <summary>Each moving ball's velocity (and its components), as far as it would go in the arrows' time; clipped to the canvas.</summary>
+    Private Sub DrawArrows(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
+        Dim scale = view.ToPixels(p.Arrows.Seconds) ' px per m/s
+        Dim main = PenOf(theme.Arrow, 3 * k)
+        Dim xPen = PenOf(theme.ArrowX, 2 * k)
+        Dim yPen = PenOf(theme.ArrowY, 2 * k)
+        Dim least = MinArrowPx * k
+        For Each c In p.World.Circles
+            If c.IsFixed Then Continue For
+            Dim s = view.ToScreen(c.Position)
+            Dim vx = CSng(c.Velocity.X * scale), vy = CSng(-c.Velocity.Y * scale)
+            If vx * vx + vy * vy < least * least OrElse Single.IsInfinity(vx) OrElse Single.IsInfinity(vy) Then Continue For
+            Dim sx = CSng(s.X), sy = CSng(s.Y)
+            If Math.Abs(vx) >= least Then Arrow(g, xPen, sx, sy, sx + vx, sy, k)
+            If Math.Abs(vy) >= least Then Arrow(g, yPen, sx, sy, sx, sy + vy, k)
+            Arrow(g, main, sx, sy, sx + vx, sy + vy, k)
+        Next
+    End Sub
+
+    Private Sub DrawDraft(g As Graphics, p As SimulationPresenter, view As ViewTransform, outline As Pen, theme As Theme, k As Single)
         Dim d = p.Draft
         If d Is Nothing OrElse Not d.HasCentre Then Return
         Dim s = view.ToScreen(d.Centre)
         Dim w = CSng(view.ToPixels(d.Width)), h = CSng(view.ToPixels(d.Height))
         Dim ghost = SolidOf(BodyColours.Parse(d.Colour, &H808080), 140)
+        ' A preview that would overlap something is outlined in red: a click there moves it to the nearest free place.
+        Dim edge = If(p.DraftFits, outline, PenOf(theme.Alert, 3 * k))
         If d.IsCircle Then
             g.FillEllipse(ghost, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
-            g.DrawEllipse(outline, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
+            g.DrawEllipse(edge, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
         Else
             g.FillRectangle(ghost, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
-            g.DrawRectangle(outline, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
+            g.DrawRectangle(edge, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
         End If
     End Sub
 
-    Private Sub DrawCue(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme)
+    Private Sub DrawCue(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
         Dim c = p.AimedCircle
         If c Is Nothing Then Return
         Dim centre = view.ToScreen(c.Position)
         Dim cursor = view.ToScreen(p.AimCursor)
         _pullPen.Color = Rgb(theme.Ink)
+        _pullPen.Width = 2 * k
         g.DrawLine(_pullPen, CSng(cursor.X), CSng(cursor.Y), CSng(centre.X), CSng(centre.Y))
         ' The shot: from the ball's centre along the impulse, as long as the pull.
         Dim j = p.CueImpulse
         If j.Length > 0 Then
             Dim tip = view.ToScreen(c.Position + j / CueShot.ImpulsePerMetre)
-            Arrow(g, PenOf(theme.Cue, 4), CSng(centre.X), CSng(centre.Y), CSng(tip.X), CSng(tip.Y))
+            Arrow(g, PenOf(theme.Cue, 4 * k), CSng(centre.X), CSng(centre.Y), CSng(tip.X), CSng(tip.Y), k)
         End If
         Dim label = p.CueLabel
         Dim sz = g.MeasureString(label, _font)
-        ' Under the ball, so that the label never hides it or the cue.
-        Dim lx = CSng(centre.X) - sz.Width / 2, ly = CSng(centre.Y + view.ToPixels(c.Radius)) + 8
+        ' Under the ball, so that the label never hides it or the cue; kept on the canvas.
+        Dim lx = CSng(centre.X) - sz.Width / 2, ly = CSng(centre.Y + view.ToPixels(c.Radius)) + 8 * k
+        Dim bounds = g.VisibleClipBounds
+        lx = Math.Max(bounds.Left + 2, Math.Min(lx, bounds.Right - sz.Width - 2))
+        ly = Math.Max(bounds.Top + 2, Math.Min(ly, bounds.Bottom - sz.Height - 2))
         g.FillRectangle(SolidOf(theme.Background, 220), lx - 2, ly - 2, sz.Width + 4, sz.Height + 4)
         g.DrawString(label, _font, SolidOf(theme.Ink), lx, ly)
     End Sub
 
-    Private Sub DrawScaleBar(g As Graphics, view As ViewTransform, theme As Theme, height As Integer)
-        Dim bar = ScaleBar.Choose(view.Scale, 160)
+    ''' <summary>In the strip under the container: the scale bar, then the arrows' key (a round speed drawn at the arrows' scale).</summary>
+    Private Sub DrawScaleBar(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, height As Integer, k As Single)
+        Dim bar = ScaleBar.Choose(view.Scale, 160 * k)
         If bar.Pixels <= 0 Then Return
-        ' In the strip under the container, the label to the right of the bar.
-        Dim x0 = CSng(Math.Max(16, view.OffsetX)), y0 = height - SimulationPresenter.ScaleStrip / 2.0F
+        Dim x0 = CSng(Math.Max(16 * k, view.OffsetX)), y0 = height - p.ScaleStripPixels / 2.0F
         Dim x1 = x0 + CSng(bar.Pixels)
-        Dim pen = PenOf(theme.Ink, 3)
+        Dim pen = PenOf(theme.Ink, 3 * k)
         g.DrawLine(pen, x0, y0, x1, y0)
-        g.DrawLine(pen, x0, y0 - 6, x0, y0 + 6)
-        g.DrawLine(pen, x1, y0 - 6, x1, y0 + 6)
-        g.DrawString(bar.Label, _font, SolidOf(theme.Ink), x1 + 8, y0 - _font.Height / 2.0F)
+        g.DrawLine(pen, x0, y0 - 6 * k, x0, y0 + 6 * k)
+        g.DrawLine(pen, x1, y0 - 6 * k, x1, y0 + 6 * k)
+        Dim label = bar.Label
+        g.DrawString(label, _font, SolidOf(theme.Ink), x1 + 8 * k, y0 - _font.Height / 2.0F)
+        If Not p.ShowArrows Then Return
+        ' The key: "→ 2 m/s", the arrow as long as a 2 m/s ball's.
+        Dim keyX = x1 + 8 * k + g.MeasureString(label, _font).Width + 24 * k
+        Dim pxPerMps = view.ToPixels(p.Arrows.Seconds)
+        Dim speed = p.Arrows.LegendSpeed(view.Scale, 90 * k)
+        If speed <= 0 Then Return
+        Dim len = CSng(speed * pxPerMps)
+        Arrow(g, PenOf(theme.Arrow, 3 * k), keyX, y0, keyX + len, y0, k)
+        g.DrawString("velocity " & Units.Quantity(speed, "m/s"), _font, SolidOf(theme.Ink), keyX + len + 6 * k, y0 - _font.Height / 2.0F)
     End Sub
 
     Private Sub DrawBanner(g As Graphics, p As SimulationPresenter, theme As Theme, width As Integer, height As Integer)
@@ -155,26 +203,28 @@ Friend NotInheritable Class ScenePainter
         Dim colour = theme.Ink
         If p.Mode = ClickMode.Delete Then
             text = "DELETE MODE: click a body to remove it"
-            colour = &HC62828
+            colour = theme.Alert
         ElseIf p.Draft IsNot Nothing Then
             text = "Click to place the " & p.Draft.KindName & "  (Esc cancels)"
         ElseIf p.IsPaused Then
             text = "PAUSED"
-            colour = &HC62828
+            colour = theme.Alert
+        ElseIf Not p.HasWalls Then
+            text = "no walls: balls can leave the box"
         End If
         If text Is Nothing Then Return
-        ' In the strip under the container, on the right (the scale bar is on the left).
+        ' In the strip under the container, on the right (the scale bar and the arrows' key are on the left).
         Dim sz = g.MeasureString(text, _bigFont)
-        Dim x = Math.Max(200.0F, width - sz.Width - 16), y = height - SimulationPresenter.ScaleStrip / 2.0F - sz.Height / 2
-        g.DrawString(text, _bigFont, SolidOf(If(theme.IsHighContrast AndAlso colour = &HC62828, &HFF5252, colour)), x, y)
+        Dim x = Math.Max(width * 0.5F, width - sz.Width - 16), y = height - p.ScaleStripPixels / 2.0F - sz.Height / 2
+        g.DrawString(text, _bigFont, SolidOf(colour), x, y)
     End Sub
 
     ''' <summary>An arrow as one polyline (shaft, then the two strokes of the head), so GDI+ strokes it in one call.</summary>
-    Private Sub Arrow(g As Graphics, pen As Pen, x0 As Single, y0 As Single, x1 As Single, y1 As Single)
+    Private Sub Arrow(g As Graphics, pen As Pen, x0 As Single, y0 As Single, x1 As Single, y1 As Single, k As Single)
         Dim dx = x1 - x0, dy = y1 - y0
         Dim len = CSng(Math.Sqrt(dx * dx + dy * dy))
         If len < 1 Then Return
-        Dim head = Math.Min(10.0F, len * 0.4F)
+        Dim head = Math.Min(10.0F * k, len * 0.4F)
         Dim ux = dx / len, uy = dy / len
         ' Wings at ±30° back from the tip; the path goes wing → tip → start, then tip → other wing.
         Dim pts = _arrowPoints
@@ -189,8 +239,8 @@ Friend NotInheritable Class ScenePainter
         If _font IsNot Nothing AndAlso large = _fontsLarge Then Return
         _font?.Dispose()
         _bigFont?.Dispose()
-        _font = New Font(FontFamily.GenericSansSerif, If(large, 14.0F, 10.0F), FontStyle.Bold)
-        _bigFont = New Font(FontFamily.GenericSansSerif, If(large, 20.0F, 14.0F), FontStyle.Bold)
+        _font = New Font(FontFamily.GenericSansSerif, CSng(If(large, 14.0, 10.0) * _fontScale), FontStyle.Bold)
+        _bigFont = New Font(FontFamily.GenericSansSerif, CSng(If(large, 20.0, 14.0) * _fontScale), FontStyle.Bold)
         _fontsLarge = large
     End Sub
 
@@ -240,6 +290,7 @@ Friend NotInheritable Class ScenePainter
         _solid.Clear()
         _pens.Clear()
         _pullPen.Dispose()
+        _openPen.Dispose()
         _font?.Dispose()
         _bigFont?.Dispose()
     End Sub

@@ -22,8 +22,20 @@ Public NotInheritable Class AppDriver
     Public ReadOnly Property X As XSession
 
     Public Sub New()
-        X = New XSession("--trace")
-        WaitFor("ready", TimeSpan.FromSeconds(30))
+        Me.New(New XSessionOptions())
+    End Sub
+
+    ''' <summary>Starts the app with --trace in a session set up as <paramref name="options"/> say.</summary>
+    Public Sub New(options As XSessionOptions)
+        Me.New(options, Array.Empty(Of String)())
+    End Sub
+
+    ''' <summary>Starts the app with --trace (and <paramref name="extraArgs"/>) in a session set up as <paramref name="options"/> say.</summary>
+    Public Sub New(options As XSessionOptions, ParamArray extraArgs As String())
+        Dim args As New List(Of String) From {"--trace"}
+        args.AddRange(extraArgs)
+        X = New XSession(options, args.ToArray())
+        WaitFor("^ready$", TimeSpan.FromSeconds(30))
         ReadLayout()
         ' A known starting point for the pointer (see MoveTo), outside every control.
         X.XDo("mousemove", "1", "1")
@@ -34,7 +46,7 @@ Public NotInheritable Class AppDriver
     ''' <summary>Reads the last layout the app printed (it prints one after each re-layout).</summary>
     Public Sub ReadLayout()
         For Each line In Lines()
-            Dim m = Regex.Match(line, "^control (\S+) (-?\d+) (-?\d+) (\d+) (\d+)$")
+            Dim m = Regex.Match(line, "^control (\S+) (-?\d+) (-?\d+) (\d+) (\d+)( fits| cut)?$")
             If m.Success Then _controls(m.Groups(1).Value) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value), Int(m.Groups(4).Value), Int(m.Groups(5).Value))
             m = Regex.Match(line, "^view scale (\S+) origin (\S+) (\S+)$")
             If m.Success Then
@@ -46,8 +58,9 @@ Public NotInheritable Class AppDriver
         If Not _controls.ContainsKey("canvas") OrElse _scale <= 0 Then Throw New InvalidOperationException("the app printed no layout" & vbLf & X.AppOutput())
     End Sub
 
-    ''' <summary>The screen rectangle of a named control.</summary>
+    ''' <summary>The screen rectangle of a named control, where the app last laid it out (a longer message moves the panel down).</summary>
     Public Function Control(name As String) As (X As Integer, Y As Integer, W As Integer, H As Integer)
+        ReadLayout()
         Dim r As (X As Integer, Y As Integer, W As Integer, H As Integer) = Nothing
         If Not _controls.TryGetValue(name, r) Then Throw New KeyNotFoundException("no control '" & name & "' in the layout" & vbLf & X.AppOutput())
         Return r
@@ -66,11 +79,38 @@ Public NotInheritable Class AppDriver
         End Get
     End Property
 
-    ''' <summary>Clicks the middle of a named control with the left button.</summary>
+    ''' <summary>Clicks the middle of a named control with the left button (scrolling the side panel to it first).</summary>
     Public Sub Click(name As String)
-        Dim r = Control(name)
+        Dim r = ScrollIntoView(name)
         ClickAt(r.X + r.W \ 2, r.Y + r.H \ 2)
     End Sub
+
+    ''' <summary>
+    ''' When the side panel is scrolled (large fonts on a small screen) and the control is out of its
+    ''' view, turns the mouse wheel over the panel until it is in view; returns where it is then.
+    ''' </summary>
+    Public Function ScrollIntoView(name As String) As (X As Integer, Y As Integer, W As Integer, H As Integer)
+        Dim r = Control(name)
+        If name = "side" OrElse Not _controls.ContainsKey("side") Then Return r
+        Dim side = Control("side")
+        If r.X < side.X Then Return r
+        For attempt = 1 To 30
+            Dim wheel As String
+            If r.Y + r.H > side.Y + side.H Then
+                wheel = "5"
+            ElseIf r.Y < side.Y Then
+                wheel = "4"
+            Else
+                Exit For
+            End If
+            Dim from = Mark()
+            MoveTo(side.X + side.W \ 2, side.Y + side.H \ 2)
+            X.XDo("click", wheel)
+            WaitFor("^ready$", skip:=from)
+            r = Control(name)
+        Next
+        Return r
+    End Function
 
     ''' <summary>Clicks a screen point.</summary>
     Public Sub ClickAt(sx As Integer, sy As Integer, Optional button As Integer = 1)
@@ -125,9 +165,30 @@ Public NotInheritable Class AppDriver
         Click(name)
         X.XDo("key", "ctrl+a")
         X.XDo("key", "BackSpace")
-        If text.Length > 0 Then X.XDo("type", "--delay", "30", text)
+        If text.Length > 0 Then X.XDo("type", "--delay", "30", "--", text)
         Thread.Sleep(100)
     End Sub
+
+    ''' <summary>What the text boxes held at the last "inputs" trace line, read from the boxes themselves.</summary>
+    Public Function Inputs() As Dictionary(Of String, String)
+        Dim last = Lines().LastOrDefault(Function(l) l.StartsWith("inputs ", StringComparison.Ordinal))
+        Dim result As New Dictionary(Of String, String)(StringComparer.Ordinal)
+        If last Is Nothing Then Return result
+        For Each m As Match In Regex.Matches(last, "(\w+)=\[([^\]]*)\]")
+            result(m.Groups(1).Value) = m.Groups(2).Value
+        Next
+        Return result
+    End Function
+
+    ''' <summary>The last trace line that matches; fails, showing the trace, when none does.</summary>
+    Public Function LastMatch(pattern As String) As Match
+        Dim re As New Regex(pattern)
+        For Each line In Lines().Reverse()
+            Dim m = re.Match(line)
+            If m.Success Then Return m
+        Next
+        Throw New Xunit.Sdk.XunitException("no trace line matching /" & pattern & "/" & vbLf & X.AppOutput())
+    End Function
 
     ''' <summary>Waits for a visible window with this title (a dialog) and returns its X id.</summary>
     Public Function WaitForWindow(title As String, Optional timeoutSeconds As Double = 10) As String
@@ -143,7 +204,7 @@ Public NotInheritable Class AppDriver
 
     ''' <summary>Types text into whatever has the keyboard focus, then presses Return.</summary>
     Public Sub TypeAndEnter(text As String)
-        X.XDo("type", "--delay", "30", text)
+        X.XDo("type", "--delay", "30", "--", text)
         Thread.Sleep(200)
         X.XDo("key", "Return")
         Thread.Sleep(200)

@@ -203,19 +203,39 @@ Public Class ClassroomGuiTests
     End Sub
 
     <GuiFact>
-    Public Sub ProjectorView_LargeFontsAndHighContrast()
+    Public Sub ProjectorView_HighContrastDarkensTheWholeWindow_AndLargeFontsGrowTheCanvasAndItsLabels()
         Using app As New AppDriver()
+            Dim normalScale = app.Scale
+            Dim from = app.Mark()
             app.ClickAndWait("high-contrast", "^high contrast on$")
-            app.ClickAndWait("large-fonts", "^large fonts on$")
-            app.WaitFor("^ready$", skip:=app.Mark() - 2)
-            Thread.Sleep(400)
+            app.WaitFor("^ready$", skip:=from)
+            from = app.Mark()
+            app.Click("large-fonts")
+            app.WaitFor("^large fonts on$", skip:=from)
+            app.WaitFor("^ready$", skip:=from)
             app.ReadLayout()
+            Dim m = app.ClickAndWait("pause", "^body blue at \((\S+), (\S+)\)")
+            Thread.Sleep(400)
             Dim shot = app.X.Shoot("projector")
             Dim c = app.Control("canvas")
             Dim dark = shot.Fraction(c.X, c.Y, c.X + c.W, c.Y + c.H, Function(p) Luma(p) < 40)
             Assert.True(dark > 0.6, $"the high-contrast canvas is dark ({dark:P0})")
+            ' Not the canvas alone: the side panel and the tables are dark too.
+            Dim side = app.Control("side")
+            Dim darkSide = shot.Fraction(side.X, side.Y, side.X + side.W, side.Y + side.H, Function(p) Luma(p) < 60)
+            Assert.True(darkSide > 0.6, $"the high-contrast side panel is dark ({darkSide:P0})")
+            Dim tabs = app.Control("tabs")
+            Dim darkTables = shot.Fraction(tabs.X, tabs.Y + tabs.H \ 2, tabs.X + tabs.W, tabs.Y + tabs.H, Function(p) Luma(p) < 60)
+            Assert.True(darkTables > 0.6, $"the high-contrast tables are dark ({darkTables:P0})")
             Dim b = app.Control("pause")
             Assert.True(b.H >= 34, $"buttons grow with large fonts (pause is {b.H} px high)")
+            ' The canvas grows with large fonts (the tables give up height), and so do its labels.
+            Assert.True(app.Scale > normalScale, $"the canvas shrank: {normalScale} → {app.Scale} px/m")
+            Dim ball = app.Screen(AppDriver.Dbl(m.Groups(1).Value), AppDriver.Dbl(m.Groups(2).Value))
+            Dim rad = CInt(0.2 * app.Scale)
+            ' The id "blue" does not fit in the ball at 14 pt: it is written beside it, white on black.
+            Dim label = shot.Fraction(ball.X + rad \ 2, ball.Y - rad - 40, ball.X + rad + 70, ball.Y - rad \ 2, Function(p) Luma(p) > 200)
+            Assert.True(label > 0.03, $"no label beside the ball ({label:P1} white pixels)")
         End Using
     End Sub
 

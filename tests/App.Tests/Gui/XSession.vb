@@ -4,16 +4,30 @@ Imports System.IO
 Imports System.Text
 Imports System.Threading
 
+''' <summary>How an <see cref="XSession"/> sets up its screen and starts the app.</summary>
+Public NotInheritable Class XSessionOptions
+    ''' <summary>The screen, "WIDTHxHEIGHTxDEPTH".</summary>
+    Public Property Screen As String = "1400x900x24"
+    ''' <summary>The DPI a desktop announces (the Xft.dpi resource); 0 leaves it unset.</summary>
+    Public Property Dpi As Integer
+    ''' <summary>A keyboard layout for setxkbmap ("fr"); Nothing leaves the default (us).</summary>
+    Public Property KeyboardLayout As String
+    ''' <summary>Extra environment for the app; a Nothing value removes the variable.</summary>
+    Public ReadOnly Property Environment As New Dictionary(Of String, String)(StringComparer.Ordinal)
+    ''' <summary>True: start the app through scripts/run.sh, as a teacher does; False: run the exe on Mono directly.</summary>
+    Public Property ThroughLauncher As Boolean = True
+End Class
+
 ''' <summary>
-''' A private X server (Xvfb) with the real app (the net48 exe on Mono) running in it, driven with
-''' xdotool and photographed with ImageMagick's import, as a person at the screen would use it.
-''' Dispose ends both. Failure messages carry the app's stdout and stderr.
+''' A private X server (Xvfb) with the real app (the net48 exe on Mono) running in it, started the
+''' way the launcher starts it, driven with xdotool and photographed with ImageMagick's import, as a
+''' person at the screen would use it. Dispose ends both. Failure messages carry the app's stdout and stderr.
 ''' </summary>
 Public NotInheritable Class XSession
     Implements IDisposable
 
     Public Const WindowTitle As String = "Collision Simulator"
-    Private Shared ReadOnly Tools As String() = {"Xvfb", "xdotool", "import", "convert", "mono"}
+    Private Shared ReadOnly Tools As String() = {"Xvfb", "xdotool", "import", "convert", "mono", "setxkbmap", "xprop"}
     Private Shared ReadOnly ScreenSizeQuery As String() = {"getdisplaygeometry"}
 
     Private ReadOnly _xvfb As Process
@@ -56,21 +70,43 @@ Public NotInheritable Class XSession
 
     ''' <summary>Starts Xvfb and the app with the given arguments, and waits for the window.</summary>
     Public Sub New(ParamArray appArgs As String())
+        Me.New(New XSessionOptions(), appArgs)
+    End Sub
+
+    ''' <summary>The session's options.</summary>
+    Public ReadOnly Property Options As XSessionOptions
+
+    ''' <summary>Starts Xvfb as the options say and the app in it with the given arguments, and waits for the window.</summary>
+    Public Sub New(options As XSessionOptions, ParamArray appArgs As String())
+        If options Is Nothing Then Throw New ArgumentNullException(NameOf(options))
+        Me.Options = options
         Dim missing = MissingTools()
         If missing.Count > 0 Then Throw New InvalidOperationException("GUI test needs " & String.Join(", ", missing) & " (run: bash scripts/install-deps.sh test)")
         If Not File.Exists(AppExe) Then Throw New FileNotFoundException("the app is not built: " & AppExe)
         ShotDirectory = Path.Combine(RepoRoot, "tests", "App.Tests", "bin", "screenshots")
         Directory.CreateDirectory(ShotDirectory)
 
-        _xvfb = StartXvfb(_Display)
+        _xvfb = StartXvfb(options.Screen, _Display)
         Try
             _env("DISPLAY") = Display
-            Dim psi As New ProcessStartInfo("mono") With {.UseShellExecute = False, .RedirectStandardOutput = True, .RedirectStandardError = True, .WorkingDirectory = RepoRoot}
-            psi.ArgumentList.Add(AppExe)
+            SetUpDesktop()
+            Dim psi As ProcessStartInfo
+            If options.ThroughLauncher Then
+                psi = New ProcessStartInfo("bash") With {.UseShellExecute = False, .RedirectStandardOutput = True, .RedirectStandardError = True, .WorkingDirectory = RepoRoot}
+                psi.ArgumentList.Add(Path.Combine(RepoRoot, "scripts", "run.sh"))
+                psi.ArgumentList.Add("--no-build")
+                psi.Environment("CONFIGURATION") = Configuration
+            Else
+                psi = New ProcessStartInfo("mono") With {.UseShellExecute = False, .RedirectStandardOutput = True, .RedirectStandardError = True, .WorkingDirectory = RepoRoot}
+                psi.ArgumentList.Add(AppExe)
+            End If
             For Each a In appArgs
                 psi.ArgumentList.Add(a)
             Next
             psi.Environment("DISPLAY") = Display
+            For Each kv In options.Environment
+                If kv.Value Is Nothing Then psi.Environment.Remove(kv.Key) Else psi.Environment(kv.Key) = kv.Value
+            Next
             _app = New Process With {.StartInfo = psi}
             AddHandler _app.OutputDataReceived, Sub(s, e) If e.Data IsNot Nothing Then SyncLock _appOut : _appOut.AppendLine(e.Data) : End SyncLock
             AddHandler _app.ErrorDataReceived, Sub(s, e) If e.Data IsNot Nothing Then SyncLock _appErr : _appErr.AppendLine(e.Data) : End SyncLock
@@ -86,10 +122,25 @@ Public NotInheritable Class XSession
         End Try
     End Sub
 
+    ''' <summary>
+    ''' The desktop the options ask for: a keyboard layout (as a teacher's would be), and the DPI as
+    ''' GNOME, KDE and Xfce announce it to X clients, in the Xft.dpi resource.
+    ''' </summary>
+    Private Sub SetUpDesktop()
+        If Not String.IsNullOrEmpty(Options.KeyboardLayout) Then
+            Dim r = Tool("setxkbmap", Options.KeyboardLayout)
+            If r.ExitCode <> 0 Then Throw New InvalidOperationException("setxkbmap " & Options.KeyboardLayout & " failed: " & r.ToString())
+        End If
+        If Options.Dpi > 0 Then
+            Dim r = Tool("xprop", "-root", "-f", "RESOURCE_MANAGER", "8s", "-set", "RESOURCE_MANAGER", "Xft.dpi:" & vbTab & Options.Dpi.ToString(Globalization.CultureInfo.InvariantCulture) & vbLf)
+            If r.ExitCode <> 0 Then Throw New InvalidOperationException("xprop could not set Xft.dpi: " & r.ToString())
+        End If
+    End Sub
+
     ''' <summary>Xvfb on a free display from :101 (ready when it answers xdotool), or an exception saying it could not start.</summary>
-    Private Shared Function StartXvfb(ByRef display As String) As Process
+    Private Shared Function StartXvfb(screen As String, ByRef display As String) As Process
         Dim n As Integer
-        Dim p = XDisplays.StartServer("Xvfb", 101, 160, "1400x900x24", TimeSpan.FromSeconds(15), AddressOf Answers, n)
+        Dim p = XDisplays.StartServer("Xvfb", 101, 160, screen, TimeSpan.FromSeconds(15), AddressOf Answers, n)
         If p Is Nothing Then Throw New InvalidOperationException("could not start Xvfb on any display from :101 to :160")
         display = ":" & n.ToString(Globalization.CultureInfo.InvariantCulture)
         Return p

@@ -94,7 +94,9 @@ Public Class AddAndDeleteTests
         Assert.Equal(InputLimits.MaxMass, h.P.Draft.Mass)
         Assert.Equal("2", h.P.Inputs.RadiusText)
         Assert.Equal("1000", h.P.Inputs.MassText)
-        Assert.Contains("radius set to the maximum, 2 m", h.View.LastMessage, StringComparison.Ordinal)
+        Assert.Contains("radius set to the maximum, 2.00 m", h.View.LastMessage, StringComparison.Ordinal)
+        Assert.Contains("mass set to the maximum, 1000 kg", h.View.LastMessage, StringComparison.Ordinal)
+        Assert.Equal(1, h.View.InputsShown)
     End Sub
 
     <Fact>
@@ -202,10 +204,11 @@ Public Class SizeEdgeTests
     <Fact>
     Public Sub ASmallAcceptedRadius_IsShownBackAsTyped_NotAsZero()
         Dim h As New PresenterHarness()
-        h.P.BeginAddCircle("0.0004", "0.0004", False)
+        h.P.BeginAddCircle("0.0125", "0.0125", False)
         Assert.NotNull(h.P.Draft)
-        Assert.Equal("0.0004", h.P.Inputs.RadiusText)
-        Assert.Equal("0.0004", h.P.Inputs.MassText)
+        Assert.Equal("0.0125", h.P.Inputs.RadiusText)
+        Assert.Equal("0.0125", h.P.Inputs.MassText)
+        Assert.Equal(0, h.View.InputsShown)
     End Sub
 
     <Fact>
@@ -216,7 +219,7 @@ Public Class SizeEdgeTests
         Dim before = h.P.World.Circles.Count
         h.LeftClick(1.5, 1.5)
         Assert.Equal(before, h.P.World.Circles.Count)
-        Assert.Contains("does not fit", h.View.LastMessage)
+        Assert.Contains("does not fit in the container", h.View.LastMessage)
         For i = 1 To 20
             h.P.Tick(0.05)
         Next
@@ -232,6 +235,6 @@ Public Class SizeEdgeTests
         h.LeftClick(2, 2)
         h.P.ResizeContainer("1.5", "1.5")
         Assert.Equal(8.0, h.P.World.Width)
-        Assert.Contains("does not fit", h.View.LastMessage)
+        Assert.Contains("the widest ball is 2.00 m across and would not fit", h.View.LastMessage.Replace(Units.Nbsp, " "c), StringComparison.Ordinal)
     End Sub
 End Class

@@ -23,7 +23,7 @@ Public Class CollisionsAndLogTests
         Assert.Equal(CollisionLogEntry.Headers.Count, cells.Length)
         Assert.Equal("3.50 → 3.50", cells(3))
         Assert.Equal("0%", cells(4))
-        Assert.Equal("(-1.00, 0.00) → (-1.00, 0.00)", cells(5))
+        Assert.Equal("(−1.00, 0) → (−1.00, 0)", cells(5))
         Assert.Equal("1 ↔ 2", cells(1))
         Assert.Equal(-1.0, h.P.World.Momentum().X, 6)
     End Sub
@@ -87,7 +87,8 @@ Public Class CollisionsAndLogTests
         Dim log As New CollisionLog()
         Dim a As New Circle(New Vector(0, 0), 0.1, 1)
         For k = 1 To 5
-            log.Record(New CollisionRecord(k, a, Nothing, WallSide.Left, CollisionKind.CircleWall, New Vector(-1, 0), New Vector(1, 0), Vector.Zero, Vector.Zero), Nothing)
+            Dim other As New Circle(New Vector(1, 0), 0.1, 1, id:="o" & k)
+            log.Record(New CollisionRecord(k, a, other, WallSide.Left, CollisionKind.CircleCircle, New Vector(-1, 0), New Vector(1, 0), Vector.Zero, Vector.Zero), Nothing)
             log.EndFrame()
         Next
         Assert.Equal(5.0, log(0).Time)
@@ -99,15 +100,17 @@ Public Class CollisionsAndLogTests
     End Sub
 
     <Fact>
-    Public Sub Tables_ShowEveryColumnWithUnits()
-        Assert.Contains("Speed (m/s)", BodyTable.CircleHeaders)
-        Assert.Contains("Density (kg/m²)", BodyTable.CircleHeaders)
+    Public Sub Tables_ShowEveryColumnWithUnits_InSignificantFigures()
+        Assert.Contains("Speed (m/s)", BodyTable.Circles.Headers)
+        Assert.Contains("Density (kg/m²)", BodyTable.Circles.Headers)
         Dim c As New Circle(New Vector(1, 2), 0.5, 2, New Vector(3, 4), "b1") With {.Color = "#123456"}
-        Dim row = BodyTable.CircleRow(c)
-        Assert.Equal({"b1", "#123456", "1.00", "2.00", "3.00", "4.00", "5.00", "2.00", "0.500", Units.Num(2 / (Math.PI * 0.25))}, row)
-        Dim r = BodyTable.RectangleRow(New Rectangle(New Vector(1, 0), 2, 0.5, "t"))
-        Assert.Equal("2.00 × 0.50", r(8))
-        Assert.Equal("fixed (∞)", r(7))
-        Assert.Equal(BodyTable.RectangleHeaders.Count, r.Length)
+        Dim row = BodyTable.Circles.Cells(BodyRow.Capture(c))
+        Assert.Equal("b1|#123456|1.00|2.00|3.00|4.00|5.00|2.00|0.500|2.55", String.Join("|", row))
+        Dim r = BodyTable.Rectangles.Cells(BodyRow.Capture(New Rectangle(New Vector(1, 0), 2, 0.5, "t")))
+        Assert.Equal("2.00 × 0.500", r(8))
+        Assert.Equal("fixed", r(7))
+        Assert.Equal(BodyTable.Rectangles.Headers.Count, r.Length)
+        Assert.True(BodyTable.Circles.Lists(c))
+        Assert.False(BodyTable.Rectangles.Lists(c))
     End Sub
 End Class

@@ -8,6 +8,7 @@ Public NotInheritable Class RecordingView
     Public ReadOnly Property Messages As New List(Of String)
     Public Property SettingsShown As Integer
     Public Property BodiesShown As Integer
+    Public Property InputsShown As Integer
     Public Property ThemesShown As Integer
 
     Public ReadOnly Property LastMessage As String
@@ -24,8 +25,12 @@ Public NotInheritable Class RecordingView
         SettingsShown += 1
     End Sub
 
-    Public Sub ShowBodies() Implements ISimulationView.ShowBodies
+    Public Sub ShowState() Implements ISimulationView.ShowState
         BodiesShown += 1
+    End Sub
+
+    Public Sub ShowInputs() Implements ISimulationView.ShowInputs
+        InputsShown += 1
     End Sub
 
     Public Sub ShowTheme() Implements ISimulationView.ShowTheme

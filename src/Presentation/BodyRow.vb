@@ -1,0 +1,53 @@
+Option Strict On
+
+''' <summary>
+''' One body's numbers at one moment, as the tables show them: copied when the presenter takes a
+''' snapshot, so the rows, the totals and the arrows of that moment agree however late the window
+''' draws them.
+''' </summary>
+Public Structure BodyRow
+    ''' <summary>The body's id.</summary>
+    Public Property Id As String
+    ''' <summary>"#rrggbb" or "".</summary>
+    Public Property Colour As String
+    ''' <summary>The point the body is placed by (a circle's centre, a rectangle's lower-left corner), m.</summary>
+    Public Property Position As Vector
+    ''' <summary>m/s</summary>
+    Public Property Velocity As Vector
+    ''' <summary>kg; +∞ for a fixed body.</summary>
+    Public Property Mass As Double
+    ''' <summary>A fixed body never moves.</summary>
+    Public Property IsFixed As Boolean
+    ''' <summary>The body's size, m: (radius, 0) for a circle, (width, height) for a rectangle.</summary>
+    Public Property Size As Vector
+    ''' <summary>m²</summary>
+    Public Property Area As Double
+    ''' <summary>The body's sizes by the names a scene file gives them, m: ("radius", r) for a circle; ("width", w), ("height", h) for a rectangle.</summary>
+    Public Property SizeFields As IReadOnlyList(Of (Name As String, Metres As Double))
+
+    ''' <summary>The row of a body now. Sizes are the one thing read by kind of body.</summary>
+    Public Shared Function Capture(body As Shape) As BodyRow
+        If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
+        Dim row As New BodyRow With {
+            .Id = body.Id, .Colour = If(body.Color, ""), .IsFixed = body.IsFixed, .Area = body.Area,
+            .Position = body.Position, .Velocity = body.Velocity, .Mass = body.Mass}
+        Select Case body.Kind
+            Case ShapeKind.Circle
+                Dim r = DirectCast(body, Circle).Radius
+                row.Size = New Vector(r, 0)
+                row.SizeFields = {("radius", r)}
+            Case ShapeKind.Rectangle
+                Dim box = DirectCast(body, Rectangle)
+                row.Size = New Vector(box.Width, box.Height)
+                row.SizeFields = {("width", box.Width), ("height", box.Height)}
+            Case ShapeKind.Segment
+                Dim length = DirectCast(body, Segment).Length
+                row.Size = New Vector(length, 0)
+                row.SizeFields = {("length", length)}
+            Case Else
+                row.Size = body.BoundsMax - body.BoundsMin
+                row.SizeFields = Array.Empty(Of (Name As String, Metres As Double))()
+        End Select
+        Return row
+    End Function
+End Structure

@@ -1,0 +1,17 @@
+Option Strict On
+
+''' <summary>The text boxes of the side panel.</summary>
+Public Enum InputField
+    ''' <summary>Circle radius, m.</summary>
+    Radius = 0
+    ''' <summary>Circle mass, kg.</summary>
+    Mass
+    ''' <summary>Rectangle width, m.</summary>
+    RectangleWidth
+    ''' <summary>Rectangle height, m.</summary>
+    RectangleHeight
+    ''' <summary>Container width, m.</summary>
+    ContainerWidth
+    ''' <summary>Container height, m.</summary>
+    ContainerHeight
+End Enum
