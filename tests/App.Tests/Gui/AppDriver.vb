@@ -35,12 +35,18 @@ Public NotInheritable Class AppDriver
         Dim args As New List(Of String) From {"--trace"}
         args.AddRange(extraArgs)
         X = New XSession(options, args.ToArray())
-        WaitFor("^ready$", TimeSpan.FromSeconds(30))
-        ReadLayout()
-        ' A known starting point for the pointer (see MoveTo), outside every control.
-        X.XDo("mousemove", "1", "1")
-        _pointer = (1, 1)
-        Thread.Sleep(100)
+        Try
+            WaitFor("^ready$", TimeSpan.FromSeconds(30))
+            ReadLayout()
+            ' A known starting point for the pointer (see MoveTo), outside every control.
+            X.XDo("mousemove", "1", "1")
+            _pointer = (1, 1)
+            Thread.Sleep(100)
+        Catch
+            ' No driver reaches the test's Using block, so nothing else would stop the app and Xvfb.
+            X.Dispose()
+            Throw
+        End Try
     End Sub
 
     ''' <summary>Reads the last layout the app printed (it prints one after each re-layout).</summary>
