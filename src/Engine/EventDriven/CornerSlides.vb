@@ -155,7 +155,7 @@ Friend NotInheritable Class CornerSlides
         If mk = BodyMode.Rounding OrElse mk = BodyMode.Sleeping Then Return Double.PositiveInfinity
         Dim xk, yk, vxk, vyk As Double
         b.Motion(k).StateAt(_s.Now, xk, yk, vxk, vyk)
-        Return TimeOfImpact.CircleCircle(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay,
+        Return TimeOfImpact.CircleCircleAccelerated(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay,
                                          b.Reach(k) + _radius(j) + b.Reach(j), SolverState.SlopAt(xk, yk))
     End Function
 

@@ -270,7 +270,10 @@ Friend NotInheritable Class RestRules
             add(New Vector(0, 1), -o.MinY)
             add(New Vector(0, -1), o.MaxY - _s.Height)
         End If
-        For k = 0 To _s.Obstacles.Count - 1
+        Dim firstNear, lastNear As Integer
+        Dim near = _s.ObstaclesNear(i, firstNear, lastNear)
+        For q = firstNear To lastNear
+            Dim k = near(q)
             Dim shape = _s.Shapes.Difference(_s.Obstacles.Outlines(k), o)
             Dim origin = New Vector(_s.Obstacles.X0(k), _s.Obstacles.Y0(k))
             Dim first, second As Integer
@@ -328,8 +331,10 @@ Friend NotInheritable Class RestRules
         Dim o = b.Outlines(i)
         If _s.Walls AndAlso (p.X + o.MinX < -tolerance OrElse p.Y + o.MinY < -tolerance OrElse
                              p.X + o.MaxX > _s.Width + tolerance OrElse p.Y + o.MaxY > _s.Height + tolerance) Then Return False
-        For k = 0 To _s.Obstacles.Count - 1
-            If ContactRules.OverlapWithObstacle(_s, i, k, p).Depth > tolerance Then Return False
+        Dim firstNear, lastNear As Integer
+        Dim near = _s.ObstaclesNear(i, firstNear, lastNear)
+        For q = firstNear To lastNear
+            If ContactRules.OverlapWithObstacle(_s, i, near(q), p).Depth > tolerance Then Return False
         Next
         Dim count = GridNeighbours.Collect(_s, i, _neighbours)
         For q = 0 To count - 1
@@ -397,6 +402,9 @@ Friend NotInheritable Class RestRules
             For q = 0 To count - 1
                 Dim j = _neighbours(q)
                 If b.Mode(j) <> BodyMode.Sleeping OrElse b.Motion(j).Py <= b.Motion(k).Py Then Continue For
+                ' Resting on k, or near enough above it to have fallen asleep on it while k still moved.
+                Dim c = ContactRules.OverlapWithBody(_s, j, k, New Vector(b.Motion(j).Px, b.Motion(j).Py), New Vector(b.Motion(k).Px, b.Motion(k).Py))
+                If c.Depth < -0.1 * Math.Min(b.Scale(j), b.Scale(k)) OrElse c.Normal.Y <= 0 Then Continue For
                 _above.Add(j)
             Next
             For Each j In _above
@@ -492,8 +500,11 @@ Friend NotInheritable Class RestRules
             If _s.Height - o.MaxY - py <= gap Then AddNormal(0, -1)
         End If
         ' Rectangles, then the other fixed bodies: the order the normals were always gathered in.
+        Dim firstNear, lastNear As Integer
+        Dim near = _s.ObstaclesNear(i, firstNear, lastNear)
         For pass = 0 To 1
-            For k = 0 To _s.Obstacles.Count - 1
+            For q = firstNear To lastNear
+                Dim k = near(q)
                 If (_s.Obstacles.Kind(k) = ShapeKind.Rectangle) <> (pass = 0) Then Continue For
                 Dim c = ContactRules.OverlapWithObstacle(_s, i, k, p)
                 If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)

@@ -93,6 +93,26 @@ Friend NotInheritable Class SolverState
         Publish(i)
     End Sub
 
+    Private _everyObstacle As Integer() = Array.Empty(Of Integer)()
+
+    ''' <summary>
+    ''' The obstacles body i could be touching where it is now: the returned array's items first … last.
+    ''' A gridded body's cell lists every obstacle within half a cell of it, which covers every contact;
+    ''' a body outside the grid (too large for it, or roaming) is given them all.
+    ''' </summary>
+    Friend Function ObstaclesNear(i As Integer, ByRef first As Integer, ByRef last As Integer) As Integer()
+        Dim c = Bodies.Slot(i).Cell
+        If c >= 0 Then
+            first = Grid.StaticStart(c)
+            last = Grid.StaticStart(c + 1) - 1
+            Return Grid.StaticItems
+        End If
+        If _everyObstacle.Length <> Obstacles.Count Then _everyObstacle = Enumerable.Range(0, Obstacles.Count).ToArray()
+        first = 0
+        last = Obstacles.Count - 1
+        Return _everyObstacle
+    End Function
+
     ''' <summary>
     ''' Body i leaves the grid for a while: it is about to slide along an arc that can take it further
     ''' than the cells around it are searched, so, like a body too large for the grid, it is checked

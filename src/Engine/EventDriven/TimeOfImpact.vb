@@ -25,15 +25,16 @@ Public Module TimeOfImpact
     ''' </summary>
     Public Function CircleCircle(dx As Double, dy As Double, dvx As Double, dvy As Double, dAy As Double,
                                  sumRadii As Double, slop As Double, Optional speedScale As Double = 0) As Double
-        Return CircleCircle(dx, dy, dvx, dvy, 0, dAy, sumRadii, slop, speedScale)
+        Return CircleCircleAccelerated(dx, dy, dvx, dvy, 0, dAy, sumRadii, slop, speedScale)
     End Function
 
     ''' <summary>
     ''' <see cref="CircleCircle(Double, Double, Double, Double, Double, Double, Double, Double)"/> with a relative
     ''' acceleration that may have a horizontal part too (dAx, dAy, m/s²): a body sliding down a slope.
-    ''' |Δp + Δv t + ½ Δa t²|² = R² is a quartic whenever Δa ≠ 0.
+    ''' |Δp + Δv t + ½ Δa t²|² = R² is a quartic whenever Δa ≠ 0. Its own name, not an overload: a call
+    ''' with eight arguments would otherwise bind silently to CircleCircle with its optional speed scale.
     ''' </summary>
-    Public Function CircleCircle(dx As Double, dy As Double, dvx As Double, dvy As Double, dAx As Double, dAy As Double,
+    Public Function CircleCircleAccelerated(dx As Double, dy As Double, dvx As Double, dvy As Double, dAx As Double, dAy As Double,
                                  sumRadii As Double, slop As Double, Optional speedScale As Double = 0) As Double
         Dim c0 = dx * dx + dy * dy - sumRadii * sumRadii
         Dim c1 = 2 * (dx * dvx + dy * dvy)
