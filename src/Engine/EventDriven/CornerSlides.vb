@@ -28,6 +28,10 @@ Friend NotInheritable Class CornerSlides
     ''' image in time (before _start the body is where the slide puts it at _start − t, moving the other way).
     ''' </summary>
     Private _climbing As Boolean() = Array.Empty(Of Boolean)()
+    ''' <summary>Where each sliding body was last found (m) and when (s): one quadrature per body per instant, however many neighbours ask.</summary>
+    Private _seenAt As Double() = Array.Empty(Of Double)()
+    Private _seenX As Double() = Array.Empty(Of Double)()
+    Private _seenY As Double() = Array.Empty(Of Double)()
     ''' <summary>Scratch list of a body's neighbours (no allocation per event).</summary>
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
 
@@ -47,6 +51,9 @@ Friend NotInheritable Class CornerSlides
         _ontoFace = New Boolean(n - 1) {}
         _start = New Double(n - 1) {}
         _climbing = New Boolean(n - 1) {}
+        _seenAt = Enumerable.Repeat(Double.NaN, n).ToArray()
+        _seenX = New Double(n - 1) {}
+        _seenY = New Double(n - 1) {}
         _neighbours = New Integer(n - 1) {}
     End Sub
 
@@ -122,6 +129,7 @@ Friend NotInheritable Class CornerSlides
         _ontoFace(i) = ontoFace
         _start(i) = startTime
         _climbing(i) = climbing
+        _seenAt(i) = Double.NaN
         Return True
     End Function
 
@@ -180,9 +188,14 @@ Friend NotInheritable Class CornerSlides
     ''' <summary>The gap (m) between the discs that hold sliding body j and body k now (negative if they overlap).</summary>
     Private Function Gap(j As Integer, k As Integer) As Double
         Dim b = _s.Bodies
-        Dim pj, vj As Vector
-        StateAt(j, _s.Now, pj, vj)
-        Return (b.PositionAt(k, _s.Now) - pj).Length - b.Reach(j) - b.Reach(k)
+        If _seenAt(j) <> _s.Now Then
+            Dim pj, vj As Vector
+            StateAt(j, _s.Now, pj, vj)
+            _seenAt(j) = _s.Now
+            _seenX(j) = pj.X
+            _seenY(j) = pj.Y
+        End If
+        Return (b.PositionAt(k, _s.Now) - New Vector(_seenX(j), _seenY(j))).Length - b.Reach(j) - b.Reach(k)
     End Function
 
     ''' <summary>How close (m) counts as about to touch: 10⁻⁶ of the smaller reach, and the touching tolerance.</summary>
