@@ -10,7 +10,8 @@ bash scripts/install-deps.sh test
 results="$(mktemp -d)"
 trap 'rm -rf "$results"' EXIT
 status=0
-dotnet test PhysicsEngine.sln -c Release --logger "trx" --results-directory "$results" "$@" || status=$?
+# A test that stops making progress is killed after 20 minutes (and named), rather than holding CI to its limit.
+dotnet test PhysicsEngine.sln -c Release --blame-hang-timeout 20m --logger "trx" --results-directory "$results" "$@" || status=$?
 
 # One plain count over every test project, read from the TRX files.
 passed=0; failed=0; skipped=0

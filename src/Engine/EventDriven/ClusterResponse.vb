@@ -47,10 +47,12 @@ Friend NotInheritable Class ClusterResponse
             Dim i = _members(k)
             If _inverseMass(k) = 0 Then Continue For
             ' Wedged: squeezed between bodies that do not give way (no velocity separates it from them
-            ' all), or back in a cluster at the same instant (gravity presses it into a gap its
-            ' contacts neither hold it in nor let it through). It cannot move at this instant: it
-            ' stops, and under gravity sleeps where it is, to wake again when something hits it.
-            Dim wedged = Not result.Separated OrElse _clusteredAt(i) = _s.Now
+            ' all), or back in a cluster at once (gravity presses it into a gap its contacts neither
+            ' hold it in nor let it through: a ball between a wall and a peg comes back within
+            ' nanoseconds, again and again). It stops, and under gravity sleeps where it is, to wake
+            ' again when something hits it. "At once" is the same instant without gravity, and within
+            ' 10⁻⁴ √(r/g) with it (the collapse guard's window).
+            Dim wedged = Not result.Separated OrElse ClusteredJustNow(i)
             _clusteredAt(i) = _s.Now
             Dim after = If(wedged, Vector.Zero, result.Velocities(k))
             _rest.ForgetHits(i)
@@ -65,6 +67,14 @@ Friend NotInheritable Class ClusterResponse
         ApplyRestRules()
         Report(result)
     End Sub
+
+    ''' <summary>Whether body i was last in a cluster at this instant, or (under gravity) within 10⁻⁴ √(r/g) before it.</summary>
+    Private Function ClusteredJustNow(i As Integer) As Boolean
+        Dim last = _clusteredAt(i)
+        If last = _s.Now Then Return True
+        If Not (_s.G > 0) OrElse Double.IsNaN(last) Then Return False
+        Return _s.Now - last <= 1.0E-4 * Math.Sqrt(_s.Bodies.Scale(i) / _s.G)
+    End Function
 
     ''' <summary>The cluster: body <paramref name="seed"/> and, breadth first, every movable body touching one already in it.</summary>
     Private Sub Gather(seed As Integer)

@@ -53,14 +53,27 @@ Public Module CornerSlide
         Return sum
     End Function
 
-    ''' <summary>The angle reached after sliding for <paramref name="time"/> seconds (bisection on <see cref="Duration"/>).</summary>
+    ''' <summary>
+    ''' The angle reached after sliding for <paramref name="time"/> seconds: the root of
+    ''' Duration(θ) = time, by Newton's method (dDuration/dθ = R / v(θ)) kept inside a bracket that
+    ''' bisection shrinks whenever a Newton step would leave it or the speed there is zero.
+    ''' </summary>
     Public Function AngleAfter(speed As Double, gravity As Double, radius As Double, startAngle As Double,
                                leaveAngle As Double, time As Double) As Double
         Dim lo = startAngle, hi = leaveAngle
-        For iteration = 1 To 60
-            Dim mid = 0.5 * (lo + hi)
-            If Duration(speed, gravity, radius, startAngle, mid) < time Then lo = mid Else hi = mid
+        Dim theta = 0.5 * (lo + hi)
+        For iteration = 1 To 100
+            Dim f = Duration(speed, gravity, radius, startAngle, theta) - time
+            If f < 0 Then lo = theta Else hi = theta
+            If f = 0 OrElse hi - lo <= 4 * Double.Epsilon Then Return theta
+            Dim v = SpeedAt(speed, gravity, radius, startAngle, theta)
+            Dim nextTheta = If(v > 0, theta - f * v / radius, Double.NaN)
+            ' Outside the bracket (or no slope): bisect instead.
+            If Not (nextTheta > lo AndAlso nextTheta < hi) Then nextTheta = 0.5 * (lo + hi)
+            If nextTheta = theta Then Return theta
+            If Math.Abs(nextTheta - theta) <= 1.0E-15 * Math.Max(1.0, Math.Abs(theta)) Then Return nextTheta
+            theta = nextTheta
         Next
-        Return 0.5 * (lo + hi)
+        Return theta
     End Function
 End Module

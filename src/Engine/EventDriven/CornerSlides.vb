@@ -28,6 +28,10 @@ Friend NotInheritable Class CornerSlides
     ''' image in time (before _start the body is where the slide puts it at _start − t, moving the other way).
     ''' </summary>
     Private _climbing As Boolean() = Array.Empty(Of Boolean)()
+    ''' <summary>Where each sliding body was last found (m) and when (s): one quadrature per body per instant, however many neighbours ask.</summary>
+    Private _seenAt As Double() = Array.Empty(Of Double)()
+    Private _seenX As Double() = Array.Empty(Of Double)()
+    Private _seenY As Double() = Array.Empty(Of Double)()
     ''' <summary>Scratch list of a body's neighbours (no allocation per event).</summary>
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
 
@@ -47,6 +51,9 @@ Friend NotInheritable Class CornerSlides
         _ontoFace = New Boolean(n - 1) {}
         _start = New Double(n - 1) {}
         _climbing = New Boolean(n - 1) {}
+        _seenAt = Enumerable.Repeat(Double.NaN, n).ToArray()
+        _seenX = New Double(n - 1) {}
+        _seenY = New Double(n - 1) {}
         _neighbours = New Integer(n - 1) {}
     End Sub
 
@@ -58,12 +65,15 @@ Friend NotInheritable Class CornerSlides
     ''' corner's normals end at the two <paramref name="cone"/> normals (Nothing for a full circle: a
     ''' fixed circle, a ball at rest). A body climbing towards the top too slowly to pass it turns back
     ''' and slides down again. Returns False, doing nothing, when it is too fast to follow the curve at
-    ''' all (it flies off at once) or rests exactly on top.
+    ''' all (it flies off at once), rests exactly on top, or has a moving neighbour touching it.
     ''' </summary>
     Friend Function Start(i As Integer, cx As Double, cy As Double, radius As Double, normal As Vector, velocity As Vector,
                           cone As (Vector, Vector)?) As Boolean
         Dim g = _s.G
         If Not (g > 0) Then Return False
+        ' A neighbour already touching would cut the slide short at once, and it would start again
+        ' at once: the contact rules carry it round instead (in hops).
+        If Crowded(i, New Vector(cx, cy) + normal * radius) Then Return False
         Dim phi = Math.Atan2(normal.X, normal.Y)
         Dim tangent = New Vector(Math.Cos(phi), -Math.Sin(phi)) ' clockwise
         Dim vt = Vector.Dot(velocity, tangent)
@@ -119,6 +129,7 @@ Friend NotInheritable Class CornerSlides
         _ontoFace(i) = ontoFace
         _start(i) = startTime
         _climbing(i) = climbing
+        _seenAt(i) = Double.NaN
         Return True
     End Function
 
@@ -144,10 +155,13 @@ Friend NotInheritable Class CornerSlides
     End Function
 
     ''' <summary>
-    ''' When body k first comes within reach of sliding body j: j's reference point stays within the arc's
-    ''' radius of its corner, and its shape within its reach of that, so k can touch it only inside the
-    ''' disc of radius (arc + reach j + reach k) about the corner. Reaching that disc ends the exact slide
-    ''' early (see <see cref="Interrupt"/>); +∞ if k never gets there.
+    ''' When body k could first touch sliding body j: no earlier than k enters the disc of radius
+    ''' (arc + reach j + reach k) about the corner, and no earlier than the gap between them now could
+    ''' close. That gap is |p_k − p_j| − reach j − reach k; j moves at most at √(v0² + 4gR) on its arc
+    ''' (energy), k at |v_k| + |a_k| t, so the gap closes no sooner than the root of
+    ''' ½|a_k| t² + (V_j + |v_k|) t = gap. At that time the pair is looked at again (see
+    ''' <see cref="StillApart"/>): a conservative advancement that follows the slide exactly until k
+    ''' really comes close. +∞ if k never gets there.
     ''' </summary>
     Friend Function TimeToReach(j As Integer, k As Integer) As Double
         Dim b = _s.Bodies
@@ -155,8 +169,56 @@ Friend NotInheritable Class CornerSlides
         If mk = BodyMode.Rounding OrElse mk = BodyMode.Sleeping Then Return Double.PositiveInfinity
         Dim xk, yk, vxk, vyk As Double
         b.Motion(k).StateAt(_s.Now, xk, yk, vxk, vyk)
-        Return TimeOfImpact.CircleCircleAccelerated(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay,
-                                         b.Reach(k) + _radius(j) + b.Reach(j), SolverState.SlopAt(xk, yk))
+        Dim disc = TimeOfImpact.CircleCircleAccelerated(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay,
+                                                        b.Reach(k) + _radius(j) + b.Reach(j), SolverState.SlopAt(xk, yk))
+        If Not (disc < Double.PositiveInfinity) Then Return disc
+        Dim gap = Me.Gap(j, k)
+        If gap <= Near(j, k) Then Return disc
+        Dim speed = Math.Sqrt(_v0(j) * _v0(j) + 4 * _s.G * _radius(j)) + Math.Sqrt(vxk * vxk + vyk * vyk)
+        Dim accel = Math.Sqrt(b.Motion(k).Ax * b.Motion(k).Ax + b.Motion(k).Ay * b.Motion(k).Ay)
+        Dim closing = 2 * gap / (speed + Math.Sqrt(speed * speed + 2 * accel * gap))
+        Return Math.Max(disc, closing)
+    End Function
+
+    ''' <summary>Whether sliding body j and body k are still clearly apart (further than <see cref="Near"/>): the slide goes on.</summary>
+    Friend Function StillApart(j As Integer, k As Integer) As Boolean
+        Return Gap(j, k) > Near(j, k)
+    End Function
+
+    ''' <summary>The gap (m) between the discs that hold sliding body j and body k now (negative if they overlap).</summary>
+    Private Function Gap(j As Integer, k As Integer) As Double
+        Dim b = _s.Bodies
+        If _seenAt(j) <> _s.Now Then
+            Dim pj, vj As Vector
+            StateAt(j, _s.Now, pj, vj)
+            _seenAt(j) = _s.Now
+            _seenX(j) = pj.X
+            _seenY(j) = pj.Y
+        End If
+        Return (b.PositionAt(k, _s.Now) - New Vector(_seenX(j), _seenY(j))).Length - b.Reach(j) - b.Reach(k)
+    End Function
+
+    ''' <summary>How close (m) counts as about to touch: 10⁻⁶ of the smaller reach, and the touching tolerance.</summary>
+    Private Function Near(j As Integer, k As Integer) As Double
+        Dim b = _s.Bodies
+        Return 1.0E-6 * Math.Min(b.Reach(j), b.Reach(k)) + 16 * SolverState.SlopAt(_cx(j), _cy(j))
+    End Function
+
+    ''' <summary>
+    ''' Whether body i, with its reference point at <paramref name="p"/>, has a neighbour (moving, not
+    ''' itself sliding) within <see cref="Near"/> of it: a slide would be cut short at once.
+    ''' </summary>
+    Friend Function Crowded(i As Integer, p As Vector) As Boolean
+        Dim b = _s.Bodies
+        Dim count = GridNeighbours.Collect(_s, i, _neighbours)
+        For q = 0 To count - 1
+            Dim k = _neighbours(q)
+            Dim mk = b.Slot(k).Mode
+            If mk = BodyMode.Rounding OrElse mk = BodyMode.Sleeping Then Continue For
+            Dim gap = (b.PositionAt(k, _s.Now) - p).Length - b.Reach(i) - b.Reach(k)
+            If gap <= 1.0E-6 * Math.Min(b.Reach(i), b.Reach(k)) + 16 * SolverState.SlopAt(p.X, p.Y) Then Return True
+        Next
+        Return False
     End Function
 
     ''' <summary>Fills the scratch list with body i's grid neighbours (see <see cref="Neighbour"/>); returns how many.</summary>

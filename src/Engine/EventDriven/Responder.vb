@@ -28,9 +28,13 @@ Friend NotInheritable Class Responder
                 If slot(j).Count <> slot(i).OtherCount Then
                     _s.Touched.Add(i) ' stale: the partner's motion changed since this was predicted
                 ElseIf slot(i).Mode = BodyMode.Rounding OrElse slot(j).Mode = BodyMode.Rounding Then
-                    ' Something reached a sliding ball's corner: stop following the slide exactly.
-                    If slot(i).Mode = BodyMode.Rounding Then _slides.Interrupt(i)
-                    If slot(j).Mode = BodyMode.Rounding Then _slides.Interrupt(j)
+                    ' A body came near a sliding one. Still clearly apart: look again later (the slide
+                    ' goes on exactly). About to touch: stop following the slide exactly.
+                    Dim sliding = If(slot(i).Mode = BodyMode.Rounding, i, j)
+                    If Not _slides.StillApart(sliding, If(sliding = i, j, i)) Then
+                        If slot(i).Mode = BodyMode.Rounding Then _slides.Interrupt(i)
+                        If slot(j).Mode = BodyMode.Rounding Then _slides.Interrupt(j)
+                    End If
                     _s.Touched.Add(i)
                     _s.Touched.Add(j)
                 Else
@@ -187,7 +191,15 @@ Friend NotInheritable Class Responder
         b.Motion(i).Py = corner.Y + n.Y * k.Radius
         Dim v = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
         _rest.MakeFree(i)
-        If k.Radius > 0 Then _slides.Start(i, corner.X, corner.Y, k.Radius, n, v, (n, k.EdgeNormals(nextFace)))
+        If k.Radius > 0 AndAlso Not _slides.Start(i, corner.X, corner.Y, k.Radius, n, v, (n, k.EdgeNormals(nextFace))) AndAlso
+           _slides.Crowded(i, New Vector(b.Motion(i).Px, b.Motion(i).Py)) Then
+            ' Kept from sliding round by a neighbour, and free at the very end of the face, gravity would
+            ' bring it straight back onto that face's end; ten touching tolerances clear of it, it meets
+            ' the rounded corner beyond instead, and hops round it.
+            Dim slop = SolverState.SlopAt(corner.X, corner.Y)
+            b.Motion(i).Px += n.X * 10 * slop
+            b.Motion(i).Py += n.Y * 10 * slop
+        End If
         _s.Changed(i)
     End Sub
 End Class

@@ -203,4 +203,21 @@ Public Class SupportTests
         Dim s = Math.Max(0, Math.Min(1, Vector.Dot(p - a, ab) / Vector.Dot(ab, ab)))
         Return (p - (a + ab * s)).Length
     End Function
+    <Fact>
+    Public Sub BallDroppedBetweenAWallAndAPeg_ComesToRestTouchingBoth_InFewEvents()
+        ' The gap (13 mm) is narrower than the ball (14 mm): it wedges there, held by the wall and the peg.
+        Dim w As New World(0.2, 0.3, G, 0.5)
+        Const rp = 0.005, r = 0.007
+        Dim peg = New Vector(0.018, 0.1)
+        w.Add(Circle.CreateFixed(peg, rp, "peg"))
+        Dim ball As New Circle(New Vector(0.0075, 0.2), r, 0.005, id:="ball")
+        w.Add(ball)
+        Dim solver = UseEventSolver(w)
+        w.Advance(1.0)
+        Assert.True(solver.EventCount < 100000, $"{solver.EventCount} events")
+        Assert.Equal(Vector.Zero, ball.Velocity)
+        Assert.True(Math.Abs(ball.Position.X - r) <= 1.0E-6, $"x = {ball.Position.X}, not touching the wall")
+        Assert.True(Math.Abs((ball.Position - peg).Length - (r + rp)) <= 1.0E-6, $"{(ball.Position - peg).Length - (r + rp)} m from the peg")
+    End Sub
+
 End Class

@@ -166,4 +166,21 @@ Public Class TimeOfImpactTests
         ' v² ≥ g r: leaves at once.
         Assert.Equal(0.0, CornerSlide.LeaveAngle(Math.Sqrt(9.81 * 0.05), 9.81, 0.05, 0))
     End Sub
+    <Theory>
+    <InlineData(0.0, 0.01)>
+    <InlineData(0.5, 0.0)>
+    <InlineData(2.0, 0.3)>
+    Public Sub CornerSlideAngleAfter_InvertsDuration_FromStartToLeave(speed As Double, startAngle As Double)
+        Const G = 9.81, R = 0.2
+        Dim leave = CornerSlide.LeaveAngle(speed, G, R, startAngle)
+        Dim total = CornerSlide.Duration(speed, G, R, startAngle, leave)
+        For k = 1 To 9
+            Dim t = total * k / 10
+            Dim theta = CornerSlide.AngleAfter(speed, G, R, startAngle, leave, t)
+            Assert.InRange(theta, startAngle, leave)
+            ' The time back from that angle is the time asked for, to rounding of the quadrature.
+            Assert.True(Math.Abs(CornerSlide.Duration(speed, G, R, startAngle, theta) - t) <= 1.0E-13 * total, $"t = {t}: θ = {theta}")
+        Next
+    End Sub
+
 End Class
