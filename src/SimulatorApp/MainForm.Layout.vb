@@ -92,6 +92,7 @@ Partial Friend NotInheritable Class MainForm
 
         Row(MessageHeight(), (_message, 1.0))
         Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
+        Row(rh + S(4), (_scenes, 0.5), (_restart, 0.5))
         Row(line + S(4), (_speedLabel, 1.0))
         Row(sliderHeight, (_speed, 1.0))
         Row(line + S(4), (_gravityLabel, 1.0))
@@ -236,6 +237,7 @@ Partial Friend NotInheritable Class MainForm
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
+        named.AddRange(LessonControls())
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).

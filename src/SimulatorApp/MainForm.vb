@@ -88,7 +88,7 @@ Partial Friend NotInheritable Class MainForm
         BuildControls()
         ResumeLayout(False)
 
-        _presenter = New SimulationPresenter(Me, store, world) With {.Trace = trace, .ScreenScale = _dpi.Scale, .SceneFolder = sceneFolder}
+        _presenter = New SimulationPresenter(Me, store, world) With {.Trace = trace, .ScreenScale = _dpi.Scale, .SceneFolder = sceneFolder, .LessonFolder = sceneFolder}
         _trace?.Invoke("dpi " & Units.Num(_dpi.Screen, 0) & " (" & _dpi.Source & "), gdi+ " & Units.Num(_dpi.Graphics, 0) & ", scale " & Units.Num(_dpi.Scale, 2))
         ShowTheme()
         ShowSettings()
@@ -155,6 +155,7 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_pause, "Pause", Sub() _presenter.TogglePause())
         AddButton(_reset, Captions.Reset, Sub() _presenter.Reset())
         AddButton(_deleteMode, "Delete mode", Sub() _presenter.ToggleDeleteMode())
+        BuildLessonControls()
 
         AddLabel(_speedLabel, "")
         SetUpSlider(_speed, SpeedSteps.Values.Count - 1, 1, Sub() _presenter.SetSpeedIndex(_speed.Value))
@@ -590,6 +591,7 @@ Partial Friend NotInheritable Class MainForm
     Protected Overrides Sub Dispose(disposing As Boolean)
         If disposing Then
             _timer.Dispose()
+            DisposeLessonControls()
             _painter.Dispose()
             _measure?.Dispose()
             _measureBitmap?.Dispose()
