@@ -54,7 +54,7 @@ Public Module LessonIndex
         Dim listed As New HashSet(Of String)(StringComparer.Ordinal)
         For Each raw In If(indexText, "").Split(LineFeed, StringSplitOptions.None)
             Dim line = raw.Trim()
-            If line.Length = 0 OrElse line.StartsWith("#", StringComparison.Ordinal) Then Continue For
+            If line.Length = 0 OrElse line(0) = "#"c Then Continue For
             Dim parts = line.Split(Bar, 3)
             Dim name = parts(0).Trim()
             If Not present.Contains(name) OrElse Not listed.Add(name) Then Continue For

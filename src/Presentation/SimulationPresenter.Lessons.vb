@@ -59,7 +59,8 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim before = World
         OpenScene(path)
         If Not ReferenceEquals(World, before) Then Return
-        Dim why = Message.Replace(" The scene on screen is kept.", "")
+        Dim why = Message.Replace(" The scene on screen is kept.", "").TrimEnd()
+        If why.Length = 0 OrElse why(why.Length - 1) <> "."c Then why &= "."
         Guarded(
             Sub()
                 EndGestures()
