@@ -16,9 +16,9 @@ Public Class CliLessonScenesTests
     <InlineData("pi-314.json", 314)>
     <InlineData("pi-3141.json", 3141)>
     Public Sub PiScene_CollidesAsOftenAsTheDigitsOfPi(name As String, digits As Integer)
-        Dim path = IO.Path.Combine(RepoRoot, "scenes", name)
+        Dim file = Path.Combine(RepoRoot, "scenes", name)
         Dim m As Double, big As Double
-        Using doc = JsonDocument.Parse(File.ReadAllText(path))
+        Using doc = JsonDocument.Parse(IO.File.ReadAllText(file))
             For Each b In doc.RootElement.GetProperty("bodies").EnumerateArray()
                 Dim id = b.GetProperty("id").GetString()
                 If id = "small" Then m = b.GetProperty("mass").GetDouble()
