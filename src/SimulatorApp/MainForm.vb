@@ -507,6 +507,12 @@ Partial Friend NotInheritable Class MainForm
             list.Invalidate()
         End If
         Dim totals = WrapTotals(snap.Totals, _totals.Width - S(8))
+        ' Totals that grew past one line (3141 collisions, 5.00×10⁵ J) get the second line the layout gave them no room for.
+        If totals.Contains(Environment.NewLine) AndAlso _totals.Height < 2 * LineHeight(_totals.Font) AndAlso IsHandleCreated Then
+            ArrangeControls()
+            TraceLayout()
+            Return
+        End If
         If totals <> _totals.Text Then _totals.Text = totals
         If _presenter.IsPaused Then _trace?.Invoke("totals " & totals.Replace(Environment.NewLine, " / "))
         _canvas.Invalidate()
