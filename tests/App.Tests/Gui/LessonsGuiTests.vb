@@ -141,6 +141,15 @@ Public Class LessonsGuiTests
             app.X.XDo("key", "ctrl+p")
             app.WaitFor("^resumed$", skip:=from)
             Assert.Equal("0.25", app.Inputs()("Radius"))
+            ' The menu without the mouse: its key, the arrow keys and Enter.
+            OpenMenu(app, withKey:=True)
+            from = app.Mark()
+            app.X.XDo("key", "Down")
+            Thread.Sleep(200)
+            app.X.XDo("key", "Down")
+            Thread.Sleep(200)
+            app.X.XDo("key", "Return")
+            app.WaitFor("^lesson head-on-inelastic.json: ", skip:=from)
             Assert.True(app.X.AppIsRunning, "the app died" & vbLf & app.X.AppOutput())
         End Using
     End Sub
