@@ -67,6 +67,7 @@ Partial Friend NotInheritable Class MainForm
         _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), totalsLines * line + S(8))
         Dim tabsTop = _totals.Bottom
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
+        PlaceLessonButtons(tabsTop, w - sideWidth)
         For Each list In _tables
             FitColumns(list, w - sideWidth - S(28))
         Next
@@ -92,7 +93,6 @@ Partial Friend NotInheritable Class MainForm
 
         Row(MessageHeight(), (_message, 1.0))
         Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
-        Row(rh + S(4), (_scenes, 0.5), (_restart, 0.5))
         Row(line + S(4), (_speedLabel, 1.0))
         Row(sliderHeight, (_speed, 1.0))
         Row(line + S(4), (_gravityLabel, 1.0))

@@ -12,13 +12,55 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _tips As New ToolTip()
 
     Private Sub BuildLessonControls()
-        AddButton(_scenes, SimulationPresenter.ScenesCaption, AddressOf ShowLessonMenu)
-        AddButton(_restart, SimulationPresenter.RestartCaption, Sub() _presenter.Restart())
+        ' On the tabs' header row, right of the tabs, where there is room at every screen size: the
+        ' side panel has no row to spare on a 1024 × 768 projector.
+        AddHeaderButton(_scenes, SimulationPresenter.ScenesCaption, AddressOf ShowLessonMenu)
+        AddHeaderButton(_restart, SimulationPresenter.RestartCaption, Sub() _presenter.Restart())
         _tips.SetToolTip(_scenes, "Ready-made lesson scenes (" & SimulationPresenter.ScenesKey & ")")
         _tips.SetToolTip(_restart, "Back to the scene as it was opened or last built (" & SimulationPresenter.RestartKey & ")")
         _tips.SetToolTip(_pause, "Pause or resume (" & SimulationPresenter.PauseKey & ")")
         _tips.SetToolTip(_reset, "Remove every body (" & SimulationPresenter.ResetKey & ")")
         AddHandler _lessonMenu.Closed, Sub(s, e) _trace?.Invoke("lesson menu closed")
+    End Sub
+
+    Private Sub AddHeaderButton(button As Button, text As String, action As Action)
+        button.Text = text
+        button.UseMnemonic = False
+        AddHandler button.Click, Sub(s, e) Act(action)
+        Controls.Add(button)
+        button.BringToFront()
+    End Sub
+
+    ''' <summary>
+    ''' Scenes and Restart at the right end of the tabs' header row (<paramref name="top"/> px down,
+    ''' ending <paramref name="right"/> px across), each as wide as its caption, in the theme's
+    ''' colours (they are not on the side panel, which colours its own).
+    ''' </summary>
+    Private Sub PlaceLessonButtons(top As Integer, right As Integer)
+        Dim header = If(_tabs.TabCount > 0, _tabs.GetTabRect(0).Height, LineHeight(Font) + S(8))
+        ' As tall as the side panel's buttons (Mono centres a caption by the font height it reports,
+        ' and clips it in a shorter button). Where the tabs are shorter (Mono does not scale them with
+        ' the DPI) the tabs move down, so the buttons end level with them and cover no text.
+        Dim height = Math.Max(S(26), Math.Max(LineHeight(Font) + S(9), Font.Height + S(4)))
+        Dim extra = Math.Max(0, height - header)
+        If extra > 0 Then _tabs.SetBounds(_tabs.Left, top + extra, _tabs.Width, Math.Max(1, _tabs.Height - extra))
+        Dim x = right - S(6)
+        For Each b In {_restart, _scenes}
+            Dim width = Math.Max(S(90), Measure(b.Text, Font).Width + S(24))
+            x -= width
+            b.SetBounds(x, top, width, height)
+            x -= S(6)
+            b.BringToFront()
+        Next
+        Dim theme = _presenter.Theme
+        For Each b In {_scenes, _restart}
+            b.ForeColor = ScenePainter.Rgb(theme.PanelText)
+            b.BackColor = ScenePainter.Rgb(theme.Button)
+            b.FlatStyle = If(theme.IsHighContrast, FlatStyle.Flat, FlatStyle.Standard)
+            b.FlatAppearance.BorderColor = ScenePainter.Rgb(theme.PanelText)
+            b.FlatAppearance.BorderSize = If(theme.IsHighContrast, 2, 1)
+            b.UseVisualStyleBackColor = Not theme.IsHighContrast
+        Next
     End Sub
 
     Private Sub DisposeLessonControls()

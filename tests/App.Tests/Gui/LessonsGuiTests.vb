@@ -159,6 +159,19 @@ Public Class LessonsGuiTests
         Using app As New AppDriver(New XSessionOptions(), IO.Path.Combine("scenes", "glancing-blow.json"))
             app.WaitFor("^opened glancing-blow.json: 2 bodies$")
             app.X.Shoot("lesson-command-line")
+            ' The menu and the buttons in the projector settings: large fonts, high contrast.
+            app.ClickAndWait("high-contrast", "^high contrast on$")
+            app.ClickAndWait("large-fonts", "^large fonts on$")
+            app.WaitFor("^ready$", skip:=app.Mark() - 1)
+            Dim items = OpenMenu(app)
+            Assert.Contains("glancing-blow.json", items.Keys)
+            ShootScreen(app, "lesson-menu-large-high-contrast")
+            app.X.XDo("key", "Escape")
+            app.WaitFor("^lesson menu closed$")
+            For Each name In {"scenes", "restart"}
+                Dim last = app.Lines().Last(Function(l) l.StartsWith("control " & name & " ", StringComparison.Ordinal))
+                Assert.EndsWith(" fits", last, StringComparison.Ordinal)
+            Next
             Assert.True(app.X.AppIsRunning, "the app died" & vbLf & app.X.AppOutput())
         End Using
     End Sub
