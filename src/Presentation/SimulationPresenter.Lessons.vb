@@ -108,7 +108,8 @@ Partial Public NotInheritable Class SimulationPresenter
         Try
             _start = Scenes.SceneFile.Save(World)
         Catch ex As Exception When TypeOf ex Is Scenes.SceneFormatException OrElse TypeOf ex Is ArgumentException OrElse TypeOf ex Is InvalidOperationException
-            Return ' a world that cannot be written keeps the last start it had
+            ' A world that cannot be written keeps the last start it had; it is not tried again
+            ' until the teacher builds something else.
         End Try
         _startBodies = World.Bodies.ToArray()
         _startWidth = World.Width
