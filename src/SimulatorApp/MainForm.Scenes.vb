@@ -85,6 +85,7 @@ Partial Friend NotInheritable Class MainForm
         Dim theme = _presenter.Theme
         Dim back = ScenePainter.Rgb(theme.Panel), fore = ScenePainter.Rgb(theme.PanelText)
         _lessonMenu.Font = Font
+        _lessonMenu.Renderer = If(theme.IsHighContrast, New ToolStripProfessionalRenderer(New LessonMenuColours()), New ToolStripProfessionalRenderer())
         _lessonMenu.BackColor = back
         _lessonMenu.ForeColor = fore
         Dim lessons = _presenter.Lessons()

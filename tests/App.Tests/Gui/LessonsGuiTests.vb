@@ -167,6 +167,9 @@ Public Class LessonsGuiTests
             app.WaitFor("^ready$", skip:=from)
             Dim items = OpenMenu(app)
             Assert.Contains("glancing-blow.json", items.Keys)
+            Dim r = items("glancing-blow.json")
+            app.MoveTo(r.X + 60, r.Y + r.H \ 2) ' the item under the pointer is highlighted
+            Thread.Sleep(300)
             ShootScreen(app, "lesson-menu-large-high-contrast")
             app.X.XDo("key", "Escape")
             app.WaitFor("^lesson menu closed$")
