@@ -3,7 +3,26 @@
 # they are missing, builds the app (net48) and runs it under Mono. Arguments go to the app.
 #   bash scripts/run.sh                  build, then run
 #   bash scripts/run.sh --no-build ...   run the build that is there (the GUI tests start the app this way)
+#   bash scripts/run.sh lesson.json      open that scene at the start (a path from where you are)
 set -euo pipefail
+
+# A scene file named relative to where the script was started from: made absolute before the cd
+# below, so "bash scripts/run.sh my-scene.json" opens the file in the caller's folder. The values
+# of --gas, --stats and --frame-benchmark are numbers and stay as they are.
+caller="$PWD"
+args=()
+takes_value=0
+for a in "$@"; do
+  if [ "$takes_value" = 1 ]; then
+    takes_value=0
+  elif [[ "$a" == --gas || "$a" == --stats || "$a" == --frame-benchmark ]]; then
+    takes_value=1
+  elif [[ "$a" != -* && "$a" != /* ]]; then
+    a="$caller/$a"
+  fi
+  args+=("$a")
+done
+set -- ${args[@]+"${args[@]}"}
 cd "$(dirname "$0")/.."
 
 if [ "${1:-}" = "--no-build" ]; then

@@ -171,6 +171,7 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Copies the world's state for the tables and totals, follows it with the arrows' scale, and tells the window.</summary>
     Private Sub TakeSnapshot()
         _sinceSnapshot = 0
+        NoteBuilding()
         _Snapshot = TableSnapshot.Take(World, Log.TotalSeen)
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
         _window.ShowState()
@@ -519,5 +520,6 @@ Partial Public NotInheritable Class SimulationPresenter
         FitView()
         _Snapshot = TableSnapshot.Take(w, 0)
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(w.Width, w.Height))
+        RememberStart()
     End Sub
 End Class

@@ -67,6 +67,7 @@ Partial Friend NotInheritable Class MainForm
         _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), totalsLines * line + S(8))
         Dim tabsTop = _totals.Bottom
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
+        PlaceLessonButtons(tabsTop, w - sideWidth)
         For Each list In _tables
             FitColumns(list, w - sideWidth - S(28))
         Next
@@ -236,6 +237,7 @@ Partial Friend NotInheritable Class MainForm
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
+        named.AddRange(LessonControls())
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).

@@ -88,7 +88,7 @@ Partial Friend NotInheritable Class MainForm
         BuildControls()
         ResumeLayout(False)
 
-        _presenter = New SimulationPresenter(Me, store, world) With {.Trace = trace, .ScreenScale = _dpi.Scale, .SceneFolder = sceneFolder}
+        _presenter = New SimulationPresenter(Me, store, world) With {.Trace = trace, .ScreenScale = _dpi.Scale, .SceneFolder = sceneFolder, .LessonFolder = sceneFolder}
         _trace?.Invoke("dpi " & Units.Num(_dpi.Screen, 0) & " (" & _dpi.Source & "), gdi+ " & Units.Num(_dpi.Graphics, 0) & ", scale " & Units.Num(_dpi.Scale, 2))
         ShowTheme()
         ShowSettings()
@@ -155,6 +155,7 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_pause, "Pause", Sub() _presenter.TogglePause())
         AddButton(_reset, Captions.Reset, Sub() _presenter.Reset())
         AddButton(_deleteMode, "Delete mode", Sub() _presenter.ToggleDeleteMode())
+        BuildLessonControls()
 
         AddLabel(_speedLabel, "")
         SetUpSlider(_speed, SpeedSteps.Values.Count - 1, 1, Sub() _presenter.SetSpeedIndex(_speed.Value))
@@ -506,6 +507,12 @@ Partial Friend NotInheritable Class MainForm
             list.Invalidate()
         End If
         Dim totals = WrapTotals(snap.Totals, _totals.Width - S(8))
+        ' Totals that grew past one line (3141 collisions, 5.00×10⁵ J) get the second line the layout gave them no room for.
+        If totals.Contains(Environment.NewLine) AndAlso _totals.Height < 2 * LineHeight(_totals.Font) AndAlso IsHandleCreated Then
+            ArrangeControls()
+            TraceLayout()
+            Return
+        End If
         If totals <> _totals.Text Then _totals.Text = totals
         If _presenter.IsPaused Then _trace?.Invoke("totals " & totals.Replace(Environment.NewLine, " / "))
         _canvas.Invalidate()
@@ -590,6 +597,7 @@ Partial Friend NotInheritable Class MainForm
     Protected Overrides Sub Dispose(disposing As Boolean)
         If disposing Then
             _timer.Dispose()
+            DisposeLessonControls()
             _painter.Dispose()
             _measure?.Dispose()
             _measureBitmap?.Dispose()

@@ -69,7 +69,7 @@ Public NotInheritable Class Program
         If gas.HasValue Then world = Scenarios.ElasticGas(gas.Value)
         Using form As New MainForm(trace, SceneStores.Create(), world, ScenesFolder())
             If stats.HasValue Then form.FrameStats = New FrameStats(stats.Value, Console.Out)
-            If scenePath IsNot Nothing Then form.Presenter.OpenScene(scenePath)
+            If scenePath IsNot Nothing Then form.Presenter.OpenAtStart(scenePath)
             Application.Run(form)
         End Using
         Return 0

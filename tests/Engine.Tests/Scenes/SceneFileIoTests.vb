@@ -76,7 +76,9 @@ Public Class SceneFileIoTests
     <Fact>
     Public Sub TheExampleScenesFolder_HoldsTheNamedExamples()
         Dim names = Directory.GetFiles(Path.Combine(RepoRoot(), "scenes"), "*.json").Select(Function(f) Path.GetFileName(f)).ToList()
-        For Each expected In {"demo.json", "bouncing-ball.json", "newtons-cradle.json", "pool-break.json", "peg-board.json"}
+        For Each expected In {"demo.json", "bouncing-ball.json", "newtons-cradle.json", "pool-break.json", "peg-board.json",
+                              "head-on.json", "head-on-inelastic.json", "glancing-blow.json", "pi-31.json", "pi-314.json", "pi-3141.json",
+                              "ideal-gas.json", "settling-pile.json"}
             Assert.Contains(expected, names)
         Next
     End Sub
