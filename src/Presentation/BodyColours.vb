@@ -4,7 +4,7 @@ Imports System.Globalization
 ''' <summary>
 ''' Random body colours that always show: picked in HSV (any hue, strong saturation) and kept only
 ''' when their contrast ratio is at least 3:1 against both the light and the dark (high-contrast)
-''' canvas, so no body ever fades into the background (the seed's planned fix). Colours are
+''' canvas, so no body ever fades into the background (it was planned from the start). Colours are
 ''' "#rrggbb", as scene files write them.
 ''' </summary>
 Public NotInheritable Class BodyColours

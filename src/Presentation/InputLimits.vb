@@ -1,7 +1,7 @@
 Option Strict On
 
 ''' <summary>
-''' The bounds on what the teacher can type, and the messages the seed's tests ask for. A value
+''' The bounds on what the teacher can type, and the messages a teacher sees when a value is out of range. A value
 ''' beyond a bound is brought to it, and the message says so; empty, zero, negative or non-numeric
 ''' values bring a message asking for suitable values. The lower bounds keep every derived number
 ''' finite and readable: a 1 cm ball is still drawn, its density and the cue's Δv = J/m stay below

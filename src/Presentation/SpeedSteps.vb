@@ -1,7 +1,7 @@
 Option Strict On
 
 ''' <summary>
-''' The speed slider's positions: from 20× slower (the seed's range) through real time up to 4×
+''' The speed slider's positions: from 20× slower (the original classroom range) through real time up to 4×
 ''' faster (safe now that nothing tunnels). Speed is simulated seconds per real second.
 ''' </summary>
 Public Module SpeedSteps

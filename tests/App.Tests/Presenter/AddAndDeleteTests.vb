@@ -2,7 +2,7 @@ Option Strict On
 Imports PhysicsEngine.Presentation
 Imports Xunit
 
-''' <summary>Objective 3: adding (with the seed's validation) and deleting.</summary>
+''' <summary>Objective 3: adding (with the input checks) and deleting.</summary>
 Public Class AddAndDeleteTests
     <Fact>
     Public Sub AddCircle_FollowsTheCursor_AndIsPlacedWhereClicked()
