@@ -115,10 +115,25 @@ Public Class SceneRoundTripTests
                 Dim c = DirectCast(x, Circle), d = DirectCast(y, Circle)
                 Assert.True(Same(c.Position.X, d.Position.X) AndAlso Same(c.Position.Y, d.Position.Y) AndAlso Same(c.Radius, d.Radius) AndAlso
                             Same(c.Mass, d.Mass) AndAlso Same(c.Velocity.X, d.Velocity.X) AndAlso Same(c.Velocity.Y, d.Velocity.Y), "circle differs, " & where)
-            Else
+            ElseIf TypeOf x Is Rectangle Then
                 Dim r = DirectCast(x, Rectangle), s = DirectCast(y, Rectangle)
                 Assert.True(Same(r.Position.X, s.Position.X) AndAlso Same(r.Position.Y, s.Position.Y) AndAlso Same(r.Width, s.Width) AndAlso Same(r.Height, s.Height), "rectangle differs, " & where)
+            ElseIf TypeOf x Is Segment Then
+                Dim r = DirectCast(x, Segment), s = DirectCast(y, Segment)
+                Assert.True(r.StartPoint = s.StartPoint AndAlso r.EndPoint = s.EndPoint, "segment differs, " & where)
+            Else
+                Dim r = DirectCast(x, Polygon), s = DirectCast(y, Polygon)
+                Assert.True(r.Vertices.SequenceEqual(s.Vertices), "polygon differs, " & where)
             End If
+            If Not x.IsFixed Then
+                Assert.True(Same(x.Mass, y.Mass) AndAlso Same(x.Velocity.X, y.Velocity.X) AndAlso Same(x.Velocity.Y, y.Velocity.Y), "mass or velocity differs, " & where)
+            End If
+        Next
+        Assert.True(a.Links.Count = b.Links.Count, "link count differs: " & context)
+        For i = 0 To a.Links.Count - 1
+            Dim x = a.Links(i), y = b.Links(i)
+            Assert.True(x.Kind = y.Kind AndAlso x.Id = y.Id AndAlso Same(x.Length, y.Length) AndAlso Same(x.Stiffness, y.Stiffness) AndAlso
+                        Same(x.Damping, y.Damping), "link " & i.ToString(CultureInfo.InvariantCulture) & " differs: " & context)
         Next
     End Sub
 
