@@ -32,6 +32,8 @@ Friend NotInheritable Class ClusterResponse
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
     ''' <summary>Per body: the instant (s) it was last resolved in a cluster.</summary>
     Private _clusteredAt As Double() = Array.Empty(Of Double)()
+    ''' <summary>Per body: how many clusters in a row came each within the collapse window of the one before.</summary>
+    Private _clusterRun As Integer() = Array.Empty(Of Integer)()
 
     Friend Sub New(state As SolverState, rest As RestRules)
         _s = state
@@ -43,6 +45,11 @@ Friend NotInheritable Class ClusterResponse
         Gather(seed)
         Dim result = ContactCluster.Resolve(_inverseMass, _velocity, _contacts, _s.E, _workspace)
         Dim b = _s.Bodies
+        Dim movers = 0
+        For k = 0 To _members.Count - 1
+            If _inverseMass(k) > 0 Then movers += 1
+        Next
+        Dim alone = movers = 1
         For k = 0 To _members.Count - 1
             Dim i = _members(k)
             If _inverseMass(k) = 0 Then Continue For
@@ -50,9 +57,10 @@ Friend NotInheritable Class ClusterResponse
             ' all), or back in a cluster at once (gravity presses it into a gap its contacts neither
             ' hold it in nor let it through: a ball between a wall and a peg comes back within
             ' nanoseconds, again and again). It stops, and under gravity sleeps where it is, to wake
-            ' again when something hits it. "At once" is the same instant without gravity, and within
-            ' 10⁻⁴ √(r/g) with it (the collapse guard's window).
-            Dim wedged = Not result.Separated OrElse ClusteredJustNow(i)
+            ' again when something hits it. "At once" is the same instant, or, for a body alone among
+            ' things that do not give way under gravity, the fourth time in a row within 10⁻⁴ √(r/g)
+            ' (the collapse guard's window).
+            Dim wedged = Not result.Separated OrElse ClusteredJustNow(i, alone)
             _clusteredAt(i) = _s.Now
             Dim after = If(wedged, Vector.Zero, result.Velocities(k))
             _rest.ForgetHits(i)
@@ -68,12 +76,17 @@ Friend NotInheritable Class ClusterResponse
         Report(result)
     End Sub
 
-    ''' <summary>Whether body i was last in a cluster at this instant, or (under gravity) within 10⁻⁴ √(r/g) before it.</summary>
-    Private Function ClusteredJustNow(i As Integer) As Boolean
+    ''' <summary>
+    ''' Whether body i was last in a cluster at this instant, or (under gravity, <paramref name="alone"/>
+    ''' among things that do not give way) is in its fourth such cluster in a row, each within
+    ''' 10⁻⁴ √(r/g) of the one before; also counts this cluster.
+    ''' </summary>
+    Private Function ClusteredJustNow(i As Integer, alone As Boolean) As Boolean
         Dim last = _clusteredAt(i)
         If last = _s.Now Then Return True
-        If Not (_s.G > 0) OrElse Double.IsNaN(last) Then Return False
-        Return _s.Now - last <= 1.0E-4 * Math.Sqrt(_s.Bodies.Scale(i) / _s.G)
+        Dim soon = alone AndAlso _s.G > 0 AndAlso _s.Now - last <= 1.0E-4 * Math.Sqrt(_s.Bodies.Scale(i) / _s.G) ' False for NaN
+        _clusterRun(i) = If(soon, _clusterRun(i) + 1, 0)
+        Return _clusterRun(i) >= 3
     End Function
 
     ''' <summary>The cluster: body <paramref name="seed"/> and, breadth first, every movable body touching one already in it.</summary>
@@ -91,6 +104,7 @@ Friend NotInheritable Class ClusterResponse
         If _neighbours.Length < _s.Bodies.Count Then
             _neighbours = New Integer(_s.Bodies.Count - 1) {}
             _clusteredAt = Enumerable.Repeat(Double.NaN, _s.Bodies.Count).ToArray()
+            _clusterRun = New Integer(_s.Bodies.Count - 1) {}
         End If
         Join(seed)
         Dim head = 0

@@ -70,10 +70,16 @@ Friend NotInheritable Class CornerSlides
     Friend Function Start(i As Integer, cx As Double, cy As Double, radius As Double, normal As Vector, velocity As Vector,
                           cone As (Vector, Vector)?) As Boolean
         Dim g = _s.G
+        _Refusal = SlideRefusal.Still
         If Not (g > 0) Then Return False
         ' A neighbour already touching would cut the slide short at once, and it would start again
-        ' at once: the contact rules carry it round instead (in hops).
+        ' at once; a wall or a fixed body in the way would not be seen. The contact rules carry it round
+        ' instead (in hops).
+        _Refusal = SlideRefusal.Crowded
         If Crowded(i, New Vector(cx, cy) + normal * radius) Then Return False
+        _Refusal = SlideRefusal.Blocked
+        If Not Clear(i, cx, cy, radius) Then Return False
+        _Refusal = SlideRefusal.Still
         Dim phi = Math.Atan2(normal.X, normal.Y)
         Dim tangent = New Vector(Math.Cos(phi), -Math.Sin(phi)) ' clockwise
         Dim vt = Vector.Dot(velocity, tangent)
@@ -102,7 +108,9 @@ Friend NotInheritable Class CornerSlides
             End If
         End If
         Dim leave = CornerSlide.LeaveAngle(speed, g, radius, theta0)
+        _Refusal = SlideRefusal.FliesOff
         If leave <= theta0 AndAlso Not climbing Then Return False
+        _Refusal = SlideRefusal.None
         Dim finish = leave
         Dim ontoFace = False
         If cone.HasValue Then
@@ -130,6 +138,29 @@ Friend NotInheritable Class CornerSlides
         _start(i) = startTime
         _climbing(i) = climbing
         _seenAt(i) = Double.NaN
+        Return True
+    End Function
+
+    ''' <summary>Why the last <see cref="Start"/> refused a slide (None when it started one).</summary>
+    Friend ReadOnly Property Refusal As SlideRefusal
+
+    ''' <summary>
+    ''' Whether body i can go the whole way round the corner (cx, cy) at <paramref name="radius"/> m
+    ''' without meeting a wall or another fixed body: the slide checks neither, so the whole circle its
+    ''' reference point could follow must keep its outline inside the container and clear of every
+    ''' obstacle but the one it rounds (the obstacles whose pair shape holds the corner itself).
+    ''' </summary>
+    Private Function Clear(i As Integer, cx As Double, cy As Double, radius As Double) As Boolean
+        Dim o = _s.Bodies.Outlines(i)
+        If _s.Walls AndAlso (cx - radius + o.MinX < 0 OrElse cy - radius + o.MinY < 0 OrElse
+                             cx + radius + o.MaxX > _s.Width OrElse cy + radius + o.MaxY > _s.Height) Then Return False
+        Dim corner = New Vector(cx, cy)
+        Dim tolerance = 1.0E-9 * radius + 16 * SolverState.SlopAt(cx, cy)
+        For k = 0 To _s.Obstacles.Count - 1
+            Dim depth = ContactRules.OverlapWithObstacle(_s, i, k, corner).Depth
+            If depth >= radius - tolerance Then Continue For ' the corner is this obstacle's own
+            If depth > -radius - tolerance Then Return False
+        Next
         Return True
     End Function
 
@@ -208,7 +239,7 @@ Friend NotInheritable Class CornerSlides
     ''' Whether body i, with its reference point at <paramref name="p"/>, has a neighbour (moving, not
     ''' itself sliding) within <see cref="Near"/> of it: a slide would be cut short at once.
     ''' </summary>
-    Friend Function Crowded(i As Integer, p As Vector) As Boolean
+    Private Function Crowded(i As Integer, p As Vector) As Boolean
         Dim b = _s.Bodies
         Dim count = GridNeighbours.Collect(_s, i, _neighbours)
         For q = 0 To count - 1

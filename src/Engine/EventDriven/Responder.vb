@@ -192,10 +192,10 @@ Friend NotInheritable Class Responder
         Dim v = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
         _rest.MakeFree(i)
         If k.Radius > 0 AndAlso Not _slides.Start(i, corner.X, corner.Y, k.Radius, n, v, (n, k.EdgeNormals(nextFace))) AndAlso
-           _slides.Crowded(i, New Vector(b.Motion(i).Px, b.Motion(i).Py)) Then
-            ' Kept from sliding round by a neighbour, and free at the very end of the face, gravity would
-            ' bring it straight back onto that face's end; ten touching tolerances clear of it, it meets
-            ' the rounded corner beyond instead, and hops round it.
+           (_slides.Refusal = SlideRefusal.Crowded OrElse _slides.Refusal = SlideRefusal.Blocked) Then
+            ' Kept from sliding round (by a neighbour, or a wall or body in the way), and free at the very
+            ' end of the face, gravity would bring it straight back onto that face's end; ten touching
+            ' tolerances clear of it, it meets the rounded corner beyond instead, and hops round it.
             Dim slop = SolverState.SlopAt(corner.X, corner.Y)
             b.Motion(i).Px += n.X * 10 * slop
             b.Motion(i).Py += n.Y * 10 * slop
