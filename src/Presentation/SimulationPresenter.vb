@@ -221,6 +221,9 @@ Partial Public NotInheritable Class SimulationPresenter
                     For Each c In World.Circles
                         If Not c.IsFixed Then Emit("body " & c.Id & " at " & Units.Pair(c.Position, 3) & " m v " & Units.Pair(c.Velocity, 3) & " m/s")
                     Next
+                    For Each b In World.Movables
+                        If b.Kind <> ShapeKind.Circle Then Emit("body " & b.Id & " at " & Units.Pair(b.CentreOfMass, 3) & " m v " & Units.Pair(b.Velocity, 3) & " m/s")
+                    Next
                     EmitScreenCheck()
                 Else
                     Emit("resumed")
@@ -342,7 +345,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 EndGestures()
                 _Mode = If(_Mode = ClickMode.Delete, ClickMode.Move, ClickMode.Delete)
                 Emit("mode " & If(_Mode = ClickMode.Delete, "delete", "move"))
-                ShowMessage(If(_Mode = ClickMode.Delete, "Delete mode: click a body to remove it. Press Delete mode again to stop.", ""))
+                ShowMessage(If(_Mode = ClickMode.Delete, "Delete mode: click a body or a link to remove it. Press Delete mode again to stop.", ""))
                 _window.ShowSettings()
             End Sub)
     End Sub
@@ -488,6 +491,9 @@ Partial Public NotInheritable Class SimulationPresenter
             For i = 0 To Snapshot.RowCount(t) - 1
                 texts.AddRange(Snapshot.Cells(t, i))
             Next
+        Next
+        For i = 0 To Snapshot.LinkCount - 1
+            texts.AddRange(Snapshot.LinkCells(i))
         Next
         For i = 0 To Log.Count - 1
             texts.AddRange(Log(i).Cells())

@@ -67,7 +67,7 @@ Partial Friend NotInheritable Class MainForm
         _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), totalsLines * line + S(8))
         Dim tabsTop = _totals.Bottom
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
-        For Each list In _tables
+        For Each list In _tables.Concat({_linkList})
             FitColumns(list, w - sideWidth - S(28))
         Next
         FitLogColumns()
@@ -87,8 +87,8 @@ Partial Friend NotInheritable Class MainForm
         ' Labels and boxes two to a row when every label fits its share; one to a row otherwise (large fonts).
         Dim fieldUsable = _rowWidth - 3 * S(6)
         Dim pairs = Not large AndAlso
-            {_radiusLabel, _widthLabel, _boxWidthLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
-            {_massLabel, _heightLabel, _boxHeightLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
+            {_radiusLabel, _widthLabel, _boxWidthLabel, _sidesLabel, _angleLabel, _stiffnessLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
+            {_massLabel, _heightLabel, _boxHeightLabel, _polySizeLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
 
         Row(MessageHeight(), (_message, 1.0))
         Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
@@ -111,7 +111,24 @@ Partial Friend NotInheritable Class MainForm
         Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
         Gap()
         Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
-        Row(rh + S(2), (Nothing, 0.35), (_addRectangle, 0.65))
+        Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
+        Gap()
+        Fields(rh, pairs, (_sidesLabel, _sides), (_polySizeLabel, _polySize))
+        If pairs Then
+            Row(rh + S(2), (_angleLabel, FieldShares(0)), (_angle, FieldShares(1)), (_polyFixed, 0.22), (_addPolygon, 0.27))
+        Else
+            Row(rh, (_angleLabel, 0.55), (_angle, 0.45))
+            Row(rh + S(2), (_polyFixed, 0.35), (_addPolygon, 0.65))
+        End If
+        Gap()
+        If pairs Then
+            Row(rh + S(2), (_stiffnessLabel, FieldShares(0)), (_stiffness, FieldShares(1)), (_addSpring, 0.49))
+            Row(rh + S(2), (_addRod, 1 / 3), (_addString, 1 / 3), (_addRamp, 1 / 3))
+        Else
+            Row(rh, (_stiffnessLabel, 0.55), (_stiffness, 0.45))
+            Row(rh + S(2), (_addSpring, 0.5), (_addRod, 0.5))
+            Row(rh + S(2), (_addString, 0.5), (_addRamp, 0.5))
+        End If
         Gap()
         Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
         Row(rh + S(2), (Nothing, 0.35), (_resize, 0.65))
@@ -232,7 +249,11 @@ Partial Friend NotInheritable Class MainForm
             ("box-width-label", _boxWidthLabel), ("box-height-label", _boxHeightLabel),
             ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),
             ("radius", _radius), ("mass", _mass), ("fixed", _fixed), ("add-circle", _addCircle),
-            ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("add-rectangle", _addRectangle),
+            ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("rect-fixed", _rectFixed), ("add-rectangle", _addRectangle),
+            ("sides-label", _sidesLabel), ("sides", _sides), ("poly-size-label", _polySizeLabel), ("poly-size", _polySize),
+            ("angle-label", _angleLabel), ("angle", _angle), ("poly-fixed", _polyFixed), ("add-polygon", _addPolygon),
+            ("stiffness-label", _stiffnessLabel), ("stiffness", _stiffness),
+            ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
