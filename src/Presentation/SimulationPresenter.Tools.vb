@@ -41,12 +41,14 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The Fixed box of the rectangle tool was ticked (an obstacle) or cleared (a movable box).</summary>
     Public Sub RectangleFixedChanged(isFixed As Boolean)
         Inputs.RectangleFixed = isFixed
+        Emit("rectangle fixed " & If(isFixed, "on", "off"))
         _window.ShowSettings()
     End Sub
 
     ''' <summary>The Fixed box of the polygon tool was ticked or cleared.</summary>
     Public Sub PolygonFixedChanged(isFixed As Boolean)
         Inputs.PolygonFixed = isFixed
+        Emit("polygon fixed " & If(isFixed, "on", "off"))
         _window.ShowSettings()
     End Sub
 

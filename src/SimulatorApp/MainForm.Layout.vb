@@ -265,6 +265,12 @@ Partial Friend NotInheritable Class MainForm
             Dim fits = Not captioned OrElse TextFits(c, c.Width)
             _trace("control " & n.Name & " " & p.X & " " & p.Y & " " & c.Width & " " & c.Height & " " & If(fits, "fits", "cut"))
         Next
+        ' The tabs' headers, so tests can open a table as a teacher would: "tab-links", "tab-bodies".
+        For i = 0 To _tabs.TabCount - 1
+            Dim r = _tabs.GetTabRect(i)
+            Dim p = _tabs.PointToScreen(r.Location)
+            _trace("control tab-" & _tabs.TabPages(i).Text.ToLowerInvariant().Replace(" "c, "-"c) & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & " fits")
+        Next
         Dim client = PointToScreen(Point.Empty)
         _trace("window " & client.X & " " & client.Y & " " & ClientSize.Width & " " & ClientSize.Height)
         Dim v = _presenter.View
