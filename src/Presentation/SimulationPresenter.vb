@@ -51,7 +51,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public ReadOnly Property Inputs As New BodyInputs()
 
     ''' <summary>What the message box shows when there is no message: how to use the mouse.</summary>
-    Public Const MouseHint As String = "Right-drag carries a ball. Left-drag back from a ball and let go to fire it like a cue."
+    Public Const MouseHint As String = "Right-drag carries a body. Left-drag back from a moving body and let go to fire it like a cue."
 
     ''' <summary>The message on show ("" for none).</summary>
     Public ReadOnly Property Message As String = ""
