@@ -11,7 +11,7 @@ Public NotInheritable Class BodyInputs
         {InputField.Radius, "0.25"}, {InputField.Mass, "1"},
         {InputField.RectangleWidth, "1"}, {InputField.RectangleHeight, "0.5"},
         {InputField.ContainerWidth, ""}, {InputField.ContainerHeight, ""},
-        {InputField.Sides, "5"}, {InputField.PolygonSize, "0.4"}, {InputField.PolygonAngle, "0"}, {InputField.Stiffness, "20"}}
+        {InputField.Sides, "5"}, {InputField.PolygonAngle, "0"}, {InputField.Stiffness, "20"}}
 
     ''' <summary>The text of one box.</summary>
     Default Public Property Item(field As InputField) As String
@@ -24,7 +24,7 @@ Public NotInheritable Class BodyInputs
         End Set
     End Property
 
-    ''' <summary>Circle radius, m.</summary>
+    ''' <summary>Circle radius, and a regular polygon's size (centre to corner), m.</summary>
     Public Property RadiusText As String
         Get
             Return Item(InputField.Radius)
@@ -44,14 +44,11 @@ Public NotInheritable Class BodyInputs
         End Set
     End Property
 
-    ''' <summary>Whether the next circle is fixed.</summary>
+    ''' <summary>Whether the next circle or polygon is fixed.</summary>
     Public Property IsFixed As Boolean
 
     ''' <summary>Whether the next rectangle is a fixed obstacle (ticked) or a movable box with the typed mass.</summary>
     Public Property RectangleFixed As Boolean = True
-
-    ''' <summary>Whether the next polygon is fixed.</summary>
-    Public Property PolygonFixed As Boolean
 
     ''' <summary>Rectangle width, m.</summary>
     Public Property WidthText As String
@@ -80,16 +77,6 @@ Public NotInheritable Class BodyInputs
         End Get
         Set(value As String)
             Item(InputField.Sides) = value
-        End Set
-    End Property
-
-    ''' <summary>A regular polygon's size, centre to corner, m.</summary>
-    Public Property PolygonSizeText As String
-        Get
-            Return Item(InputField.PolygonSize)
-        End Get
-        Set(value As String)
-            Item(InputField.PolygonSize) = value
         End Set
     End Property
 

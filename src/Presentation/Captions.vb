@@ -20,9 +20,9 @@ Public Module Captions
     Public Const CollisionLog As String = "Collision log"
     Public Const AddPolygon As String = "Add polygon"
     Public Const AddRamp As String = "Add ramp"
-    Public Const AddSpring As String = "Add spring"
-    Public Const AddRod As String = "Add rod"
-    Public Const AddString As String = "Add string"
+    Public Const AddSpring As String = "+ Spring"
+    Public Const AddRod As String = "+ Rod"
+    Public Const AddString As String = "+ String"
 
     ''' <summary>Every caption, with the changing ones (Pause/Resume, Delete mode) in their plain form.</summary>
     Public ReadOnly Property All As IReadOnlyList(Of String) = {

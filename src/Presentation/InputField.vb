@@ -16,8 +16,6 @@ Public Enum InputField
     ContainerHeight
     ''' <summary>A regular polygon's number of sides.</summary>
     Sides
-    ''' <summary>A regular polygon's size: centre to corner, m.</summary>
-    PolygonSize
     ''' <summary>A regular polygon's turn, degrees anticlockwise.</summary>
     PolygonAngle
     ''' <summary>A spring's stiffness k, N/m.</summary>

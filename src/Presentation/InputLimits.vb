@@ -41,7 +41,7 @@ Public Module InputLimits
     ''' <summary>Asked when a rectangle's width or height is missing, zero or not a number.</summary>
     Public Const RectangleMessage As String = "Please enter a suitable value for the width and height!"
     ''' <summary>Asked when a polygon's sides, size, angle or mass is missing, zero or not a number.</summary>
-    Public Const PolygonMessage As String = "Please enter a suitable value for the sides, size, angle and mass!"
+    Public Const PolygonMessage As String = "Please enter a suitable value for the sides, radius, angle and mass!"
     ''' <summary>Asked when a box's mass is missing, zero or not a number.</summary>
     Public Const BoxMessage As String = "Please enter a suitable value for the width, height and mass!"
     ''' <summary>Asked when a spring's stiffness is missing, zero or not a number.</summary>

@@ -45,16 +45,12 @@ Partial Public NotInheritable Class SimulationPresenter
         _window.ShowSettings()
     End Sub
 
-    ''' <summary>The Fixed box of the polygon tool was ticked or cleared.</summary>
-    Public Sub PolygonFixedChanged(isFixed As Boolean)
-        Inputs.PolygonFixed = isFixed
-        Emit("polygon fixed " & If(isFixed, "on", "off"))
-        _window.ShowSettings()
-    End Sub
-
-    ''' <summary>Asks for a regular polygon from the typed sides, size (m), angle (°), mass (kg) and its Fixed box; it then follows the cursor until a click.</summary>
+    ''' <summary>
+    ''' Asks for a regular polygon from the typed sides and angle (°) and the circle's radius (m, the
+    ''' polygon's corners lie on that circle), mass (kg) and Fixed box; it then follows the cursor until a click.
+    ''' </summary>
     Public Sub BeginAddPolygon()
-        BeginAddPolygon(Inputs.SidesText, Inputs.PolygonSizeText, Inputs.PolygonAngleText, Inputs.MassText, Inputs.PolygonFixed)
+        BeginAddPolygon(Inputs.SidesText, Inputs.RadiusText, Inputs.PolygonAngleText, Inputs.MassText, Inputs.IsFixed)
     End Sub
 
     ''' <summary>
@@ -68,15 +64,15 @@ Partial Public NotInheritable Class SimulationPresenter
             Return
         End If
         Inputs.SidesText = sidesText
-        Inputs.PolygonSizeText = sizeText
+        Inputs.RadiusText = sizeText
         Inputs.PolygonAngleText = angleText
-        Inputs.PolygonFixed = isFixed
+        Inputs.IsFixed = isFixed
         If Not isFixed Then Inputs.MassText = massText
         Guarded(
             Sub()
                 Dim n = NumberInput.ReadWhole(sidesText, "sides", InputLimits.MinSides, InputLimits.MaxSides)
-                ' The same bounds as a circle's radius: a polygon of size r fits in the circle of radius r.
-                Dim r = NumberInput.ReadPositive(sizeText, "size (m)", InputLimits.MaxRadius, InputLimits.MinRadius)
+                ' The circle's radius and its bounds: the polygon's corners lie on that circle.
+                Dim r = NumberInput.ReadPositive(sizeText, "radius (m)", InputLimits.MaxRadius, InputLimits.MinRadius)
                 Dim a = NumberInput.ReadFinite(angleText, "angle (°)", InputLimits.MaxAngle)
                 Dim m = If(isFixed, NumberInput.ReadPositive("1", "mass (kg)", InputLimits.MaxMass),
                                     NumberInput.ReadPositive(massText, "mass (kg)", InputLimits.MaxMass, InputLimits.MinMass))
@@ -85,7 +81,7 @@ Partial Public NotInheritable Class SimulationPresenter
                     Return
                 End If
                 If n.WasClamped Then Inputs.SidesText = Units.Input(n.Value)
-                If r.WasClamped Then Inputs.PolygonSizeText = Units.Input(r.Value)
+                If r.WasClamped Then Inputs.RadiusText = Units.Input(r.Value)
                 If a.WasClamped Then Inputs.PolygonAngleText = Units.Input(a.Value)
                 If m.WasClamped AndAlso Not isFixed Then Inputs.MassText = Units.Input(m.Value)
                 If n.WasClamped OrElse r.WasClamped OrElse a.WasClamped OrElse (m.WasClamped AndAlso Not isFixed) Then _window.ShowInputs()
@@ -94,7 +90,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 _Draft = BodyDraft.ForPolygon(corners, m.Value, isFixed, _colours.NextColour())
                 EndGestures()
                 _Mode = ClickMode.Move
-                Dim clamped = ClampNote(("sides", n, ""), ("size", r, "m"), ("angle", a, "°"), ("mass", If(isFixed, Nothing, CType(m, NumberInput?)), "kg"))
+                Dim clamped = ClampNote(("sides", n, ""), ("radius", r, "m"), ("angle", a, "°"), ("mass", If(isFixed, Nothing, CType(m, NumberInput?)), "kg"))
                 Emit("adding " & If(isFixed, "fixed ", "") & "polygon n " & sides & " r " & Units.Num(r.Value, 3) & " m angle " & Units.Num(a.Value, 1) &
                      If(isFixed, "", " m " & Units.Num(m.Value, 3) & " kg"))
                 ShowMessage(clamped & "Click on the canvas to place the polygon (Esc cancels).")

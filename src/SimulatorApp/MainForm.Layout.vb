@@ -87,8 +87,8 @@ Partial Friend NotInheritable Class MainForm
         ' Labels and boxes two to a row when every label fits its share; one to a row otherwise (large fonts).
         Dim fieldUsable = _rowWidth - 3 * S(6)
         Dim pairs = Not large AndAlso
-            {_radiusLabel, _widthLabel, _boxWidthLabel, _sidesLabel, _angleLabel, _stiffnessLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
-            {_massLabel, _heightLabel, _boxHeightLabel, _polySizeLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
+            {_radiusLabel, _widthLabel, _boxWidthLabel, _sidesLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
+            {_massLabel, _heightLabel, _boxHeightLabel, _angleLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
 
         Row(MessageHeight(), (_message, 1.0))
         Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
@@ -108,26 +108,30 @@ Partial Friend NotInheritable Class MainForm
         Row(sliderHeight, (_restitution, 1.0))
         Gap()
         Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
-        Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
-        Gap()
-        Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
-        Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
-        Gap()
-        Fields(rh, pairs, (_sidesLabel, _sides), (_polySizeLabel, _polySize))
+        ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
+        Fields(rh, pairs, (_sidesLabel, _sides), (_angleLabel, _angle))
         If pairs Then
-            Row(rh + S(2), (_angleLabel, FieldShares(0)), (_angle, FieldShares(1)), (_polyFixed, 0.22), (_addPolygon, 0.27))
+            Row(rh + S(2), (_fixed, 0.2), (_addCircle, 0.4), (_addPolygon, 0.4))
         Else
-            Row(rh, (_angleLabel, 0.55), (_angle, 0.45))
-            Row(rh + S(2), (_polyFixed, 0.35), (_addPolygon, 0.65))
+            Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
+            Row(rh + S(2), (Nothing, 0.35), (_addPolygon, 0.65))
         End If
         Gap()
+        Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
+        ' A ramp is a fixed obstacle too: its button sits beside the rectangle's.
         If pairs Then
-            Row(rh + S(2), (_stiffnessLabel, FieldShares(0)), (_stiffness, FieldShares(1)), (_addSpring, 0.49))
-            Row(rh + S(2), (_addRod, 1 / 3), (_addString, 1 / 3), (_addRamp, 1 / 3))
+            Row(rh + S(2), (_rectFixed, 0.2), (_addRectangle, 0.4), (_addRamp, 0.4))
+        Else
+            Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
+            Row(rh + S(2), (Nothing, 0.35), (_addRamp, 0.65))
+        End If
+        Gap()
+        ' The three links in one row after the spring's stiffness: a link is made by clicking its two ends.
+        If pairs Then
+            Row(rh + S(2), (_stiffnessLabel, 0.2), (_stiffness, 0.14), (_addSpring, 0.22), (_addRod, 0.22), (_addString, 0.22))
         Else
             Row(rh, (_stiffnessLabel, 0.55), (_stiffness, 0.45))
-            Row(rh + S(2), (_addSpring, 0.5), (_addRod, 0.5))
-            Row(rh + S(2), (_addString, 0.5), (_addRamp, 0.5))
+            Row(rh + S(2), (_addSpring, 1 / 3), (_addRod, 1 / 3), (_addString, 1 / 3))
         End If
         Gap()
         Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
@@ -196,7 +200,7 @@ Partial Friend NotInheritable Class MainForm
     End Sub
 
     ''' <summary>Shares of a row of two labelled boxes: label, box, label, box.</summary>
-    Private Shared ReadOnly FieldShares As Double() = {0.35, 0.16, 0.26, 0.23}
+    Private Shared ReadOnly FieldShares As Double() = {0.37, 0.15, 0.25, 0.23}
 
     Private Sub Gap()
         _rowY += S(4)
@@ -250,8 +254,7 @@ Partial Friend NotInheritable Class MainForm
             ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),
             ("radius", _radius), ("mass", _mass), ("fixed", _fixed), ("add-circle", _addCircle),
             ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("rect-fixed", _rectFixed), ("add-rectangle", _addRectangle),
-            ("sides-label", _sidesLabel), ("sides", _sides), ("poly-size-label", _polySizeLabel), ("poly-size", _polySize),
-            ("angle-label", _angleLabel), ("angle", _angle), ("poly-fixed", _polyFixed), ("add-polygon", _addPolygon),
+            ("sides-label", _sidesLabel), ("sides", _sides), ("angle-label", _angleLabel), ("angle", _angle), ("add-polygon", _addPolygon),
             ("stiffness-label", _stiffnessLabel), ("stiffness", _stiffness),
             ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),

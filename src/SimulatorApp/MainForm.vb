@@ -61,11 +61,8 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _rectFixed As New CheckBox()
     Private ReadOnly _sidesLabel As New Label()
     Private ReadOnly _sides As New TextBox()
-    Private ReadOnly _polySizeLabel As New Label()
-    Private ReadOnly _polySize As New TextBox()
     Private ReadOnly _angleLabel As New Label()
     Private ReadOnly _angle As New TextBox()
-    Private ReadOnly _polyFixed As New CheckBox()
     Private ReadOnly _addPolygon As New Button()
     Private ReadOnly _stiffnessLabel As New Label()
     Private ReadOnly _stiffness As New TextBox()
@@ -208,14 +205,10 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_addRectangle, Captions.AddRectangle, Sub() _presenter.BeginAddRectangle())
 
         AddField(_sidesLabel, "Sides n", _sides, InputField.Sides)
-        AddField(_polySizeLabel, "Size (m)", _polySize, InputField.PolygonSize)
         AddField(_angleLabel, "Angle (°)", _angle, InputField.PolygonAngle)
-        _polyFixed.Text = Captions.Fixed
-        AddHandler _polyFixed.CheckedChanged, Sub(s, a) If Not _updating Then _presenter.PolygonFixedChanged(_polyFixed.Checked)
-        _side.Controls.Add(_polyFixed)
         AddButton(_addPolygon, Captions.AddPolygon, Sub() _presenter.BeginAddPolygon())
 
-        AddField(_stiffnessLabel, "Spring k (N/m)", _stiffness, InputField.Stiffness)
+        AddField(_stiffnessLabel, "k (N/m)", _stiffness, InputField.Stiffness)
         AddButton(_addSpring, Captions.AddSpring, Sub() _presenter.BeginAddLink(LinkKind.Spring))
         AddButton(_addRod, Captions.AddRod, Sub() _presenter.BeginAddLink(LinkKind.Rod))
         AddButton(_addString, Captions.AddString, Sub() _presenter.BeginAddLink(LinkKind.String))
@@ -514,9 +507,8 @@ Partial Friend NotInheritable Class MainForm
             Dim inputs = _presenter.Inputs
             _fixed.Checked = inputs.IsFixed
             _rectFixed.Checked = inputs.RectangleFixed
-            _polyFixed.Checked = inputs.PolygonFixed
             ' One mass box serves every movable body: it is greyed only when every tool would make a fixed one.
-            _mass.Enabled = Not (inputs.IsFixed AndAlso inputs.RectangleFixed AndAlso inputs.PolygonFixed)
+            _mass.Enabled = Not (inputs.IsFixed AndAlso inputs.RectangleFixed)
             ' The tool in use is lit like Delete mode, so the teacher sees what the next click does.
             Dim link = _presenter.Mode = ClickMode.Link
             For Each tool In {(_addSpring, link AndAlso _presenter.LinkToolKind = LinkKind.Spring),

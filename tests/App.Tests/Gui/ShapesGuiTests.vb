@@ -44,7 +44,7 @@ Public Class ShapesGuiTests
         Using app As New AppDriver()
             app.PauseAndClear()
             app.TypeInto("sides", "6")
-            app.TypeInto("poly-size", "0.6")
+            app.TypeInto("radius", "0.6")
             app.TypeInto("angle", "30")
             app.TypeInto("mass", "2")
             app.ClickAndWait("add-polygon", "^adding polygon n 6 r 0.600 m angle 30.0 m 2.000 kg$")

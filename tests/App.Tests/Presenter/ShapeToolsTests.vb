@@ -56,7 +56,7 @@ Public Class ShapeToolsTests
     <InlineData("", "0.4", "0", "1", "sides is empty")>
     <InlineData("4.5", "0.4", "0", "1", "sides must be a whole number")>
     <InlineData("five", "0.4", "0", "1", "sides 'five' is not a number")>
-    <InlineData("5", "0", "0", "1", "size (m) must be greater than 0")>
+    <InlineData("5", "0", "0", "1", "radius (m) must be greater than 0")>
     <InlineData("5", "0.4", "abc", "1", "angle (°) 'abc' is not a number")>
     <InlineData("5", "0.4", "0", "", "mass (kg) is empty")>
     Public Sub AddPolygon_BadValues_AskForSuitableValues_NamingTheField(sides As String, size As String, angle As String, mass As String, problem As String)
@@ -73,10 +73,10 @@ Public Class ShapeToolsTests
         h.P.BeginAddPolygon("40", "5", "-720", "1", False)
         Assert.NotNull(h.P.Draft)
         Assert.Equal(CStr(InputLimits.MaxSides), h.P.Inputs.SidesText)
-        Assert.Equal("2", h.P.Inputs.PolygonSizeText)
+        Assert.Equal("2", h.P.Inputs.RadiusText)
         Assert.Equal("-360", h.P.Inputs.PolygonAngleText)
         Assert.Contains("sides set to the maximum, 12.", h.View.LastMessage, StringComparison.Ordinal)
-        Assert.Contains("size set to the maximum, 2.00 m", h.View.LastMessage, StringComparison.Ordinal)
+        Assert.Contains("radius set to the maximum, 2.00 m", h.View.LastMessage, StringComparison.Ordinal)
         Assert.Equal(1, h.View.InputsShown)
         ' A negative angle is a turn the other way, not a mistake.
         Dim h2 As New PresenterHarness()
