@@ -168,7 +168,7 @@ Partial Friend NotInheritable Class MainForm
         Dim widths(list.Columns.Count - 1) As Integer
         ' Headers are wider than the numbers under them, except for the id and colour columns.
         For i = 0 To widths.Length - 1
-            Dim sample = If(i = 0, "ball00", If(i = 1, "#888888", "−0.000"))
+            Dim sample = ColumnSample(list.Columns(i).Text, i)
             widths(i) = Math.Max(Measure(list.Columns(i).Text, list.Font).Width, Measure(sample, list.Font).Width) + S(12)
         Next
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
@@ -176,6 +176,17 @@ Partial Friend NotInheritable Class MainForm
             list.Columns(i).Width = widths(i) + spare
         Next
     End Sub
+
+    ''' <summary>The widest text a table column usually holds, by its header: ids, colours, kinds and ends are words; the rest numbers.</summary>
+    Private Shared Function ColumnSample(header As String, index As Integer) As String
+        Select Case header
+            Case "Kind" : Return If(index = 1, "spring, k 1000 N/m", "fixed polygon")
+            Case "End B" : Return "anchor (0.00, 0.00)"
+            Case "Size (m)" : Return "12 sides, 0.00 × 0.00"
+            Case "Colour" : Return "#888888"
+        End Select
+        Return If(index = 0, "ball00", "−0.000")
+    End Function
 
     ''' <summary>
     ''' Each log column as wide as the widest of its header and the rows it holds (it only grows, so
