@@ -110,7 +110,7 @@ Friend NotInheritable Class ScenePainter
                 If b.Kind = ShapeKind.Circle OrElse b.Kind = ShapeKind.Segment OrElse (b.IsFixed AndAlso b.Kind = ShapeKind.Rectangle) Then Continue For
                 Dim s = view.ToScreen(b.CentreOfMass)
                 Dim half = CSng(view.ToPixels(Math.Min(b.BoundsMax.X - b.BoundsMin.X, b.BoundsMax.Y - b.BoundsMin.Y) / 2))
-                DrawLabel(g, b.Id, CSng(s.X), CSng(s.Y), half, theme)
+                DrawLabel(g, b.Id, CSng(s.X), CSng(s.Y), half, theme, b.IsFixed)
             Next
         End If
 
@@ -142,10 +142,11 @@ Friend NotInheritable Class ScenePainter
     End Sub
 
     ''' <summary>The id inside the ball when it fits there, else just above and to the right of it, on a backing so it reads over anything.</summary>
-    Private Sub DrawLabel(g As Graphics, id As String, x As Single, y As Single, rad As Single, theme As Theme)
+    Private Sub DrawLabel(g As Graphics, id As String, x As Single, y As Single, rad As Single, theme As Theme, Optional onFixedColour As Boolean = False)
         Dim sz = g.MeasureString(id, _font)
         If sz.Width < 2 * rad - 2 AndAlso sz.Height < 2 * rad Then
-            g.DrawString(id, _font, SolidOf(&HFFFFFF), x - sz.Width / 2, y - sz.Height / 2)
+            ' On the fixed colour (light grey in the dark theme) the canvas colour reads better than white.
+            g.DrawString(id, _font, SolidOf(If(onFixedColour, theme.Background, &HFFFFFF)), x - sz.Width / 2, y - sz.Height / 2)
             Return
         End If
         Dim lx = x + rad * 0.7F, ly = y - rad * 0.7F - sz.Height

@@ -171,6 +171,67 @@ Public Class ShapesGuiTests
         End Using
     End Sub
 
+    <GuiFact>
+    Public Sub ASceneOfEveryKind_ReadsInBothThemes()
+        Using app As New AppDriver()
+            app.PauseAndClear()
+            ' A ramp, a fixed triangle, a box, a pendulum on a string and two balls on a spring.
+            app.ClickAndWait("add-ramp", "^mode ramp$")
+            Dim a = app.Screen(0.4, 2.2), b = app.Screen(3.2, 0.6)
+            Dim from = app.Mark()
+            app.Drag(1, a.X, a.Y, b.X, b.Y)
+            app.WaitFor("^placed ramp ", skip:=from)
+            app.TypeInto("sides", "3")
+            app.TypeInto("angle", "0")
+            app.TypeInto("radius", "0.5")
+            app.ClickAndWait("fixed", "^inputs ")
+            app.ClickAndWait("add-polygon", "^adding fixed polygon n 3 ")
+            Place(app, 4.2, 0.6, "polygon")
+            app.ClickAndWait("fixed", "^inputs ")
+            app.TypeInto("rect-width", "0.8")
+            app.TypeInto("rect-height", "0.5")
+            app.TypeInto("mass", "2")
+            app.ClickAndWait("rect-fixed", "^rectangle fixed off$")
+            app.ClickAndWait("add-rectangle", "^adding box ")
+            Place(app, 6.8, 0.3, "box")
+            app.PlaceCircle("0.25", "1", 2.5, 3.0)
+            app.ClickAndWait("add-string", "^mode link string$")
+            Link(app, 2.5, 3.0, 2.0, 4.7, "string ")
+            app.PlaceCircle("0.2", "1", 4.6, 3.2)
+            app.PlaceCircle("0.3", "3", 6.6, 3.2)
+            app.TypeInto("stiffness", "40")
+            app.ClickAndWait("add-spring", "^mode link spring ")
+            Link(app, 4.6, 3.2, 6.6, 3.2, "spring ")
+            app.ClickAndWait("add-rod", "^mode link rod$")
+            Link(app, 6.6, 3.2, 7.4, 4.7, "rod ")
+            ' A push on the box, so its velocity arrow shows too.
+            Dim box = app.Screen(6.8, 0.3)
+            from = app.Mark()
+            app.Drag(1, box.X, box.Y, box.X + CInt(app.Scale * 0.4), box.Y, 4)
+            app.WaitFor("^fired ", skip:=from)
+            Thread.Sleep(300)
+            Dim light = app.X.Shoot("shapes-scene")
+            Dim canvas = app.Control("canvas")
+            Assert.True(light.DistinctColours(canvas.X, canvas.Y, canvas.X + canvas.W, canvas.Y + canvas.H) > 8, "the scene is drawn")
+            app.ClickAndWait("high-contrast", "^high contrast on$")
+            Thread.Sleep(300)
+            Dim dark = app.X.Shoot("shapes-scene-dark")
+            ' The ramp still shows against the black canvas: its bar is the dark theme's fixed colour.
+            Dim mid = app.Screen(1.8, 1.4)
+            Assert.True(dark.Fraction(mid.X - 1, mid.Y - 1, mid.X + 2, mid.Y + 2, Function(c) c = &HB0BEC5) > 0.3, "no ramp on the dark canvas")
+        End Using
+    End Sub
+
+    ''' <summary>Moves onto a model point and clicks to place the body waiting there; waits for the trace.</summary>
+    Private Shared Sub Place(app As AppDriver, x As Double, y As Double, kind As String)
+        Dim p = app.Screen(x, y)
+        Dim from = app.Mark()
+        app.MoveTo(p.X - 20, p.Y)
+        app.MoveTo(p.X, p.Y)
+        app.ClickAt(p.X, p.Y)
+        app.WaitFor("^placed " & kind & " ", skip:=from)
+    End Sub
+
     ''' <summary>Clicks a body at (x0, y0) m, then a body or empty place at (x1, y1) m, with the link tool on; returns the new link's id.</summary>
     Private Shared Function Link(app As AppDriver, x0 As Double, y0 As Double, x1 As Double, y1 As Double, made As String) As String
         Dim a = app.Screen(x0, y0), b = app.Screen(x1, y1)
