@@ -10,7 +10,8 @@ Public NotInheritable Class BodyInputs
     Private ReadOnly _texts As New Dictionary(Of InputField, String) From {
         {InputField.Radius, "0.25"}, {InputField.Mass, "1"},
         {InputField.RectangleWidth, "1"}, {InputField.RectangleHeight, "0.5"},
-        {InputField.ContainerWidth, ""}, {InputField.ContainerHeight, ""}}
+        {InputField.ContainerWidth, ""}, {InputField.ContainerHeight, ""},
+        {InputField.Sides, "5"}, {InputField.PolygonAngle, "0"}, {InputField.Stiffness, "20"}}
 
     ''' <summary>The text of one box.</summary>
     Default Public Property Item(field As InputField) As String
@@ -23,7 +24,7 @@ Public NotInheritable Class BodyInputs
         End Set
     End Property
 
-    ''' <summary>Circle radius, m.</summary>
+    ''' <summary>Circle radius, and a regular polygon's size (centre to corner), m.</summary>
     Public Property RadiusText As String
         Get
             Return Item(InputField.Radius)
@@ -43,8 +44,11 @@ Public NotInheritable Class BodyInputs
         End Set
     End Property
 
-    ''' <summary>Whether the next circle is fixed.</summary>
+    ''' <summary>Whether the next circle or polygon is fixed.</summary>
     Public Property IsFixed As Boolean
+
+    ''' <summary>Whether the next rectangle is a fixed obstacle (ticked) or a movable box with the typed mass.</summary>
+    Public Property RectangleFixed As Boolean = True
 
     ''' <summary>Rectangle width, m.</summary>
     Public Property WidthText As String
@@ -63,6 +67,36 @@ Public NotInheritable Class BodyInputs
         End Get
         Set(value As String)
             Item(InputField.RectangleHeight) = value
+        End Set
+    End Property
+
+    ''' <summary>A regular polygon's number of sides.</summary>
+    Public Property SidesText As String
+        Get
+            Return Item(InputField.Sides)
+        End Get
+        Set(value As String)
+            Item(InputField.Sides) = value
+        End Set
+    End Property
+
+    ''' <summary>A regular polygon's turn, degrees anticlockwise.</summary>
+    Public Property PolygonAngleText As String
+        Get
+            Return Item(InputField.PolygonAngle)
+        End Get
+        Set(value As String)
+            Item(InputField.PolygonAngle) = value
+        End Set
+    End Property
+
+    ''' <summary>A spring's stiffness, N/m.</summary>
+    Public Property StiffnessText As String
+        Get
+            Return Item(InputField.Stiffness)
+        End Get
+        Set(value As String)
+            Item(InputField.Stiffness) = value
         End Set
     End Property
 

@@ -22,6 +22,12 @@ Public Structure BodyRow
     Public Property Size As Vector
     ''' <summary>m²</summary>
     Public Property Area As Double
+    ''' <summary>What the body is, as the Bodies table names it: "ball", "fixed ball", "rectangle", "box", "ramp", "polygon", "fixed polygon".</summary>
+    Public Property KindLabel As String
+    ''' <summary>Where its mass is centred (a ramp's middle), m.</summary>
+    Public Property Centre As Vector
+    ''' <summary>The body's size in words: "r 0.25", "1 × 0.5", "length 2.83", "5 sides, 0.8 × 0.76" (m).</summary>
+    Public Property SizeText As String
     ''' <summary>The body's sizes by the names a scene file gives them, m: ("radius", r) for a circle; ("width", w), ("height", h) for a rectangle.</summary>
     Public Property SizeFields As IReadOnlyList(Of (Name As String, Metres As Double))
 
@@ -30,23 +36,31 @@ Public Structure BodyRow
         If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
         Dim row As New BodyRow With {
             .Id = body.Id, .Colour = If(body.Color, ""), .IsFixed = body.IsFixed, .Area = body.Area,
-            .Position = body.Position, .Velocity = body.Velocity, .Mass = body.Mass}
+            .Position = body.Position, .Velocity = body.Velocity, .Mass = body.Mass, .Centre = body.CentreOfMass}
         Select Case body.Kind
             Case ShapeKind.Circle
                 Dim r = DirectCast(body, Circle).Radius
                 row.Size = New Vector(r, 0)
                 row.SizeFields = {("radius", r)}
+                row.KindLabel = If(body.IsFixed, "fixed ball", "ball")
+                row.SizeText = "r " & Units.Sig(r)
             Case ShapeKind.Rectangle
                 Dim box = DirectCast(body, Rectangle)
                 row.Size = New Vector(box.Width, box.Height)
                 row.SizeFields = {("width", box.Width), ("height", box.Height)}
+                row.KindLabel = If(body.IsFixed, "rectangle", "box")
+                row.SizeText = Units.Sig(box.Width) & " × " & Units.Sig(box.Height)
             Case ShapeKind.Segment
                 Dim length = DirectCast(body, Segment).Length
                 row.Size = New Vector(length, 0)
                 row.SizeFields = {("length", length)}
+                row.KindLabel = "ramp"
+                row.SizeText = "length " & Units.Sig(length)
             Case Else
                 row.Size = body.BoundsMax - body.BoundsMin
                 row.SizeFields = Array.Empty(Of (Name As String, Metres As Double))()
+                row.KindLabel = If(body.IsFixed, "fixed polygon", "polygon")
+                row.SizeText = body.Outline.VertexCount & " sides, " & Units.Sig(row.Size.X) & " × " & Units.Sig(row.Size.Y)
         End Select
         Return row
     End Function

@@ -48,6 +48,14 @@ Public NotInheritable Class BodyTable
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
                      If(r.IsFixed, "fixed", Units.Sig(r.Mass)), Units.Sig(r.Size.X) & " × " & Units.Sig(r.Size.Y), Units.Sig(r.Area)})
 
+    ''' <summary>Every body of every kind, named in its Kind column; x, y is where its mass is centred (a ramp's middle).</summary>
+    Public Shared ReadOnly Property Bodies As New BodyTable("Bodies",
+        {"Id", "Colour", "Kind", "Centre x (m)", "Centre y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Size (m)"},
+        Function(b) True,
+        Function(r) {r.Id, r.Colour, r.KindLabel, Units.Sig(r.Centre.X), Units.Sig(r.Centre.Y),
+                     Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
+                     If(r.IsFixed, "fixed", Units.Sig(r.Mass)), r.SizeText})
+
     ''' <summary>The tables, in the order of their tabs.</summary>
-    Public Shared ReadOnly Property All As IReadOnlyList(Of BodyTable) = {Circles, Rectangles}
+    Public Shared ReadOnly Property All As IReadOnlyList(Of BodyTable) = {Circles, Rectangles, Bodies}
 End Class

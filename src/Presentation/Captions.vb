@@ -18,10 +18,16 @@ Public Module Captions
     Public Const OpenScene As String = "Open…"
     Public Const SaveScene As String = "Save…"
     Public Const CollisionLog As String = "Collision log"
+    Public Const AddPolygon As String = "Add polygon"
+    Public Const AddRamp As String = "Add ramp"
+    Public Const AddSpring As String = "+ Spring"
+    Public Const AddRod As String = "+ Rod"
+    Public Const AddString As String = "+ String"
 
     ''' <summary>Every caption, with the changing ones (Pause/Resume, Delete mode) in their plain form.</summary>
     Public ReadOnly Property All As IReadOnlyList(Of String) = {
         "Pause", "Resume", Reset, "Delete mode", AddCircle, AddRectangle, ResizeContainer, Fixed, LargeFonts, HighContrast, Arrows,
         Tutorial, MathsUsed, OpenScene, SaveScene, "Open", "Save", CollisionLog, "Circles", "Rectangles",
+        AddPolygon, AddRamp, AddSpring, AddRod, AddString, "Bodies", "Links",
         "Moon", "Mars", "Earth", "Jupiter"}
 End Module

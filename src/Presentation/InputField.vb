@@ -14,4 +14,10 @@ Public Enum InputField
     ContainerWidth
     ''' <summary>Container height, m.</summary>
     ContainerHeight
+    ''' <summary>A regular polygon's number of sides.</summary>
+    Sides
+    ''' <summary>A regular polygon's turn, degrees anticlockwise.</summary>
+    PolygonAngle
+    ''' <summary>A spring's stiffness k, N/m.</summary>
+    Stiffness
 End Enum

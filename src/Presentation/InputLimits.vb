@@ -25,10 +25,27 @@ Public Module InputLimits
     ''' <summary>Smallest container side, m: below this the bodies of a class demo would not fit.</summary>
     Public Const MinContainer As Double = 0.5
 
+    ''' <summary>Fewest sides of a regular polygon (a triangle).</summary>
+    Public Const MinSides As Integer = 3
+    ''' <summary>Most sides of a regular polygon: more would look like a circle on a projector.</summary>
+    Public Const MaxSides As Integer = 12
+    ''' <summary>Largest turn of a polygon that is typed, degrees either way.</summary>
+    Public Const MaxAngle As Double = 360.0
+    ''' <summary>Softest spring, N/m.</summary>
+    Public Const MinStiffness As Double = 0.1
+    ''' <summary>Stiffest spring, N/m: stiffer would oscillate faster than the screen can show.</summary>
+    Public Const MaxStiffness As Double = 10000.0
+
     ''' <summary>Asked when a circle's radius or mass is missing, zero or not a number.</summary>
     Public Const CircleMessage As String = "Please enter a suitable value for the mass and radius!"
     ''' <summary>Asked when a rectangle's width or height is missing, zero or not a number.</summary>
     Public Const RectangleMessage As String = "Please enter a suitable value for the width and height!"
+    ''' <summary>Asked when a polygon's sides, size, angle or mass is missing, zero or not a number.</summary>
+    Public Const PolygonMessage As String = "Please enter a suitable value for the sides, radius, angle and mass!"
+    ''' <summary>Asked when a box's mass is missing, zero or not a number.</summary>
+    Public Const BoxMessage As String = "Please enter a suitable value for the width, height and mass!"
+    ''' <summary>Asked when a spring's stiffness is missing, zero or not a number.</summary>
+    Public Const SpringMessage As String = "Please enter a suitable value for the spring's stiffness k!"
     ''' <summary>Asked when the container's size is missing, zero or not a number.</summary>
     Public Const ContainerMessage As String = "Please enter a suitable value for the container's width and height!"
     ''' <summary>Shown when Add is pressed while the previous body still follows the cursor.</summary>

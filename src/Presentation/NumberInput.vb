@@ -45,6 +45,36 @@ Public Structure NumberInput
         Return New NumberInput(True, v, False, "")
     End Function
 
+    ''' <summary>
+    ''' Reads any finite number (zero and negative too, as an angle may be): empty or non-numeric
+    ''' text is refused; a value beyond ±<paramref name="limit"/> is brought to it.
+    ''' </summary>
+    Public Shared Function ReadFinite(text As String, label As String, limit As Double) As NumberInput
+        Dim t = If(text, "").Trim()
+        If t.Length = 0 Then Return Refuse(label & " is empty")
+        Dim v As Double
+        If t.Length > 40 Then Return Refuse(label & " is too long to be a number")
+        If Not TryParse(t, v) Then Return Refuse(label & " '" & t & "' is not a number")
+        If Double.IsNaN(v) OrElse Double.IsInfinity(v) Then Return Refuse(label & " '" & t & "' is not a finite number")
+        If v > limit Then Return New NumberInput(True, limit, True, "")
+        If v < -limit Then Return New NumberInput(True, -limit, True, "", wasRaised:=True)
+        Return New NumberInput(True, v, False, "")
+    End Function
+
+    ''' <summary>
+    ''' Reads a whole number from <paramref name="minimum"/> to <paramref name="maximum"/>: empty,
+    ''' non-numeric or fractional text is refused; a value beyond a bound is brought to it.
+    ''' </summary>
+    Public Shared Function ReadWhole(text As String, label As String, minimum As Integer, maximum As Integer) As NumberInput
+        Dim read = ReadFinite(text, label, Double.MaxValue)
+        If Not read.IsValid Then Return read
+        Dim v = read.Value
+        If v <> Math.Floor(v) Then Return Refuse(label & " must be a whole number, not " & If(text, "").Trim())
+        If v > maximum Then Return New NumberInput(True, maximum, True, "")
+        If v < minimum Then Return New NumberInput(True, minimum, True, "", wasRaised:=True)
+        Return New NumberInput(True, v, False, "")
+    End Function
+
     Private Shared Function Refuse(problem As String) As NumberInput
         Return New NumberInput(False, 0, False, problem)
     End Function

@@ -28,8 +28,8 @@ Partial Public NotInheritable Class SimulationPresenter
         End Get
     End Property
 
-    ''' <summary>The ball being aimed at with the cue, or Nothing.</summary>
-    Public ReadOnly Property AimedCircle As Circle
+    ''' <summary>The movable body being aimed at with the cue (any kind), or Nothing.</summary>
+    Public ReadOnly Property AimedBody As Shape
 
     ''' <summary>Where the cursor is while aiming, m.</summary>
     Public ReadOnly Property AimCursor As Vector
@@ -41,17 +41,17 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The impulse the cue will give when released, N·s (zero when not aiming).</summary>
     Public ReadOnly Property CueImpulse As Vector
         Get
-            If AimedCircle Is Nothing Then Return Vector.Zero
-            Return CueShot.ImpulseFor(AimedCircle.Position, _aimCursor)
+            If AimedBody Is Nothing Then Return Vector.Zero
+            Return CueShot.ImpulseFor(AimedBody.CentreOfMass, _aimCursor)
         End Get
     End Property
 
     ''' <summary>"J = 2.40 N·s   Δv = J/m = 1.20 m/s" while aiming, "" otherwise.</summary>
     Public ReadOnly Property CueLabel As String
         Get
-            If AimedCircle Is Nothing Then Return ""
+            If AimedBody Is Nothing Then Return ""
             Dim j = CueImpulse.Length
-            Return "J = " & Units.Quantity(j, "N·s") & "   Δv = J/m = " & Units.Quantity(j * AimedCircle.InverseMass, "m/s")
+            Return "J = " & Units.Quantity(j, "N·s") & "   Δv = J/m = " & Units.Quantity(j * AimedBody.InverseMass, "m/s")
         End Get
     End Property
 
@@ -102,36 +102,54 @@ Partial Public NotInheritable Class SimulationPresenter
             End Sub)
     End Sub
 
-    ''' <summary>Asks for a fixed rectangle from the typed width and height (m); it then follows the cursor until a click.</summary>
+    ''' <summary>
+    ''' Asks for a rectangle from the typed width and height (m): a fixed obstacle when its Fixed box is
+    ''' ticked, otherwise a movable box with the typed mass (kg). It then follows the cursor until a click.
+    ''' </summary>
     Public Sub BeginAddRectangle()
-        BeginAddRectangle(Inputs.WidthText, Inputs.HeightText)
+        BeginAddRectangle(Inputs.WidthText, Inputs.HeightText, Inputs.RectangleFixed, Inputs.MassText)
     End Sub
 
     ''' <summary>Asks for a fixed rectangle of the given width and height, m; it then follows the cursor until a click.</summary>
     Public Sub BeginAddRectangle(widthText As String, heightText As String)
+        BeginAddRectangle(widthText, heightText, True, Inputs.MassText)
+    End Sub
+
+    ''' <summary>
+    ''' Asks for a rectangle of the given width and height (m): fixed, or a movable box of the given
+    ''' mass (kg). It then follows the cursor until a click.
+    ''' </summary>
+    Public Sub BeginAddRectangle(widthText As String, heightText As String, isFixed As Boolean, massText As String)
         If Draft IsNot Nothing Then
             ShowMessage(InputLimits.SpawnFirstMessage)
             Return
         End If
         Inputs.WidthText = widthText
         Inputs.HeightText = heightText
+        Inputs.RectangleFixed = isFixed
+        If Not isFixed Then Inputs.MassText = massText
         Guarded(
             Sub()
                 Dim w = NumberInput.ReadPositive(widthText, "width (m)", InputLimits.MaxSide, InputLimits.MinSide)
                 Dim h = NumberInput.ReadPositive(heightText, "height (m)", InputLimits.MaxSide, InputLimits.MinSide)
-                If Not w.IsValid OrElse Not h.IsValid Then
-                    ShowMessage(InputLimits.RectangleMessage & " " & Problems(w, h))
+                ' A fixed rectangle has no mass to ask for.
+                Dim m = If(isFixed, NumberInput.ReadPositive("1", "mass (kg)", InputLimits.MaxMass),
+                                    NumberInput.ReadPositive(massText, "mass (kg)", InputLimits.MaxMass, InputLimits.MinMass))
+                If Not w.IsValid OrElse Not h.IsValid OrElse Not m.IsValid Then
+                    ShowMessage(If(isFixed, InputLimits.RectangleMessage, InputLimits.BoxMessage) & " " & Problems(w, h, m))
                     Return
                 End If
                 If w.WasClamped Then Inputs.WidthText = Units.Input(w.Value)
                 If h.WasClamped Then Inputs.HeightText = Units.Input(h.Value)
-                If w.WasClamped OrElse h.WasClamped Then _window.ShowInputs()
-                _Draft = BodyDraft.ForRectangle(w.Value, h.Value, _colours.NextColour())
+                If m.WasClamped AndAlso Not isFixed Then Inputs.MassText = Units.Input(m.Value)
+                If w.WasClamped OrElse h.WasClamped OrElse (m.WasClamped AndAlso Not isFixed) Then _window.ShowInputs()
+                _Draft = If(isFixed, BodyDraft.ForRectangle(w.Value, h.Value, _colours.NextColour()),
+                                     BodyDraft.ForBox(w.Value, h.Value, m.Value, _colours.NextColour()))
                 EndGestures()
                 _Mode = ClickMode.Move
-                Dim clamped = ClampNote(("width", w, "m"), ("height", h, "m"))
-                Emit("adding rectangle " & Units.Num(w.Value, 3) & " x " & Units.Num(h.Value, 3) & " m")
-                ShowMessage(clamped & "Click on the canvas to place the rectangle (Esc cancels).")
+                Dim clamped = ClampNote(("width", w, "m"), ("height", h, "m"), ("mass", If(isFixed, Nothing, CType(m, NumberInput?)), "kg"))
+                Emit("adding " & Draft.KindName & " " & Units.Num(w.Value, 3) & " x " & Units.Num(h.Value, 3) & " m" & If(isFixed, "", " m " & Units.Num(m.Value, 3) & " kg"))
+                ShowMessage(clamped & "Click on the canvas to place the " & Draft.KindName & " (Esc cancels).")
                 _window.ShowSettings()
             End Sub)
     End Sub
@@ -139,14 +157,17 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>"radius set to the maximum, 2 m. " for each value brought to a limit; "" when none was.</summary>
     Private Shared Function ClampNote(ParamArray fields As (Name As String, Input As NumberInput?, Unit As String)()) As String
         Dim notes = fields.Where(Function(f) f.Input.HasValue AndAlso f.Input.Value.WasClamped).
-            Select(Function(f) f.Name & " set to the " & If(f.Input.Value.WasRaised, "minimum", "maximum") & ", " & Units.Sig(f.Input.Value.Value) & " " & f.Unit).ToList()
+            Select(Function(f) f.Name & " set to the " & If(f.Input.Value.WasRaised, "minimum", "maximum") & ", " & Units.Sig(f.Input.Value.Value) & If(f.Unit.Length > 0, " " & f.Unit, "")).ToList()
         If notes.Count = 0 Then Return ""
         Return String.Join(", ", notes) & ". "
     End Function
 
-    ''' <summary>Drops the body waiting to be placed (Esc).</summary>
+    ''' <summary>Drops the body waiting to be placed, or the ramp or link being drawn (Esc).</summary>
     Public Sub CancelPlacement()
-        If Draft Is Nothing Then Return
+        If Draft Is Nothing Then
+            CancelTool()
+            Return
+        End If
         _Draft = Nothing
         Emit("placement cancelled")
         ShowMessage("")
@@ -163,19 +184,24 @@ Partial Public NotInheritable Class SimulationPresenter
                     If button = PointerButton.Left Then Place(p)
                     Return
                 End If
+                If ToolDown(button, p) Then Return
                 Dim body = BodyAt(p)
                 If button = PointerButton.Left Then
                     If Mode = ClickMode.Delete Then
-                        If body IsNot Nothing Then Delete(body)
+                        If body IsNot Nothing Then
+                            Delete(body)
+                        Else
+                            Dim link = LinkAt(p)
+                            If link IsNot Nothing Then DeleteLink(link)
+                        End If
                         Return
                     End If
-                    Dim c = TryCast(body, Circle)
-                    If c IsNot Nothing AndAlso Not c.IsFixed AndAlso _dragged Is Nothing Then
-                        _AimedCircle = c
+                    If body IsNot Nothing AndAlso Not body.IsFixed AndAlso _dragged Is Nothing Then
+                        _AimedBody = body
                         _aimCursor = p
-                        Emit("aiming at " & c.Id)
+                        Emit("aiming at " & body.Id)
                     End If
-                ElseIf button = PointerButton.Right AndAlso body IsNot Nothing AndAlso AimedCircle Is Nothing AndAlso Mode = ClickMode.Move Then
+                ElseIf button = PointerButton.Right AndAlso body IsNot Nothing AndAlso AimedBody Is Nothing AndAlso Mode = ClickMode.Move Then
                     BeginCarry(body, p)
                 End If
             End Sub)
@@ -191,7 +217,8 @@ Partial Public NotInheritable Class SimulationPresenter
                     Draft.Centre = p
                     Draft.HasCentre = True
                 End If
-                If AimedCircle IsNot Nothing Then _aimCursor = p
+                If AimedBody IsNot Nothing Then _aimCursor = p
+                ToolMove(p)
                 If _dragged IsNot Nothing Then
                     _carryGoal = p + _grabOffset
                     ' While time runs, a movable ball follows in the frames (see CarryTowardsCursor); otherwise at once.
@@ -205,7 +232,8 @@ Partial Public NotInheritable Class SimulationPresenter
         Guarded(
             Sub()
                 Dim p = View.ToWorld(x, y)
-                If button = PointerButton.Left AndAlso AimedCircle IsNot Nothing Then
+                If ToolUp(button, p) Then Return
+                If button = PointerButton.Left AndAlso AimedBody IsNot Nothing Then
                     If p.IsFinite Then _aimCursor = p
                     Fire()
                 ElseIf button = PointerButton.Right AndAlso _dragged IsNot Nothing Then
@@ -215,9 +243,12 @@ Partial Public NotInheritable Class SimulationPresenter
             End Sub)
     End Sub
 
-    ''' <summary>The topmost body under point <paramref name="p"/> (m): circles over rectangles, later over earlier.</summary>
+    ''' <summary>
+    ''' The topmost body under point <paramref name="p"/> (m): circles over the other kinds, then
+    ''' movable bodies over fixed ones, later over earlier.
+    ''' </summary>
     Public Function BodyAt(p As Vector) As Shape
-        ' A few pixels of slack so that small balls can still be picked on a projector.
+        ' A few pixels of slack so that small balls and thin ramps can still be picked on a projector.
         Dim slack = 4.0 * ScreenScale / View.Scale
         Dim circles = World.Circles
         For i = circles.Count - 1 To 0 Step -1
@@ -225,10 +256,15 @@ Partial Public NotInheritable Class SimulationPresenter
             Dim reach = c.Radius + slack
             If (c.Position - p).LengthSquared <= reach * reach Then Return c
         Next
-        Dim rects = World.Rectangles
-        For i = rects.Count - 1 To 0 Step -1
-            Dim r = rects(i)
-            If p.X >= r.Min.X - slack AndAlso p.X <= r.Max.X + slack AndAlso p.Y >= r.Min.Y - slack AndAlso p.Y <= r.Max.Y + slack Then Return r
+        ' Every other kind through its outline: a disc of the slack's radius at p touches the body.
+        Dim probe As New Circle(p, slack, 1.0)
+        Dim bodies = World.Bodies
+        For Each movable In {True, False}
+            For i = bodies.Count - 1 To 0 Step -1
+                Dim b = bodies(i)
+                If b.Kind = ShapeKind.Circle OrElse b.IsFixed = movable Then Continue For
+                If Placement.OverlapDepth(probe, Vector.Zero, b) > 0 Then Return b
+            Next
         Next
         Return Nothing
     End Function
@@ -252,8 +288,9 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim moved = place.Value.Length
         body = Draft.Build(p + place.Value)
         World.Add(body)
+        Dim kindName = Draft.KindName
         _Draft = Nothing
-        Emit("placed " & If(TypeOf body Is Circle, "circle", "rectangle") & " " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
+        Emit("placed " & kindName & " " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
         If clash IsNot Nothing AndAlso moved > Placement.Tolerance Then
             ShowMessage("Placed " & Units.Quantity(moved, "m") & " from the click, at the nearest free place: there it would have overlapped " & Describe(clash) & ".")
         Else
@@ -270,17 +307,17 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Sub Delete(body As Shape)
         If body Is _dragged Then EndCarry()
-        If body Is AimedCircle Then _AimedCircle = Nothing
+        If body Is AimedBody Then _AimedBody = Nothing
         World.Remove(body)
         Emit("deleted " & body.Id)
         TakeSnapshot()
     End Sub
 
     Private Sub Fire()
-        Dim c = AimedCircle
-        _AimedCircle = Nothing
+        Dim c = AimedBody
+        _AimedBody = Nothing
         If Not World.Bodies.Contains(c) Then Return
-        Dim j = CueShot.ImpulseFor(c.Position, _aimCursor)
+        Dim j = CueShot.ImpulseFor(c.CentreOfMass, _aimCursor)
         If j.Length < 0.000001 Then
             Emit("cue released without a pull")
             Return
@@ -371,7 +408,8 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Ends any drag or aim in progress (before a reset, a mode change or a new scene).</summary>
     Private Sub EndGestures()
-        _AimedCircle = Nothing
+        _AimedBody = Nothing
         If _dragged IsNot Nothing Then EndCarry()
+        CancelTool()
     End Sub
 End Class

@@ -51,7 +51,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public ReadOnly Property Inputs As New BodyInputs()
 
     ''' <summary>What the message box shows when there is no message: how to use the mouse.</summary>
-    Public Const MouseHint As String = "Right-drag carries a ball. Left-drag back from a ball and let go to fire it like a cue."
+    Public Const MouseHint As String = "Right-drag carries a body. Left-drag back from a moving body and let go to fire it like a cue."
 
     ''' <summary>The message on show ("" for none).</summary>
     Public ReadOnly Property Message As String = ""
@@ -222,6 +222,9 @@ Partial Public NotInheritable Class SimulationPresenter
                     For Each c In World.Circles
                         If Not c.IsFixed Then Emit("body " & c.Id & " at " & Units.Pair(c.Position, 3) & " m v " & Units.Pair(c.Velocity, 3) & " m/s")
                     Next
+                    For Each b In World.Movables
+                        If b.Kind <> ShapeKind.Circle Then Emit("body " & b.Id & " at " & Units.Pair(b.CentreOfMass, 3) & " m v " & Units.Pair(b.Velocity, 3) & " m/s")
+                    Next
                     EmitScreenCheck()
                 Else
                     Emit("resumed")
@@ -343,7 +346,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 EndGestures()
                 _Mode = If(_Mode = ClickMode.Delete, ClickMode.Move, ClickMode.Delete)
                 Emit("mode " & If(_Mode = ClickMode.Delete, "delete", "move"))
-                ShowMessage(If(_Mode = ClickMode.Delete, "Delete mode: click a body to remove it. Press Delete mode again to stop.", ""))
+                ShowMessage(If(_Mode = ClickMode.Delete, "Delete mode: click a body or a link to remove it. Press Delete mode again to stop.", ""))
                 _window.ShowSettings()
             End Sub)
     End Sub
@@ -489,6 +492,9 @@ Partial Public NotInheritable Class SimulationPresenter
             For i = 0 To Snapshot.RowCount(t) - 1
                 texts.AddRange(Snapshot.Cells(t, i))
             Next
+        Next
+        For i = 0 To Snapshot.LinkCount - 1
+            texts.AddRange(Snapshot.LinkCells(i))
         Next
         For i = 0 To Log.Count - 1
             texts.AddRange(Log(i).Cells())

@@ -7,11 +7,13 @@ Option Strict On
 ''' </summary>
 Public NotInheritable Class TableSnapshot
     Private ReadOnly _rows As List(Of BodyRow)()
+    Private ReadOnly _links As List(Of LinkRow)
 
-    Private Sub New(time As Double, totals As IReadOnlyList(Of String), rows As List(Of BodyRow)(), fastest As Double)
+    Private Sub New(time As Double, totals As IReadOnlyList(Of String), rows As List(Of BodyRow)(), links As List(Of LinkRow), fastest As Double)
         Me.Time = time
         Me.Totals = totals
         _rows = rows
+        _links = links
         Me.FastestSpeed = fastest
     End Sub
 
@@ -37,6 +39,23 @@ Public NotInheritable Class TableSnapshot
         Return BodyTable.All(table).Cells(_rows(table)(index))
     End Function
 
+    ''' <summary>Rows in the Links table.</summary>
+    Public ReadOnly Property LinkCount As Integer
+        Get
+            Return _links.Count
+        End Get
+    End Property
+
+    ''' <summary>The numbers of one link's row.</summary>
+    Public Function LinkRowAt(index As Integer) As LinkRow
+        Return _links(index)
+    End Function
+
+    ''' <summary>The cells of one link's row, as shown.</summary>
+    Public Function LinkCells(index As Integer) As String()
+        Return LinkTable.Cells(_links(index))
+    End Function
+
     ''' <summary>Copies the world's state now.</summary>
     Friend Shared Function Take(world As World, collisions As Long) As TableSnapshot
         Dim tables = BodyTable.All
@@ -52,7 +71,8 @@ Public NotInheritable Class TableSnapshot
                 If tables(t).Lists(b) Then rows(t).Add(row)
             Next
         Next
-        Return New TableSnapshot(world.Time, TotalsOf(world, collisions), rows, fastest)
+        Dim links = world.Links.Select(AddressOf LinkRow.Capture).ToList()
+        Return New TableSnapshot(world.Time, TotalsOf(world, collisions), rows, links, fastest)
     End Function
 
     Private Shared Function TotalsOf(world As World, collisions As Long) As IReadOnlyList(Of String)

@@ -9,11 +9,13 @@ Public NotInheritable Class Theme
     ''' <summary>Near-white canvas, dark ink, the usual grey panel.</summary>
     Public Shared ReadOnly Property Light As New Theme(&HFAFAFA, &H101010, &HD0D0D0, &H1565C0, &HC62828, &H2E7D32, &HF57F17, False) With {
         .Panel = &HEFEFEF, .PanelText = &H101010, .Button = &HE1E1E1, .Field = &HFFFFFF,
-        .MessageBack = &HFFF8C4, .MessageText = &H781400, .HintText = &H696969, .Alert = &HC62828, .AlertBack = &HFFCDD2}
+        .MessageBack = &HFFF8C4, .MessageText = &H781400, .HintText = &H696969, .Alert = &HC62828, .AlertBack = &HFFCDD2,
+        .Fixed = &H78909C}
     ''' <summary>Black everywhere, white text and lines, bright accents.</summary>
     Public Shared ReadOnly Property Dark As New Theme(&H0, &HFFFFFF, &H505050, &H40C4FF, &HFF5252, &H69F0AE, &HFFFF00, True) With {
         .Panel = &H0, .PanelText = &HFFFFFF, .Button = &H202020, .Field = &H0,
-        .MessageBack = &H0, .MessageText = &HFFFF00, .HintText = &HE0E0E0, .Alert = &HFF5252, .AlertBack = &H5A0000}
+        .MessageBack = &H0, .MessageText = &HFFFF00, .HintText = &HE0E0E0, .Alert = &HFF5252, .AlertBack = &H5A0000,
+        .Fixed = &HB0BEC5}
 
     Private Sub New(background As Integer, ink As Integer, grid As Integer, arrow As Integer, arrowX As Integer,
                     arrowY As Integer, cue As Integer, isHighContrast As Boolean)
@@ -61,4 +63,6 @@ Public NotInheritable Class Theme
     Public Property Alert As Integer
     ''' <summary>The Delete mode button while it is on.</summary>
     Public Property AlertBack As Integer
+    ''' <summary>The fill of fixed polygons, rectangles and ramps, and of link anchors: one colour says "this never moves".</summary>
+    Public Property Fixed As Integer
 End Class

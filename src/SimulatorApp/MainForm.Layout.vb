@@ -68,7 +68,7 @@ Partial Friend NotInheritable Class MainForm
         Dim tabsTop = _totals.Bottom
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
         PlaceLessonButtons(tabsTop, w - sideWidth)
-        For Each list In _tables
+        For Each list In _tables.Concat({_linkList})
             FitColumns(list, w - sideWidth - S(28))
         Next
         FitLogColumns()
@@ -88,8 +88,8 @@ Partial Friend NotInheritable Class MainForm
         ' Labels and boxes two to a row when every label fits its share; one to a row otherwise (large fonts).
         Dim fieldUsable = _rowWidth - 3 * S(6)
         Dim pairs = Not large AndAlso
-            {_radiusLabel, _widthLabel, _boxWidthLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
-            {_massLabel, _heightLabel, _boxHeightLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
+            {_radiusLabel, _widthLabel, _boxWidthLabel, _sidesLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
+            {_massLabel, _heightLabel, _boxHeightLabel, _angleLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
 
         Row(MessageHeight(), (_message, 1.0))
         Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
@@ -109,10 +109,31 @@ Partial Friend NotInheritable Class MainForm
         Row(sliderHeight, (_restitution, 1.0))
         Gap()
         Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
-        Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
+        ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
+        Fields(rh, pairs, (_sidesLabel, _sides), (_angleLabel, _angle))
+        If pairs Then
+            Row(rh + S(2), (_fixed, 0.2), (_addCircle, 0.4), (_addPolygon, 0.4))
+        Else
+            Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
+            Row(rh + S(2), (Nothing, 0.35), (_addPolygon, 0.65))
+        End If
         Gap()
         Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
-        Row(rh + S(2), (Nothing, 0.35), (_addRectangle, 0.65))
+        ' A ramp is a fixed obstacle too: its button sits beside the rectangle's.
+        If pairs Then
+            Row(rh + S(2), (_rectFixed, 0.2), (_addRectangle, 0.4), (_addRamp, 0.4))
+        Else
+            Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
+            Row(rh + S(2), (Nothing, 0.35), (_addRamp, 0.65))
+        End If
+        Gap()
+        ' The three links in one row after the spring's stiffness: a link is made by clicking its two ends.
+        If pairs Then
+            Row(rh + S(2), (_stiffnessLabel, 0.2), (_stiffness, 0.14), (_addSpring, 0.22), (_addRod, 0.22), (_addString, 0.22))
+        Else
+            Row(rh, (_stiffnessLabel, 0.55), (_stiffness, 0.45))
+            Row(rh + S(2), (_addSpring, 1 / 3), (_addRod, 1 / 3), (_addString, 1 / 3))
+        End If
         Gap()
         Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
         Row(rh + S(2), (Nothing, 0.35), (_resize, 0.65))
@@ -148,7 +169,7 @@ Partial Friend NotInheritable Class MainForm
         Dim widths(list.Columns.Count - 1) As Integer
         ' Headers are wider than the numbers under them, except for the id and colour columns.
         For i = 0 To widths.Length - 1
-            Dim sample = If(i = 0, "ball00", If(i = 1, "#888888", "−0.000"))
+            Dim sample = ColumnSample(list.Columns(i).Text, i)
             widths(i) = Math.Max(Measure(list.Columns(i).Text, list.Font).Width, Measure(sample, list.Font).Width) + S(12)
         Next
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
@@ -156,6 +177,17 @@ Partial Friend NotInheritable Class MainForm
             list.Columns(i).Width = widths(i) + spare
         Next
     End Sub
+
+    ''' <summary>The widest text a table column usually holds, by its header: ids, colours, kinds and ends are words; the rest numbers.</summary>
+    Private Shared Function ColumnSample(header As String, index As Integer) As String
+        Select Case header
+            Case "Kind" : Return If(index = 1, "spring, k 1000 N/m", "fixed polygon")
+            Case "End B" : Return "anchor (0.00, 0.00)"
+            Case "Size (m)" : Return "12 sides, 0.00 × 0.00"
+            Case "Colour" : Return "#888888"
+        End Select
+        Return If(index = 0, "ball00", "−0.000")
+    End Function
 
     ''' <summary>
     ''' Each log column as wide as the widest of its header and the rows it holds (it only grows, so
@@ -180,7 +212,7 @@ Partial Friend NotInheritable Class MainForm
     End Sub
 
     ''' <summary>Shares of a row of two labelled boxes: label, box, label, box.</summary>
-    Private Shared ReadOnly FieldShares As Double() = {0.35, 0.16, 0.26, 0.23}
+    Private Shared ReadOnly FieldShares As Double() = {0.37, 0.15, 0.25, 0.23}
 
     Private Sub Gap()
         _rowY += S(4)
@@ -233,7 +265,10 @@ Partial Friend NotInheritable Class MainForm
             ("box-width-label", _boxWidthLabel), ("box-height-label", _boxHeightLabel),
             ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),
             ("radius", _radius), ("mass", _mass), ("fixed", _fixed), ("add-circle", _addCircle),
-            ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("add-rectangle", _addRectangle),
+            ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("rect-fixed", _rectFixed), ("add-rectangle", _addRectangle),
+            ("sides-label", _sidesLabel), ("sides", _sides), ("angle-label", _angleLabel), ("angle", _angle), ("add-polygon", _addPolygon),
+            ("stiffness-label", _stiffnessLabel), ("stiffness", _stiffness),
+            ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
@@ -245,6 +280,12 @@ Partial Friend NotInheritable Class MainForm
             Dim captioned = TypeOf c Is Button OrElse TypeOf c Is CheckBox OrElse (TypeOf c Is Label AndAlso c IsNot _message AndAlso c IsNot _totals)
             Dim fits = Not captioned OrElse TextFits(c, c.Width)
             _trace("control " & n.Name & " " & p.X & " " & p.Y & " " & c.Width & " " & c.Height & " " & If(fits, "fits", "cut"))
+        Next
+        ' The tabs' headers, so tests can open a table as a teacher would: "tab-links", "tab-bodies".
+        For i = 0 To _tabs.TabCount - 1
+            Dim r = _tabs.GetTabRect(i)
+            Dim p = _tabs.PointToScreen(r.Location)
+            _trace("control tab-" & _tabs.TabPages(i).Text.ToLowerInvariant().Replace(" "c, "-"c) & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & " fits")
         Next
         Dim client = PointToScreen(Point.Empty)
         _trace("window " & client.X & " " & client.Y & " " & ClientSize.Width & " " & ClientSize.Height)

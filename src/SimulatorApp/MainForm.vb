@@ -17,6 +17,7 @@ Partial Friend NotInheritable Class MainForm
     Private Shared ReadOnly PreferredSize96 As New Size(1280, 800)
 
     Private Shared ReadOnly BlankRow As String() = New String(9) {}
+    Private Shared ReadOnly BlankLinkRow As String() = New String(LinkTable.Headers.Count - 1) {}
 
     Private ReadOnly _presenter As SimulationPresenter
     Private ReadOnly _painter As ScenePainter
@@ -57,6 +58,19 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _heightLabel As New Label()
     Private ReadOnly _rectHeight As New TextBox()
     Private ReadOnly _addRectangle As New Button()
+    Private ReadOnly _rectFixed As New CheckBox()
+    Private ReadOnly _sidesLabel As New Label()
+    Private ReadOnly _sides As New TextBox()
+    Private ReadOnly _angleLabel As New Label()
+    Private ReadOnly _angle As New TextBox()
+    Private ReadOnly _addPolygon As New Button()
+    Private ReadOnly _stiffnessLabel As New Label()
+    Private ReadOnly _stiffness As New TextBox()
+    Private ReadOnly _addSpring As New Button()
+    Private ReadOnly _addRod As New Button()
+    Private ReadOnly _addString As New Button()
+    Private ReadOnly _addRamp As New Button()
+    Private ReadOnly _linkList As New BufferedListView()
     Private ReadOnly _boxWidthLabel As New Label()
     Private ReadOnly _boxWidth As New TextBox()
     Private ReadOnly _boxHeightLabel As New Label()
@@ -137,6 +151,8 @@ Partial Friend NotInheritable Class MainForm
             AddTab(t.Title, list)
             _tables.Add(list)
         Next
+        SetUpTable(_linkList, LinkTable.Headers, AddressOf OnRetrieveLink)
+        AddTab(LinkTable.Title, _linkList)
         SetUpTable(_logList, CollisionLogEntry.Headers, AddressOf OnRetrieveLog)
         AddTab(Captions.CollisionLog, _logList)
         ' Mono leaves a details list's header unpainted when its tab comes back: repaint the list then.
@@ -184,7 +200,20 @@ Partial Friend NotInheritable Class MainForm
 
         AddField(_widthLabel, "Rectangle w (m)", _rectWidth, InputField.RectangleWidth)
         AddField(_heightLabel, "h (m)", _rectHeight, InputField.RectangleHeight)
+        _rectFixed.Text = Captions.Fixed
+        AddHandler _rectFixed.CheckedChanged, Sub(s, a) If Not _updating Then _presenter.RectangleFixedChanged(_rectFixed.Checked)
+        _side.Controls.Add(_rectFixed)
         AddButton(_addRectangle, Captions.AddRectangle, Sub() _presenter.BeginAddRectangle())
+
+        AddField(_sidesLabel, "Sides n", _sides, InputField.Sides)
+        AddField(_angleLabel, "Angle (°)", _angle, InputField.PolygonAngle)
+        AddButton(_addPolygon, Captions.AddPolygon, Sub() _presenter.BeginAddPolygon())
+
+        AddField(_stiffnessLabel, "k (N/m)", _stiffness, InputField.Stiffness)
+        AddButton(_addSpring, Captions.AddSpring, Sub() _presenter.BeginAddLink(LinkKind.Spring))
+        AddButton(_addRod, Captions.AddRod, Sub() _presenter.BeginAddLink(LinkKind.Rod))
+        AddButton(_addString, Captions.AddString, Sub() _presenter.BeginAddLink(LinkKind.String))
+        AddButton(_addRamp, Captions.AddRamp, Sub() _presenter.BeginAddRamp())
 
         AddField(_boxWidthLabel, "Container w (m)", _boxWidth, InputField.ContainerWidth)
         AddField(_boxHeightLabel, "h (m)", _boxHeight, InputField.ContainerHeight)
@@ -327,7 +356,7 @@ Partial Friend NotInheritable Class MainForm
     Friend Property FrameStats As FrameStats
 
     Private Sub RefreshLog(now As Double)
-        If _tabs.SelectedIndex <> _tables.Count OrElse _logVersion = _presenter.Log.Version Then Return
+        If _tabs.SelectedIndex <> _tables.Count + 1 OrElse _logVersion = _presenter.Log.Version Then Return
         _logVersion = _presenter.Log.Version
         If _logList.VirtualListSize <> _presenter.Log.Count Then
             _logList.VirtualListSize = _presenter.Log.Count
@@ -350,6 +379,7 @@ Partial Friend NotInheritable Class MainForm
         ' (see ShowState), and a column is nudged so the header is laid out and painted again.
         Dim t = _tables.IndexOf(list)
         If t >= 0 Then list.VirtualListSize = _presenter.Snapshot.RowCount(t)
+        If list Is _linkList Then list.VirtualListSize = _presenter.Snapshot.LinkCount
         If list.Columns.Count > 0 Then
             Dim first = list.Columns(0)
             first.Width += 1
@@ -382,6 +412,17 @@ Partial Friend NotInheritable Class MainForm
         If _traced.TryGetValue(what, last) AndAlso last = text Then Return
         _traced(what) = text
         _trace(what & ": " & text)
+    End Sub
+
+    Private Sub OnRetrieveLink(sender As Object, e As RetrieveVirtualItemEventArgs)
+        Dim snap = _presenter.Snapshot
+        If e.ItemIndex >= snap.LinkCount Then
+            e.Item = New ListViewItem(BlankLinkRow)
+            Return
+        End If
+        Dim cells = snap.LinkCells(e.ItemIndex)
+        e.Item = New ListViewItem(cells)
+        TraceShown("row " & LinkTable.Title & " " & e.ItemIndex, cells)
     End Sub
 
     Private Sub OnRetrieveLog(sender As Object, e As RetrieveVirtualItemEventArgs)
@@ -464,8 +505,19 @@ Partial Friend NotInheritable Class MainForm
             _pause.ForeColor = ScenePainter.Rgb(If(_presenter.IsPaused, If(theme.IsHighContrast, &H69F0AE, &H1B5E20), theme.Alert))
             _deleteMode.Text = _presenter.DeleteModeText
             _deleteMode.BackColor = ScenePainter.Rgb(If(_presenter.Mode = ClickMode.Delete, theme.AlertBack, theme.Button))
-            _fixed.Checked = _presenter.Inputs.IsFixed
-            _mass.Enabled = Not _presenter.Inputs.IsFixed
+            Dim inputs = _presenter.Inputs
+            _fixed.Checked = inputs.IsFixed
+            _rectFixed.Checked = inputs.RectangleFixed
+            ' One mass box serves every movable body: it is greyed only when every tool would make a fixed one.
+            _mass.Enabled = Not (inputs.IsFixed AndAlso inputs.RectangleFixed)
+            ' The tool in use is lit like Delete mode, so the teacher sees what the next click does.
+            Dim link = _presenter.Mode = ClickMode.Link
+            For Each tool In {(_addSpring, link AndAlso _presenter.LinkToolKind = LinkKind.Spring),
+                              (_addRod, link AndAlso _presenter.LinkToolKind = LinkKind.Rod),
+                              (_addString, link AndAlso _presenter.LinkToolKind = LinkKind.String),
+                              (_addRamp, _presenter.Mode = ClickMode.Ramp)}
+                tool.Item1.BackColor = ScenePainter.Rgb(If(tool.Item2, theme.MessageBack, theme.Button))
+            Next
             _largeFonts.Checked = _presenter.LargeFonts
             _highContrast.Checked = _presenter.HighContrast
             _arrows.Checked = _presenter.ShowArrows
@@ -505,6 +557,9 @@ Partial Friend NotInheritable Class MainForm
             Dim list = _tables(shown)
             If list.VirtualListSize <> snap.RowCount(shown) Then list.VirtualListSize = snap.RowCount(shown)
             list.Invalidate()
+        ElseIf shown = _tables.Count Then
+            If _linkList.VirtualListSize <> snap.LinkCount Then _linkList.VirtualListSize = snap.LinkCount
+            _linkList.Invalidate()
         End If
         Dim totals = WrapTotals(snap.Totals, _totals.Width - S(8))
         ' Totals that grew past one line (3141 collisions, 5.00×10⁵ J) get the second line the layout gave them no room for.
@@ -588,7 +643,7 @@ Partial Friend NotInheritable Class MainForm
             page.BackColor = panel
             page.ForeColor = text
         Next
-        For Each list In _tables.Concat({_logList})
+        For Each list In _tables.Concat({_linkList, _logList})
             list.BackColor = panel
             list.ForeColor = text
         Next

@@ -63,11 +63,30 @@ Friend NotInheritable Class ScenePainter
             g.DrawRectangle(_openPen, CSng(tl.X), CSng(tl.Y), cw, ch)
         End If
 
+        ' Fixed bodies first (the fixed colour says they never move), then movable ones over them.
+        Dim fixedFill = SolidOf(theme.Fixed)
         For Each r In world.Rectangles
             Dim c = view.ToScreen(New Vector(r.Min.X, r.Max.Y))
             Dim w = CSng(view.ToPixels(r.Width)), h = CSng(view.ToPixels(r.Height))
-            g.FillRectangle(BrushOf(r.Color), CSng(c.X), CSng(c.Y), w, h)
+            g.FillRectangle(If(r.IsFixed, fixedFill, BrushOf(r.Color)), CSng(c.X), CSng(c.Y), w, h)
             g.DrawRectangle(outline, CSng(c.X), CSng(c.Y), w, h)
+        Next
+        For Each poly In world.Polygons
+            Dim pts = Corners(poly.Vertices, view)
+            g.FillPolygon(If(poly.IsFixed, fixedFill, BrushOf(poly.Color)), pts)
+            g.DrawPolygon(outline, pts)
+        Next
+        ' A ramp is a line of no thickness: drawn as a thick bar in the fixed colour, edged in ink, so it reads from the back of the room.
+        Dim rampEdge = PenOf(theme.Ink, k * 7)
+        Dim rampFill = PenOf(theme.Fixed, k * 4)
+        rampEdge.StartCap = LineCap.Round
+        rampEdge.EndCap = LineCap.Round
+        rampFill.StartCap = LineCap.Round
+        rampFill.EndCap = LineCap.Round
+        For Each seg In world.Segments
+            Dim a = view.ToScreen(seg.StartPoint), b = view.ToScreen(seg.EndPoint)
+            g.DrawLine(rampEdge, CSng(a.X), CSng(a.Y), CSng(b.X), CSng(b.Y))
+            g.DrawLine(rampFill, CSng(a.X), CSng(a.Y), CSng(b.X), CSng(b.Y))
         Next
 
         Dim labels = Not busy AndAlso world.Circles.Count <= 60
@@ -86,14 +105,34 @@ Friend NotInheritable Class ScenePainter
             If labels Then DrawLabel(g, c.Id, CSng(s.X), CSng(s.Y), rad, theme)
         Next
 
+        If labels Then
+            For Each b In world.Bodies
+                If b.Kind = ShapeKind.Circle OrElse b.Kind = ShapeKind.Segment OrElse (b.IsFixed AndAlso b.Kind = ShapeKind.Rectangle) Then Continue For
+                Dim s = view.ToScreen(b.CentreOfMass)
+                Dim half = CSng(view.ToPixels(Math.Min(b.BoundsMax.X - b.BoundsMin.X, b.BoundsMax.Y - b.BoundsMin.Y) / 2))
+                DrawLabel(g, b.Id, CSng(s.X), CSng(s.Y), half, theme, b.IsFixed)
+            Next
+        End If
+
+        DrawLinks(g, world, view, theme, k)
         If p.ShowArrows AndAlso Not busy Then DrawArrows(g, p, view, theme, k)
 
-        Dim carried = TryCast(p.DraggedBody, Circle)
+        Dim carried = p.DraggedBody
         If carried IsNot Nothing Then
-            Dim s = view.ToScreen(carried.Position)
-            Dim rad = CSng(view.ToPixels(carried.Radius)) + 5 * k
-            g.DrawEllipse(PenOf(theme.Cue, 3 * k), CSng(s.X) - rad, CSng(s.Y) - rad, 2 * rad, 2 * rad)
+            Dim ring = PenOf(theme.Cue, 3 * k)
+            Dim circle = TryCast(carried, Circle)
+            If circle IsNot Nothing Then
+                Dim s = view.ToScreen(circle.Position)
+                Dim rad = CSng(view.ToPixels(circle.Radius)) + 5 * k
+                g.DrawEllipse(ring, CSng(s.X) - rad, CSng(s.Y) - rad, 2 * rad, 2 * rad)
+            Else
+                Dim lo = view.ToScreen(New Vector(carried.BoundsMin.X, carried.BoundsMax.Y))
+                Dim w = CSng(view.ToPixels(carried.BoundsMax.X - carried.BoundsMin.X)), h = CSng(view.ToPixels(carried.BoundsMax.Y - carried.BoundsMin.Y))
+                g.DrawRectangle(ring, CSng(lo.X) - 5 * k, CSng(lo.Y) - 5 * k, w + 10 * k, h + 10 * k)
+            End If
         End If
+
+        DrawToolPreview(g, p, view, theme, k)
 
         DrawDraft(g, p, view, outline, theme, k)
         DrawCue(g, p, view, theme, k)
@@ -103,10 +142,11 @@ Friend NotInheritable Class ScenePainter
     End Sub
 
     ''' <summary>The id inside the ball when it fits there, else just above and to the right of it, on a backing so it reads over anything.</summary>
-    Private Sub DrawLabel(g As Graphics, id As String, x As Single, y As Single, rad As Single, theme As Theme)
+    Private Sub DrawLabel(g As Graphics, id As String, x As Single, y As Single, rad As Single, theme As Theme, Optional onFixedColour As Boolean = False)
         Dim sz = g.MeasureString(id, _font)
         If sz.Width < 2 * rad - 2 AndAlso sz.Height < 2 * rad Then
-            g.DrawString(id, _font, SolidOf(&HFFFFFF), x - sz.Width / 2, y - sz.Height / 2)
+            ' On the fixed colour (light grey in the dark theme) the canvas colour reads better than white.
+            g.DrawString(id, _font, SolidOf(If(onFixedColour, theme.Background, &HFFFFFF)), x - sz.Width / 2, y - sz.Height / 2)
             Return
         End If
         Dim lx = x + rad * 0.7F, ly = y - rad * 0.7F - sz.Height
@@ -114,16 +154,99 @@ Friend NotInheritable Class ScenePainter
         g.DrawString(id, _font, SolidOf(theme.Ink), lx, ly)
     End Sub
 
-    ''' <summary>Each moving ball's velocity (and its components), as far as it would go in the arrows' time; clipped to the canvas.</summary>
+    ''' <summary>A list of model points as canvas points.</summary>
+    Private Shared Function Corners(points As IReadOnlyList(Of Vector), view As ViewTransform) As PointF()
+        Dim pts(points.Count - 1) As PointF
+        For i = 0 To points.Count - 1
+            Dim s = view.ToScreen(points(i))
+            pts(i) = New PointF(CSng(s.X), CSng(s.Y))
+        Next
+        Return pts
+    End Function
+
+    ''' <summary>Number of zigs in a drawn spring: fixed, so a stretched spring's coils open out and a compressed one's close up.</summary>
+    Private Const SpringZigs As Integer = 12
+
+    ''' <summary>
+    ''' Every link between the centres of its bodies (or to its anchor): a string as a thin line, a
+    ''' rod as a bar, a spring as a zig-zag; an anchor as a small block in the fixed colour.
+    ''' </summary>
+    Private Sub DrawLinks(g As Graphics, world As World, view As ViewTransform, theme As Theme, k As Single)
+        Dim links = world.Links
+        If links.Count = 0 Then Return
+        Dim thin = PenOf(theme.Ink, 1.5F * k)
+        Dim barEdge = PenOf(theme.Ink, 7 * k)
+        Dim barFill = PenOf(theme.Fixed, 4 * k)
+        Dim coil = PenOf(theme.Ink, 2 * k)
+        For Each l In links
+            Dim a = view.ToScreen(l.EndA), b = view.ToScreen(l.EndB)
+            Dim ax = CSng(a.X), ay = CSng(a.Y), bx = CSng(b.X), by = CSng(b.Y)
+            Select Case l.Kind
+                Case LinkKind.String
+                    g.DrawLine(thin, ax, ay, bx, by)
+                Case LinkKind.Rod
+                    g.DrawLine(barEdge, ax, ay, bx, by)
+                    g.DrawLine(barFill, ax, ay, bx, by)
+                Case Else
+                    g.DrawLines(coil, Zigzag(ax, ay, bx, by, 6 * k))
+            End Select
+            If l.B Is Nothing Then
+                Dim half = 6 * k
+                g.FillRectangle(SolidOf(theme.Fixed), bx - half, by - half, 2 * half, 2 * half)
+                g.DrawRectangle(PenOf(theme.Ink, 1.5F * k), bx - half, by - half, 2 * half, 2 * half)
+            End If
+            ' A dot where the link holds each body: at its centre of mass.
+            Dim dot = 2.5F * k
+            g.FillEllipse(SolidOf(theme.Ink), ax - dot, ay - dot, 2 * dot, 2 * dot)
+            If l.B IsNot Nothing Then g.FillEllipse(SolidOf(theme.Ink), bx - dot, by - dot, 2 * dot, 2 * dot)
+        Next
+    End Sub
+
+    ''' <summary>A zig-zag from (x0, y0) to (x1, y1) px: short straight ends, <see cref="SpringZigs"/> zigs of half-width <paramref name="amplitude"/> px between.</summary>
+    Private Shared Function Zigzag(x0 As Single, y0 As Single, x1 As Single, y1 As Single, amplitude As Single) As PointF()
+        Dim dx = x1 - x0, dy = y1 - y0
+        Dim len = CSng(Math.Sqrt(dx * dx + dy * dy))
+        If len < 1 Then Return {New PointF(x0, y0), New PointF(x1, y1)}
+        Dim ux = dx / len, uy = dy / len
+        Dim nx = -uy * amplitude, ny = ux * amplitude
+        Dim pts(SpringZigs + 2) As PointF
+        pts(0) = New PointF(x0, y0)
+        ' The zigs fill the middle 80 %: the ends stay straight so the spring is seen to hold the body.
+        For i = 0 To SpringZigs
+            Dim t = 0.1F + 0.8F * i / SpringZigs
+            Dim side = If(i = 0 OrElse i = SpringZigs, 0.0F, If(i Mod 2 = 1, 1.0F, -1.0F))
+            pts(i + 1) = New PointF(x0 + dx * t + nx * side, y0 + dy * t + ny * side)
+        Next
+        pts(SpringZigs + 2) = New PointF(x1, y1)
+        Return pts
+    End Function
+
+    ''' <summary>While a ramp is dragged or a link's second end is sought: a dashed line from the first end to the cursor.</summary>
+    Private Sub DrawToolPreview(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
+        If Not p.ToolCursor.HasValue Then Return
+        Dim start As Vector
+        If p.Mode = ClickMode.Ramp AndAlso p.RampStart.HasValue Then
+            start = p.RampStart.Value
+        ElseIf p.Mode = ClickMode.Link AndAlso p.LinkStart IsNot Nothing Then
+            start = p.LinkStart.CentreOfMass
+        Else
+            Return
+        End If
+        Dim a = view.ToScreen(start), b = view.ToScreen(p.ToolCursor.Value)
+        _pullPen.Color = Rgb(theme.Cue)
+        _pullPen.Width = If(p.Mode = ClickMode.Ramp, 5, 3) * k
+        g.DrawLine(_pullPen, CSng(a.X), CSng(a.Y), CSng(b.X), CSng(b.Y))
+    End Sub
+
+    ''' <summary>Each moving body's velocity (and its components), from its centre of mass, as far as it would go in the arrows' time; clipped to the canvas.</summary>
     Private Sub DrawArrows(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
         Dim scale = view.ToPixels(p.Arrows.Seconds) ' px per m/s
         Dim main = PenOf(theme.Arrow, 3 * k)
         Dim xPen = PenOf(theme.ArrowX, 2 * k)
         Dim yPen = PenOf(theme.ArrowY, 2 * k)
         Dim least = MinArrowPx * k
-        For Each c In p.World.Circles
-            If c.IsFixed Then Continue For
-            Dim s = view.ToScreen(c.Position)
+        For Each c In p.World.Movables
+            Dim s = view.ToScreen(c.CentreOfMass)
             Dim vx = CSng(c.Velocity.X * scale), vy = CSng(-c.Velocity.Y * scale)
             If vx * vx + vy * vy < least * least OrElse Single.IsInfinity(vx) OrElse Single.IsInfinity(vy) Then Continue For
             Dim sx = CSng(s.X), sy = CSng(s.Y)
@@ -144,6 +267,10 @@ Friend NotInheritable Class ScenePainter
         If d.IsCircle Then
             g.FillEllipse(ghost, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
             g.DrawEllipse(edge, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
+        ElseIf d.Kind = ShapeKind.Polygon Then
+            Dim pts = Corners(DirectCast(d.Build(d.Centre), Polygon).Vertices, view)
+            g.FillPolygon(ghost, pts)
+            g.DrawPolygon(edge, pts)
         Else
             g.FillRectangle(ghost, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
             g.DrawRectangle(edge, CSng(s.X) - w / 2, CSng(s.Y) - h / 2, w, h)
@@ -151,9 +278,9 @@ Friend NotInheritable Class ScenePainter
     End Sub
 
     Private Sub DrawCue(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
-        Dim c = p.AimedCircle
+        Dim c = p.AimedBody
         If c Is Nothing Then Return
-        Dim centre = view.ToScreen(c.Position)
+        Dim centre = view.ToScreen(c.CentreOfMass)
         Dim cursor = view.ToScreen(p.AimCursor)
         _pullPen.Color = Rgb(theme.Ink)
         _pullPen.Width = 2 * k
@@ -161,13 +288,13 @@ Friend NotInheritable Class ScenePainter
         ' The shot: from the ball's centre along the impulse, as long as the pull.
         Dim j = p.CueImpulse
         If j.Length > 0 Then
-            Dim tip = view.ToScreen(c.Position + j / CueShot.ImpulsePerMetre)
+            Dim tip = view.ToScreen(c.CentreOfMass + j / CueShot.ImpulsePerMetre)
             Arrow(g, PenOf(theme.Cue, 4 * k), CSng(centre.X), CSng(centre.Y), CSng(tip.X), CSng(tip.Y), k)
         End If
         Dim label = p.CueLabel
         Dim sz = g.MeasureString(label, _font)
         ' Under the ball, so that the label never hides it or the cue; kept on the canvas.
-        Dim lx = CSng(centre.X) - sz.Width / 2, ly = CSng(centre.Y + view.ToPixels(c.Radius)) + 8 * k
+        Dim lx = CSng(centre.X) - sz.Width / 2, ly = CSng(centre.Y + view.ToPixels(c.BoundsMax.Y - c.CentreOfMass.Y)) + 8 * k
         Dim bounds = g.VisibleClipBounds
         lx = Math.Max(bounds.Left + 2, Math.Min(lx, bounds.Right - sz.Width - 2))
         ly = Math.Max(bounds.Top + 2, Math.Min(ly, bounds.Bottom - sz.Height - 2))
@@ -202,8 +329,12 @@ Friend NotInheritable Class ScenePainter
         Dim text As String = Nothing
         Dim colour = theme.Ink
         If p.Mode = ClickMode.Delete Then
-            text = "DELETE MODE: click a body to remove it"
+            text = "DELETE MODE: click a body or a link to remove it"
             colour = theme.Alert
+        ElseIf p.Mode = ClickMode.Ramp Then
+            text = "Drag from one end of the ramp to the other  (Esc cancels)"
+        ElseIf p.Mode = ClickMode.Link Then
+            text = "Click two bodies, or a body and an empty place  (Esc cancels)"
         ElseIf p.Draft IsNot Nothing Then
             text = "Click to place the " & p.Draft.KindName & "  (Esc cancels)"
         ElseIf p.IsPaused Then

@@ -99,13 +99,13 @@ Public Class DragAndCueTests
         Dim a = h.Px(4, 2), back = h.Px(3.5, 2)
         h.P.PointerDown(PointerButton.Left, a.X, a.Y)
         h.P.PointerMove(back.X, back.Y)
-        Assert.Same(ball, h.P.AimedCircle)
+        Assert.Same(ball, h.P.AimedBody)
         Dim j = h.P.CueImpulse
         Assert.Equal(0.5 * CueShot.ImpulsePerMetre, j.X, 6)
         Assert.Contains("J = 2.00 N·s", h.P.CueLabel.Replace(Units.Nbsp, " "c), StringComparison.Ordinal)
         Assert.Contains("Δv = J/m = 1.00 m/s", h.P.CueLabel.Replace(Units.Nbsp, " "c), StringComparison.Ordinal)
         h.P.PointerUp(PointerButton.Left, back.X, back.Y)
-        Assert.Null(h.P.AimedCircle)
+        Assert.Null(h.P.AimedBody)
         Assert.Equal(1.0, ball.Velocity.X, 6)
         Assert.Equal(0.0, ball.Velocity.Y, 6)
         Assert.Contains(h.TraceLines, Function(l) l.StartsWith("fired " & ball.Id, StringComparison.Ordinal))
@@ -147,7 +147,7 @@ Public Class DragAndCueTests
         h.Drag(PointerButton.Left, 6, 0.5, 5, 0.5)
         h.Drag(PointerButton.Left, 4, 4, 3, 4)
         Assert.DoesNotContain(h.TraceLines, Function(l) l.StartsWith("fired", StringComparison.Ordinal))
-        Assert.Null(h.P.AimedCircle)
+        Assert.Null(h.P.AimedBody)
     End Sub
 
     <Fact>
