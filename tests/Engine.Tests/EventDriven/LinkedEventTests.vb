@@ -261,5 +261,47 @@ Namespace EventDriven
             Dim expected = p0 + v0 * 0.2 + New Vector(0, -0.5 * G * 0.04)
             Assert.True((bob.Position - expected).Length < 0.000000001)
         End Sub
+
+        <Fact>
+        Public Sub InelasticString_SnapsEverLess_AndSettlesTautInFewEvents()
+            ' e = 0.5: after going slack the bob snaps taut, bounces in at half its outward speed, and so on:
+            ' a geometric series with a finite total time. It must end (taut again), never over-long.
+            Dim w = EventWorld(G, 0.5)
+            Dim solver = DirectCast(w.Solver, EventDrivenSolver)
+            Dim bob As New Circle(Anchor + New Vector(0, -1), 0.05, 0.5, New Vector(Math.Sqrt(3.5 * G), 0))
+            w.Add(bob)
+            Dim tie = Link.CreateTie(LinkKind.String, bob, Anchor, 1)
+            w.Add(tie)
+            Dim energy = bob.KineticEnergy + bob.Mass * G * bob.Position.Y
+            For i = 1 To 500
+                w.Advance(0.01)
+                Assert.True((bob.Position - Anchor).Length <= 1 + 0.000000001)
+            Next
+            Dim after = bob.KineticEnergy + bob.Mass * G * bob.Position.Y
+            _output.WriteLine($"energy {energy} J → {after} J; tension {tie.Tension} N")
+            Assert.True(after < energy)
+            ' Swinging on a taut string again, below the anchor.
+            Assert.True(tie.Tension > 0)
+            Assert.Equal(1.0, (bob.Position - Anchor).Length, 0.000000001)
+        End Sub
+
+        <Fact>
+        Public Sub FreeBallBouncingToRest_BesideAPendulum_Ends()
+            Dim w = EventWorld(G, 0.8)
+            Dim bob As New Circle(OnCircle(Anchor, 1, 0.3), 0.05, 0.5)
+            w.Add(bob)
+            w.Add(Link.CreateTie(LinkKind.Rod, bob, Anchor, 1))
+            Dim ball As New Circle(New Vector(1, 1), 0.1, 1)
+            w.Add(ball)
+            Dim count = 0
+            w.CollisionListener = Sub(c) count += 1
+            w.Advance(10)
+            _output.WriteLine($"{count} collisions")
+            ' Each bounce is e times as fast: from 3.4 m/s to the 3e-4 m/s below which it rests is about 44 bounces.
+            Assert.InRange(count, 30, 60)
+            ' Dropped from 0.9 m with e = 0.8, the bounces end after (1 + e)/(1 − e)·√(2h/g) = 3.8 s: on the floor since.
+            Assert.Equal(0.1, ball.Position.Y, 0.000000001)
+            Assert.Equal(0.0, ball.Velocity.Y)
+        End Sub
     End Class
 End Namespace

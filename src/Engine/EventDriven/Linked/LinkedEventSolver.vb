@@ -17,6 +17,12 @@ Friend NotInheritable Class LinkedEventSolver
     Private Const Slop As Double = 0.000000001
     ' Events at one instant (a cascade through a row of touching balls) beyond this are a fault, reported.
     Private Const MaxInstantEvents As Integer = 100000
+    ' Contacts are looked for this far ahead at most, s, so that the speed bounds (which grow with the
+    ' time looked ahead, for a falling body) stay tight; at its end the search is taken up again.
+    Private Const Horizon As Double = 0.1
+    ' A touching pair closes if it approaches faster than this (m/s) plus a billionth of its speeds:
+    ' slower is rounding left over from a cascade, and would only report collisions of nothing.
+    Private Const CreepSpeed As Double = 0.000000000001
 
     Private ReadOnly _impulse As New LinkedImpulse()
     Private _world As World
@@ -243,38 +249,75 @@ Friend NotInheritable Class LinkedEventSolver
     Private Function PredictPair(a As Integer, b As Integer, tEnd As Double) As Double
         Dim gap = LinkedGap.Pair(MotionOf(a), _slotOf(a), MotionOf(b), _slotOf(b), _circles(a).Radius + _circles(b).Radius)
         Dim t0 = _now
-        Dim speed = MotionOf(a).SpeedBound(_slotOf(a), t0, tEnd) + MotionOf(b).SpeedBound(_slotOf(b), t0, tEnd)
-        Dim accel = MotionOf(a).AccelerationBound(_slotOf(a), t0, tEnd) + MotionOf(b).AccelerationBound(_slotOf(b), t0, tEnd) +
+        Dim until = Math.Min(tEnd, t0 + Horizon)
+        Dim speed = MotionOf(a).SpeedBound(_slotOf(a), t0, until) + MotionOf(b).SpeedBound(_slotOf(b), t0, until)
+        Dim accel = MotionOf(a).AccelerationBound(_slotOf(a), t0, until) + MotionOf(b).AccelerationBound(_slotOf(b), t0, until) +
                     speed * speed / (_circles(a).Radius + _circles(b).Radius)
-        Return FirstContact(gap, t0, tEnd, speed, accel)
+        Return Recheck(FirstContact(gap, t0, until, speed, accel), until, tEnd)
     End Function
 
     Private Function PredictGap(i As Integer, gap As LinkedGap, curvatureRadius As Double, tEnd As Double) As Double
         Dim m = MotionOf(i)
-        Dim speed = m.SpeedBound(_slotOf(i), _now, tEnd)
-        Dim accel = m.AccelerationBound(_slotOf(i), _now, tEnd)
+        Dim until = Math.Min(tEnd, _now + Horizon)
+        Dim speed = m.SpeedBound(_slotOf(i), _now, until)
+        Dim accel = m.AccelerationBound(_slotOf(i), _now, until)
         If curvatureRadius > 0 Then accel += speed * speed / curvatureRadius
-        Return FirstContact(gap, _now, tEnd, speed, accel)
+        Return Recheck(FirstContact(gap, _now, until, speed, accel), until, tEnd)
+    End Function
+
+    ''' <summary>A search that found nothing before the horizon is taken up again there (an event that is not a contact).</summary>
+    Private Shared Function Recheck(found As Double, until As Double, tEnd As Double) As Double
+        If Double.IsPositiveInfinity(found) AndAlso until < tEnd Then Return until
+        Return found
     End Function
 
     ''' <summary>
-    ''' The first contact in [t0, tEnd]: now when touching and closing; when touching and not closing, the
-    ''' first time the overlap reaches the slop; otherwise when the gap closes. +∞ for none; a search that ran
-    ''' out of its budget returns where it stopped, to be taken up again from there.
+    ''' The first contact in [t0, tEnd]: now when touching and closing. When touching and not closing (just
+    ''' after a bounce), first the time the gap opens to twice the slop, and from there when it closes; if it
+    ''' never opens that far, when the overlap grows by the slop. Otherwise when the gap closes. +∞ for none;
+    ''' a search that ran out of its budget returns where it stopped, to be taken up again from there.
     ''' </summary>
     Private Shared Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, accel As Double) As Double
         Dim n As Vector, rate As Double
         Dim d = gap.GapAndNormal(t0, n, rate)
         Dim tolerance = 0.0
         If d <= Slop Then
-            If rate < 0 Then Return t0
-            tolerance = -Slop
+            If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
+            Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, tEnd, 0, speed, accel)
+            If opened.Found Then
+                t0 = opened.Time
+            ElseIf opened.ClearUntil < tEnd Then
+                Return opened.ClearUntil
+            Else
+                tolerance = Math.Min(d, 0) - Slop
+            End If
         End If
         Dim result = ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, accel)
         If result.Found Then Return result.Time
         If result.ClearUntil < tEnd Then Return result.ClearUntil
         Return Double.PositiveInfinity
     End Function
+
+    ''' <summary>How far a gap is from opening to <c>target</c> (m): target − gap, zero once it has opened that far.</summary>
+    Private NotInheritable Class Opening
+        Implements IDistanceFunction
+
+        Private ReadOnly _gap As LinkedGap
+        Private ReadOnly _target As Double
+
+        Public Sub New(gap As LinkedGap, target As Double)
+            _gap = gap
+            _target = target
+        End Sub
+
+        Public Function Distance(time As Double) As Double Implements IDistanceFunction.Distance
+            Return _target - _gap.Distance(time)
+        End Function
+
+        Public Function Rate(time As Double) As Double Implements IDistanceFunction.Rate
+            Return -_gap.Rate(time)
+        End Function
+    End Class
 
     ''' <summary>Group g's closed form ends (a string goes slack or snaps taut): do what happens there and go on with the next form.</summary>
     Private Sub TransitionOf(g As Integer, t As Double, tEnd As Double)
@@ -299,29 +342,33 @@ Friend NotInheritable Class LinkedEventSolver
             gap = LinkedGap.Wall(MotionOf(i), _slotOf(i), _circles(i).Radius, side, _world.Width, _world.Height)
         End If
         Dim normal As Vector, rate As Double
-        gap.GapAndNormal(t, normal, rate)
+        Dim depth = gap.GapAndNormal(t, normal, rate)
+        Dim speeds = _circles(i).Velocity.Length + If(j >= 0, _circles(j).Velocity.Length, 0)
+        If depth > Slop OrElse rate >= -(CreepSpeed + 0.000000001 * speeds) Then
+            ' Not a contact: a search that reached its horizon or its budget, or a touch that does not press.
+            PredictBody(i, tEnd, 0)
+            Return
+        End If
         Dim a = _circles(i)
         Dim b = If(j >= 0, _circles(j), Nothing)
-        If rate < 0 Then
-            Dim aBefore = a.Velocity
-            Dim bBefore = If(b Is Nothing, Vector.Zero, b.Velocity)
-            _impulse.Clear()
-            _impulse.AddContact(a, b, normal, _world.Restitution)
-            For Each l In _groups(gi).Motion.HeldLinks
+        Dim aBefore = a.Velocity
+        Dim bBefore = If(b Is Nothing, Vector.Zero, b.Velocity)
+        _impulse.Clear()
+        _impulse.AddContact(a, b, normal, _world.Restitution)
+        For Each l In _groups(gi).Motion.HeldLinks
+            _impulse.AddLink(l)
+        Next
+        If gj >= 0 AndAlso gj <> gi Then
+            For Each l In _groups(gj).Motion.HeldLinks
                 _impulse.AddLink(l)
             Next
-            If gj >= 0 AndAlso gj <> gi Then
-                For Each l In _groups(gj).Motion.HeldLinks
-                    _impulse.AddLink(l)
-                Next
-            End If
-            _impulse.Resolve()
-            Dim kind = If(j >= 0, CollisionKind.CircleCircle, If(f >= 0, CollisionKind.CircleFixed, CollisionKind.CircleWall))
-            If f >= 0 AndAlso _fixed(f).Kind = ShapeKind.Rectangle Then kind = CollisionKind.CircleRectangle
-            If f >= 0 AndAlso _fixed(f).Kind <> ShapeKind.Rectangle AndAlso _fixed(f).Kind <> ShapeKind.Circle Then kind = CollisionKind.Other
-            _world.ReportCollision(New CollisionRecord(t, a, If(b, If(f >= 0, _fixed(f), Nothing)), side, kind,
-                                                       aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
         End If
+        _impulse.Resolve()
+        Dim kind = If(j >= 0, CollisionKind.CircleCircle, If(f >= 0, CollisionKind.CircleFixed, CollisionKind.CircleWall))
+        If f >= 0 AndAlso _fixed(f).Kind = ShapeKind.Rectangle Then kind = CollisionKind.CircleRectangle
+        If f >= 0 AndAlso _fixed(f).Kind <> ShapeKind.Rectangle AndAlso _fixed(f).Kind <> ShapeKind.Circle Then kind = CollisionKind.Other
+        _world.ReportCollision(New CollisionRecord(t, a, If(b, If(f >= 0, _fixed(f), Nothing)), side, kind,
+                                                   aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
         Restart(gi, t, False)
         If gj >= 0 AndAlso gj <> gi Then Restart(gj, t, False)
         Repredict(gi, gj, tEnd)

@@ -92,12 +92,13 @@ Friend Module LinkedMotions
     End Function
 
     ''' <summary>
-    ''' A free ball on the floor that would bounce less than <paramref name="slop"/> high: it rests there
-    ''' (sliding), instead of bouncing ever lower at ever shorter intervals (the series of bounces has a finite sum).
+    ''' A free ball on the floor that would bounce less than four times <paramref name="slop"/> high: it rests
+    ''' there (sliding), instead of bouncing ever lower at ever shorter intervals (the series of bounces has
+    ''' a finite sum). Contacts are told apart from touches by twice the slop, so lower bounces cannot be followed.
     ''' </summary>
     Private Function RestsOnFloor(body As Circle, world As World, slop As Double) As Boolean
         If Not world.Walls OrElse world.Gravity <= 0 Then Return False
         If body.Position.Y - body.Radius > slop Then Return False
-        Return Math.Abs(body.Velocity.Y) <= Math.Sqrt(2 * world.Gravity * slop)
+        Return Math.Abs(body.Velocity.Y) <= Math.Sqrt(8 * world.Gravity * slop)
     End Function
 End Module
