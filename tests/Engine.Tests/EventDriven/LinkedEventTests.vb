@@ -303,5 +303,76 @@ Namespace EventDriven
             Assert.Equal(0.1, ball.Position.Y, 0.000000001)
             Assert.Equal(0.0, ball.Velocity.Y)
         End Sub
+
+        <Fact>
+        Public Sub SpringPendulum_FollowsAFineRungeKutta_AndKeepsItsEnergy()
+            ' No closed form: a bob on a spring (k = 30 N/m, rest length 0.8 m) released at rest 1 rad out,
+            ' 0.9 m from the anchor. Reference: classical RK4 with steps of 10 μs.
+            Dim w = EventWorld()
+            Dim m = 0.5, k = 30.0, rest = 0.8
+            Dim start = Anchor + 0.9 * New Vector(Math.Sin(1.0), -Math.Cos(1.0))
+            Dim bob As New Circle(start, 0.05, m)
+            w.Add(bob)
+            w.Add(Link.CreateSpring(bob, Anchor, k, rest))
+            Dim f As Action(Of Double(), Double()) =
+                Sub(y, dy)
+                    Dim rx = y(0) - Anchor.X, ry = y(1) - Anchor.Y
+                    Dim d = Math.Sqrt(rx * rx + ry * ry)
+                    Dim pull = k * (d - rest) / (m * d)
+                    dy(0) = y(2)
+                    dy(1) = y(3)
+                    dy(2) = -pull * rx
+                    dy(3) = -pull * ry - G
+                End Sub
+            Dim times = {0.5, 1.0, 1.5, 2.0, 2.5, 3.0}
+            Dim reference = Links.LinkTestKit.Rk4At(f, {start.X, start.Y, 0, 0}, times, 0.00001)
+            Dim energy = w.KineticEnergy() + w.PotentialEnergy()
+            Dim worst = 0.0
+            For i = 0 To times.Length - 1
+                w.Advance(times(i) - w.Time)
+                worst = Math.Max(worst, (bob.Position - New Vector(reference(i)(0), reference(i)(1))).Length)
+                Assert.Equal(energy, w.KineticEnergy() + w.PotentialEnergy(), 0.000000001 * energy)
+            Next
+            _output.WriteLine($"{worst} m from RK4")
+            Assert.True(worst < 0.0000001, $"{worst} m off")
+        End Sub
+
+        <Fact>
+        Public Sub TwoBallsOnASpring_CentreOfMassFliesItsParabola()
+            Dim w = EventWorld(G, 1.0)
+            Dim a As New Circle(New Vector(3, 5), 0.1, 1, New Vector(2, 3))
+            Dim b As New Circle(New Vector(3.6, 5.2), 0.1, 2, New Vector(1, 1))
+            w.Add(a)
+            w.Add(b)
+            w.Add(Link.CreateSpring(a, b, 50, 0.5))
+            Dim centre0 = w.CentreOfMass()
+            Dim momentum0 = w.Momentum()
+            Dim energy = w.KineticEnergy() + w.PotentialEnergy()
+            For i = 1 To 50
+                w.Advance(0.01)
+                Dim t = w.Time
+                Dim expected = centre0 + momentum0 * (t / 3) + New Vector(0, -0.5 * G * t * t)
+                Assert.True((w.CentreOfMass() - expected).Length < 0.000000001, $"t = {t}")
+                Assert.Equal(energy, w.KineticEnergy() + w.PotentialEnergy(), 0.000000001 * energy)
+            Next
+        End Sub
+
+        <Fact>
+        Public Sub VerticalSpringThrownAboveItsAnchor_IsIntegratedFromThere()
+            ' The closed form holds below the anchor; above it the spring is squashed the other way.
+            Dim w = EventWorld()
+            Dim bob As New Circle(New Vector(Anchor.X, Anchor.Y - 0.5), 0.05, 0.5, New Vector(0, 6))
+            w.Add(bob)
+            w.Add(Link.CreateSpring(bob, Anchor, 20, 0.5))
+            Dim energy = w.KineticEnergy() + w.PotentialEnergy()
+            Dim above = False
+            For i = 1 To 200
+                w.Advance(0.01)
+                If bob.Position.Y > Anchor.Y Then above = True
+                Assert.Equal(Anchor.X, bob.Position.X, 0.000000001)
+                Assert.Equal(energy, w.KineticEnergy() + w.PotentialEnergy(), 0.00000001 * energy)
+            Next
+            Assert.True(above)
+        End Sub
     End Class
 End Namespace

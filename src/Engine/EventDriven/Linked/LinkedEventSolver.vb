@@ -63,9 +63,11 @@ Friend NotInheritable Class LinkedEventSolver
             Dim kind As Integer, i As Integer, j As Integer
             Dim t = Earliest(kind, i, j)
             If Not (t <= tEnd) Then Exit Do
-            If t = lastTime Then
+            ' Events within a nanosecond count as one instant, so that a run of events creeping forward by
+            ' rounding errors is caught as surely as a run at one instant.
+            If t - lastTime <= 0.000000001 Then
                 instant += 1
-                If instant > MaxInstantEvents Then Throw New InvalidOperationException($"the event solver could not get past t = {t} s with links ({instant} events at that instant)")
+                If instant > MaxInstantEvents Then Throw New InvalidOperationException($"the event solver could not get past t = {t} s with links ({instant} events within a nanosecond)")
             Else
                 instant = 0
                 lastTime = t

@@ -17,13 +17,9 @@ Friend Module LinkedMotions
             If b.Kind <> ShapeKind.Circle Then Throw New UnsupportedSceneException("the event solver does not yet move boxes or polygons in a scene with links" & UseVerlet)
         Next
         For Each g In groups
-            If g.Bodies.Count > 2 OrElse g.Links.Count > 1 Then Throw New UnsupportedSceneException("the event solver does not yet move a chain of links (a body with more than one link, or more than two bodies linked together)" & UseVerlet)
-            If g.Links.Count = 0 Then Continue For
-            Dim l = g.Links(0)
-            If l.Kind = LinkKind.Spring AndAlso g.Bodies.Count = 2 Then Throw New UnsupportedSceneException("the event solver does not yet move two bodies joined by a spring" & UseVerlet)
-            If l.Kind = LinkKind.Spring AndAlso Not SpringMotion.Fits(g.Bodies(0), l, world.Gravity) Then
-                Throw New UnsupportedSceneException("the event solver moves a body on a spring only along the vertical line through the spring's anchor, or on an undamped spring of rest length 0; it does not yet move one swinging at an angle" & UseVerlet)
-            End If
+            ' Springs alone are integrated when no closed form fits them (IntegratedMotion).
+            If OnlySprings(g) Then Continue For
+            If g.Bodies.Count > 2 OrElse g.Links.Count > 1 Then Throw New UnsupportedSceneException("the event solver does not yet move a chain of links with a rod or string in it (a body with more than one link, or more than two bodies linked together)" & UseVerlet)
         Next
     End Sub
 
@@ -43,11 +39,12 @@ Friend Module LinkedMotions
             Return New FlightMotion(a, time, g)
         End If
         Dim l = group.Links(0)
+        If OnlySprings(group) Then
+            If group.Bodies.Count = 1 AndAlso group.Links.Count = 1 AndAlso SpringMotion.Fits(a, l, g) Then Return New SpringMotion(a, l, time, g)
+            Return New IntegratedMotion(group.Bodies.ToArray(), group.Links, time, g)
+        End If
         If group.Bodies.Count = 1 Then
             Select Case l.Kind
-                Case LinkKind.Spring
-                    If Not SpringMotion.Fits(a, l, g) Then Throw New UnsupportedSceneException("the event solver does not yet move a body on a spring swinging at an angle (after a collision knocked it off the vertical line through the anchor); use --solver verlet")
-                    Return New SpringMotion(a, l, time, g)
                 Case LinkKind.Rod
                     Return New PendulumMotion(a, l, time, g)
                 Case Else
@@ -61,6 +58,11 @@ Friend Module LinkedMotions
             Return New DumbbellMotion(first, If(first Is a, b, a), l, time, g)
         End If
         Return New PairFlightMotion(a, b, l, time, g, slop)
+    End Function
+
+    ''' <summary>Whether every link of the group is a spring (and it has one).</summary>
+    Private Function OnlySprings(group As LinkedGroup) As Boolean
+        Return group.Links.Count > 0 AndAlso group.Links.All(Function(l) l.Kind = LinkKind.Spring)
     End Function
 
     ''' <summary>

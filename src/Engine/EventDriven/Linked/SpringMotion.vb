@@ -4,7 +4,7 @@ Option Strict On
 ''' One body on a spring to a fixed point, in closed form: a spring of rest length 0 moves it on an ellipse
 ''' (or a shrinking spiral) about where it hangs (<see cref="ZeroLengthSpring"/>); a spring of positive
 ''' length moves a body on the vertical line through the anchor up and down about its equilibrium
-''' (<see cref="VerticalSpring"/>) until it would reach the anchor's height. Energy, ½mv² + ½k x² + mgy,
+''' (<see cref="VerticalSpring"/>) until it would reach the anchor's height (then <see cref="IntegratedMotion"/> goes on). Energy, ½mv² + ½k x² + mgy,
 ''' never grows (damping only takes it away), which bounds the speed and the stretch.
 ''' </summary>
 Friend NotInheritable Class SpringMotion
@@ -20,7 +20,8 @@ Friend NotInheritable Class SpringMotion
     ''' <summary>Whether <see cref="SpringMotion"/> has a closed form for this body on this spring now.</summary>
     Friend Shared Function Fits(body As Circle, link As Link, gravity As Double) As Boolean
         If link.Length = 0 Then Return New ZeroLengthSpring(link.EndB, body.Mass, link.Stiffness, link.Damping, gravity, body.Position, body.Velocity).IsExact
-        Return body.Position.X = link.EndB.X AndAlso body.Velocity.X = 0 AndAlso body.Position.Y <> link.EndB.Y
+        ' Clear of the anchor's height: at it (where this form hands over) the integrator goes on.
+        Return body.Position.X = link.EndB.X AndAlso body.Velocity.X = 0 AndAlso Math.Abs(body.Position.Y - link.EndB.Y) > 0.000001 * link.Length
     End Function
 
     Friend Sub New(body As Circle, link As Link, startTime As Double, gravity As Double)
@@ -77,8 +78,8 @@ Friend NotInheritable Class SpringMotion
         End Get
     End Property
 
-    ''' <summary>The body reaches the anchor's height, where the spring would turn it over: no closed form goes on from there.</summary>
+    ''' <summary>The body reaches the anchor's height, where the closed form ends: the integrator takes over from there.</summary>
     Friend Overrides Function Transition(world As World) As Boolean
-        Throw New UnsupportedSceneException("the event solver does not yet move a body on a spring through the spring's anchor; use --solver verlet")
+        Return False
     End Function
 End Class
