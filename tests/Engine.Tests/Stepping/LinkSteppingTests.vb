@@ -268,5 +268,40 @@ Namespace Stepping
             Assert.True(late < 0.001 * scale, $"{late} J off after a minute")
             Assert.True(late < 3 * early + 0.000001 * scale, $"{late} J against {early} J: drifting")
         End Sub
+
+        <Theory>
+        <InlineData("euler")>
+        <InlineData("verlet")>
+        Public Sub NewtonsCradleOnStrings_TheLastBallTakesTheStrikersSwing(solver As String)
+            ' Five 0.2 kg balls on 1 m strings, touching; the first released from 30°. After the blow the
+            ' last ball rises to the striker's height, L(1 − cos 30°), and the others stay near the bottom.
+            Dim w As New World(10, 10, G, 1.0)
+            Dim r = 0.1
+            Dim balls As New List(Of Circle)
+            For k = 0 To 4
+                Dim top As New Vector(4 + 2 * r * k, 6)
+                Dim at = If(k = 0, top + New Vector(-Math.Sin(Math.PI / 6), -Math.Cos(Math.PI / 6)), top + New Vector(0, -1))
+                Dim c As New Circle(at, r, 0.2)
+                w.Add(c)
+                w.Add(Link.CreateTie(LinkKind.String, c, top, 1))
+                balls.Add(c)
+            Next
+            w.Solver = SolverFactory.Create(solver, 0.0005)
+            Dim highest = 0.0, othersHighest = 0.0
+            ' The blow comes after a quarter period (0.51 s); the last ball is highest a quarter period later.
+            For i = 1 To 120
+                w.Advance(0.01)
+                If w.Time > 0.6 Then
+                    highest = Math.Max(highest, balls(4).Position.Y)
+                    For k = 0 To 3
+                        othersHighest = Math.Max(othersHighest, balls(k).Position.Y)
+                    Next
+                End If
+            Next
+            Dim rise = highest - 5, expected = 1 - Math.Cos(Math.PI / 6)
+            _output.WriteLine($"{solver}: the last ball rose {rise} m (striker's drop {expected} m); the others at most {othersHighest - 5} m")
+            Assert.Equal(expected, rise, 0.01 * expected)
+            Assert.True(othersHighest - 5 < 0.01 * expected, $"the others rose {othersHighest - 5} m")
+        End Sub
     End Class
 End Namespace
