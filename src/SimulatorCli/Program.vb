@@ -38,6 +38,10 @@ Public NotInheritable Class Program
             ' A valid scene the solvers cannot simulate: a failure of the run, not bad input (cli.md).
             Console.Error.WriteLine("run: " & OneLine(ex.Message))
             Return ExitCodes.Failure
+        Catch ex As UnsupportedSceneException
+            ' A valid scene the chosen solver cannot move yet; the message names the solver that can.
+            Console.Error.WriteLine("run: " & OneLine(ex.Message))
+            Return ExitCodes.Failure
         Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
             Console.Error.WriteLine("internal error: " & OneLine(ex.Message))
             Return ExitCodes.Failure

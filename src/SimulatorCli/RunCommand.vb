@@ -80,7 +80,7 @@ Friend Module RunCommand
         For Each t In SampleTimes(o.Time, o.Sample)
             Try
                 world.Advance(t - world.Time)
-            Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException AndAlso Not TypeOf ex Is SpeedLimitException
+            Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException AndAlso Not TypeOf ex Is SpeedLimitException AndAlso Not TypeOf ex Is UnsupportedSceneException
                 Throw New InvalidOperationException("the " & world.Solver.Name & " solver failed between t = " & CsvText.Number(world.Time) & " s and t = " & CsvText.Number(t) & " s: " & ex.Message, ex)
             End Try
             If states IsNot Nothing Then WriteStates(states.Writer, t, movable)

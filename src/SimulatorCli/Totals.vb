@@ -4,8 +4,7 @@ Option Strict On
 Friend Module Totals
     ''' <summary>
     ''' Potential energy, J: m·g·y of each movable body's centre of mass (y = 0 at the floor), plus
-    ''' ½·k·extension² of each spring. The engine has no springs yet, so the second part is zero; when
-    ''' links arrive, their elastic energy is added here, once, for both outputs.
+    ''' ½·k·extension² of each spring (both from <see cref="World.PotentialEnergy"/>), once, for both outputs.
     ''' </summary>
     Friend Function PotentialEnergy(world As World) As Double
         Return world.PotentialEnergy()

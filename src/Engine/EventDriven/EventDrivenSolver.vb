@@ -23,6 +23,8 @@ Public NotInheritable Class EventDrivenSolver
     Private ReadOnly _rest As RestRules
     Private ReadOnly _predictor As Predictor
     Private ReadOnly _responder As Responder
+    ' A world with links is moved by their closed forms instead (see LinkedEventSolver).
+    Private ReadOnly _linked As New LinkedEventSolver()
     Private _dirty As Boolean = True
     ''' <summary>Events processed at the current instant so far (see <see cref="CountInstant"/>).</summary>
     Private _instantEvents As Long
@@ -98,6 +100,7 @@ Public NotInheritable Class EventDrivenSolver
     Public Sub Attach(world As World) Implements ISolver.Attach
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
         _s.World = world
+        _linked.Attach(world)
         _dirty = True
     End Sub
 
@@ -132,6 +135,11 @@ Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
         If _s.World Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
+        If _s.World.Links.Count > 0 Then
+            _linked.Advance(duration)
+            _dirty = True
+            Return _s.World.Time + duration
+        End If
         If _dirty OrElse _s.Now <> _s.World.Time Then Rebuild()
         Dim tEnd = _s.World.Time + duration
         StartDrag(duration)
@@ -202,6 +210,7 @@ Public NotInheritable Class EventDrivenSolver
     ''' others with it become stale through its counter).
     ''' </summary>
     Public Sub Invalidate(body As Shape) Implements ISolver.Invalidate
+        _linked.Invalidate()
         Dim w = _s.World
         If _dirty OrElse w Is Nothing Then Return
         Dim i = _s.Bodies.IndexOf(body)

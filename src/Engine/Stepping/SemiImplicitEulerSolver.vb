@@ -18,6 +18,9 @@ Public NotInheritable Class SemiImplicitEulerSolver
 
     Private ReadOnly _dt As Double
     Private ReadOnly _contacts As New StepContacts()
+    Private ReadOnly _links As New LinkStep()
+    ' Each movable body's acceleration in the current step, m/s² (used only when the world has links).
+    Private _acceleration As Vector() = Array.Empty(Of Vector)()
     Private _world As World
 
     ''' <param name="timeStep">sub-step, s, &gt; 0</param>
@@ -59,11 +62,17 @@ Public NotInheritable Class SemiImplicitEulerSolver
         If _world Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
         Dim t0 = _world.Time
         If Not (duration > 0) Then Return t0
+        _links.Prepare(_world)
         Dim n = SubSteps.Count(duration, _dt)
         For k = 1L To n
             Dim h = SubSteps.Length(k, n, duration, _dt)
             Dim offset = SubSteps.EndOffset(k, n, duration, _dt)
-            Integrate(h, duration - offset + h)
+            If _links.HasLinks Then
+                IntegrateLinked(h, duration - offset + h)
+                _links.Constrain(h, _world.Restitution, _world.Movables, Nothing)
+            Else
+                Integrate(h, duration - offset + h)
+            End If
             _contacts.Resolve(_world, t0 + offset, h, Nothing)
             If k < n AndAlso Diagnostics.Stopwatch.GetTimestamp() > deadline Then Return t0 + offset
         Next
@@ -80,6 +89,31 @@ Public NotInheritable Class SemiImplicitEulerSolver
                 Continue For
             End If
             Dim v = New Vector(b.Velocity.X, b.Velocity.Y - g * h)
+            b.Velocity = v
+            b.Position += v * h
+        Next
+    End Sub
+
+    ''' <summary>
+    ''' As <see cref="Integrate"/>, with each spring's pull (from the positions and velocities at the start
+    ''' of the step) added to gravity: v += (g + F/m) h, then x += v h.
+    ''' </summary>
+    Private Sub IntegrateLinked(h As Double, remaining As Double)
+        Dim bodies = _world.Movables
+        If _acceleration.Length < bodies.Count Then _acceleration = New Vector(bodies.Count - 1) {}
+        Dim gravity = New Vector(0, -_world.Gravity)
+        For i = 0 To bodies.Count - 1
+            _acceleration(i) = gravity
+        Next
+        _links.AddAccelerations(_acceleration)
+        Dim dragged = _world.DraggedBody
+        For i = 0 To bodies.Count - 1
+            Dim b = bodies(i)
+            If b Is dragged Then
+                DragStep.Move(_world, b, h, remaining)
+                Continue For
+            End If
+            Dim v = b.Velocity + _acceleration(i) * h
             b.Velocity = v
             b.Position += v * h
         Next

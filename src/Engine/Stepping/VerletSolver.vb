@@ -31,6 +31,9 @@ Public NotInheritable Class VerletSolver
     ' Working arrays for one advance, indexed like World.Movables.
     Private _prev As Vector() = Array.Empty(Of Vector)()
     Private _touched As Boolean() = Array.Empty(Of Boolean)()
+    Private ReadOnly _links As New LinkStep()
+    ' Each movable body's acceleration in the current step, m/s² (used only when the world has links).
+    Private _acceleration As Vector() = Array.Empty(Of Vector)()
 
     ''' <param name="timeStep">sub-step, s, &gt; 0</param>
     Public Sub New(Optional timeStep As Double = DefaultTimeStep)
@@ -80,15 +83,23 @@ Public NotInheritable Class VerletSolver
         Dim t0 = _world.Time
         If Not (duration > 0) Then Return t0
         LoadPrevious()
+        _links.Prepare(_world)
         Dim n = SubSteps.Count(duration, _dt)
         Dim reached = t0 + duration
         For k = 1L To n
             Dim h = SubSteps.Length(k, n, duration, _dt)
             Dim offset = SubSteps.EndOffset(k, n, duration, _dt)
             If h > 0 Then
-                Integrate(h, duration - offset + h)
-                _contacts.Resolve(_world, t0 + offset, h, _touched)
-                ReseedTouched(h)
+                If _links.HasLinks Then
+                    IntegrateLinked(h, duration - offset + h)
+                    _links.Constrain(h, _world.Restitution, _world.Movables, _touched)
+                    _contacts.Resolve(_world, t0 + offset, h, _touched)
+                    ReseedTouchedLinked(h)
+                Else
+                    Integrate(h, duration - offset + h)
+                    _contacts.Resolve(_world, t0 + offset, h, _touched)
+                    ReseedTouched(h)
+                End If
                 _hPrevious = h
             End If
             If k < n AndAlso Diagnostics.Stopwatch.GetTimestamp() > deadline Then
@@ -129,6 +140,58 @@ Public NotInheritable Class VerletSolver
             c.Velocity = (xNext - x) / h + halfAh
         Next
     End Sub
+
+    ''' <summary>
+    ''' As <see cref="Integrate"/>, with each body's own acceleration: gravity plus its springs' pull divided
+    ''' by its mass, read from the positions and velocities at the start of the step (Störmer–Verlet with
+    ''' forces that depend on position, still symplectic for springs).
+    ''' </summary>
+    Private Sub IntegrateLinked(h As Double, remaining As Double)
+        Dim bodies = _world.Movables
+        Dim dragged = _world.DraggedBody
+        If _acceleration.Length < bodies.Count Then _acceleration = New Vector(bodies.Count - 1) {}
+        Dim gravity = New Vector(0, -_world.Gravity)
+        For i = 0 To bodies.Count - 1
+            _acceleration(i) = gravity
+        Next
+        _links.AddAccelerations(_acceleration)
+        If h > _hPrevious * MaxStepRatio Then
+            For i = 0 To bodies.Count - 1
+                _prev(i) = SeedWith(bodies(i), h, _acceleration(i))
+            Next
+            _hPrevious = h
+        End If
+        Dim ratio = h / _hPrevious
+        Dim kickFactor = h * (h + _hPrevious) / 2
+        For i = 0 To bodies.Count - 1
+            Dim c = bodies(i)
+            _touched(i) = False
+            If c Is dragged Then
+                DragStep.Move(_world, c, h, remaining)
+                _touched(i) = True
+                Continue For
+            End If
+            Dim a = _acceleration(i)
+            Dim x = c.Position
+            Dim xNext = x + (x - _prev(i)) * ratio + a * kickFactor
+            _prev(i) = x
+            c.Position = xNext
+            c.Velocity = (xNext - x) / h + a * (h / 2)
+        Next
+    End Sub
+
+    ''' <summary>As <see cref="ReseedTouched"/>, with each body's acceleration of this step.</summary>
+    Private Sub ReseedTouchedLinked(h As Double)
+        Dim bodies = _world.Movables
+        For i = 0 To bodies.Count - 1
+            If _touched(i) Then _prev(i) = SeedWith(bodies(i), h, _acceleration(i))
+        Next
+    End Sub
+
+    ''' <summary>The previous position, a step of h s ago, that makes the Verlet velocity equal the body's velocity now under acceleration <paramref name="a"/> (m/s²).</summary>
+    Private Shared Function SeedWith(c As Shape, h As Double, a As Vector) As Vector
+        Return c.Position - c.Velocity * h + a * (h * h / 2)
+    End Function
 
     ''' <summary>After contacts moved or pushed some bodies: make x_prev imply the velocity they now have.</summary>
     Private Sub ReseedTouched(h As Double)

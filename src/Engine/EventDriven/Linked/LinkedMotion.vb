@@ -1,0 +1,55 @@
+Option Strict On
+
+''' <summary>
+''' How one group of linked bodies (or one free body) moves between events in the event solver, in closed
+''' form: positions and velocities at any later time, when the form stops holding (a string going slack or
+''' snapping taut), and bounds on each body's speed and acceleration that conservative advancement needs to
+''' find contacts without ever stepping over one. Times are absolute (s, like <see cref="World.Time"/>).
+''' </summary>
+Friend MustInherit Class LinkedMotion
+    Protected Sub New(bodies As Circle(), startTime As Double)
+        Me.Bodies = bodies
+        Me.StartTime = startTime
+    End Sub
+
+    ''' <summary>The bodies this motion moves, in its own order (one or two).</summary>
+    Friend ReadOnly Property Bodies As Circle()
+
+    ''' <summary>When the motion started, s.</summary>
+    Friend ReadOnly Property StartTime As Double
+
+    ''' <summary>Body k's position (m) and velocity (m/s) at <paramref name="time"/> (s, ≥ <see cref="StartTime"/>).</summary>
+    Friend MustOverride Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
+
+    ''' <summary>An upper bound on body k's speed (m/s) over [<paramref name="t0"/>, <paramref name="t1"/>].</summary>
+    Friend MustOverride Function SpeedBound(k As Integer, t0 As Double, t1 As Double) As Double
+
+    ''' <summary>An upper bound on body k's acceleration (m/s²) over [<paramref name="t0"/>, <paramref name="t1"/>].</summary>
+    Friend MustOverride Function AccelerationBound(k As Integer, t0 As Double, t1 As Double) As Double
+
+    ''' <summary>When this closed form stops holding, s; +∞ when it holds for ever.</summary>
+    Friend Overridable ReadOnly Property TransitionTime As Double
+        Get
+            Return Double.PositiveInfinity
+        End Get
+    End Property
+
+    ''' <summary>
+    ''' At <see cref="TransitionTime"/>, with the bodies' states written to them: does what happens there
+    ''' (a string snapping taut changes their velocities). Returns true when the string is to be slack next.
+    ''' </summary>
+    Friend Overridable Function Transition(world As World) As Boolean
+        Return False
+    End Function
+
+    ''' <summary>The links that hold their length now (rods, taut strings): they take part in every collision of these bodies.</summary>
+    Friend Overridable ReadOnly Property HeldLinks As Link()
+        Get
+            Return Array.Empty(Of Link)()
+        End Get
+    End Property
+
+    ''' <summary>Sets the tension of rods and strings at <paramref name="time"/> (s), for the tables.</summary>
+    Friend Overridable Sub UpdateTensions(time As Double)
+    End Sub
+End Class

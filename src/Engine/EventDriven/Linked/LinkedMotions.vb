@@ -1,0 +1,106 @@
+Option Strict On
+
+''' <summary>
+''' Which closed form moves a group of linked bodies, chosen from their state now; and, before anything
+''' moves, whether the event solver can move a world's links at all. What it cannot yet move it says in a
+''' plain sentence (<see cref="UnsupportedSceneException"/>) rather than letting the bodies fly free.
+''' </summary>
+Friend Module LinkedMotions
+    ''' <summary>A string within this fraction of its length counts as at full length.</summary>
+    Friend Const FullFraction As Double = 0.000000001
+
+    Private Const UseVerlet As String = "; use --solver verlet"
+
+    ''' <summary>Throws <see cref="UnsupportedSceneException"/> when the world has links the event solver cannot move.</summary>
+    Friend Sub CheckSupported(world As World, groups As List(Of LinkedGroup))
+        For Each b In world.Movables
+            If b.Kind <> ShapeKind.Circle Then Throw New UnsupportedSceneException("the event solver does not yet move boxes or polygons in a scene with links" & UseVerlet)
+        Next
+        For Each g In groups
+            ' Springs alone are integrated when no closed form fits them (IntegratedMotion).
+            If OnlySprings(g) Then Continue For
+            If g.Bodies.Count > 2 OrElse g.Links.Count > 1 Then Throw New UnsupportedSceneException("the event solver does not yet move a chain of links with a rod or string in it (a body with more than one link, or more than two bodies linked together)" & UseVerlet)
+        Next
+    End Sub
+
+    ''' <summary>
+    ''' The closed form for <paramref name="group"/> from its bodies' states at <paramref name="time"/> (s).
+    ''' <paramref name="slack"/>: a string has just gone slack (its tension fell to zero), whatever the rounding says.
+    ''' </summary>
+    Friend Function Create(group As LinkedGroup, world As World, time As Double, slack As Boolean, slop As Double) As LinkedMotion
+        Dim g = world.Gravity
+        Dim a = group.Bodies(0)
+        If group.Links.Count = 0 Then
+            If RestsOnFloor(a, world, slop) Then
+                a.Position = New Vector(a.Position.X, a.Radius)
+                a.Velocity = New Vector(a.Velocity.X, 0)
+                Return New FlightMotion(a, time, 0)
+            End If
+            Return New FlightMotion(a, time, g)
+        End If
+        Dim l = group.Links(0)
+        If OnlySprings(group) Then
+            If group.Bodies.Count = 1 AndAlso group.Links.Count = 1 AndAlso SpringMotion.Fits(a, l, g) Then Return New SpringMotion(a, l, time, g)
+            Return New IntegratedMotion(group.Bodies.ToArray(), group.Links, time, g)
+        End If
+        If group.Bodies.Count = 1 Then
+            Select Case l.Kind
+                Case LinkKind.Rod
+                    Return New PendulumMotion(a, l, time, g)
+                Case Else
+                    If Not slack AndAlso AnchoredTaut(a, l, g, slop) Then Return New PendulumMotion(a, l, time, g)
+                    Return New FlightMotion(a, time, g, l, slop)
+            End Select
+        End If
+        Dim b = group.Bodies(1)
+        If l.Kind = LinkKind.Rod OrElse (Not slack AndAlso PairTaut(a, b, l)) Then
+            Dim first = If(l.A Is a, a, b)
+            Return New DumbbellMotion(first, If(first Is a, b, a), l, time, g)
+        End If
+        Return New PairFlightMotion(a, b, l, time, g, slop)
+    End Function
+
+    ''' <summary>Whether every link of the group is a spring (and it has one).</summary>
+    Private Function OnlySprings(group As LinkedGroup) As Boolean
+        Return group.Links.Count > 0 AndAlso group.Links.All(Function(l) l.Kind = LinkKind.Spring)
+    End Function
+
+    ''' <summary>
+    ''' A body on a string to a fixed point is taut when it is at full length, not moving along the string,
+    ''' and the string pulls: T/m = v_across²/L + g cos θ ≥ 0 (θ from straight down). Where the pull is
+    ''' within rounding of zero, the free parabola decides: if it would leave the circle at once, the string is taut.
+    ''' </summary>
+    Private Function AnchoredTaut(body As Circle, l As Link, g As Double, slop As Double) As Boolean
+        Dim r = body.Position - l.EndB
+        Dim d = r.Length
+        If d < l.Length * (1 - FullFraction) Then Return False
+        Dim v = body.Velocity
+        Dim along = Vector.Dot(v, r) / d
+        Dim scale = v.Length + Math.Sqrt(g * l.Length)
+        If Math.Abs(along) > FullFraction * scale Then Return False
+        Dim pull = (v.LengthSquared - along * along) / l.Length - g * r.Y / d
+        If pull > FullFraction * (g + v.LengthSquared / l.Length) Then Return True
+        If pull < -FullFraction * (g + v.LengthSquared / l.Length) Then Return False
+        Return StringTaut.AnchoredTautTime(l.EndB, l.Length, body.Position, v, g, slop) = 0
+    End Function
+
+    ''' <summary>A string between two free bodies is taut at full length when they do not move along it (its pull, μω²L, is never negative).</summary>
+    Private Function PairTaut(a As Circle, b As Circle, l As Link) As Boolean
+        Dim r = b.Position - a.Position
+        Dim d = r.Length
+        If d < l.Length * (1 - FullFraction) Then Return False
+        Dim w = b.Velocity - a.Velocity
+        Return Math.Abs(Vector.Dot(w, r) / d) <= FullFraction * (w.Length + a.Velocity.Length + b.Velocity.Length)
+    End Function
+
+    ''' <summary>
+    ''' A free ball on the floor that would bounce less than four times <paramref name="slop"/> high: it rests
+    ''' there (sliding), instead of bouncing ever lower at ever shorter intervals (the series of bounces has
+    ''' a finite sum). Contacts are told apart from touches by twice the slop, so lower bounces cannot be followed.
+    ''' </summary>
+    Private Function RestsOnFloor(body As Circle, world As World, slop As Double) As Boolean
+        If Not world.Walls OrElse world.Gravity <= 0 Then Return False
+        If body.Position.Y - body.Radius > slop Then Return False
+        Return Math.Abs(body.Velocity.Y) <= Math.Sqrt(8 * world.Gravity * slop)
+    End Function
+End Module
