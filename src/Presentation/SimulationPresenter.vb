@@ -125,7 +125,9 @@ Partial Public NotInheritable Class SimulationPresenter
         If Not IsPaused Then
             Try
                 CarryTowardsCursor(dt)
-                World.Advance(dt * Speed)
+                Dim asked = dt * Speed
+                Dim done = AdvanceOrFallBack(asked)
+                NoteSlowFrames(done < asked * (1 - 1.0E-9))
             Catch ex As ArgumentException
                 Fail("The simulation stopped: " & ex.Message)
             Catch ex As InvalidOperationException
@@ -138,6 +140,41 @@ Partial Public NotInheritable Class SimulationPresenter
         End If
         _sinceSnapshot += realSeconds
         If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
+    End Sub
+
+    ''' <summary>
+    ''' Wall-clock seconds one frame may spend advancing the world. A scene that needs millions of
+    ''' collisions per simulated second then shows slower time, and says so, instead of freezing the window.
+    ''' </summary>
+    Public Property FrameBudgetSeconds As Double = 0.04
+
+    ''' <summary>Whether the last frame fell short of the chosen speed (see <see cref="FrameBudgetSeconds"/>).</summary>
+    Public ReadOnly Property IsRunningSlow As Boolean
+
+    ''' <summary>
+    ''' Advances by up to <paramref name="seconds"/> within the frame's budget; returns the simulated
+    ''' seconds done. A scene the event solver cannot yet move (a chain of links) is handed to the
+    ''' Verlet solver, with a message, and the frame carries on with it.
+    ''' </summary>
+    Private Function AdvanceOrFallBack(seconds As Double) As Double
+        Try
+            Return World.AdvanceWithin(seconds, FrameBudgetSeconds)
+        Catch ex As UnsupportedSceneException
+            World.Solver = SolverFactory.Create("verlet")
+            ShowMessage(OneLine(ex.Message) & " This scene now runs with the Verlet solver (fixed time step " &
+                        Units.Sig(World.Solver.TimeStep.GetValueOrDefault() * 1000) & " ms), which is not exact.")
+            Trace?.Invoke("solver verlet: " & OneLine(ex.Message))
+            Return World.AdvanceWithin(seconds, FrameBudgetSeconds)
+        End Try
+    End Function
+
+    Private Sub NoteSlowFrames(slow As Boolean)
+        If slow = _IsRunningSlow Then Return
+        _IsRunningSlow = slow
+        If slow Then
+            ShowMessage("This scene needs more collisions than the computer can work out in real time: time on screen runs slower than the Speed slider says.")
+            Trace?.Invoke("running slow")
+        End If
     End Sub
 
     Private Sub Fail(text As String)

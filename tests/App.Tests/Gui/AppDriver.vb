@@ -196,8 +196,8 @@ Public NotInheritable Class AppDriver
         Throw New Xunit.Sdk.XunitException("no trace line matching /" & pattern & "/" & vbLf & X.AppOutput())
     End Function
 
-    ''' <summary>Waits for a visible window with this title (a dialog) and returns its X id.</summary>
-    Public Function WaitForWindow(title As String, Optional timeoutSeconds As Double = 10) As String
+    ''' <summary>Waits for a visible window with this title (a dialog) and returns its X id. Mono's file dialogs can take many seconds to appear on a busy machine.</summary>
+    Public Function WaitForWindow(title As String, Optional timeoutSeconds As Double = 30) As String
         Dim sw = Diagnostics.Stopwatch.StartNew()
         Do
             Dim r = X.Tool("xdotool", "search", "--onlyvisible", "--name", title)
