@@ -69,6 +69,14 @@ Public Class LessonsGuiTests
     <InlineData("pi-3141.json")>
     <InlineData("ideal-gas.json")>
     <InlineData("settling-pile.json")>
+    <InlineData("ramp.json")>
+    <InlineData("ball-in-v.json")>
+    <InlineData("boxes-sliding.json")>
+    <InlineData("box-stack.json")>
+    <InlineData("polygons.json")>
+    <InlineData("pendulum.json")>
+    <InlineData("cradle-strings.json")>
+    <InlineData("spring-mass.json")>
     Public Sub ALessonOpensFromTheScenesMenu_WithOneClick_AndIsDrawn(file As String)
         Dim lesson = PhysicsEngine.Presentation.LessonIndex.Read(IO.Path.Combine(ProcessRunner.RepoRoot, "scenes")).Single(Function(l) l.FileName = file)
         Using app As New AppDriver()
