@@ -196,6 +196,22 @@ Public NotInheritable Class AppDriver
         Throw New Xunit.Sdk.XunitException("no trace line matching /" & pattern & "/" & vbLf & X.AppOutput())
     End Function
 
+    ''' <summary>
+    ''' Clicks a button that opens a dialog and waits for the dialog. A click that reaches the window
+    ''' while a frame is still being worked out can be lost on a loaded machine under Mono; the button
+    ''' is then clicked again (at most three times in all).
+    ''' </summary>
+    Public Function ClickForDialog(button As String, title As String) As String
+        For attempt = 1 To 3
+            Click(button)
+            Try
+                Return WaitForWindow(title, If(attempt < 3, 15, 30))
+            Catch ex As TimeoutException When attempt < 3
+            End Try
+        Next
+        Throw New InvalidOperationException("unreachable")
+    End Function
+
     ''' <summary>Waits for a visible window with this title (a dialog) and returns its X id. Mono's file dialogs can take many seconds to appear on a busy machine.</summary>
     Public Function WaitForWindow(title As String, Optional timeoutSeconds As Double = 30) As String
         Dim sw = Diagnostics.Stopwatch.StartNew()

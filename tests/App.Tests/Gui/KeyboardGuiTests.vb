@@ -64,14 +64,12 @@ Public Class KeyboardGuiTests
                     ' A file name with accents, typed into the Save dialog, then into the Open dialog.
                     Dim name = "démo-" & round & "-é€ß.json"
                     Dim path = IO.Path.Combine(folder, name)
-                    app.Click("save")
-                    app.WaitForWindow("Save the scene")
+                    app.ClickForDialog("save", "Save the scene")
                     from = app.Mark()
                     app.TypeAndEnter(path)
                     app.WaitFor("^saved " & name & ": ", skip:=from)
                     Assert.True(IO.File.Exists(path), "no file " & path)
-                    app.Click("open")
-                    app.WaitForWindow("Open a scene")
+                    app.ClickForDialog("open", "Open a scene")
                     from = app.Mark()
                     app.TypeAndEnter(path)
                     app.WaitFor("^opened " & name & ": ", skip:=from)

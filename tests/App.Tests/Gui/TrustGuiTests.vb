@@ -27,8 +27,7 @@ Public Class TrustGuiTests
 
     ''' <summary>Opens a scene through the Open dialog, typing its path, and waits until it is on screen.</summary>
     Private Shared Sub OpenThroughTheDialog(app As AppDriver, path As String, expect As String)
-        app.Click("open")
-        app.WaitForWindow("Open a scene")
+        app.ClickForDialog("open", "Open a scene")
         Dim from = app.Mark()
         app.TypeAndEnter(path)
         app.WaitFor(expect, skip:=from)
@@ -80,8 +79,7 @@ Public Class TrustGuiTests
                 app.ClickAndWait("pause", "^paused")
                 app.WaitFor("^check scene ok$", skip:=from)
                 Dim shot = app.X.Shoot("table-ball")
-                app.Click("save")
-                app.WaitForWindow("Save the scene")
+                app.ClickForDialog("save", "Save the scene")
                 from = app.Mark()
                 app.TypeAndEnter(path)
                 app.WaitFor("^saved ", skip:=from)
@@ -253,8 +251,7 @@ Public Class TrustGuiTests
     <GuiFact>
     Public Sub SavingWhereItCannotBeWritten_SaysWhichFileAndWhy()
         Using app As New AppDriver()
-            app.Click("save")
-            app.WaitForWindow("Save the scene")
+            app.ClickForDialog("save", "Save the scene")
             Dim from = app.Mark()
             app.TypeAndEnter("/proc/lesson.json")
             Dim m = app.WaitFor("^message: (Could not save lesson.json: .*)$", skip:=from)
