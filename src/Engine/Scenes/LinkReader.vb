@@ -52,7 +52,7 @@ Namespace Scenes
                 Case Else
                     Throw New SceneFormatException(f.PlaceOf("type"), "unknown type """ & typeName & """ (expected ""spring"", ""rod"" or ""string"")")
             End Select
-            Dim link As New LinkSpec With {.Index = index, .Kind = kind, .Id = ReadId(f, index, owners)}
+            Dim link As New LinkSpec With {.Index = index, .Kind = kind, .Id = SceneIds.ReadId(f, index, owners, "link", AddressOf LinkPlace)}
             link.A = ReadEnd(f, "a", byId)
             Dim hasB = f.Find("b") IsNot Nothing
             Dim hasAt = f.Find("at") IsNot Nothing
@@ -162,22 +162,5 @@ Namespace Scenes
             Return value
         End Function
 
-        ''' <summary>A given id (non-empty, unused by an earlier link), or "linkN" from the link's 1-based position.</summary>
-        Private Function ReadId(f As JsonFields, index As Integer, owners As Dictionary(Of String, Integer)) As String
-            Dim other As Integer
-            If f.Find("id") Is Nothing Then
-                Dim id = "link" & (index + 1).ToString(CultureInfo.InvariantCulture)
-                If owners.TryGetValue(id, other) Then
-                    Throw New SceneFormatException(LinkPlace(index), "has no id, so it is named """ & id & """ by its position, but " & LinkPlace(other) & " already has that id")
-                End If
-                Return id
-            End If
-            Dim given = f.OptionalString("id")
-            If given.Length = 0 Then Throw New SceneFormatException(f.PlaceOf("id"), "must not be empty")
-            If owners.TryGetValue(given, other) Then
-                Throw New SceneFormatException(f.PlaceOf("id"), """" & given & """ is already the id of " & LinkPlace(other))
-            End If
-            Return given
-        End Function
     End Module
 End Namespace

@@ -170,7 +170,7 @@ Namespace Scenes
                 Case Else
                     Throw New SceneFormatException(f.PlaceOf("type"), "unknown type """ & typeName & """ (expected ""circle"", ""rectangle"", ""segment"" or ""polygon"")")
             End Select
-            Dim body As New BodySpec With {.Index = index, .Kind = kind, .Id = ReadId(f, index, owners)}
+            Dim body As New BodySpec With {.Index = index, .Kind = kind, .Id = SceneIds.ReadId(f, index, owners, "", AddressOf BodyPlace)}
             Select Case kind
                 Case ShapeKind.Circle
                     body.X = f.RequiredNumber("x")
@@ -265,24 +265,6 @@ Namespace Scenes
             If message.Contains("zero area") Then Return "the polygon has zero area"
             If message.Contains("distinct corners") Then Return "a polygon needs at least 3 distinct corners"
             Return message
-        End Function
-
-        Private Function ReadId(f As JsonFields, index As Integer, owners As Dictionary(Of String, Integer)) As String
-            Dim e = f.Find("id")
-            Dim other As Integer
-            If e Is Nothing Then
-                Dim id = (index + 1).ToString(CultureInfo.InvariantCulture)
-                If owners.TryGetValue(id, other) Then
-                    Throw New SceneFormatException(BodyPlace(index), "has no id, so it is named """ & id & """ by its position, but " & BodyPlace(other) & " already has that id")
-                End If
-                Return id
-            End If
-            Dim given = f.OptionalString("id")
-            If given.Length = 0 Then Throw New SceneFormatException(f.PlaceOf("id"), "must not be empty")
-            If owners.TryGetValue(given, other) Then
-                Throw New SceneFormatException(f.PlaceOf("id"), """" & given & """ is already the id of " & BodyPlace(other))
-            End If
-            Return given
         End Function
 
         Private Sub CheckInside(bodies As List(Of BodySpec), s As WorldSettings)
