@@ -229,10 +229,15 @@ Friend NotInheritable Class CornerSlides
         Return (b.PositionAt(k, _s.Now) - New Vector(_seenX(j), _seenY(j))).Length - b.Reach(j) - b.Reach(k)
     End Function
 
-    ''' <summary>How close (m) counts as about to touch: 10⁻⁶ of the smaller reach, and the touching tolerance.</summary>
+    ''' <summary>How close (m) sliding body j and body k count as about to touch (see <see cref="NearGap"/>).</summary>
     Private Function Near(j As Integer, k As Integer) As Double
+        Return NearGap(j, k, _cx(j), _cy(j))
+    End Function
+
+    ''' <summary>How close (m) bodies i and k count as about to touch near (x, y): 10⁻⁶ of the smaller reach, and the touching tolerance there.</summary>
+    Private Function NearGap(i As Integer, k As Integer, x As Double, y As Double) As Double
         Dim b = _s.Bodies
-        Return 1.0E-6 * Math.Min(b.Reach(j), b.Reach(k)) + 16 * SolverState.SlopAt(_cx(j), _cy(j))
+        Return 1.0E-6 * Math.Min(b.Reach(i), b.Reach(k)) + 16 * SolverState.SlopAt(x, y)
     End Function
 
     ''' <summary>
@@ -247,7 +252,7 @@ Friend NotInheritable Class CornerSlides
             Dim mk = b.Slot(k).Mode
             If mk = BodyMode.Rounding OrElse mk = BodyMode.Sleeping Then Continue For
             Dim gap = (b.PositionAt(k, _s.Now) - p).Length - b.Reach(i) - b.Reach(k)
-            If gap <= 1.0E-6 * Math.Min(b.Reach(i), b.Reach(k)) + 16 * SolverState.SlopAt(p.X, p.Y) Then Return True
+            If gap <= NearGap(i, k, p.X, p.Y) Then Return True
         Next
         Return False
     End Function
