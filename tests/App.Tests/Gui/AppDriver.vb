@@ -166,8 +166,45 @@ Public NotInheritable Class AppDriver
         Thread.Sleep(150)
     End Sub
 
-    ''' <summary>Replaces the text of a named text box, as a person would: click, select all, type.</summary>
-    Public Sub TypeInto(name As String, text As String)
+    ''' <summary>The key each named text box has on the app's "inputs" trace line.</summary>
+    Private Shared ReadOnly InputKeys As New Dictionary(Of String, String)(StringComparer.Ordinal) From {
+        {"radius", "Radius"}, {"mass", "Mass"}, {"rect-width", "RectangleWidth"}, {"rect-height", "RectangleHeight"},
+        {"sides", "Sides"}, {"angle", "PolygonAngle"}, {"stiffness", "Stiffness"},
+        {"box-width", "ContainerWidth"}, {"box-height", "ContainerHeight"}}
+
+    ''' <summary>
+    ''' Replaces the text of a named text box, as a person would: click, select all, type. Unless told
+    ''' not to check, it then waits until the app's trace shows the box holding the text. A click can be
+    ''' lost on a loaded machine under Mono, and the keys then go to the box that had the focus: any box
+    ''' changed that way is put back and the whole is tried again (at most three times).
+    ''' </summary>
+    Public Sub TypeInto(name As String, text As String, Optional check As Boolean = True)
+        Dim key As String = Nothing
+        If Not check OrElse Not InputKeys.TryGetValue(name, key) Then
+            TypeKeys(name, text)
+            Return
+        End If
+        For attempt = 1 To 3
+            Dim before = Inputs()
+            Dim from = Mark()
+            TypeKeys(name, text)
+            Try
+                WaitFor("^inputs .*\b" & key & "=\[" & Regex.Escape(text) & "\]", TimeSpan.FromSeconds(4), from)
+            Catch ex As TimeoutException When attempt < 3
+            End Try
+            Dim after = Inputs()
+            For Each other In InputKeys
+                Dim was As String = Nothing, now As String = Nothing
+                If other.Value = key OrElse Not before.TryGetValue(other.Value, was) OrElse Not after.TryGetValue(other.Value, now) Then Continue For
+                If was <> now Then TypeInto(other.Key, was)
+            Next
+            Dim got As String = Nothing
+            If Inputs().TryGetValue(key, got) AndAlso got = text Then Return
+        Next
+        Throw New TimeoutException("the " & name & " box does not hold '" & text & "' after three tries" & vbLf & X.AppOutput())
+    End Sub
+
+    Private Sub TypeKeys(name As String, text As String)
         Click(name)
         X.XDo("key", "ctrl+a")
         X.XDo("key", "BackSpace")
