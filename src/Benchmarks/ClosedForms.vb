@@ -58,4 +58,31 @@ Friend Module ClosedForms
         Dim striker = New Vector(speed, 0) - target
         Return (striker, target)
     End Function
+
+    ''' <summary>
+    ''' Period of a pendulum of length L released from rest at θ0 (rad), s: T = 4 √(L/g) K(k) with
+    ''' k = sin(θ0/2) and K the complete elliptic integral of the first kind, K(k) = π / (2 AGM(1, √(1 − k²)))
+    ''' (Gauss's arithmetic–geometric mean). For small θ0 it tends to 2π √(L/g).
+    ''' </summary>
+    Public Function PendulumPeriod(length As Double, angle As Double, gravity As Double) As Double
+        Dim k = Math.Sin(angle / 2)
+        Dim a = 1.0, b = Math.Sqrt(1 - k * k)
+        For i = 1 To 40
+            Dim mean = (a + b) / 2
+            b = Math.Sqrt(a * b)
+            a = mean
+            If Math.Abs(a - b) <= 1.0E-16 * a Then Exit For
+        Next
+        Return 4 * Math.Sqrt(length / gravity) * Math.PI / (2 * a)
+    End Function
+
+    ''' <summary>
+    ''' Height of a mass on an undamped vertical spring released at rest with the spring unstretched,
+    ''' m: it oscillates about y_eq = y0 − mg/k with amplitude mg/k and ω = √(k/m), so
+    ''' y(t) = y0 − (mg/k)(1 − cos ωt).
+    ''' </summary>
+    Public Function SpringHeight(y0 As Double, stiffness As Double, mass As Double, gravity As Double, time As Double) As Double
+        Dim stretch = mass * gravity / stiffness
+        Return y0 - stretch * (1 - Math.Cos(Math.Sqrt(stiffness / mass) * time))
+    End Function
 End Module

@@ -13,6 +13,10 @@ Friend Module SceneCatalog
             Case "cradle" : Return New CradleScene()
             Case "gas-energy" : Return New GasEnergyScene(100, options.GasSeconds)
             Case "pile" : Return New PileScene()
+            Case "ramp-slide" : Return New RampSlideScene()
+            Case "box-drop" : Return New BoxDropScene()
+            Case "pendulum" : Return New PendulumScene()
+            Case "spring" : Return New SpringScene()
             Case "mixed" : Return New MixedScene(If(options.Quick, 0.02, 0.2))
             Case Else : Throw New ArgumentException("unknown scene '" & name & "'", NameOf(name))
         End Select

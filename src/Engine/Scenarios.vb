@@ -160,6 +160,59 @@ Public Module Scenarios
         Return w
     End Function
 
+    ''' <summary>
+    ''' A ball of radius r released at rest touching a fixed frictionless ramp of length 4 m at angle θ
+    ''' (rad) to the horizontal, 0.3 m down from its top end. It slides with a = g sin θ along the slope.
+    ''' </summary>
+    Public Function RampSlide(Optional angle As Double = Math.PI / 6, Optional gravity As Double = 9.81,
+                              Optional radius As Double = 0.1) As World
+        Const length = 4.0
+        Dim top = New Vector(0.5, 0.5 + length * Math.Sin(angle))
+        Dim bottom = New Vector(0.5 + length * Math.Cos(angle), 0.5)
+        Dim w As New World(bottom.X + 1.0, top.Y + 1.0, gravity, 0.5)
+        w.Add(New Segment(top, bottom, "ramp"))
+        Dim down = New Vector(Math.Cos(angle), -Math.Sin(angle))
+        Dim up = New Vector(Math.Sin(angle), Math.Cos(angle))
+        w.Add(New Circle(top + 0.3 * down + radius * up, radius, 1.0, id:="ball"))
+        Return w
+    End Function
+
+    ''' <summary>A 0.2 m square box of 1 kg dropped from rest with its bottom face h0 metres above the floor.</summary>
+    Public Function BoxDrop(Optional dropHeight As Double = 1.0, Optional restitution As Double = 0.5,
+                            Optional gravity As Double = 9.81) As World
+        Dim w As New World(1.0, dropHeight + 1.2, gravity, restitution)
+        w.Add(Rectangle.CreateMovable(New Vector(0.4, dropHeight), 0.2, 0.2, 1.0, Vector.Zero, "box"))
+        Return w
+    End Function
+
+    ''' <summary>
+    ''' A bob of radius 0.1 m and 1 kg on a string of length L (m) from a fixed point, released at rest
+    ''' at θ0 (rad) from the vertical; e = 1, nothing else in the box.
+    ''' </summary>
+    Public Function Pendulum(Optional length As Double = 1.5, Optional angle As Double = Math.PI / 3,
+                             Optional gravity As Double = 9.81, Optional kind As LinkKind = LinkKind.String) As World
+        Dim w As New World(4.0, 4.0, gravity, 1.0)
+        Dim pivot = New Vector(2.0, 3.5)
+        Dim bob As New Circle(pivot + New Vector(length * Math.Sin(angle), -length * Math.Cos(angle)), 0.1, 1.0, id:="bob")
+        w.Add(bob)
+        w.Add(Link.CreateTie(kind, bob, pivot, length, "string"))
+        Return w
+    End Function
+
+    ''' <summary>
+    ''' A mass m (kg) hanging from a fixed point on an undamped spring of stiffness k (N/m) and rest
+    ''' length 1 m, released at rest with the spring unstretched: it oscillates about mg/k below.
+    ''' </summary>
+    Public Function SpringMass(Optional stiffness As Double = 20.0, Optional mass As Double = 0.5,
+                               Optional gravity As Double = 9.81) As World
+        Dim w As New World(3.0, 4.0, gravity, 1.0)
+        Dim anchor = New Vector(1.5, 3.5)
+        Dim body As New Circle(anchor - New Vector(0, 1.0), 0.15, mass, id:="mass")
+        w.Add(body)
+        w.Add(Link.CreateSpring(body, anchor, stiffness, 1.0, 0, "spring"))
+        Return w
+    End Function
+
     ''' <summary>The app's opening scene: a few balls, a peg and a table, so something happens at once.</summary>
     Public Function Demo() As World
         Dim w As New World(8.0, 5.0, 9.81, 0.9)
