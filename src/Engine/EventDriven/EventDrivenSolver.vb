@@ -25,6 +25,9 @@ Public NotInheritable Class EventDrivenSolver
     Private ReadOnly _responder As Responder
     ' A world with links is moved by their closed forms instead (see LinkedEventSolver).
     Private ReadOnly _linked As New LinkedEventSolver()
+    ' Steps a world with links while one of its bodies is carried (see AdvanceWithin); attached anew for each carry.
+    Private _carried As VerletSolver
+    Private _carriedWorld As World
     Private _dirty As Boolean = True
     ''' <summary>Events processed at the current instant so far (see <see cref="CountInstant"/>).</summary>
     Private _instantEvents As Long
@@ -136,6 +139,21 @@ Public NotInheritable Class EventDrivenSolver
     Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
         If _s.World Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
         If _s.World.Links.Count > 0 Then
+            If _s.World.DraggedBody IsNot Nothing Then
+                ' A body carried by hand follows the hand, not a closed form: while it is carried the
+                ' scene is stepped (position Verlet, as the stepping solvers carry bodies), and when it
+                ' is let go the closed forms start again from the state it was left in.
+                If _carried Is Nothing Then _carried = New VerletSolver(VerletSolver.DefaultTimeStep)
+                If _carriedWorld IsNot _s.World Then
+                    _carried.Attach(_s.World)
+                    _carriedWorld = _s.World
+                End If
+                _carried.Advance(duration)
+                _linked.Invalidate()
+                _dirty = True
+                Return _s.World.Time + duration
+            End If
+            _carriedWorld = Nothing
             _linked.Advance(duration)
             _dirty = True
             Return _s.World.Time + duration

@@ -31,6 +31,35 @@ Namespace EventDriven
         <Theory>
         <InlineData(LinkKind.String)>
         <InlineData(LinkKind.Rod)>
+        Public Sub APendulumBobCarriedByHand_FollowsTheHand_AndLetGoAtRest_SwingsToTheMirrorPointInHalfAPeriod(kind As LinkKind)
+            Dim w = EventWorld()
+            Dim bob As New Circle(OnCircle(Anchor, 1, Math.PI / 3), 0.05, 0.5)
+            w.Add(bob)
+            w.Add(Link.CreateTie(kind, bob, Anchor, 1))
+            w.Advance(0.3)
+            ' Carried over a few frames to 30° on the other side, and held there.
+            w.BeginDrag(bob)
+            Dim hand = OnCircle(Anchor, 1, -Math.PI / 6)
+            For k = 1 To 20
+                w.DragTo(bob.Position + (hand - bob.Position) * (k / 20.0))
+                w.Advance(1 / 60.0)
+            Next
+            w.DragTo(hand)
+            w.Advance(1 / 60.0)
+            Assert.Equal(hand.X, bob.Position.X, 9)
+            Assert.Equal(hand.Y, bob.Position.Y, 9)
+            w.EndDrag(Vector.Zero)
+            ' Let go at rest at −30°: half a period later it is at +30°, the mirror point, by the closed form.
+            Dim half = New Pendulum(Anchor, 1, G, hand, Vector.Zero).Period / 2
+            w.Advance(half)
+            Dim mirror = OnCircle(Anchor, 1, Math.PI / 6)
+            Assert.Equal(mirror.X, bob.Position.X, 9)
+            Assert.Equal(mirror.Y, bob.Position.Y, 9)
+        End Sub
+
+        <Theory>
+        <InlineData(LinkKind.String)>
+        <InlineData(LinkKind.Rod)>
         Public Sub PendulumFrom60Degrees_IsTheEllipticClosedForm(kind As LinkKind)
             Dim w = EventWorld()
             Dim bob As New Circle(OnCircle(Anchor, 1, Math.PI / 3), 0.05, 0.5)
