@@ -21,6 +21,8 @@ Friend NotInheritable Class RestRules
     ''' <summary>Contact normals gathered by IsHeld (scratch, fixed size).</summary>
     Private ReadOnly _normalX As Double() = New Double(15) {}
     Private ReadOnly _normalY As Double() = New Double(15) {}
+    ''' <summary>Whether each gathered normal is a fixed body's straight face or corner, or a wall (exact), rather than a curve's or a body's.</summary>
+    Private ReadOnly _normalExact As Boolean() = New Boolean(15) {}
     Private _nNormals As Integer
     ''' <summary>Scratch: bodies being woken, and one body's neighbours.</summary>
     Private _wake As Integer() = Array.Empty(Of Integer)()
@@ -507,7 +509,7 @@ Friend NotInheritable Class RestRules
                 Dim k = near(q)
                 If (_s.Obstacles.Kind(k) = ShapeKind.Rectangle) <> (pass = 0) Then Continue For
                 Dim c = ContactRules.OverlapWithObstacle(_s, i, k, p)
-                If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
+                If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y, _s.Obstacles.Kind(k) <> ShapeKind.Circle)
             Next
         Next
         Dim count = GridNeighbours.Collect(_s, i, _neighbours)
@@ -515,11 +517,15 @@ Friend NotInheritable Class RestRules
             Dim j = _neighbours(q)
             If b.Mode(j) = BodyMode.Rounding OrElse b.Mode(j) = BodyMode.Dragged Then Continue For
             Dim c = ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now))
-            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
+            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y, False)
         Next
-        ' Up = (0, 1) lies between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.
+        ' One support alone holds a body only if it is level. A fixed body's straight face must be level
+        ' to rounding: on a frictionless slope of any angle, however small, a body slides (g sin θ along
+        ' it). A curve (a fixed circle, another body) within 2.6° of level also holds it: the top of a ball
+        ' is where a pile's balls sit, and rolling off from there is left to the pile's own settling.
+        ' Otherwise up = (0, 1) must lie between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.
         For a = 0 To _nNormals - 1
-            If _normalY(a) > 0.999 Then Return True
+            If _normalY(a) > If(_normalExact(a), 1 - 1.0E-12, 0.999) Then Return True
             For k = 0 To _nNormals - 1
                 If _normalX(a) >= 0 AndAlso _normalX(k) <= 0 AndAlso
                    _normalX(a) * _normalY(k) - _normalY(a) * _normalX(k) > 0 Then Return True
@@ -528,10 +534,11 @@ Friend NotInheritable Class RestRules
         Return False
     End Function
 
-    Private Sub AddNormal(x As Double, y As Double)
+    Private Sub AddNormal(x As Double, y As Double, Optional exact As Boolean = True)
         If _nNormals < _normalX.Length Then
             _normalX(_nNormals) = x
             _normalY(_nNormals) = y
+            _normalExact(_nNormals) = exact
             _nNormals += 1
         End If
     End Sub

@@ -19,6 +19,8 @@ Public Class SupportTests
     <InlineData(30.0)>
     <InlineData(10.0)>
     <InlineData(60.0)>
+    <InlineData(1.0)>
+    <InlineData(0.25)>
     Public Sub BallAtRestOnASlope_SlidesDownIt_AsHalfGSinThetaTSquared(degrees As Double)
         Dim theta = degrees * Math.PI / 180
         Dim w As New World(20, 12, G, 0.5)
@@ -149,6 +151,36 @@ Public Class SupportTests
         Assert.True(Math.Abs(actualCos - expectedCos) < 2.0E-3, $"left at cos φ = {actualCos}, expected {expectedCos}")
         ' Followed exactly, the whole slide is a handful of events; hopping round it takes thousands.
         Assert.True(eventsAtLeave < 200, $"{eventsAtLeave} events before it left the dome")
+    End Sub
+
+    <Fact>
+    Public Sub BallSlidingDownARampThatEndsOnTheFloor_BouncesOnTheFloor_AndGoesOnAlongIt()
+        ' The ramp meets the floor at (3, 0): the ball's lowest point reaches the floor before its
+        ' contact point reaches the ramp's end, so the floor, not the ramp's end, must stop its fall.
+        Dim theta = 30 * Math.PI / 180
+        Dim w As New World(6, 4, G, 0.5)
+        Dim ramp As New Segment(New Vector(3 - 3 * Math.Cos(theta), 3 * Math.Sin(theta)), New Vector(3, 0), "ramp")
+        w.Add(ramp)
+        Dim r = 0.1
+        Dim along = New Vector(Math.Cos(theta), -Math.Sin(theta))
+        Dim n = New Vector(Math.Sin(theta), Math.Cos(theta))
+        Dim ball As New Circle(ramp.StartPoint + along * 0.5 + n * r, r, 1.0, id:="ball")
+        w.Add(ball)
+        UseEventSolver(w)
+        Dim floorHits = 0
+        w.CollisionListener = Sub(c) If c.Wall = WallSide.Bottom Then floorHits += 1
+        Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+        Dim farthest = 0.0
+        For k = 1 To 150
+            w.Advance(0.01)
+            Assert.True(ball.Position.Y >= r - 1.0E-9, $"below the floor at t = {w.Time}: y = {ball.Position.Y}")
+            Assert.True(DistanceToSegment(ball.Position, ramp.StartPoint, ramp.EndPoint) >= r - 1.0E-9, $"inside the ramp at t = {w.Time}")
+            Assert.True(w.KineticEnergy() + w.PotentialEnergy() <= e0 * (1 + 1.0E-12), $"energy grew at t = {w.Time}")
+            farthest = Math.Max(farthest, ball.Position.X)
+        Next
+        ' Frictionless: the floor takes only the vertical part of its velocity; it goes on along the floor.
+        Assert.True(floorHits > 0, "it never met the floor")
+        Assert.True(farthest > 5, $"it stopped at x = {farthest} instead of going on along the floor")
     End Sub
 
     <Fact>
