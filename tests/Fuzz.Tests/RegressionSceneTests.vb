@@ -14,6 +14,7 @@ Public Class RegressionSceneTests
     Private Const FellThrough As String = "event-fell-through-rectangle.json"
     Private Const CentreInside As String = "stepping-centre-inside-rectangle.json"
     Private Const SlowMixed As String = "event-slow-mixed-scene.json"
+    Private Const CrowdedSlide As String = "event-galton-crowded-slide.json"
     ''' <summary>These runs are known to end; the cap only stops a runaway, s.</summary>
     Private Const GenerousCap As Double = 300
 
@@ -92,4 +93,19 @@ Public Class RegressionSceneTests
 
     ''' <summary>Wall-clock seconds one run of the slow mixed scene may take.</summary>
     Private Const SlowMixedCap As Double = 120
+    <Fact>
+    Public Sub GaltonCrowdedSlide_GetsPastTheBallPressedAgainstOneRoundingAPeg_InFewEvents()
+        ' 200 balls fed from shelves through a chute into pegs, e = 0.3: at t ≈ 3.87 s ball b131 pressed
+        ' against b130 while b130 slid round peg p47, and following that slide exactly took ever shorter
+        ' looks (hundreds of thousands of events per simulated millisecond).
+        Dim world = SceneFile.LoadFile(TestPaths.Case_(CrowdedSlide))
+        Dim solver As New EventDrivenSolver() With {.MaxEventsPerAdvance = 100000}
+        world.Solver = solver
+        For k = 1 To 12
+            world.Advance(0.5)
+        Next
+        Assert.True(solver.EventCount < 400000, $"{solver.EventCount} events in 6 s")
+        Dim overlap = StateChecks.Overlap(world)
+        Assert.True(overlap Is Nothing, overlap)
+    End Sub
 End Class

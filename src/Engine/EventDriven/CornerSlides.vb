@@ -32,8 +32,18 @@ Friend NotInheritable Class CornerSlides
     Private _seenAt As Double() = Array.Empty(Of Double)()
     Private _seenX As Double() = Array.Empty(Of Double)()
     Private _seenY As Double() = Array.Empty(Of Double)()
+    ''' <summary>How many times each slide has been looked at again because a neighbour came near (see <see cref="StillApart"/>).</summary>
+    Private _looks As Integer() = Array.Empty(Of Integer)()
     ''' <summary>Scratch list of a body's neighbours (no allocation per event).</summary>
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
+
+    ''' <summary>
+    ''' Looks at a slide beyond this many end it (the slide is then cut short, as when a neighbour is
+    ''' about to touch). Conservative advancement ends only when the gap closes: a neighbour that
+    ''' hovers just outside <see cref="Near"/> (a ball bouncing between a peg and a ball rounding it)
+    ''' would otherwise cost ever shorter looks, hundreds per bounce.
+    ''' </summary>
+    Private Const MaxLooks As Integer = 64
 
     Friend Sub New(state As SolverState)
         _s = state
@@ -54,6 +64,7 @@ Friend NotInheritable Class CornerSlides
         _seenAt = Enumerable.Repeat(Double.NaN, n).ToArray()
         _seenX = New Double(n - 1) {}
         _seenY = New Double(n - 1) {}
+        _looks = New Integer(n - 1) {}
         _neighbours = New Integer(n - 1) {}
     End Sub
 
@@ -138,6 +149,7 @@ Friend NotInheritable Class CornerSlides
         _start(i) = startTime
         _climbing(i) = climbing
         _seenAt(i) = Double.NaN
+        _looks(i) = 0
         Return True
     End Function
 
@@ -211,9 +223,13 @@ Friend NotInheritable Class CornerSlides
         Return Math.Max(disc, closing)
     End Function
 
-    ''' <summary>Whether sliding body j and body k are still clearly apart (further than <see cref="Near"/>): the slide goes on.</summary>
+    ''' <summary>
+    ''' Whether sliding body j and body k are still clearly apart (further than <see cref="Near"/>): the
+    ''' slide goes on. After <see cref="MaxLooks"/> looks the slide is treated as about to be touched.
+    ''' </summary>
     Friend Function StillApart(j As Integer, k As Integer) As Boolean
-        Return Gap(j, k) > Near(j, k)
+        _looks(j) += 1
+        Return _looks(j) <= MaxLooks AndAlso Gap(j, k) > Near(j, k)
     End Function
 
     ''' <summary>The gap (m) between the discs that hold sliding body j and body k now (negative if they overlap).</summary>
@@ -242,7 +258,9 @@ Friend NotInheritable Class CornerSlides
 
     ''' <summary>
     ''' Whether body i, with its reference point at <paramref name="p"/>, has a neighbour (moving, not
-    ''' itself sliding) within <see cref="Near"/> of it: a slide would be cut short at once.
+    ''' itself sliding) within 10⁻³ of the smaller size (or <see cref="Near"/>, if larger): a slide would
+    ''' be cut short almost at once, after ever shorter looks while the neighbour hovers just outside
+    ''' <see cref="Near"/> (two balls pressed together on a peg). Such a pair settles as a cluster instead.
     ''' </summary>
     Private Function Crowded(i As Integer, p As Vector) As Boolean
         Dim b = _s.Bodies
@@ -252,7 +270,7 @@ Friend NotInheritable Class CornerSlides
             Dim mk = b.Slot(k).Mode
             If mk = BodyMode.Rounding OrElse mk = BodyMode.Sleeping Then Continue For
             Dim gap = (b.PositionAt(k, _s.Now) - p).Length - b.Reach(i) - b.Reach(k)
-            If gap <= NearGap(i, k, p.X, p.Y) Then Return True
+            If gap <= Math.Max(NearGap(i, k, p.X, p.Y), 0.001 * Math.Min(b.Reach(i), b.Reach(k))) Then Return True
         Next
         Return False
     End Function

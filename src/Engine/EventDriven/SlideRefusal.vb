@@ -8,7 +8,7 @@ Friend Enum SlideRefusal
     Still
     ''' <summary>Too fast to follow the curve at all: it flies off at once.</summary>
     FliesOff
-    ''' <summary>A moving neighbour already touches it: a slide would be cut short at once.</summary>
+    ''' <summary>A moving neighbour touches it, or nearly (within 10⁻³ of its size): a slide would be cut short at once.</summary>
     Crowded
     ''' <summary>A wall or another fixed body lies within the slide's reach, which a slide does not check.</summary>
     Blocked
