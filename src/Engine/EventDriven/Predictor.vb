@@ -68,7 +68,7 @@ Friend NotInheritable Class Predictor
         Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, dir)
         Dim moving = m = BodyMode.Free OrElse m = BodyMode.Supported
         If moving Then
-            If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
+            If _s.Walls Then CheckWalls(i, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0), px, py, vx, vy, ay, r, best, kind, feature)
             If b.Slot(i).Cell >= 0 Then
                 ' An obstacle is listed in every cell within half a cell of it, so the body's own cell
                 ' suffices, and only until it leaves the cell: the next cell's obstacles are tested then.
@@ -139,7 +139,7 @@ Friend NotInheritable Class Predictor
         Dim exitDir = 0
         Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, exitDir)
         If m = BodyMode.Free OrElse m = BodyMode.Supported Then
-            If _s.Walls Then CheckWalls(i, m = BodyMode.Free, px, py, vx, vy, ay, r, best, kind, feature)
+            If _s.Walls Then CheckWalls(i, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0), px, py, vx, vy, ay, r, best, kind, feature)
             For s = _s.Grid.StaticStart(target) To _s.Grid.StaticStart(target + 1) - 1
                 CheckObstacle(i, _s.Grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
             Next
@@ -354,12 +354,14 @@ Friend NotInheritable Class Predictor
     End Sub
 
     ''' <summary>
-    ''' Body i against the container's walls (the floor and the ceiling only when it is free). The
+    ''' Body i against the container's walls (the floor and the ceiling only when it is free or slides
+    ''' on a fixed body: a ramp may end below the point where a ball sliding down it meets the floor;
+    ''' one resting on the floor or on a body is held by what it rests on). The
     ''' cells tile the container and are wider than any gridded body, so a gridded body touches a wall
     ''' only from a cell along that wall, and it crosses into one (an event) before it gets there:
     ''' only the walls its own cell lies along are tested, on a prediction and on entering the cell.
     ''' </summary>
-    Private Sub CheckWalls(i As Integer, free As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
+    Private Sub CheckWalls(i As Integer, vertical As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
                            r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef feature As Integer)
         Dim slot = _s.Bodies.Slot
         Dim o = _s.Bodies.Outlines(i)
@@ -378,7 +380,7 @@ Friend NotInheritable Class Predictor
             t = TimeOfImpact.GapCloses(_s.Width - o.MaxX - px, -vx, -ax, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Right
         End If
-        If Not free Then Return
+        If Not vertical Then Return
         slop = SolverState.SlopAlong(py)
         If all OrElse row = 0 Then
             t = TimeOfImpact.GapCloses(py + o.MinY, vy, ay, slop)
