@@ -77,6 +77,7 @@ Public Class LessonsGuiTests
     <InlineData("pendulum.json")>
     <InlineData("cradle-strings.json")>
     <InlineData("spring-mass.json")>
+    <InlineData("galton-board.json")>
     Public Sub ALessonOpensFromTheScenesMenu_WithOneClick_AndIsDrawn(file As String)
         Dim lesson = PhysicsEngine.Presentation.LessonIndex.Read(IO.Path.Combine(ProcessRunner.RepoRoot, "scenes")).Single(Function(l) l.FileName = file)
         Using app As New AppDriver()

@@ -56,6 +56,39 @@ Public Class LessonScenesTests
     End Sub
 
     <Fact>
+    Public Sub GaltonBoard_EveryBallEndsInABin_AndTheBinsFillToABellCentredUnderTheChute()
+        ' Balls slide off the shelves one after another, fall through the funnel and the chute onto the
+        ' pegs, and pile up in the bins. Each row of pegs sends a ball left or right by half a peg
+        ' spacing, so the counts make a binomial (bell) shape centred under the chute.
+        Dim w = Run("galton-board.json", 14.0)
+        Dim balls = w.Movables.OfType(Of Circle)().ToList()
+        Assert.True(balls.Count >= 200, $"{balls.Count} balls")
+        Dim dividers = w.Rectangles.Where(Function(r) r.Id.StartsWith("bin", StringComparison.Ordinal)).OrderBy(Function(r) r.Min.X).ToList()
+        Dim sides = w.Segments.Where(Function(s) s.Id.StartsWith("side", StringComparison.Ordinal)).Select(Function(s) s.StartPoint.X).OrderBy(Function(x) x).ToList()
+        Dim edges As New List(Of Double) From {sides(0)}
+        edges.AddRange(dividers.Select(Function(r) (r.Min.X + r.Max.X) / 2))
+        edges.Add(sides(1))
+        Dim binTop = dividers(0).Max.Y
+        Dim counts(edges.Count - 2) As Integer
+        For Each b In balls
+            Assert.True(b.Position.Y < binTop, $"{b.Id} at {b.Position} is not down in a bin")
+            Dim k = edges.FindLastIndex(Function(x) x <= b.Position.X)
+            Assert.InRange(k, 0, counts.Length - 1)
+            counts(k) += 1
+        Next
+        Dim centre = (sides(0) + sides(1)) / 2
+        Dim mean = balls.Average(Function(b) b.Position.X)
+        Dim spacing = edges(2) - edges(1)
+        Assert.True(Math.Abs(mean - centre) < spacing, $"the balls' mean x {mean} m is more than a bin from the centre {centre} m: {String.Join(",", counts)}")
+        ' A bell: the middle third of the bins holds most balls, the outer thirds few.
+        Dim n = counts.Length, third = n \ 3
+        Dim middle = counts.Skip(third).Take(n - 2 * third).Sum()
+        Assert.True(middle > 0.55 * balls.Count, $"the middle bins hold {middle} of {balls.Count}: {String.Join(",", counts)}")
+        Dim outer = counts.Take(third \ 2).Sum() + counts.Skip(n - third \ 2).Sum()
+        Assert.True(outer < 0.1 * balls.Count, $"the outermost bins hold {outer}: {String.Join(",", counts)}")
+    End Sub
+
+    <Fact>
     Public Sub IdealGas_KeepsItsKineticEnergy()
         Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "scenes", "ideal-gas.json"))
         Assert.Equal(1000, w.Movables.Count)

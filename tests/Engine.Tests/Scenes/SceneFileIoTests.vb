@@ -79,7 +79,7 @@ Public Class SceneFileIoTests
         For Each expected In {"demo.json", "bouncing-ball.json", "newtons-cradle.json", "pool-break.json", "peg-board.json",
                               "head-on.json", "head-on-inelastic.json", "glancing-blow.json", "pi-31.json", "pi-314.json", "pi-3141.json",
                               "ideal-gas.json", "settling-pile.json", "ramp.json", "ball-in-v.json", "boxes-sliding.json", "box-stack.json",
-                              "polygons.json", "pendulum.json", "cradle-strings.json", "spring-mass.json", "double-pendulum.json", "rope.json"}
+                              "polygons.json", "pendulum.json", "cradle-strings.json", "spring-mass.json", "double-pendulum.json", "rope.json", "galton-board.json"}
             Assert.Contains(expected, names)
         Next
     End Sub
