@@ -4,9 +4,12 @@ Option Strict On
 ''' Round numbers for a graph's axis: ticks a step of 1, 2 or 5 × 10ⁿ apart, few enough to label
 ''' in large type, covering the data's range.
 ''' </summary>
-Public Module AxisTicks
+Public NotInheritable Class AxisTicks
+    Private Sub New()
+    End Sub
+
     ''' <summary>The round step (1, 2 or 5 × 10ⁿ) that divides <paramref name="span"/> into at most <paramref name="maxTicks"/> − 1 parts.</summary>
-    Public Function NiceStep(span As Double, maxTicks As Integer) As Double
+    Public Shared Function NiceStep(span As Double, maxTicks As Integer) As Double
         If Not (span > 0) OrElse Double.IsInfinity(span) Then Return 1
         Dim parts = Math.Max(1, maxTicks - 1)
         Dim raw = span / parts
@@ -22,7 +25,7 @@ Public Module AxisTicks
     ''' <paramref name="high"/>, at most <paramref name="maxTicks"/> of them (an empty or flat range is
     ''' widened around its value).
     ''' </summary>
-    Public Function Ticks(low As Double, high As Double, maxTicks As Integer) As IReadOnlyList(Of Double)
+    Public Shared Function Ticks(low As Double, high As Double, maxTicks As Integer) As IReadOnlyList(Of Double)
         If Double.IsNaN(low) OrElse Double.IsNaN(high) OrElse Double.IsInfinity(low) OrElse Double.IsInfinity(high) Then
             low = 0
             high = 1
@@ -59,7 +62,7 @@ Public Module AxisTicks
     End Function
 
     ''' <summary>The smallest 1, 2 or 5 × 10ⁿ at or above <paramref name="value"/> (&gt; 0).</summary>
-    Public Function RoundUp(value As Double) As Double
+    Public Shared Function RoundUp(value As Double) As Double
         If Not (value > 0) OrElse Double.IsInfinity(value) Then Return 1
         Dim power = Math.Pow(10, Math.Floor(Math.Log10(value)))
         For Each m In {1.0, 2.0, 5.0, 10.0}
@@ -67,4 +70,4 @@ Public Module AxisTicks
         Next
         Return 10 * power
     End Function
-End Module
+End Class

@@ -8,31 +8,34 @@ Imports System.Text
 ''' numbers in the invariant culture with "." as the decimal point and enough digits to read back
 ''' the same double, and UTF-8 with a byte-order mark so that Excel reads "Σ", "·" and "²".
 ''' </summary>
-Public Module Csv
+Public NotInheritable Class Csv
+    Private Sub New()
+    End Sub
+
     ''' <summary>UTF-8 with a byte-order mark.</summary>
-    Public ReadOnly Property Encoding As Encoding = New UTF8Encoding(True)
+    Public Shared ReadOnly Property Encoding As Encoding = New UTF8Encoding(True)
 
     ''' <summary>A field: quoted only when it holds a comma, a quote or a line break.</summary>
-    Public Function Field(text As String) As String
+    Public Shared Function Field(text As String) As String
         If text Is Nothing Then Return ""
         If text.IndexOfAny({","c, """"c, ChrW(13), ChrW(10)}) < 0 Then Return text
         Return """" & text.Replace("""", """""") & """"
     End Function
 
     ''' <summary>A number in round-trip form ("R"), "." as the decimal point; empty for NaN and ±∞ (a blank cell, not text).</summary>
-    Public Function Number(value As Double) As String
+    Public Shared Function Number(value As Double) As String
         If Double.IsNaN(value) OrElse Double.IsInfinity(value) Then Return ""
         Return value.ToString("R", CultureInfo.InvariantCulture)
     End Function
 
     ''' <summary>One line (without its CR LF) of already-spelled cells, each quoted as it needs.</summary>
-    Public Function Line(cells As IEnumerable(Of String)) As String
+    Public Shared Function Line(cells As IEnumerable(Of String)) As String
         If cells Is Nothing Then Throw New ArgumentNullException(NameOf(cells))
         Return String.Join(",", cells.Select(AddressOf Field))
     End Function
 
     ''' <summary>A whole document: the header, then the rows, each line ended by CR LF.</summary>
-    Public Function Document(header As IEnumerable(Of String), rows As IEnumerable(Of IEnumerable(Of String))) As String
+    Public Shared Function Document(header As IEnumerable(Of String), rows As IEnumerable(Of IEnumerable(Of String))) As String
         If rows Is Nothing Then Throw New ArgumentNullException(NameOf(rows))
         Dim sb As New StringBuilder()
         sb.Append(Line(header)).Append(ChrW(13)).Append(ChrW(10))
@@ -43,7 +46,7 @@ Public Module Csv
     End Function
 
     ''' <summary>The document's bytes as written to a file: the byte-order mark, then UTF-8.</summary>
-    Public Function Bytes(document As String) As Byte()
+    Public Shared Function Bytes(document As String) As Byte()
         Dim preamble = Encoding.GetPreamble()
         Dim body = Encoding.GetBytes(If(document, ""))
         Dim all(preamble.Length + body.Length - 1) As Byte
@@ -56,7 +59,7 @@ Public Module Csv
     ''' Reads a document back into rows of fields (RFC 4180: quoted fields may hold commas, doubled
     ''' quotes and line breaks). A leading byte-order mark is skipped.
     ''' </summary>
-    Public Function Parse(text As String) As List(Of List(Of String))
+    Public Shared Function Parse(text As String) As List(Of List(Of String))
         Dim rows As New List(Of List(Of String))
         If String.IsNullOrEmpty(text) Then Return rows
         Dim i = If(text(0) = ChrW(&HFEFF), 1, 0)
@@ -98,4 +101,4 @@ Public Module Csv
         End If
         Return rows
     End Function
-End Module
+End Class

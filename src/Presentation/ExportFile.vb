@@ -7,9 +7,12 @@ Imports System.IO
 ''' half-written file. A failure is an <see cref="IOException"/> whose message says why in a
 ''' teacher's words and never names the temporary file.
 ''' </summary>
-Public Module ExportFile
+Public NotInheritable Class ExportFile
+    Private Sub New()
+    End Sub
+
     ''' <summary>Writes what <paramref name="write"/> puts into the stream to <paramref name="path"/>.</summary>
-    Public Sub Write(path As String, write As Action(Of Stream))
+    Public Shared Sub Write(path As String, write As Action(Of Stream))
         If path Is Nothing Then Throw New ArgumentNullException(NameOf(path))
         If write Is Nothing Then Throw New ArgumentNullException(NameOf(write))
         Dim target As String
@@ -52,8 +55,8 @@ Public Module ExportFile
     End Sub
 
     ''' <summary>The system's message on one line without the temporary file's name.</summary>
-    Private Function Plain(message As String, temp As String) As String
+    Private Shared Function Plain(message As String, temp As String) As String
         Dim text = If(message, "").Replace(vbCr, " ").Replace(vbLf, " ").Replace(temp, "the file").Replace(IO.Path.GetFileName(temp), "the file").Trim()
         Return text.TrimEnd("."c, " "c, ":"c)
     End Function
-End Module
+End Class
