@@ -89,9 +89,10 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Function EnergyGraph() As GraphPlot
         Dim s = Series.Samples
         Dim g As New GraphPlot With {.Title = "Energy against time", .XLabel = "time t (s)", .YLabel = "energy (J)", .YFloor = 0}
+        ' The total first, so KE or PE is drawn over it where they coincide (no PE: KE = total).
+        g.Lines.Add(New GraphLine("KE + PE", TotalColour, s.Select(Function(p) New Vector(p.Time, p.Total)).ToList()))
         g.Lines.Add(New GraphLine("KE", KineticColour, s.Select(Function(p) New Vector(p.Time, p.Kinetic)).ToList()))
         g.Lines.Add(New GraphLine("PE", PotentialColour, s.Select(Function(p) New Vector(p.Time, p.Potential)).ToList()))
-        g.Lines.Add(New GraphLine("KE + PE", TotalColour, s.Select(Function(p) New Vector(p.Time, p.Total)).ToList()))
         If s.Count > 0 Then
             Dim last = s(s.Count - 1)
             g.Notes.Add("KE " & Units.Quantity(last.Kinetic, "J") & "   PE " & Units.Quantity(last.Potential, "J") & "   KE + PE " & Units.Quantity(last.Total, "J"))
@@ -114,8 +115,9 @@ Partial Public NotInheritable Class SimulationPresenter
     End Function
 
     ''' <summary>
-    ''' The speeds now in <see cref="SpeedHistogram.DefaultBins"/> bins, reaching to 4 × the most
-    ''' probable speed of the lightest body (rounded up), with the 2D Maxwell–Boltzmann curve for
+    ''' The speeds now in bins of a round width (1, 2 or 5 × 10ⁿ m/s, at most
+    ''' <see cref="SpeedHistogram.DefaultBins"/> of them up to 4 × the most probable speed of the
+    ''' lightest body, rounded up to a tick of the axis; more when a body is faster), with the 2D Maxwell–Boltzmann curve for
     ''' the gas's kT as the expected count per bin: N f(v) Δv for equal masses; for mixed masses
     ''' the average of each body's curve at the common kT.
     ''' </summary>
@@ -128,8 +130,10 @@ Partial Public NotInheritable Class SimulationPresenter
             Return g
         End If
         Dim lightest = gas.Masses.Min()
-        Dim top = If(gas.KT > 0, AxisTicks.RoundUp(4 * MaxwellBoltzmann2D.PeakSpeed(lightest, gas.KT)), 1.0)
-        Dim bars = SpeedHistogram.Count(gas.Speeds, top)
+        Dim ticks = AxisTicks.Ticks(0, If(gas.KT > 0, 4 * MaxwellBoltzmann2D.PeakSpeed(lightest, gas.KT), gas.Speeds.Max()), 7)
+        Dim top = ticks(ticks.Count - 1)
+        Dim width = AxisTicks.NiceStep(top, SpeedHistogram.DefaultBins + 1)
+        Dim bars = SpeedHistogram.Count(gas.Speeds, top, CInt(Math.Round(top / width)))
         g.Bars = bars
         g.YLabel = "bodies per " & Units.Sig(bars.BinWidth) & " m/s"
         If gas.KT > 0 Then

@@ -1,12 +1,13 @@
 Option Strict On
 
 ''' <summary>
-''' The bodies' speeds counted into equal bins from 0 m/s. The bins reach past the fastest body, so
-''' every body is in one bin and the counts add up to the number of bodies.
+''' The bodies' speeds counted into equal bins from 0 m/s. The bins reach past the fastest body
+''' (more bins of the same width are added for it), so every body is in one bin and the counts add
+''' up to the number of bodies.
 ''' </summary>
 Public NotInheritable Class SpeedHistogram
-    ''' <summary>Bins the Graphs tab uses: about √1000 / 1.3, enough for a smooth shape with 1000 balls.</summary>
-    Public Const DefaultBins As Integer = 24
+    ''' <summary>Bins up to the top the Graphs tab asks for, at most: about √1000, a smooth shape with 1000 balls.</summary>
+    Public Const DefaultBins As Integer = 30
 
     Private Sub New(edges As Double(), counts As Integer())
         Me.Edges = edges
@@ -30,8 +31,8 @@ Public NotInheritable Class SpeedHistogram
 
     ''' <summary>
     ''' Counts <paramref name="speeds"/> (m/s) into <paramref name="bins"/> bins from 0 to
-    ''' <paramref name="top"/> m/s, or further when a speed is at or beyond it (the top then grows to
-    ''' a round number past the fastest, so no speed is dropped).
+    ''' <paramref name="top"/> m/s, and as many more bins of the same width as reach past a speed at
+    ''' or beyond the top, so no speed is dropped.
     ''' </summary>
     Public Shared Function Count(speeds As IEnumerable(Of Double), top As Double, Optional bins As Integer = DefaultBins) As SpeedHistogram
         If speeds Is Nothing Then Throw New ArgumentNullException(NameOf(speeds))
@@ -39,8 +40,8 @@ Public NotInheritable Class SpeedHistogram
         Dim list = speeds.Where(Function(v) v >= 0 AndAlso Not Double.IsInfinity(v)).ToList()
         Dim fastest = If(list.Count = 0, 0.0, list.Max())
         Dim reach = If(top > 0 AndAlso Not Double.IsInfinity(top), top, 1.0)
-        If fastest >= reach Then reach = AxisTicks.RoundUp(fastest * 1.0001)
         Dim width = reach / bins
+        If fastest >= reach Then bins = CInt(Math.Floor(fastest / width)) + 1
         Dim edges(bins) As Double
         For i = 0 To bins
             edges(i) = i * width

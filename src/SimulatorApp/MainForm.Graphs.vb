@@ -14,9 +14,14 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _graphPage As New TabPage("Graphs")
     Private ReadOnly _graphBox As New PictureBox()
     Private ReadOnly _graphButtons As New List(Of Button)
+    Private ReadOnly _graphWindowButton As New Button()
+    Private _graphWindow As GraphWindow
     Private ReadOnly _export As New Button()
     Private ReadOnly _exportMenu As New ContextMenuStrip()
     Private _graphDrawnAt As Double = -1
+
+    ''' <summary>The exported graph picture's size at 96 dpi, px (twice as many on a 192-dpi screen).</summary>
+    Friend Shared ReadOnly GraphPictureSize As New Size(1280, 720)
 
     ''' <summary>The graph buttons' captions and trace names, in <see cref="GraphKind"/> order.</summary>
     Private Shared ReadOnly GraphButtons As (Caption As String, Name As String)() = {
@@ -32,10 +37,16 @@ Partial Friend NotInheritable Class MainForm
                     _presenter.ChooseGraph(kind)
                     ColourGraphButtons()
                     _graphBox.Invalidate()
+                    _graphWindow?.Redraw()
                 End Sub
             _graphButtons.Add(b)
             _graphPage.Controls.Add(b)
         Next
+        _graphWindowButton.Text = "⤢ Window"
+        _graphWindowButton.UseMnemonic = False
+        _tips.SetToolTip(_graphWindowButton, "The graph in a window of its own, large enough for a projector")
+        AddHandler _graphWindowButton.Click, Sub(s, e) ShowGraphWindow()
+        _graphPage.Controls.Add(_graphWindowButton)
         AddHandler _graphBox.Paint, AddressOf OnGraphPaint
         _graphPage.Controls.Add(_graphBox)
         AddHandler _graphPage.Resize, Sub(s, e) ArrangeGraphPage()
@@ -51,7 +62,7 @@ Partial Friend NotInheritable Class MainForm
         _export.SetBounds(_scenes.Left - S(6) - width, _scenes.Top, width, _scenes.Height)
         _export.BringToFront()
         Dim theme = _presenter.Theme
-        For Each b In _graphButtons.Concat({_export})
+        For Each b In _graphButtons.Concat({_export, _graphWindowButton})
             b.Font = Font
             b.ForeColor = ScenePainter.Rgb(theme.PanelText)
             b.FlatStyle = If(theme.IsHighContrast, FlatStyle.Flat, FlatStyle.Standard)
@@ -60,8 +71,22 @@ Partial Friend NotInheritable Class MainForm
             b.UseVisualStyleBackColor = Not theme.IsHighContrast
         Next
         _export.BackColor = ScenePainter.Rgb(theme.Button)
+        _graphWindowButton.BackColor = ScenePainter.Rgb(theme.Button)
+        If _graphWindow IsNot Nothing Then
+            _graphWindow.Font = Font
+            _graphWindow.Redraw()
+        End If
         ColourGraphButtons()
         ArrangeGraphPage()
+        ' Where the tabs' headers would run under the buttons (a small screen, large fonts), the
+        ' buttons keep their row and the tabs go under it.
+        If _tabs.TabCount > 0 Then
+            Dim lastTab = _tabs.GetTabRect(_tabs.TabCount - 1)
+            If _tabs.Left + lastTab.Right > _export.Left - S(4) AndAlso _tabs.Top < _export.Bottom Then
+                Dim top = _export.Bottom + S(2)
+                _tabs.SetBounds(_tabs.Left, top, _tabs.Width, Math.Max(1, _tabs.Bottom - top))
+            End If
+        End If
     End Sub
 
     ''' <summary>The button of the graph on show is lit like a tool in use.</summary>
@@ -84,6 +109,9 @@ Partial Friend NotInheritable Class MainForm
             b.SetBounds(x, S(3), bw, rh)
             x += bw + S(6)
         Next
+        ' The window button at the right end of the row, or after the others when there is no room.
+        Dim ww = Math.Max(S(80), Measure(_graphWindowButton.Text, Font).Width + S(24))
+        _graphWindowButton.SetBounds(Math.Max(x + S(12), w - ww - S(4)), S(3), ww, rh)
         _graphBox.SetBounds(0, rh + S(6), Math.Max(1, w), Math.Max(1, h - rh - S(6)))
         _graphBox.Invalidate()
     End Sub
@@ -91,19 +119,48 @@ Partial Friend NotInheritable Class MainForm
     ''' <summary>The graph tab's and Export's controls, by the names the --trace layout gives them.</summary>
     Private Function GraphControls() As IEnumerable(Of (Name As String, Control As Control))
         Dim named As New List(Of (Name As String, Control As Control)) From {("export", _export)}
+        ' The page's own controls only while it is on show: a hidden page has no place on the screen.
+        If _tabs.SelectedTab IsNot _graphPage Then Return named
         For i = 0 To _graphButtons.Count - 1
             named.Add((GraphButtons(i).Name, _graphButtons(i)))
         Next
+        named.Add(("graph-window", _graphWindowButton))
         named.Add(("graph", _graphBox))
         Return named
     End Function
 
-    ''' <summary>While the Graphs tab is on show, redraws the graph about ten times a second.</summary>
+    ''' <summary>While the Graphs tab or the graph's window is on show, redraws the graph about ten times a second.</summary>
     Private Sub RefreshGraph(now As Double)
-        If _tabs.SelectedTab IsNot _graphPage Then Return
+        Dim tab = _tabs.SelectedTab Is _graphPage
+        If Not tab AndAlso _graphWindow Is Nothing Then Return
         If now - _graphDrawnAt < GraphSeconds Then Return
         _graphDrawnAt = now
-        _graphBox.Invalidate()
+        If tab Then _graphBox.Invalidate()
+        _graphWindow?.Redraw()
+    End Sub
+
+    ''' <summary>Opens the graph in a window of its own (or brings it to the front), over most of the screen.</summary>
+    Private Sub ShowGraphWindow()
+        If _graphWindow Is Nothing Then
+            Dim area = Screen.FromControl(Me).WorkingArea
+            Dim bounds = New Drawing.Rectangle(area.X + area.Width \ 10, area.Y + area.Height \ 10, area.Width * 8 \ 10, area.Height * 8 \ 10)
+            _graphWindow = New GraphWindow(_presenter, Font, _dpi.Scale, bounds)
+            AddHandler _graphWindow.FormClosed,
+                Sub(s, e)
+                    _graphWindow.Dispose()
+                    _graphWindow = Nothing
+                    _trace?.Invoke("graph window closed")
+                End Sub
+            AddHandler _graphWindow.Shown,
+                Sub(s, e)
+                    Dim r = _graphWindow.GraphBounds
+                    _trace?.Invoke("graph window shown " & r.X & " " & r.Y & " " & r.Width & " " & r.Height)
+                End Sub
+            _graphWindow.Show(Me)
+        Else
+            _graphWindow.Activate()
+        End If
+        _graphWindow.Redraw()
     End Sub
 
     Private Sub OnGraphPaint(sender As Object, e As PaintEventArgs)
@@ -119,7 +176,7 @@ Partial Friend NotInheritable Class MainForm
     Private Sub TraceGraph(plot As GraphPlot)
         If _trace Is Nothing Then Return
         Dim cells As New List(Of String) From {_presenter.Graph.ToString()}
-        cells.AddRange(plot.Lines.Select(Function(l) l.Name & " " & l.Points.Count & " points"))
+        cells.AddRange(plot.Lines.Select(Function(l) l.Name))
         If plot.Bars IsNot Nothing Then
             cells.Add("total " & plot.Bars.Total)
             cells.Add("bin " & plot.Bars.BinWidth.ToString("R", Globalization.CultureInfo.InvariantCulture))
@@ -171,7 +228,8 @@ Partial Friend NotInheritable Class MainForm
             If d.ShowDialog(Me) <> DialogResult.OK Then Return
             Select Case kind
                 Case ExportKind.GraphPng
-                    Dim w = Math.Max(S(320), _graphBox.ClientSize.Width), h = Math.Max(S(200), _graphBox.ClientSize.Height)
+                    ' A slide's size (16:9), whatever room the tab has on screen: the picture is for a worksheet or a slide.
+                    Dim w = S(GraphPictureSize.Width), h = S(GraphPictureSize.Height)
                     SavePicture(kind, d.FileName, w, h, Sub(g) GraphPainter.Paint(g, _presenter.CurrentGraph(), _presenter.Theme, Font, w, h, _dpi.Scale))
                 Case ExportKind.CanvasPng
                     Dim w = Math.Max(1, _canvas.ClientSize.Width), h = Math.Max(1, _canvas.ClientSize.Height)

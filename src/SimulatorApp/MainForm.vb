@@ -378,6 +378,7 @@ Partial Friend NotInheritable Class MainForm
         Dim list = TryCast(page.Controls(0), BufferedListView)
         If list Is Nothing Then ' the Graphs tab
             _trace?.Invoke("tab " & page.Text)
+            TraceLayout()
             Return
         End If
         ' Mono lays a details list's header out only while the list is on screen: a list whose rows or

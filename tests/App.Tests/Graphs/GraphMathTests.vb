@@ -67,6 +67,7 @@ Public Class GraphMathTests
         Assert.Equal(1001, h.Total)
         Assert.Equal(1001, h.Counts.Sum())
         Assert.True(h.Edges(h.Edges.Count - 1) > 7.3)
+        Assert.Equal(0.2, h.BinWidth, 12)
         ' Each count is the number of speeds in its bin, counted by brute force.
         For i = 0 To h.Counts.Count - 1
             Dim lo = h.Edges(i), hi = h.Edges(i + 1)
