@@ -85,6 +85,12 @@ Public Class GraphsGuiTests
                 app.WaitFor("^graph: Pressure \|.*measured over ", timeout:=TimeSpan.FromSeconds(20))
                 Thread.Sleep(3000)
                 app.X.Shoot("graphs-pressure")
+                ' High contrast and large fonts, for the back of the room.
+                from = app.Mark()
+                app.Click("high-contrast")
+                app.WaitFor("^high contrast on$", skip:=from)
+                app.WaitFor("^ready$", skip:=from)
+                app.ReadLayout()
                 from = app.Mark()
                 app.Click("large-fonts")
                 app.WaitFor("^large fonts on$", skip:=from)
