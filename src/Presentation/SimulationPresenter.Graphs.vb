@@ -148,7 +148,9 @@ Partial Public NotInheritable Class SimulationPresenter
         End If
         Dim mean = gas.Speeds.Average()
         g.Notes.Add("N = " & bars.Total & " bodies in the bars   kT = mean KE = " & Units.Quantity(gas.KT, "J"))
-        If gas.Masses.All(Function(m) m = lightest) AndAlso gas.KT > 0 Then
+        If Not (gas.KT > 0) Then
+            g.Notes.Add("Every body is at rest: no temperature, no curve.")
+        ElseIf gas.Masses.All(Function(m) m = lightest) Then
             g.Notes.Add("mean speed " & Units.Quantity(mean, "m/s") & "   theory √(πkT/2m) = " & Units.Quantity(MaxwellBoltzmann2D.MeanSpeed(lightest, gas.KT), "m/s"))
         Else
             g.Notes.Add("mean speed " & Units.Quantity(mean, "m/s") & "   (mixed masses: the curve averages each body's, all at kT)")

@@ -94,4 +94,24 @@ Public Class GraphsPresenterTests
             Directory.Delete(folder, True)
         End Try
     End Sub
+
+    <Fact>
+    Public Sub Histogram_OfMixedMasses_AveragesEachBodysCurve_AndOfBodiesAtRestDrawsNoCurve()
+        Dim w As New World(6.0, 6.0, 0.0, 1.0)
+        w.Add(New Circle(New Vector(1, 1), 0.1, 1.0, New Vector(1.0, 0)))
+        w.Add(New Circle(New Vector(3, 3), 0.1, 4.0, New Vector(0, 0.5)))
+        Dim gas = GasState.Read(w)
+        ' kT = mean KE = (0.5 + 0.5) / 2 J.
+        Assert.Equal(0.5, gas.KT, 12)
+        Dim plot = SimulationPresenter.HistogramGraph(gas)
+        Assert.Equal(2, plot.Bars.Total)
+        Dim p = plot.Lines(0).Points(30)
+        Dim expected = 2 * plot.Bars.BinWidth * (MaxwellBoltzmann2D.Density(p.X, 1.0, 0.5) + MaxwellBoltzmann2D.Density(p.X, 4.0, 0.5)) / 2
+        Assert.Equal(expected, p.Y, 12)
+        Dim still As New World(6.0, 6.0, 0.0, 1.0)
+        still.Add(New Circle(New Vector(1, 1), 0.1, 1.0))
+        Dim resting = SimulationPresenter.HistogramGraph(GasState.Read(still))
+        Assert.Equal(1, resting.Bars.Total)
+        Assert.Empty(resting.Lines)
+    End Sub
 End Class
