@@ -114,4 +114,14 @@ Public Class GraphsPresenterTests
         Assert.Equal(1, resting.Bars.Total)
         Assert.Empty(resting.Lines)
     End Sub
+
+    <Fact>
+    Public Sub HelpPages_ExplainTheGraphs_AndTheirMaths()
+        Assert.Contains(HelpTexts.Tutorial, Function(t) t.Text.Contains("Export ▾", StringComparison.Ordinal) AndAlso t.Text.Contains("⤢ Window", StringComparison.Ordinal))
+        Dim maths = String.Join(vbLf, HelpTexts.Maths.Select(Function(t) t.Text))
+        Assert.Contains("f(v) = (m v / kT) · exp(−m v² / 2kT)", maths, StringComparison.Ordinal)
+        Assert.Contains("P A = N k T", maths, StringComparison.Ordinal)
+        ' The engine's pages are still there, first.
+        Assert.Equal("Motion between collisions", HelpTexts.Maths(0).Title)
+    End Sub
 End Class
