@@ -12,6 +12,8 @@ Imports Xunit
 ''' </summary>
 <Collection(RealWindow.Name)>
 Public Class GraphsGuiTests
+    Private Shared ReadOnly TabHeaders As String() = {"tab-circles", "tab-collision-log", "tab-graphs"}
+
     Private Shared Function Int(text As String) As Integer
         Return Integer.Parse(text, CultureInfo.InvariantCulture)
     End Function
@@ -122,4 +124,39 @@ Public Class GraphsGuiTests
         Dim be = Function(i As Integer) (CInt(b(i)) << 24) Or (CInt(b(i + 1)) << 16) Or (CInt(b(i + 2)) << 8) Or CInt(b(i + 3))
         Return (be(16), be(20))
     End Function
+
+    ''' <summary>On a 1024 × 768 projector with large fonts, the Graphs tab's buttons are whole and on screen, and the tabs' headers are not under Export, Scenes or Restart.</summary>
+    <GuiFact>
+    Public Sub GraphsTab_FitsA1024x768ProjectorWithLargeFonts()
+        Using app As New AppDriver(New XSessionOptions With {.Screen = "1024x768x24"})
+            Dim from = app.Mark()
+            app.Click("large-fonts")
+            app.WaitFor("^large fonts on$", skip:=from)
+            app.WaitFor("^ready$", skip:=from)
+            from = app.Mark()
+            app.Click("tab-graphs")
+            app.WaitFor("^tab Graphs$", skip:=from)
+            app.WaitFor("^ready$", skip:=from)
+            Dim window = app.LastMatch("^window (-?\d+) (-?\d+) (\d+) (\d+)$")
+            Dim right = Int(window.Groups(1).Value) + Int(window.Groups(3).Value)
+            Dim side = app.Control("side")
+            Dim lines = app.Lines()
+            Dim last = Array.LastIndexOf(lines, "ready")
+            Dim graphControls = lines.Take(last).Reverse().TakeWhile(Function(l) l.StartsWith("control ", StringComparison.Ordinal) OrElse l.StartsWith("window ", StringComparison.Ordinal) OrElse l.StartsWith("view ", StringComparison.Ordinal)).
+                Select(Function(l) Regex.Match(l, "^control (graph-\S+|export) (-?\d+) (-?\d+) (\d+) (\d+) (fits|cut)$")).Where(Function(m) m.Success).ToList()
+            Assert.Equal(6, graphControls.Count)
+            For Each m In graphControls
+                Assert.Equal("fits", m.Groups(6).Value)
+                Assert.True(Int(m.Groups(2).Value) + Int(m.Groups(4).Value) <= side.X, m.Value & " runs under the side panel")
+            Next
+            Dim export = app.Control("export")
+            For Each header In TabHeaders
+                Dim t = app.Control(header)
+                Dim apart = t.Y >= export.Y + export.H OrElse t.X + t.W <= export.X
+                Assert.True(apart, header & " is under the Export button")
+            Next
+            Assert.True(right > 0)
+            app.X.Shoot("graphs-1024-large")
+        End Using
+    End Sub
 End Class
