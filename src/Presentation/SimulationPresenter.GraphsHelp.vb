@@ -5,7 +5,7 @@ Option Strict On
 Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The tutorial's page on graphs and exports.</summary>
     Public Shared ReadOnly Property GraphsHelp As New HelpTopic("7. Graphs and data out",
-        "The Graphs tab (beside the collision log) draws one graph: Energy (KE, PE and their sum against time), Momentum (px and py against time), Speeds (how many bodies have each speed, with the 2D Maxwell–Boltzmann curve for the gas's temperature) and Pressure (the push of the walls, measured from their impulses, beside the ideal gas law N·k·T/A). ""⤢ Window"" shows the graph in a large window of its own for a projector." & vbLf & "" & vbLf &
+        "The Graphs tab (beside the collision log) draws one graph: Energy (KE, PE and their sum against time), Momentum (px and py against time), Speeds (how many bodies have each speed, with the 2D Maxwell–Boltzmann curve for the gas's temperature) and Pressure (the push of the walls, measured from their impulses, beside the ideal gas law N·k·T/A). ⤢ Window shows the graph in a large window of its own for a projector." & vbLf & "" & vbLf &
         "The graphs show the run since the scene was opened, restarted or reset. A long run is kept whole at a coarser spacing, so memory never grows." & vbLf & "" & vbLf &
         "Export ▾ (beside Scenes) saves the Bodies table, the collision log or the graph's data as a CSV file a spreadsheet opens as it is, or the graph or the canvas as a PNG picture for a worksheet or a slide.")
 
