@@ -14,10 +14,17 @@ Public Module HelpTexts
             "Pause / Resume stops and restarts time." & vbLf & "" & vbLf & "Speed: from 20× slower to 4× faster than real time. Slow motion is good for watching a single collision; the physics is the same at every speed." & vbLf & "" & vbLf & "Gravity g: 0 (space) to 100 m/s², with buttons for the Moon (1.62), Mars (3.71), Earth (9.81) and Jupiter (24.79)." & vbLf & "" & vbLf & "Restitution e: 0 (the balls stop together along the line of impact) to 1 (perfectly elastic: no kinetic energy is lost)." & vbLf & "" & vbLf & "Container: type a new width and height (m) and press ""Resize container"" to make the box bigger or smaller while the balls move (for example to show a gas being compressed). Balls left outside are brought back in. A box too small for its balls is refused, with the reason." & vbLf & "" & vbLf & "The tables list every circle and rectangle (and, in ""Bodies"", every body of every kind) with position, velocity, speed, mass, size and density. The collision log lists, for each collision, the speeds before and after and the momentum and kinetic energy of the pair before and after. The line above the tables gives the totals for all balls." & vbLf & "" & vbLf & "View: ""Large fonts"" and ""High contrast"" make the window readable on a projector. ""Arrows"" shows each ball's velocity and its horizontal (red) and vertical (green) components." & vbLf & "" & vbLf & "Open… and Save… read and write scene files (physics-scene/1, JSON)."),
         New HelpTopic("5. Limits of the model",
             "Balls are perfectly smooth, rigid discs: they do not spin and there is no friction, so a ball rolling on a table never slows down except through collisions." & vbLf & "" & vbLf & "One coefficient of restitution e is used for every contact. Real pairs of materials each have their own." & vbLf & "" & vbLf & "Rectangles, boxes and polygons never rotate. Fixed balls and rectangles do not collide with each other, so you can build shapes from them." & vbLf & "" & vbLf & "There is no air resistance, and gravity is uniform (the same everywhere in the box)." & vbLf & "" & vbLf & "Collisions are instantaneous. Several balls touching at once are handled one pair at a time, in a definite order." & vbLf & "" & vbLf & "Numbers are shown to 3 significant figures (with a power of ten when very large or small); the simulation itself keeps full precision."),
-        SimulationPresenter.LessonsHelp}
+        SimulationPresenter.LessonsHelp,
+        SimulationPresenter.GraphsHelp}
 
     ''' <summary>The equations the engine uses, with their reasoning.</summary>
-    Public ReadOnly Property Maths As IReadOnlyList(Of HelpTopic) = {
+    Public ReadOnly Property Maths As IReadOnlyList(Of HelpTopic)
+        Get
+            Return MathsOfTheEngine.Concat(SimulationPresenter.GraphsMaths).ToList()
+        End Get
+    End Property
+
+    Private ReadOnly Property MathsOfTheEngine As HelpTopic() = {
         New HelpTopic("Motion between collisions",
             "Between collisions each ball moves under constant acceleration (gravity g downwards), so its motion is the parabola of projectile motion:" & vbLf & "" & vbLf & "  x(t) = x₀ + vₓ t" & vbLf & "  y(t) = y₀ + v_y t − ½ g t²" & vbLf & "  v_y(t) = v_y − g t" & vbLf & "" & vbLf & "The horizontal component of velocity never changes in flight; only the vertical one does. The red and green arrows on each ball show this."),
         New HelpTopic("Collision: the impulse with restitution",

@@ -137,6 +137,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 Fail("The simulation stopped: " & ex.Message)
             End Try
             Log.EndFrame()
+            SampleGraphs()
         End If
         _sinceSnapshot += realSeconds
         If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
@@ -210,6 +211,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _sinceSnapshot = 0
         NoteBuilding()
         _Snapshot = TableSnapshot.Take(World, Log.TotalSeen)
+        SampleGraphs()
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
         _window.ShowState()
     End Sub
@@ -555,7 +557,10 @@ Partial Public NotInheritable Class SimulationPresenter
             ' A body without a colour in its file gets the same one every time: it follows from the id.
             If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
         Next
-        w.CollisionListener = Sub(r) Log.Record(r, w.DraggedBody)
+        w.CollisionListener = Sub(r)
+                                  Log.Record(r, w.DraggedBody)
+                                  GraphCollision(r)
+                              End Sub
         _World = w
         Log.Clear()
         Inputs.ContainerWidthText = Units.Input(w.Width)

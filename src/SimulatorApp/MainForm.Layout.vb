@@ -68,6 +68,7 @@ Partial Friend NotInheritable Class MainForm
         Dim tabsTop = _totals.Bottom
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
         PlaceLessonButtons(tabsTop, w - sideWidth)
+        PlaceGraphControls()
         For Each list In _tables.Concat({_linkList})
             FitColumns(list, w - sideWidth - S(28))
         Next
@@ -273,6 +274,7 @@ Partial Friend NotInheritable Class MainForm
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
         named.AddRange(LessonControls())
+        named.AddRange(GraphControls())
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).

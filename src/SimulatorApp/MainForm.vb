@@ -155,6 +155,7 @@ Partial Friend NotInheritable Class MainForm
         AddTab(LinkTable.Title, _linkList)
         SetUpTable(_logList, CollisionLogEntry.Headers, AddressOf OnRetrieveLog)
         AddTab(Captions.CollisionLog, _logList)
+        BuildGraphControls()
         ' Mono leaves a details list's header unpainted when its tab comes back: repaint the list then.
         AddHandler _tabs.SelectedIndexChanged, AddressOf OnTabChanged
         Controls.Add(_tabs)
@@ -349,6 +350,7 @@ Partial Friend NotInheritable Class MainForm
         _presenter.Tick(dt)
         _canvas.Invalidate()
         RefreshLog(now)
+        RefreshGraph(now)
         FrameStats?.Record(dt, _clock.Elapsed.TotalSeconds - now)
     End Sub
 
@@ -373,7 +375,12 @@ Partial Friend NotInheritable Class MainForm
     Private Sub OnTabChanged(sender As Object, e As EventArgs)
         Dim page = _tabs.SelectedTab
         If page Is Nothing OrElse page.Controls.Count = 0 Then Return
-        Dim list = DirectCast(page.Controls(0), BufferedListView)
+        Dim list = TryCast(page.Controls(0), BufferedListView)
+        If list Is Nothing Then ' the Graphs tab
+            _trace?.Invoke("tab " & page.Text)
+            TraceLayout()
+            Return
+        End If
         ' Mono lays a details list's header out only while the list is on screen: a list whose rows or
         ' columns changed behind another tab comes back with a blank header row. Its rows are set now
         ' (see ShowState), and a column is nudged so the header is laid out and painted again.
@@ -653,6 +660,7 @@ Partial Friend NotInheritable Class MainForm
         If disposing Then
             _timer.Dispose()
             DisposeLessonControls()
+            DisposeGraphControls()
             _painter.Dispose()
             _measure?.Dispose()
             _measureBitmap?.Dispose()
