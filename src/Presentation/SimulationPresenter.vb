@@ -138,6 +138,7 @@ Partial Public NotInheritable Class SimulationPresenter
             End Try
             Log.EndFrame()
         End If
+        FollowMomentumViews(realSeconds, Not IsPaused)
         _sinceSnapshot += realSeconds
         If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
     End Sub
@@ -262,6 +263,7 @@ Partial Public NotInheritable Class SimulationPresenter
                     For Each b In World.Movables
                         If b.Kind <> ShapeKind.Circle Then Emit("body " & b.Id & " at " & Units.Pair(b.CentreOfMass, 3) & " m v " & Units.Pair(b.Velocity, 3) & " m/s")
                     Next
+                    EmitMomentumViews()
                     EmitScreenCheck()
                 Else
                     Emit("resumed")
@@ -369,6 +371,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 _SpeedIndex = SpeedSteps.RealTimeIndex
                 _Mode = ClickMode.Move
                 Log.Clear()
+                ForgetMomentumViews()
                 Emit("reset: " & World.Bodies.Count & " bodies, g " & Units.Num(World.Gravity) & ", e " & Units.Num(World.Restitution) & ", speed " & SpeedSteps.Label(Speed))
                 ShowMessage("")
                 TakeSnapshot()
@@ -555,7 +558,11 @@ Partial Public NotInheritable Class SimulationPresenter
             ' A body without a colour in its file gets the same one every time: it follows from the id.
             If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
         Next
-        w.CollisionListener = Sub(r) Log.Record(r, w.DraggedBody)
+        w.CollisionListener = Sub(r)
+                                  Log.Record(r, w.DraggedBody)
+                                  NoteImpulses(r)
+                              End Sub
+        ForgetMomentumViews()
         _World = w
         Log.Clear()
         Inputs.ContainerWidthText = Units.Input(w.Width)
