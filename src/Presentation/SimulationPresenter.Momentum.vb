@@ -103,8 +103,8 @@ Partial Public NotInheritable Class SimulationPresenter
                     SettleOverlaps()
                 End If
                 Emit("walls " & If(World.Walls, "on", "off"))
-                ShowMessage(If(World.Walls, "Walls on: the sides of the box reflect the balls; any body outside was brought back in.",
-                               "No walls: the box is drawn as a dashed outline and balls fly out through it."))
+                ShowMessage(If(World.Walls, "Walls on: the sides reflect the balls; any ball outside was brought back in.",
+                               "No walls: balls fly out through the dashed outline."))
                 TakeSnapshot()
             End Sub)
         _window.ShowSettings()
@@ -114,8 +114,9 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Sub FollowMomentumViews(realSeconds As Double, ran As Boolean)
         If ShowTraces AndAlso ran Then Traces.Follow(World, realSeconds)
         If ShowImpulses Then
-            Impulses.Locate(World)
-            Impulses.Age(realSeconds)
+            EmitNewImpulses()
+            ' Paused, a mark stays: the teacher can stop time to look at it.
+            If ran Then Impulses.Age(realSeconds)
         End If
         If ShowsMomentumArrows Then
             ' Room for the longest momentum arrow: the diagram's corner, a fifth of the canvas's smaller side.
@@ -146,6 +147,19 @@ Partial Public NotInheritable Class SimulationPresenter
         Impulses.Clear()
     End Sub
 
+    ''' <summary>Places the marks of this frame's collisions and, with a trace, lists the first few (GUI tests check them against the bodies).</summary>
+    Private Sub EmitNewImpulses()
+        Dim fresh = If(Trace Is Nothing, 0, Impulses.Marks.Where(Function(m) Not m.IsLocated).Count())
+        Impulses.Locate(World)
+        If fresh = 0 Then Return
+        Dim marks = Impulses.Marks
+        For i = marks.Count - fresh To Math.Min(marks.Count, marks.Count - fresh + 8) - 1
+            Dim m = marks(i)
+            Emit("impulse " & m.Body.Id & " Δp " & Units.Pair(m.Impulse, 4) & " kg·m/s at " & Units.Pair(m.At, 3) & " m against " &
+                 If(m.Other IsNot Nothing, m.Other.Id, "wall:" & m.Wall.ToString().ToLowerInvariant()) & " t=" & Units.Num(m.Time, 4))
+        Next
+    End Sub
+
     ''' <summary>With a trace: the centre of mass, its velocity and Σp as the views show them (GUI tests compare these with the bodies).</summary>
     Private Sub EmitMomentumViews()
         If Trace Is Nothing Then Return
@@ -156,5 +170,11 @@ Partial Public NotInheritable Class SimulationPresenter
         End If
         Emit("centre of mass at " & Units.Pair(s.CentreOfMass, 4) & " m v " & Units.Pair(s.Velocity, 4) & " m/s total mass " & Units.Num(s.Mass, 4) &
              " kg Σp " & Units.Pair(s.Momentum, 4) & " kg·m/s")
+        If ShowTraces Then
+            For Each b In Traces.Bodies.Take(8)
+                Dim pts = Traces.Points(b)
+                If pts.Count > 0 Then Emit("trace " & b.Id & " " & pts.Count & " points, newest " & Units.Pair(pts(pts.Count - 1), 3) & " m")
+            Next
+        End If
     End Sub
 End Class

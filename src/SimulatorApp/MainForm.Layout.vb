@@ -147,6 +147,7 @@ Partial Friend NotInheritable Class MainForm
             Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
             Row(rh + S(2), (_open, 0.5), (_save, 0.5))
         End If
+        ArrangeMomentumControls(rh, pairs)
         _side.ResumeLayout(True)
         _side.AutoScrollPosition = New Point(0, -scrolled.Y)
         ShowState()
@@ -273,6 +274,7 @@ Partial Friend NotInheritable Class MainForm
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
         named.AddRange(LessonControls())
+        named.AddRange(MomentumControls())
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).
@@ -288,6 +290,7 @@ Partial Friend NotInheritable Class MainForm
             _trace("control tab-" & _tabs.TabPages(i).Text.ToLowerInvariant().Replace(" "c, "-"c) & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & " fits")
         Next
         Dim client = PointToScreen(Point.Empty)
+        TraceCells()
         _trace("window " & client.X & " " & client.Y & " " & ClientSize.Width & " " & ClientSize.Height)
         Dim v = _presenter.View
         _trace("view scale " & Units.Num(v.Scale, 4) & " origin " & Units.Num(v.OffsetX, 2) & " " & Units.Num(v.OffsetY, 2))
