@@ -4,7 +4,8 @@ Option Strict On
 ''' Where each movable body has been: its centre of mass sampled every <see cref="SampleSeconds"/>
 ''' of real time, the last <see cref="Capacity"/> samples kept in a ring (older ones are dropped, so
 ''' memory is bounded however long the run), drawn fading with age. In a crowded scene only the
-''' first <see cref="MaxBodies"/> movable bodies are traced, as PhET traces one particle of a gas.
+''' first <see cref="MaxBodies"/> movable bodies are traced (enough for a pool break's sixteen balls):
+''' the traces of a whole gas would cost it its frame rate and hide it under scribble.
 ''' </summary>
 Public NotInheritable Class PathTraces
     ''' <summary>Samples kept per body.</summary>
@@ -12,7 +13,7 @@ Public NotInheritable Class PathTraces
     ''' <summary>Real time between samples, s (30 a second: a trace covers the last 3 s).</summary>
     Public Const SampleSeconds As Double = 1.0 / 30
     ''' <summary>The most bodies traced.</summary>
-    Public Const MaxBodies As Integer = 30
+    Public Const MaxBodies As Integer = 16
 
     Private ReadOnly _trails As New Dictionary(Of Shape, Ring)
     Private ReadOnly _order As New List(Of Shape)

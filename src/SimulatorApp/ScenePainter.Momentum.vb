@@ -29,8 +29,12 @@ Partial Friend NotInheritable Class ScenePainter
         Return pen
     End Function
 
-    ''' <summary>Each traced body's path, in its colour, faint where it is old and strong where it is new.</summary>
-    Private Sub DrawTraces(g As Graphics, p As SimulationPresenter, view As ViewTransform, k As Single)
+    ''' <summary>
+    ''' Each traced body's path, in its colour, faint where it is old and strong where it is new. The
+    ''' fading is a mix towards the canvas colour, drawn opaque: see-through lines cost several times
+    ''' as much to draw in software (libgdiplus), and a gas is traced every frame.
+    ''' </summary>
+    Private Sub DrawTraces(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
         Dim traces = p.Traces
         For Each body In traces.Bodies
             Dim pts = traces.Points(body)
@@ -48,11 +52,21 @@ Partial Friend NotInheritable Class ScenePainter
                 If last <= first Then Continue For
                 Dim part(last - first) As PointF
                 Array.Copy(screen, first, part, 0, part.Length)
-                Dim alpha = CInt(40 + 215 * (b + 1) / TraceBands)
-                g.DrawLines(FadedPen(colour, alpha, 2 * k), part)
+                Dim strength = 0.15 + 0.85 * (b + 1) / TraceBands
+                g.DrawLines(PenOf(Mix(colour, theme.Background, strength), 2 * k), part)
             Next
         Next
     End Sub
+
+    ''' <summary>&amp;HRRGGBB of <paramref name="share"/> (0 to 1) of <paramref name="colour"/> and the rest of <paramref name="background"/>.</summary>
+    Private Shared Function Mix(colour As Integer, background As Integer, share As Double) As Integer
+        Dim result = 0
+        For shift = 0 To 16 Step 8
+            Dim c = (colour >> shift) And 255, bg = (background >> shift) And 255
+            result = result Or (CInt(Math.Round(bg + (c - bg) * share)) << shift)
+        Next
+        Return result
+    End Function
 
     ''' <summary>The views over the bodies: impulses, centre of mass, Σp, and the corner panel.</summary>
     Private Sub DrawMomentumViews(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single, width As Integer, height As Integer)
@@ -103,7 +117,7 @@ Partial Friend NotInheritable Class ScenePainter
     ''' <summary>A short label on a backing of the canvas colour, so it reads over anything.</summary>
     Private Sub DrawTag(g As Graphics, text As String, x As Single, y As Single, theme As Theme, colour As Integer)
         Dim sz = g.MeasureString(text, _font)
-        g.FillRectangle(SolidOf(theme.Background, 200), x, y, sz.Width, sz.Height)
+        g.FillRectangle(SolidOf(theme.Background), x, y, sz.Width, sz.Height)
         g.DrawString(text, _font, SolidOf(colour), x, y)
     End Sub
 
@@ -124,8 +138,8 @@ Partial Friend NotInheritable Class ScenePainter
         Dim w = Math.Max(diagramSide, textWidth) + 2 * pad
         Dim h = line + diagramSide + line + 3 * pad
         Dim x0 = width - w - 6 * k, y0 = 6 * k
-        ' See-through, so a body behind the corner still shows.
-        g.FillRectangle(SolidOf(theme.Background, 190), x0, y0, w, h)
+        ' Opaque: a see-through panel costs a gas about a millisecond a frame in software (libgdiplus).
+        g.FillRectangle(SolidOf(theme.Background), x0, y0, w, h)
         g.DrawRectangle(PenOf(theme.Grid, k), x0, y0, w, h)
         g.DrawString(title, _font, SolidOf(theme.Ink), x0 + pad, y0 + pad / 2)
         If p.ShowMomentaDiagram Then

@@ -63,7 +63,7 @@ Partial Friend NotInheritable Class ScenePainter
             _openPen.Width = 2 * k
             g.DrawRectangle(_openPen, CSng(tl.X), CSng(tl.Y), cw, ch)
         End If
-        If p.ShowTraces Then DrawTraces(g, p, view, k)
+        If p.ShowTraces Then DrawTraces(g, p, view, theme, k)
 
         ' Fixed bodies first (the fixed colour says they never move), then movable ones over them.
         Dim fixedFill = SolidOf(theme.Fixed)
