@@ -4,6 +4,22 @@ Option Strict On
 ' diagram, the impulses Δp at collisions and fading path traces, each switched on and off; and
 ' the container's walls on and off.
 Partial Public NotInheritable Class SimulationPresenter
+    ''' <summary>The tutorial's page on the momentum views, the walls toggle and typing into the tables.</summary>
+    Public Shared ReadOnly Property MomentumHelp As New HelpTopic("7. Seeing momentum, walls, typing values",
+        "Under the view options, six boxes: """ & MomentumCaptions.CentreOfMass & """ marks the centre of mass of the moving bodies (a quartered disc, CM) with its velocity arrow. """ &
+        MomentumCaptions.TotalMomentum & """ draws their total momentum Σp from it. """ & MomentumCaptions.MomentaDiagram & """ shows, in the top-right corner, each body's momentum tip to tail in its colour, and the sum Σp in purple: in a collision between balls the chain changes but the sum does not. """ &
+        MomentumCaptions.Impulses & """ shows, for a second, the impulse Δp each body receives at a collision, from the point of contact: two balls get equal and opposite arrows; a ball at a wall gets one. """ &
+        MomentumCaptions.Traces & """ leaves a fading line behind each body (the last 3 s; in a crowded scene, the first 16 bodies). The key in the corner gives the scale of every momentum arrow." & vbLf & "" & vbLf &
+        """" & MomentumCaptions.Walls & """ off takes the sides of the box away: it is drawn as an orange dashed outline, and balls fly out through it. On again, balls outside are brought back in. Restart goes back to the scene's own choice." & vbLf & "" & vbLf &
+        "To set a value exactly, double-click its cell in a table (or select a row and press F2): x, y, vx, vy, mass and, for a ball, radius. Type the value and press Enter; Esc cancels. It is checked as the Add panel checks its boxes, and a position inside another body or outside the box is refused. Restart comes back to what you typed.")
+
+    ''' <summary>The maths page on the momentum views.</summary>
+    Public Shared ReadOnly Property MomentumMaths As New HelpTopic("Centre of mass, total momentum and impulse",
+        "Only moving bodies count (a fixed body never moves and has no momentum). With masses mᵢ at centres rᵢ moving at vᵢ:" & vbLf & "" & vbLf &
+        "  M = Σ mᵢ (kg)" & vbLf & "  centre of mass R = Σ mᵢ rᵢ / M (m)" & vbLf & "  total momentum P = Σ mᵢ vᵢ (kg·m/s)" & vbLf & "  velocity of the centre of mass V = P / M (m/s)" & vbLf & "" & vbLf &
+        "With no outside force (no gravity, no walls) P never changes, so the centre of mass moves in a straight line at V whatever the bodies do." & vbLf & "" & vbLf &
+        "At a collision each body receives an impulse Δp = m (v after − v before) (N·s = kg·m/s). Between two balls the impulses are equal and opposite (Newton's third law), so P is conserved. At a wall the ball's Δp is the wall's impulse on it: at e = 1 a ball hitting a wall square on at speed v gets 2 m v back.")
+
     ''' <summary>Whether the centre of mass of the movable bodies is marked, with its velocity arrow.</summary>
     Public ReadOnly Property ShowCentreOfMass As Boolean
 

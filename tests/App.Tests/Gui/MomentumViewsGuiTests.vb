@@ -86,6 +86,30 @@ Public Class MomentumViewsGuiTests
     End Sub
 
     <GuiFact>
+    Public Sub EveryView_WithLargeFontsOnA1280x800Projector_IsDrawn_AndItsBoxesAreReachable()
+        Using app As New AppDriver(New XSessionOptions With {.Screen = "1280x800x24"})
+            app.ClickAndWait("large-fonts", "^large fonts on$")
+            app.WaitFor("^ready$")
+            ' With large fonts the side panel scrolls: each box is scrolled to and clicked as a teacher would.
+            For Each view In {("centre-of-mass", "centre of mass"), ("total-momentum", "total momentum"), ("momenta-diagram", "momenta diagram"),
+                              ("impulses", "impulses"), ("traces", "traces")}
+                app.ClickAndWait(view.Item1, "^" & view.Item2 & " on$")
+            Next
+            Thread.Sleep(2500)
+            Dim from = app.Mark()
+            app.ClickAndWait("pause", "^paused t=")
+            Dim com = app.WaitFor("^centre of mass at \((\S+), (\S+)\) m", skip:=from)
+            Assert.True(D(com.Groups(1).Value) > 0 AndAlso D(com.Groups(2).Value) > 0, com.Value)
+            Thread.Sleep(300)
+            Dim shot = app.X.Shoot("momentum-views-large")
+            Dim canvas = app.Control("canvas")
+            Dim purple = shot.Fraction(0, 0, canvas.W, canvas.H, Function(p) NearColour(p, MomentumPurple))
+            Assert.True(purple > 0.0005, $"no Σp arrows drawn ({purple:P3} of the canvas is their colour)")
+            Assert.True(app.X.AppIsRunning)
+        End Using
+    End Sub
+
+    <GuiFact>
     Public Sub Impulses_AtAFloorBounce_AreTwiceTheMomentumOfImpact()
         Using app As New AppDriver()
             app.PauseAndClear()
