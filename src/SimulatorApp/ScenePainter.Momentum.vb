@@ -31,8 +31,8 @@ Partial Friend NotInheritable Class ScenePainter
 
     ''' <summary>
     ''' Each traced body's path, in its colour, faint where it is old and strong where it is new. The
-    ''' fading is a mix towards the canvas colour, drawn opaque: see-through lines cost several times
-    ''' as much to draw in software (libgdiplus), and a gas is traced every frame.
+    ''' fading is a mix towards the canvas colour, drawn opaque: cheaper in software (libgdiplus) than
+    ''' see-through lines, and a gas is traced every frame.
     ''' </summary>
     Private Sub DrawTraces(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
         Dim traces = p.Traces
