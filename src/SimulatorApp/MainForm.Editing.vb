@@ -22,6 +22,8 @@ Partial Friend NotInheritable Class MainForm
             AddHandler list.KeyDown, Sub(s, e) OnTableKey(table, e)
         Next
         AddHandler _cellBox.KeyDown, AddressOf OnCellBoxKey
+        ' Esc before the window sees it (it previews keys: Esc there drops a body being placed).
+        AddHandler _cellBox.PreviewKeyDown, Sub(s, e) If e.KeyCode = Keys.Escape Then CloseCellBox(False)
         AddHandler _cellBox.Leave, Sub(s, e) CloseCellBox(False)
     End Sub
 
