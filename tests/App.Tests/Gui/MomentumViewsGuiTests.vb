@@ -105,6 +105,12 @@ Public Class MomentumViewsGuiTests
             Dim canvas = app.Control("canvas")
             Dim purple = shot.Fraction(0, 0, canvas.W, canvas.H, Function(p) NearColour(p, MomentumPurple))
             Assert.True(purple > 0.0005, $"no Σp arrows drawn ({purple:P3} of the canvas is their colour)")
+            ' High contrast: the momentum arrows turn a light violet that shows on black.
+            app.ClickAndWait("high-contrast", "^high contrast on$")
+            Thread.Sleep(500)
+            Dim dark = app.X.Shoot("momentum-views-dark")
+            Dim violet = dark.Fraction(0, 0, canvas.W, canvas.H, Function(p) NearColour(p, &HEA80FC))
+            Assert.True(violet > 0.0005, $"no Σp arrows drawn in high contrast ({violet:P3})")
             Assert.True(app.X.AppIsRunning)
         End Using
     End Sub
