@@ -56,16 +56,23 @@ Friend Module FrameBenchmark
                 Return result
             End If
             app.WaitForExit()
-            Dim line = outTask.Result.Split({vbLf}, StringSplitOptions.RemoveEmptyEntries).Select(Function(l) l.Trim()).
-                       LastOrDefault(Function(l) l.StartsWith("{"c))
+            ' The plain row is the last JSON line; an app with the momentum views prints their row before it.
+            Dim jsonLines = outTask.Result.Split({vbLf}, StringSplitOptions.RemoveEmptyEntries).Select(Function(l) l.Trim()).
+                            Where(Function(l) l.StartsWith("{"c)).ToList()
+            Dim line = jsonLines.LastOrDefault()
+            Dim viewsLine = jsonLines.FirstOrDefault(Function(l) l.Contains(ViewsMarker, StringComparison.Ordinal))
             If line Is Nothing Then
                 result.Note = "the app printed no JSON line (exit " & app.ExitCode.ToString(CultureInfo.InvariantCulture) & "): " &
                               FirstLine(errTask.Result & " " & outTask.Result)
                 Return result
             End If
+            If viewsLine IsNot Nothing AndAlso viewsLine IsNot line Then result.Views = Interpret(viewsLine, New FrameResult With {.Circles = circles})
             Return Interpret(line, result)
         End Using
     End Function
+
+    ''' <summary>How the app marks the row measured with the path traces, the centre of mass and the Σp arrow on.</summary>
+    Friend Const ViewsMarker As String = """views"":""traces+com"""
 
     ''' <summary>
     ''' Reads step and paint times (ms) from the app's JSON line. Prefers fields whose names say median,

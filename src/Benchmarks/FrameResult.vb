@@ -14,4 +14,6 @@ Friend NotInheritable Class FrameResult
     Public Property RawJson As String = ""
     ''' <summary>Why it did not run, or a remark.</summary>
     Public Property Note As String = ""
+    ''' <summary>The same frames with the path traces, the centre of mass and the Σp arrow on; Nothing when the app printed no such row.</summary>
+    Public Property Views As FrameResult
 End Class

@@ -29,5 +29,5 @@ Public Module Captions
         "Pause", "Resume", Reset, "Delete mode", AddCircle, AddRectangle, ResizeContainer, Fixed, LargeFonts, HighContrast, Arrows,
         Tutorial, MathsUsed, OpenScene, SaveScene, "Open", "Save", CollisionLog, "Circles", "Rectangles",
         AddPolygon, AddRamp, AddSpring, AddRod, AddString, "Bodies", "Links",
-        "Moon", "Mars", "Earth", "Jupiter"}
+        "Moon", "Mars", "Earth", "Jupiter"}.Concat(MomentumCaptions.All).ToArray()
 End Module

@@ -15,7 +15,7 @@ Public Module HelpTexts
         New HelpTopic("5. Limits of the model",
             "Balls are perfectly smooth, rigid discs: they do not spin and there is no friction, so a ball rolling on a table never slows down except through collisions." & vbLf & "" & vbLf & "One coefficient of restitution e is used for every contact. Real pairs of materials each have their own." & vbLf & "" & vbLf & "Rectangles, boxes and polygons never rotate. Fixed balls and rectangles do not collide with each other, so you can build shapes from them." & vbLf & "" & vbLf & "There is no air resistance, and gravity is uniform (the same everywhere in the box)." & vbLf & "" & vbLf & "Collisions are instantaneous. Several balls touching at once are handled one pair at a time, in a definite order." & vbLf & "" & vbLf & "Numbers are shown to 3 significant figures (with a power of ten when very large or small); the simulation itself keeps full precision."),
         SimulationPresenter.LessonsHelp,
-        SimulationPresenter.GraphsHelp}
+        SimulationPresenter.GraphsHelp, SimulationPresenter.MomentumHelp}
 
     ''' <summary>The equations the engine uses, with their reasoning.</summary>
     Public ReadOnly Property Maths As IReadOnlyList(Of HelpTopic)
@@ -36,5 +36,6 @@ Public Module HelpTexts
         New HelpTopic("The cue: F = ma as an impulse",
             "The cue gives a ball an impulse J (force × time, N·s) proportional to how far you pull back, pointing from the cursor to the ball's centre. Newton's second law, F = ma, integrated over the short push gives" & vbLf & "" & vbLf & "  J = F Δt = m Δv   so   Δv = J / m" & vbLf & "" & vbLf & "The same pull (the same J) gives a ball twice as heavy half the change of velocity. The label beside the cue shows both J and Δv before you let go."),
         New HelpTopic("Momentum and energy on screen",
-            "The totals line adds up over all moving balls:" & vbLf & "" & vbLf & "  p = Σ m v (a vector, kg·m/s)" & vbLf & "  KE = Σ ½ m |v|² (J)" & vbLf & "  PE = Σ m g y (J, measured from the floor)" & vbLf & "" & vbLf & "With g = 0 and e = 1, p and KE stay constant except when balls hit the walls (the walls change p; KE still stays). With g > 0 and e = 1, KE + PE stays constant. With e < 1 the log shows the fraction of kinetic energy lost in each collision.")}
+            "The totals line adds up over all moving balls:" & vbLf & "" & vbLf & "  p = Σ m v (a vector, kg·m/s)" & vbLf & "  KE = Σ ½ m |v|² (J)" & vbLf & "  PE = Σ m g y (J, measured from the floor)" & vbLf & "" & vbLf & "With g = 0 and e = 1, p and KE stay constant except when balls hit the walls (the walls change p; KE still stays). With g > 0 and e = 1, KE + PE stays constant. With e < 1 the log shows the fraction of kinetic energy lost in each collision."),
+        SimulationPresenter.MomentumMaths}
 End Module

@@ -139,6 +139,7 @@ Partial Public NotInheritable Class SimulationPresenter
             Log.EndFrame()
             SampleGraphs()
         End If
+        FollowMomentumViews(realSeconds, Not IsPaused)
         _sinceSnapshot += realSeconds
         If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
     End Sub
@@ -264,6 +265,7 @@ Partial Public NotInheritable Class SimulationPresenter
                     For Each b In World.Movables
                         If b.Kind <> ShapeKind.Circle Then Emit("body " & b.Id & " at " & Units.Pair(b.CentreOfMass, 3) & " m v " & Units.Pair(b.Velocity, 3) & " m/s")
                     Next
+                    EmitMomentumViews()
                     EmitScreenCheck()
                 Else
                     Emit("resumed")
@@ -371,6 +373,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 _SpeedIndex = SpeedSteps.RealTimeIndex
                 _Mode = ClickMode.Move
                 Log.Clear()
+                ForgetMomentumViews()
                 Emit("reset: " & World.Bodies.Count & " bodies, g " & Units.Num(World.Gravity) & ", e " & Units.Num(World.Restitution) & ", speed " & SpeedSteps.Label(Speed))
                 ShowMessage("")
                 TakeSnapshot()
@@ -560,7 +563,9 @@ Partial Public NotInheritable Class SimulationPresenter
         w.CollisionListener = Sub(r)
                                   Log.Record(r, w.DraggedBody)
                                   GraphCollision(r)
+                                  NoteImpulses(r)
                               End Sub
+        ForgetMomentumViews()
         _World = w
         Log.Clear()
         Inputs.ContainerWidthText = Units.Input(w.Width)

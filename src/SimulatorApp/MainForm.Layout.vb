@@ -148,6 +148,7 @@ Partial Friend NotInheritable Class MainForm
             Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
             Row(rh + S(2), (_open, 0.5), (_save, 0.5))
         End If
+        ArrangeMomentumControls(rh, pairs)
         _side.ResumeLayout(True)
         _side.AutoScrollPosition = New Point(0, -scrolled.Y)
         ShowState()
@@ -275,6 +276,7 @@ Partial Friend NotInheritable Class MainForm
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
         named.AddRange(LessonControls())
         named.AddRange(GraphControls())
+        named.AddRange(MomentumControls())
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).
@@ -290,6 +292,7 @@ Partial Friend NotInheritable Class MainForm
             _trace("control tab-" & _tabs.TabPages(i).Text.ToLowerInvariant().Replace(" "c, "-"c) & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & " fits")
         Next
         Dim client = PointToScreen(Point.Empty)
+        TraceCells()
         _trace("window " & client.X & " " & client.Y & " " & ClientSize.Width & " " & ClientSize.Height)
         Dim v = _presenter.View
         _trace("view scale " & Units.Num(v.Scale, 4) & " origin " & Units.Num(v.OffsetX, 2) & " " & Units.Num(v.OffsetY, 2))

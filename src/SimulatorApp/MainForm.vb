@@ -227,6 +227,8 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_maths, Captions.MathsUsed, Sub() ShowHelp(Captions.MathsUsed, HelpTexts.Maths))
         AddButton(_open, Captions.OpenScene, AddressOf OnOpen)
         AddButton(_save, Captions.SaveScene, AddressOf OnSave)
+        BuildMomentumControls()
+        BuildEditingControls()
     End Sub
 
     Private Sub AddTab(title As String, list As BufferedListView)
@@ -528,6 +530,7 @@ Partial Friend NotInheritable Class MainForm
             _largeFonts.Checked = _presenter.LargeFonts
             _highContrast.Checked = _presenter.HighContrast
             _arrows.Checked = _presenter.ShowArrows
+            ShowMomentumSettings()
         Finally
             _updating = False
         End Try

@@ -8,7 +8,7 @@ Imports PhysicsEngine.Presentation
 ''' bitmap use this same code. Pens, brushes and fonts are cached, and nothing is allocated per body
 ''' per frame except what GDI+ itself needs.
 ''' </summary>
-Friend NotInheritable Class ScenePainter
+Partial Friend NotInheritable Class ScenePainter
     Implements IDisposable
 
     ''' <summary>Shorter arrows (px at 96 dpi) are not drawn: they would be a blob on the ball.</summary>
@@ -58,10 +58,12 @@ Friend NotInheritable Class ScenePainter
         If p.HasWalls Then
             g.DrawRectangle(ink, CSng(tl.X), CSng(tl.Y), cw, ch)
         Else
-            _openPen.Color = Rgb(theme.Grid)
-            _openPen.Width = k
+            ' Dashed in the cue's colour and as thick as a wall, so the open sides read on a projector.
+            _openPen.Color = Rgb(theme.Cue)
+            _openPen.Width = 2 * k
             g.DrawRectangle(_openPen, CSng(tl.X), CSng(tl.Y), cw, ch)
         End If
+        If p.ShowTraces Then DrawTraces(g, p, view, theme, k)
 
         ' Fixed bodies first (the fixed colour says they never move), then movable ones over them.
         Dim fixedFill = SolidOf(theme.Fixed)
@@ -116,6 +118,7 @@ Friend NotInheritable Class ScenePainter
 
         DrawLinks(g, world, view, theme, k)
         If p.ShowArrows AndAlso Not busy Then DrawArrows(g, p, view, theme, k)
+        DrawMomentumViews(g, p, view, theme, k, width, height)
 
         Dim carried = p.DraggedBody
         If carried IsNot Nothing Then
@@ -422,6 +425,7 @@ Friend NotInheritable Class ScenePainter
         _pens.Clear()
         _pullPen.Dispose()
         _openPen.Dispose()
+        DisposeMomentumPens()
         _font?.Dispose()
         _bigFont?.Dispose()
     End Sub

@@ -100,6 +100,16 @@ Public Class MarkdownReportTests
     End Sub
 
     <Fact>
+    Public Sub Render_GivesTheTracesAndCentreOfMassRow_WhenTheAppMeasuredIt()
+        Dim plain = New FrameResult With {.Ran = True, .Circles = 1000, .StepMs = 3.25, .PaintMs = 2.0, .RawJson = "{""stepMs"":3.25}"}
+        Assert.DoesNotContain("Traces + COM on", Render(plain))
+        plain.Views = New FrameResult With {.Ran = True, .Circles = 1000, .StepMs = 3.5, .PaintMs = 13.0, .RawJson = "{""views"":""traces+com""}"}
+        Dim md = Render(plain)
+        Assert.Contains("step 3.50 ms + paint 13.00 ms, target < 16 ms (missed).", md)
+        Assert.Contains("{""views"":""traces+com""}", md)
+    End Sub
+
+    <Fact>
     Public Sub Plots_MakesOneWorkPrecisionPlotPerSceneAndOneScalingPlot()
         Dim files = MarkdownReport.Plots(SampleResults.Scenes(), SampleResults.Results())
         Assert.Equal(Values("benchmark-gas-scaling.svg", "benchmark-projectile.svg"), files.Keys.OrderBy(Function(k) k, StringComparer.Ordinal))

@@ -1,0 +1,204 @@
+Option Strict On
+
+' Typing values into the tables: a movable body's x, y, vx, vy, mass and (for a circle) radius,
+' checked as the Add panel checks what is typed there. This is the precise way to set a velocity.
+Partial Public NotInheritable Class SimulationPresenter
+    ''' <summary>The largest speed that can be typed into a table, m/s (larger is set to it, and the message says so).</summary>
+    Public Const MaxTypedSpeed As Double = 1000.0
+    ''' <summary>The farthest from the origin a position can be typed, m (only a box without walls lets a body go beyond the container).</summary>
+    Public Const MaxTypedPosition As Double = 1000.0
+
+    ''' <summary>What column <paramref name="column"/> of table <paramref name="table"/> (an index into <see cref="Tables"/>) holds, when it can be typed into.</summary>
+    Public Shared Function EditableQuantity(table As Integer, column As Integer) As TableQuantity
+        If table < 0 OrElse table >= Tables.Count Then Return TableQuantity.None
+        Dim headers = Tables(table).Headers
+        If column < 0 OrElse column >= headers.Count Then Return TableQuantity.None
+        Select Case headers(column)
+            Case "x (m)", "Centre x (m)" : Return TableQuantity.X
+            Case "y (m)", "Centre y (m)" : Return TableQuantity.Y
+            Case "vx (m/s)" : Return TableQuantity.Vx
+            Case "vy (m/s)" : Return TableQuantity.Vy
+            Case "Mass (kg)" : Return TableQuantity.Mass
+            Case "Radius (m)" : Return TableQuantity.Radius
+        End Select
+        Return TableQuantity.None
+    End Function
+
+    ''' <summary>The column of table <paramref name="table"/> that holds <paramref name="quantity"/>, or −1.</summary>
+    Public Shared Function ColumnOf(table As Integer, quantity As TableQuantity) As Integer
+        If table < 0 OrElse table >= Tables.Count OrElse quantity = TableQuantity.None Then Return -1
+        For c = 0 To Tables(table).Headers.Count - 1
+            If EditableQuantity(table, c) = quantity Then Return c
+        Next
+        Return -1
+    End Function
+
+    ''' <summary>The body listed in row <paramref name="row"/> of table <paramref name="table"/> of the last snapshot, or Nothing.</summary>
+    Private Function BodyInRow(table As Integer, row As Integer) As Shape
+        If table < 0 OrElse table >= Tables.Count OrElse row < 0 OrElse row >= Snapshot.RowCount(table) Then Return Nothing
+        Return World.Find(Snapshot.Row(table, row).Id)
+    End Function
+
+    ''' <summary>Whether the cell can be typed into: an editable column of a movable body's row.</summary>
+    Public Function CanEditCell(table As Integer, row As Integer, column As Integer) As Boolean
+        Dim q = EditableQuantity(table, column)
+        Dim body = BodyInRow(table, row)
+        Return q <> TableQuantity.None AndAlso body IsNot Nothing AndAlso Not body.IsFixed AndAlso
+               (q <> TableQuantity.Radius OrElse body.Kind = ShapeKind.Circle)
+    End Function
+
+    ''' <summary>The text an edit box opens with: the cell's value with more figures than the table shows ("" when it cannot be edited).</summary>
+    Public Function CellEditText(table As Integer, row As Integer, column As Integer) As String
+        If Not CanEditCell(table, row, column) Then Return ""
+        Return CurrentValue(BodyInRow(table, row), table, EditableQuantity(table, column)).ToString("G6", Globalization.CultureInfo.InvariantCulture)
+    End Function
+
+    ''' <summary>The value the cell stands for now, in full precision.</summary>
+    Private Shared Function CurrentValue(body As Shape, table As Integer, q As TableQuantity) As Double
+        Dim point = ListedPoint(body, table)
+        Select Case q
+            Case TableQuantity.X : Return point.X
+            Case TableQuantity.Y : Return point.Y
+            Case TableQuantity.Vx : Return body.Velocity.X
+            Case TableQuantity.Vy : Return body.Velocity.Y
+            Case TableQuantity.Mass : Return body.Mass
+            Case TableQuantity.Radius : Return DirectCast(body, Circle).Radius
+        End Select
+        Return 0
+    End Function
+
+    ''' <summary>The point a table lists a body by: Circles and Rectangles its reference point (centre, lower-left corner), Bodies its centre of mass.</summary>
+    Private Shared Function ListedPoint(body As Shape, table As Integer) As Vector
+        Return If(Tables(table) Is BodyTable.Bodies, body.CentreOfMass, body.Position)
+    End Function
+
+    ''' <summary>
+    ''' Sets the quantity of the cell to what was typed. It is checked as the Add panel checks its
+    ''' boxes (the same messages, limits brought to with a note); a position must keep the body
+    ''' inside a walled container and clear of every other body, and a new radius too. A refusal is a
+    ''' message and changes nothing. An edit is building: Restart comes back to it. Returns whether
+    ''' the world changed.
+    ''' </summary>
+    Public Function EditCell(table As Integer, row As Integer, column As Integer, text As String) As Boolean
+        Dim body = BodyInRow(table, row)
+        Dim q = EditableQuantity(table, column)
+        If body Is Nothing OrElse q = TableQuantity.None Then
+            ShowMessage("That cell cannot be typed into: the position, velocity, mass and radius of a moving body can.")
+            Return False
+        End If
+        If body.IsFixed Then
+            ShowMessage(body.Id & " is fixed: it has no velocity or mass. Carry it with the right mouse button to move it.")
+            Return False
+        End If
+        If q = TableQuantity.Radius AndAlso body.Kind <> ShapeKind.Circle Then Return False
+        Dim changed = False
+        Guarded(Sub() changed = ApplyEdit(body, table, q, text))
+        Return changed
+    End Function
+
+    Private Function ApplyEdit(body As Shape, table As Integer, q As TableQuantity, text As String) As Boolean
+        Dim label = LabelOf(q)
+        Dim read As NumberInput
+        Select Case q
+            Case TableQuantity.X, TableQuantity.Y : read = NumberInput.ReadFinite(text, label, MaxTypedPosition)
+            Case TableQuantity.Vx, TableQuantity.Vy : read = NumberInput.ReadFinite(text, label, MaxTypedSpeed)
+            Case TableQuantity.Mass : read = NumberInput.ReadPositive(text, label, InputLimits.MaxMass, InputLimits.MinMass)
+            Case Else : read = NumberInput.ReadPositive(text, label, InputLimits.MaxRadius, InputLimits.MinRadius)
+        End Select
+        If Not read.IsValid Then
+            ShowMessage(AskingMessage(body, q) & " " & Problems(read))
+            Return False
+        End If
+        Dim value = read.Value
+        EndGestures()
+        Select Case q
+            Case TableQuantity.X, TableQuantity.Y
+                Dim now = ListedPoint(body, table)
+                Dim offset = If(q = TableQuantity.X, New Vector(value - now.X, 0), New Vector(0, value - now.Y))
+                Dim refusal = PlacementRefusal(body, body, offset)
+                If refusal IsNot Nothing Then
+                    ShowMessage(label & " = " & Units.Sig(value) & " would put " & body.Id & " " & refusal & "; it stays where it was.")
+                    Return False
+                End If
+                World.SetPosition(body, body.Position + offset)
+            Case TableQuantity.Vx
+                World.SetVelocity(body, New Vector(value, body.Velocity.Y))
+            Case TableQuantity.Vy
+                World.SetVelocity(body, New Vector(body.Velocity.X, value))
+            Case Else
+                Dim replacement = Rebuilt(body, If(q = TableQuantity.Mass, value, body.Mass), If(q = TableQuantity.Radius, value, 0))
+                If q = TableQuantity.Radius Then
+                    Dim refusal = PlacementRefusal(replacement, body, Vector.Zero)
+                    If refusal IsNot Nothing Then
+                        ShowMessage(label & " = " & Units.Sig(value) & " would put " & body.Id & " " & refusal & "; it keeps its size.")
+                        Return False
+                    End If
+                End If
+                World.Replace(body, replacement)
+        End Select
+        Emit("edited " & body.Id & " " & label & " = " & value.ToString("R", Globalization.CultureInfo.InvariantCulture))
+        Dim note = If(read.WasClamped, LabelOf(q) & " set to the " & If(read.WasRaised, "minimum", "maximum") & ", " & Units.Sig(value) & ". ", "")
+        ShowMessage(note & body.Id & ": " & label & " is now " & Units.Sig(value) & ". Restart comes back to this.")
+        RememberStart()
+        TakeSnapshot()
+        Return True
+    End Function
+
+    ''' <summary>"vx (m/s)": the field's name with its unit, as the messages give it.</summary>
+    Private Shared Function LabelOf(q As TableQuantity) As String
+        Select Case q
+            Case TableQuantity.X : Return "x (m)"
+            Case TableQuantity.Y : Return "y (m)"
+            Case TableQuantity.Vx : Return "vx (m/s)"
+            Case TableQuantity.Vy : Return "vy (m/s)"
+            Case TableQuantity.Mass : Return "mass (kg)"
+            Case Else : Return "radius (m)"
+        End Select
+    End Function
+
+    ''' <summary>The Add panel's request for a suitable value, for this kind of body (positions and velocities: the circle's).</summary>
+    Private Shared Function AskingMessage(body As Shape, q As TableQuantity) As String
+        If q = TableQuantity.Mass Then
+            Select Case body.Kind
+                Case ShapeKind.Rectangle : Return InputLimits.BoxMessage
+                Case ShapeKind.Polygon : Return InputLimits.PolygonMessage
+            End Select
+        End If
+        If q = TableQuantity.Mass OrElse q = TableQuantity.Radius Then Return InputLimits.CircleMessage
+        Return "Please enter a suitable value for " & LabelOf(q) & "!"
+    End Function
+
+    ''' <summary>
+    ''' Why <paramref name="candidate"/>, moved by <paramref name="offset"/>, cannot stand where the
+    ''' world's <paramref name="original"/> is (it leaves a walled container, or overlaps another body
+    ''' it collides with), or Nothing when it can.
+    ''' </summary>
+    Private Function PlacementRefusal(candidate As Shape, original As Shape, offset As Vector) As String
+        If Not Placement.IsInside(World, candidate, offset) Then
+            Return "outside the container (0 to " & Units.Sig(World.Width) & " m across, 0 to " & Units.Sig(World.Height) & " m up)"
+        End If
+        For Each other In World.Bodies
+            If other Is original OrElse Not Placement.Collide(candidate, other) Then Continue For
+            If Placement.OverlapDepth(candidate, offset, other) > Placement.Tolerance Then Return "into " & other.Id
+        Next
+        Return Nothing
+    End Function
+
+    ''' <summary>A copy of a movable body with another mass (kg) and, for a circle, radius (m; 0 keeps it): same place, velocity, id and colour.</summary>
+    Private Shared Function Rebuilt(body As Shape, mass As Double, radius As Double) As Shape
+        Dim copy As Shape
+        Select Case body.Kind
+            Case ShapeKind.Circle
+                Dim c = DirectCast(body, Circle)
+                copy = New Circle(c.Position, If(radius > 0, radius, c.Radius), mass, c.Velocity, c.Id)
+            Case ShapeKind.Rectangle
+                Dim r = DirectCast(body, Rectangle)
+                copy = Rectangle.CreateMovable(r.Position, r.Width, r.Height, mass, r.Velocity, r.Id)
+            Case Else
+                Dim p = DirectCast(body, Polygon)
+                copy = New Polygon(p.Vertices, mass, p.Velocity, p.Id)
+        End Select
+        copy.Color = body.Color
+        Return copy
+    End Function
+End Class
