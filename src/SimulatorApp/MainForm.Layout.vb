@@ -147,6 +147,7 @@ Partial Friend NotInheritable Class MainForm
             Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
             Row(rh + S(2), (_open, 0.5), (_save, 0.5))
         End If
+        ArrangeTimeControls(rh, line, sliderHeight)
         _side.ResumeLayout(True)
         _side.AutoScrollPosition = New Point(0, -scrolled.Y)
         ShowState()
@@ -273,6 +274,7 @@ Partial Friend NotInheritable Class MainForm
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
         named.AddRange(LessonControls())
+        named.AddRange(TimeControls())
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).

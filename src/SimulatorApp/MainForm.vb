@@ -226,6 +226,7 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_maths, Captions.MathsUsed, Sub() ShowHelp(Captions.MathsUsed, HelpTexts.Maths))
         AddButton(_open, Captions.OpenScene, AddressOf OnOpen)
         AddButton(_save, Captions.SaveScene, AddressOf OnSave)
+        BuildTimeControls()
     End Sub
 
     Private Sub AddTab(title As String, list As BufferedListView)
@@ -550,6 +551,7 @@ Partial Friend NotInheritable Class MainForm
 
     Public Sub ShowState() Implements ISimulationView.ShowState
         If _presenter Is Nothing Then Return
+        ShowTimeline()
         Dim snap = _presenter.Snapshot
         ' Only the table on show is sized and repainted; the others when their tab is chosen.
         Dim shown = _tabs.SelectedIndex

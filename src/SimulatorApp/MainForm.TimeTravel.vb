@@ -1,0 +1,87 @@
+Option Strict On
+Imports System.Drawing
+Imports System.Windows.Forms
+Imports PhysicsEngine.Presentation
+
+' The time controls' part of the window: step back and forward a frame or a collision, and the
+' timeline slider. What they do is the presenter's (SimulationPresenter.TimeTravel).
+Partial Friend NotInheritable Class MainForm
+    Private ReadOnly _stepBack As New Button()
+    Private ReadOnly _step As New Button()
+    Private ReadOnly _previousCollision As New Button()
+    Private ReadOnly _nextCollision As New Button()
+    Private ReadOnly _timelineLabel As New Label()
+    Private ReadOnly _timeline As New TrackBar()
+
+    Private Sub BuildTimeControls()
+        AddLabel(_timelineLabel, "")
+        AddButton(_previousCollision, SimulationPresenter.PreviousCollisionCaption, Sub() _presenter.StepToPreviousCollision())
+        AddButton(_stepBack, SimulationPresenter.StepBackCaption, Sub() _presenter.StepBackFrame())
+        AddButton(_step, SimulationPresenter.StepCaption, Sub() _presenter.StepFrame())
+        AddButton(_nextCollision, SimulationPresenter.NextCollisionCaption, Sub() _presenter.StepToNextCollision())
+        SetUpSlider(_timeline, SimulationPresenter.TimelineSteps, SimulationPresenter.TimelineSteps \ 10, Sub() _presenter.TimelineSliderMoved(_timeline.Value))
+        _timeline.SmallChange = 1
+        _timeline.LargeChange = SimulationPresenter.TimelineSteps \ 20
+        _tips.SetToolTip(_previousCollision, "Back to the last collision (" & SimulationPresenter.PreviousCollisionKey & ")")
+        _tips.SetToolTip(_stepBack, "One frame back (" & SimulationPresenter.StepBackKey & ")")
+        _tips.SetToolTip(_step, "One frame on (" & SimulationPresenter.StepKey & ")")
+        _tips.SetToolTip(_nextCollision, "On to the next collision (" & SimulationPresenter.NextCollisionKey & ")")
+        ' Every control of the side panel says when it takes the focus, so a test can follow Tab.
+        For Each c As Control In _side.Controls
+            Dim control = c
+            AddHandler control.GotFocus, Sub(s, e) _trace?.Invoke("focus " & control.Left & " " & (control.Top - _side.AutoScrollPosition.Y) & " " & control.GetType().Name & " " & control.Text)
+        Next
+    End Sub
+
+    ''' <summary>The time controls' rows, after the Tutorial/Open/Save rows.</summary>
+    Private Sub ArrangeTimeControls(rowHeight As Integer, line As Integer, sliderHeight As Integer)
+        Gap()
+        Row(line + S(4), (_timelineLabel, 1.0))
+        Row(sliderHeight, (_timeline, 1.0))
+        Row(rowHeight + S(2), (_previousCollision, 0.28), (_stepBack, 0.22), (_step, 0.22), (_nextCollision, 0.28))
+    End Sub
+
+    ''' <summary>The timeline's label and thumb follow the time on show.</summary>
+    Private Sub ShowTimeline()
+        _timelineLabel.Text = _presenter.TimelineText
+        Dim wanted = _presenter.TimelinePosition
+        If _timeline.Value <> wanted AndAlso Not _timeline.Capture Then
+            Dim was = _updating
+            _updating = True
+            _timeline.Value = wanted
+            _updating = was
+        End If
+    End Sub
+
+    ''' <summary>The time controls, by the names the --trace layout gives them.</summary>
+    Private Function TimeControls() As IEnumerable(Of (Name As String, Control As Control))
+        Return {("timeline-label", CType(_timelineLabel, Control)), ("timeline", CType(_timeline, Control)),
+                ("previous-collision", CType(_previousCollision, Control)), ("step-back", CType(_stepBack, Control)),
+                ("step", CType(_step, Control)), ("next-collision", CType(_nextCollision, Control))}
+    End Function
+
+    ''' <summary>
+    ''' The time controls' keys: . and → a frame on, , and ← a frame back, Ctrl+→ and Ctrl+← a
+    ''' collision on and back. Not while a text box has the focus (it keeps its keys), and the arrows
+    ''' not while a slider has it (they move it).
+    ''' </summary>
+    Private Function ProcessTimeKey(keyData As Keys) As Boolean
+        Dim focused = ActiveControl
+        If TypeOf focused Is TextBox Then Return False
+        Dim onSlider = TypeOf focused Is TrackBar
+        Dim action As Action = Nothing
+        Dim name As String = Nothing
+        Select Case keyData
+            Case Keys.OemPeriod : action = AddressOf _presenter.StepFrame : name = "step"
+            Case Keys.Oemcomma : action = AddressOf _presenter.StepBackFrame : name = "step back"
+            Case Keys.Right : If Not onSlider Then action = AddressOf _presenter.StepFrame : name = "step"
+            Case Keys.Left : If Not onSlider Then action = AddressOf _presenter.StepBackFrame : name = "step back"
+            Case Keys.Control Or Keys.Right : action = AddressOf _presenter.StepToNextCollision : name = "next collision"
+            Case Keys.Control Or Keys.Left : action = AddressOf _presenter.StepToPreviousCollision : name = "previous collision"
+        End Select
+        If action Is Nothing Then Return False
+        _trace?.Invoke("key " & name)
+        Act(action)
+        Return True
+    End Function
+End Class
