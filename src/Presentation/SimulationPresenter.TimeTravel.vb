@@ -182,7 +182,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 End If
                 Dim hit = _firstCollision.Value
                 If SolverName(World) = "event" AndAlso hit.Time < World.Time Then ShowMoment(hit.Time)
-                ShowStep("next collision " & Log.TotalSeen & " at t=" & Units.Num(hit.Time, 6))
+                ShowStep("next collision")
                 ShowMessage("Collision " & Log.TotalSeen & ": " & PairName(hit) & " at t = " & Units.Sig(hit.Time) & " s.")
             End Sub)
     End Sub
@@ -202,7 +202,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 End If
                 Dim found = last.Value
                 ShowMoment(found.Time)
-                ShowStep("previous collision " & Log.TotalSeen & " at t=" & Units.Num(found.Time, 6))
+                ShowStep("previous collision")
                 ShowMessage("Collision " & Log.TotalSeen & ": " & PairName(found) & " at t = " & Units.Sig(found.Time) & " s.")
             End Sub)
     End Sub
@@ -241,6 +241,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 PauseForStep()
                 ShowMoment(time)
                 ShowStep("rewound")
+                ShowMessage("Back at t = " & Units.Quantity(World.Time, "s") & ". Resume replays the run as it was; any change starts a new one from here.")
             End Sub)
     End Sub
 

@@ -29,7 +29,12 @@ Partial Friend NotInheritable Class MainForm
         ' Every control of the side panel says when it takes the focus, so a test can follow Tab.
         For Each c As Control In _side.Controls
             Dim control = c
-            AddHandler control.GotFocus, Sub(s, e) _trace?.Invoke("focus " & control.Left & " " & (control.Top - _side.AutoScrollPosition.Y) & " " & control.GetType().Name & " " & control.Text)
+            AddHandler control.GotFocus,
+                Sub(s, e)
+                    If _trace Is Nothing Then Return
+                    Dim p = control.PointToScreen(Point.Empty)
+                    _trace("focus " & p.X & " " & p.Y & " " & control.GetType().Name)
+                End Sub
         Next
     End Sub
 
@@ -39,6 +44,25 @@ Partial Friend NotInheritable Class MainForm
         Row(line + S(4), (_timelineLabel, 1.0))
         Row(sliderHeight, (_timeline, 1.0))
         Row(rowHeight + S(2), (_previousCollision, 0.28), (_stepBack, 0.22), (_step, 0.22), (_nextCollision, 0.28))
+    End Sub
+
+    ''' <summary>Tab goes through the side panel as it reads: row by row, left to right (the order the controls were made in is not that).</summary>
+    Private Sub OrderTabsByPlace()
+        ' A text box sits a few pixels lower than the buttons of its row (it is centred in it): controls
+        ' whose tops are that close are one row.
+        Dim byTop = _side.Controls.Cast(Of Control)().OrderBy(Function(c) c.Top).ToList()
+        Dim index = 0, first = 0
+        Do While first < byTop.Count
+            Dim last = first
+            Do While last + 1 < byTop.Count AndAlso byTop(last + 1).Top < byTop(first).Top + S(12)
+                last += 1
+            Loop
+            For Each c In byTop.Skip(first).Take(last - first + 1).OrderBy(Function(x) x.Left)
+                c.TabIndex = index
+                index += 1
+            Next
+            first = last + 1
+        Loop
     End Sub
 
     ''' <summary>The timeline's label and thumb follow the time on show.</summary>
