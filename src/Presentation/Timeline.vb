@@ -16,10 +16,25 @@ Public NotInheritable Class Timeline
     ''' <summary>The most memory the checkpoints may hold, bytes (64 MB).</summary>
     Public Const MaxBytes As Long = 64L * 1024 * 1024
     ''' <summary>
-    ''' Events of the event solver between two checkpoints the run makes of its own accord: replaying
-    ''' from one to any moment before the next then takes at most this many events (well under a second).
+    ''' The fewest events of the event solver between two checkpoints the run makes of its own accord
+    ''' (see <see cref="EventsBetweenCheckpoints"/>).
     ''' </summary>
     Public Const EventsPerCheckpoint As Long = 100000
+    ''' <summary>
+    ''' Events per body between two such checkpoints, when that is more: a checkpoint costs about as much
+    ''' as a few dozen events per body (the scene written out, every prediction made again), so 500
+    ''' keeps recording within a few per cent of the solver's speed.
+    ''' </summary>
+    Public Const EventsPerBodyPerCheckpoint As Long = 500
+
+    ''' <summary>
+    ''' Events between two checkpoints the run makes of its own accord, for a world of
+    ''' <paramref name="bodies"/> bodies: replaying from one to any moment before the next takes at
+    ''' most this many events.
+    ''' </summary>
+    Public Shared Function EventsBetweenCheckpoints(bodies As Integer) As Long
+        Return Math.Max(EventsPerCheckpoint, EventsPerBodyPerCheckpoint * bodies)
+    End Function
     ''' <summary>Simulated seconds between two checkpoints of a stepping solver (which counts no events).</summary>
     Public Const SecondsPerCheckpoint As Double = 2.0
 

@@ -6,7 +6,7 @@ Option Strict On
 ''' resting contacts, sleeping piles), so a state rebuilt from positions and velocities does not in
 ''' general replay to the last bit. The run is therefore made to restart its solver itself, at every
 ''' checkpoint: after any change from outside (a push, a drag, an added body, a new g or e), at every
-''' frame while a body is carried, and every <see cref="Timeline.EventsPerCheckpoint"/> events. A
+''' frame while a body is carried, and every <see cref="Timeline.EventsBetweenCheckpoints"/> events. A
 ''' checkpoint is the world's state at such a restart, and a fresh solver on it does exactly what the
 ''' first one did next.
 ''' </summary>
@@ -102,7 +102,7 @@ Public NotInheritable Class TimelineSolver
         Dim due = _world.DraggedBody IsNot Nothing
         Dim ev = TryCast(_inner, EventDrivenSolver)
         If ev IsNot Nothing Then
-            due = due OrElse ev.EventCount - _eventsAtCheckpoint >= Timeline.EventsPerCheckpoint
+            due = due OrElse ev.EventCount - _eventsAtCheckpoint >= Timeline.EventsBetweenCheckpoints(_world.Bodies.Count)
         Else
             due = due OrElse _world.Time - _timeAtCheckpoint >= Timeline.SecondsPerCheckpoint
         End If
