@@ -38,7 +38,7 @@ Public NotInheritable Class Checkpoint
     ''' <summary>The scene Restart went back to at this moment.</summary>
     Public ReadOnly Property Start As String
 
-    ''' <summary>Whether a body was being carried: between this and the next checkpoint the run depends on the frames, so rewinding stops here.</summary>
+    ''' <summary>Whether a body was being carried: until the next checkpoint the run follows the mouse, which is not kept, so rewinding stops here.</summary>
     Public ReadOnly Property IsCarrying As Boolean
         Get
             Return DraggedId IsNot Nothing

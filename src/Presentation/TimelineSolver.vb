@@ -5,8 +5,8 @@ Option Strict On
 ''' event solver keeps state beyond positions and velocities (predictions made at earlier times,
 ''' resting contacts, sleeping piles), so a state rebuilt from positions and velocities does not in
 ''' general replay to the last bit. The run is therefore made to restart its solver itself, at every
-''' checkpoint: after any change from outside (a push, a drag, an added body, a new g or e), at every
-''' frame while a body is carried, and every <see cref="Timeline.EventsBetweenCheckpoints"/> events. A
+''' checkpoint: after any change from outside (a push, an added body, a new g or e, the start and the
+''' end of a carry), and every <see cref="Timeline.EventsBetweenCheckpoints"/> events. A
 ''' checkpoint is the world's state at such a restart, and a fresh solver on it does exactly what the
 ''' first one did next.
 ''' </summary>
@@ -20,6 +20,8 @@ Public NotInheritable Class TimelineSolver
     Private _pending As Boolean
     Private _eventsAtCheckpoint As Long
     Private _timeAtCheckpoint As Double
+    ''' <summary>The body being carried when the last checkpoint was asked for, or Nothing.</summary>
+    Private _carried As Shape
 
     ''' <param name="inner">the solver that does the work</param>
     ''' <param name="timeline">where checkpoints go; Nothing records nothing (a plain run, for comparisons)</param>
@@ -58,6 +60,7 @@ Public NotInheritable Class TimelineSolver
     Public Sub Attach(world As World) Implements ISolver.Attach
         _world = world
         _inner.Attach(world)
+        _carried = world?.DraggedBody
         _timeAtCheckpoint = If(world Is Nothing, 0, world.Time)
         _eventsAtCheckpoint = Events()
     End Sub
@@ -65,11 +68,20 @@ Public NotInheritable Class TimelineSolver
     ''' <summary>
     ''' A change from outside: the inner solver rebuilds everything at the next advance (not only the
     ''' body changed), so the run restarts there and a checkpoint is taken; the recorded future is ended.
+    ''' A carried body moving on is not a new start: a checkpoint every frame of a carry would fill
+    ''' the memory in seconds in a large scene, so the carry is kept as its two ends (going back into
+    ''' it stops at its start).
     ''' </summary>
     Public Sub Invalidate(body As Shape) Implements ISolver.Invalidate
+        If _world IsNot Nothing AndAlso _timeline IsNot Nothing Then _timeline.Truncate(_world.Time)
+        Dim carried = _world?.DraggedBody
+        If body IsNot Nothing AndAlso body Is carried AndAlso carried Is _carried Then
+            _inner.Invalidate(body)
+            Return
+        End If
+        _carried = carried
         _inner.Invalidate(Nothing)
         _pending = True
-        If _timeline IsNot Nothing AndAlso _world IsNot Nothing Then _timeline.Truncate(_world.Time)
     End Sub
 
     ''' <summary>Takes the checkpoint a change asked for now, if one is waiting (before a step to the next collision, say).</summary>
@@ -99,12 +111,12 @@ Public NotInheritable Class TimelineSolver
             Return
         End If
         If _timeline Is Nothing OrElse _world.Time < _timeline.Latest Then Return ' replaying: the checkpoints ahead exist already
-        Dim due = _world.DraggedBody IsNot Nothing
+        Dim due As Boolean
         Dim ev = TryCast(_inner, EventDrivenSolver)
         If ev IsNot Nothing Then
-            due = due OrElse ev.EventCount - _eventsAtCheckpoint >= Timeline.EventsBetweenCheckpoints(_world.Bodies.Count)
+            due = ev.EventCount - _eventsAtCheckpoint >= Timeline.EventsBetweenCheckpoints(_world.Bodies.Count)
         Else
-            due = due OrElse _world.Time - _timeAtCheckpoint >= Timeline.SecondsPerCheckpoint
+            due = _world.Time - _timeAtCheckpoint >= Timeline.SecondsPerCheckpoint
         End If
         If due Then
             _inner.Invalidate(Nothing)
