@@ -21,13 +21,13 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Const PreviousCollisionKey As String = "Ctrl+←"
 
     ''' <summary>Button captions of the time controls.</summary>
-    Public Const StepBackCaption As String = "◀| Frame"
+    Public Const StepBackCaption As String = "◀|"
     ''' <summary>See <see cref="StepBackCaption"/>.</summary>
-    Public Const StepCaption As String = "Frame |▶"
+    Public Const StepCaption As String = "|▶"
     ''' <summary>See <see cref="StepBackCaption"/>.</summary>
-    Public Const PreviousCollisionCaption As String = "◀◀ Collision"
+    Public Const PreviousCollisionCaption As String = "◀◀"
     ''' <summary>See <see cref="StepBackCaption"/>.</summary>
-    Public Const NextCollisionCaption As String = "Collision ▶▶"
+    Public Const NextCollisionCaption As String = "▶▶"
 
     ''' <summary>The time controls' keys, as the tutorial lists them beside the others.</summary>
     Public Const TimeKeysText As String = StepKey & " steps one frame on, " & StepBackKey & " one frame back, " & NextCollisionKey & " goes on to the next collision, " &
@@ -35,10 +35,11 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The tutorial's page on the time controls: stepping, going back, and what is kept.</summary>
     Public Shared ReadOnly Property TimeTravelHelp As New HelpTopic("7. Stepping and going back in time",
-        "Frame |▶ (" & StepKey & ") pauses and moves time on by one frame, 1/60 s. ◀| Frame (" & StepBackKey & ") goes one frame back." & vbLf & "" & vbLf &
-        "Collision ▶▶ (" & NextCollisionKey & ") runs on to the next collision and stops just after it: its impulse has been given, and the message says which collision it was and when. The exact solver knows the time of every collision, so this is the very instant of contact, not the end of a frame. It looks at most 10 s ahead. ◀◀ Collision (" & PreviousCollisionKey & ") goes back to the last collision before now." & vbLf & "" & vbLf &
+        "The last row of the panel is a player: ◀◀ ◀| Timeline |▶ ▶▶." & vbLf & "" & vbLf &
+        "|▶ (" & StepKey & ") pauses and moves time on by one frame, 1/60 s. ◀| (" & StepBackKey & ") goes one frame back." & vbLf & "" & vbLf &
+        "▶▶ (" & NextCollisionKey & ") runs on to the next collision and stops just after it: its impulse has been given, and the message says which collision it was and when. The exact solver knows the time of every collision, so this is the very instant of contact, not the end of a frame. It looks at most 10 s ahead. ◀◀ (" & PreviousCollisionKey & ") goes back to the last collision before now." & vbLf & "" & vbLf &
         "The Timeline slider takes you to any earlier moment of the run, at any restitution and gravity, and forward again up to the latest moment reached. Resume then replays the run exactly as it happened, to the last digit: every push, drag and change of g or e is part of it. Anything you change after going back (a push, a drag, a new body, a new g or e) starts a new run from there, and what came after is forgotten, like typing after Undo." & vbLf & "" & vbLf &
-        "What is kept: the run is recorded as checkpoints, one at every change you make (a carry counts as two: where it starts and where you let go), and one after every 500 events of the solver per body (collisions and the like; at least 100 000). At most " & Timeline.MaxCheckpoints.ToString(Globalization.CultureInfo.InvariantCulture) & " checkpoints and 64 MB are kept (for the benchmark's gas of 1000 balls, about an hour of running). When either limit is reached the oldest checkpoint is dropped, and the left end of the timeline moves on: the label under the slider says which stretch of time is kept." & vbLf & "" & vbLf &
+        "What is kept: the run is recorded as checkpoints, one at every change you make (a carry counts as two: where it starts and where you let go), and one after every 500 events of the solver per body (collisions and the like; at least 100 000). At most " & Timeline.MaxCheckpoints.ToString(Globalization.CultureInfo.InvariantCulture) & " checkpoints and 64 MB are kept (for the benchmark's gas of 1000 balls, about an hour of running). When either limit is reached the oldest checkpoint is dropped, and the left end of the timeline moves on: the slider's tip, and the message after going back, say which stretch of time is kept." & vbLf & "" & vbLf &
         "While you carry a body the run follows every movement of the mouse, which is not kept: going back to a moment during a carry stops where the carry began, and a replay shows the carried body only from where you let it go. Going back is exact with the exact solver; a scene that runs with the Verlet solver (chains of links) replays with its fixed time step.")
 
     Private _timeline As Timeline
@@ -253,7 +254,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 PauseForStep()
                 ShowMoment(time)
                 ShowStep("rewound")
-                ShowMessage("Back at t = " & Units.Quantity(World.Time, "s") & ". Resume replays the run as it was; any change starts a new one from here.")
+                ShowMessage("Back at t = " & Units.Quantity(World.Time, "s") & " (kept: " & Units.Sig(_timeline.Earliest) & " to " & Units.Quantity(_timeline.Latest, "s") & "). Resume replays the run as it was; any change starts a new one from here.")
             End Sub)
     End Sub
 
@@ -302,7 +303,7 @@ Partial Public NotInheritable Class SimulationPresenter
         End Get
     End Property
 
-    ''' <summary>"Timeline: t = 3.20 s of 0 – 12.0 s".</summary>
+    ''' <summary>"Timeline: t = 3.20 s (kept 0 – 12.0 s)": the slider's tip.</summary>
     Public ReadOnly Property TimelineText As String
         Get
             Return "Timeline: t = " & Units.Quantity(World.Time, "s") & " (kept " & Units.Sig(_timeline.Earliest) & " – " & Units.Quantity(_timeline.Latest, "s") & ")"

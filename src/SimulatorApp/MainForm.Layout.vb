@@ -147,7 +147,7 @@ Partial Friend NotInheritable Class MainForm
             Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
             Row(rh + S(2), (_open, 0.5), (_save, 0.5))
         End If
-        ArrangeTimeControls(rh, line, sliderHeight)
+        ArrangeTimeControls(line)
         OrderTabsByPlace()
         _side.ResumeLayout(True)
         _side.AutoScrollPosition = New Point(0, -scrolled.Y)

@@ -10,11 +10,9 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _step As New Button()
     Private ReadOnly _previousCollision As New Button()
     Private ReadOnly _nextCollision As New Button()
-    Private ReadOnly _timelineLabel As New Label()
     Private ReadOnly _timeline As New TrackBar()
 
     Private Sub BuildTimeControls()
-        AddLabel(_timelineLabel, "")
         AddButton(_previousCollision, SimulationPresenter.PreviousCollisionCaption, Sub() _presenter.StepToPreviousCollision())
         AddButton(_stepBack, SimulationPresenter.StepBackCaption, Sub() _presenter.StepBackFrame())
         AddButton(_step, SimulationPresenter.StepCaption, Sub() _presenter.StepFrame())
@@ -38,12 +36,15 @@ Partial Friend NotInheritable Class MainForm
         Next
     End Sub
 
-    ''' <summary>The time controls' rows, after the Tutorial/Open/Save rows.</summary>
-    Private Sub ArrangeTimeControls(rowHeight As Integer, line As Integer, sliderHeight As Integer)
-        Gap()
-        Row(line + S(4), (_timelineLabel, 1.0))
-        Row(sliderHeight, (_timeline, 1.0))
-        Row(rowHeight + S(2), (_previousCollision, 0.28), (_stepBack, 0.22), (_step, 0.22), (_nextCollision, 0.28))
+    ''' <summary>
+    ''' The time controls' row, after the Tutorial/Open/Save rows: the timeline between the steps back
+    ''' and the steps on, like a player's. One row, so the panel still fits a 1280 × 720 screen; the
+    ''' time is on the totals line, and the stretch kept in the slider's tip and the messages.
+    ''' </summary>
+    Private Sub ArrangeTimeControls(line As Integer)
+        ' A line of text and a margin: at 192 dpi Mono's buttons ask for more (see ArrangeControls), which
+        ' the panel has no room for; these captions are single symbols, centred in what there is.
+        Row(Math.Max(S(26), line + S(9)), (_previousCollision, 0.11), (_stepBack, 0.1), (_timeline, 0.58), (_step, 0.1), (_nextCollision, 0.11))
     End Sub
 
     ''' <summary>Tab goes through the side panel as it reads: row by row, left to right (the order the controls were made in is not that).</summary>
@@ -67,7 +68,7 @@ Partial Friend NotInheritable Class MainForm
 
     ''' <summary>The timeline's label and thumb follow the time on show.</summary>
     Private Sub ShowTimeline()
-        _timelineLabel.Text = _presenter.TimelineText
+        _tips.SetToolTip(_timeline, _presenter.TimelineText)
         Dim wanted = _presenter.TimelinePosition
         If _timeline.Value <> wanted AndAlso Not _timeline.Capture Then
             Dim was = _updating
@@ -79,7 +80,7 @@ Partial Friend NotInheritable Class MainForm
 
     ''' <summary>The time controls, by the names the --trace layout gives them.</summary>
     Private Function TimeControls() As IEnumerable(Of (Name As String, Control As Control))
-        Return {("timeline-label", CType(_timelineLabel, Control)), ("timeline", CType(_timeline, Control)),
+        Return {("timeline", CType(_timeline, Control)),
                 ("previous-collision", CType(_previousCollision, Control)), ("step-back", CType(_stepBack, Control)),
                 ("step", CType(_step, Control)), ("next-collision", CType(_nextCollision, Control))}
     End Function
