@@ -112,6 +112,8 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim w = Timeline.Build(point)
         Dim resized = w.Width <> World.Width OrElse w.Height <> World.Height
         UseTimeline(w, SolverFactory.Create(point.SolverName), restartFirst:=False)
+        ' A cue being aimed while the run replays keeps aiming at the same body of the new world.
+        If _AimedBody IsNot Nothing Then _AimedBody = w.Find(_AimedBody.Id)
         _World = w
         Log.ContinueFrom(point.Collisions)
         If point.Start IsNot Nothing Then _start = point.Start
@@ -141,7 +143,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Sub AdvanceExactly(seconds As Double)
         Dim target = World.Time + seconds
         Do While World.Time < target
-            AdvanceOnTimeline(ExactClock.DurationTo(World.Time, target), Double.MaxValue)
+            ' Through the frame's own path, so a scene the event solver cannot move falls back to Verlet here too.
+            AdvanceOrFallBack(ExactClock.DurationTo(World.Time, target))
         Loop
         Log.EndFrame()
     End Sub
