@@ -38,7 +38,7 @@ Friend Module RecordingOverhead
         Dim costs As New List(Of Double)
         For k = 1 To times
             Dim clock = Diagnostics.Stopwatch.StartNew()
-            Dim point = Timeline.Take(w, "event", 0, Nothing)
+            Dim point = Timeline.Take(w, "event", 0)
             solver.Invalidate(Nothing)
             w.Advance(1.0E-9) ' the rebuild comes with the next advance; a nanosecond holds almost no events
             clock.Stop()
@@ -55,7 +55,7 @@ Friend Module RecordingOverhead
         If timeline Is Nothing Then
             w.Solver = solver
         Else
-            w.Solver = New TimelineSolver(solver, timeline, Function(x) Timeline.Take(x, "event", 0, Nothing), restartFirst:=True)
+            w.Solver = New TimelineSolver(solver, timeline, Function(x) Timeline.Take(x, "event", 0), restartFirst:=True)
         End If
         Dim frames = CInt(Math.Round(seconds * 60))
         Dim clock = Diagnostics.Stopwatch.StartNew()

@@ -12,15 +12,13 @@ Public NotInheritable Class Checkpoint
     ''' <param name="draggedId">the body carried by the engine here, or Nothing</param>
     ''' <param name="dragTarget">where that body was heading, m</param>
     ''' <param name="collisions">collisions counted since the run started, up to here</param>
-    ''' <param name="start">the scene Restart went back to at this moment (Nothing: none)</param>
-    Public Sub New(time As Double, scene As String, solverName As String, draggedId As String, dragTarget As Vector, collisions As Long, start As String)
+    Public Sub New(time As Double, scene As String, solverName As String, draggedId As String, dragTarget As Vector, collisions As Long)
         Me.Time = time
         Me.Scene = scene
         Me.SolverName = solverName
         Me.DraggedId = draggedId
         Me.DragTarget = dragTarget
         Me.Collisions = collisions
-        Me.Start = start
     End Sub
 
     ''' <summary>Simulated time, s.</summary>
@@ -35,8 +33,6 @@ Public NotInheritable Class Checkpoint
     Public ReadOnly Property DragTarget As Vector
     ''' <summary>Collisions counted since the run started.</summary>
     Public ReadOnly Property Collisions As Long
-    ''' <summary>The scene Restart went back to at this moment.</summary>
-    Public ReadOnly Property Start As String
 
     ''' <summary>Whether a body was being carried: until the next checkpoint the run follows the mouse, which is not kept, so rewinding stops here.</summary>
     Public ReadOnly Property IsCarrying As Boolean
@@ -45,7 +41,7 @@ Public NotInheritable Class Checkpoint
         End Get
     End Property
 
-    ''' <summary>Memory it holds, bytes: two per character of its scene, plus the object (the start text is shared with Restart's).</summary>
+    ''' <summary>Memory it holds, bytes: two per character of its scene, plus the object.</summary>
     Public ReadOnly Property Bytes As Long
         Get
             Return 2L * If(Scene, "").Length + 64

@@ -72,7 +72,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Function Describe(w As World) As Checkpoint
         Try
-            Return Timeline.Take(w, SolverName(w), Log.TotalSeen, _start)
+            Return Timeline.Take(w, SolverName(w), Log.TotalSeen)
         Catch ex As Exception When TypeOf ex Is Scenes.SceneFormatException OrElse TypeOf ex Is ArgumentException OrElse TypeOf ex Is InvalidOperationException
             Emit("checkpoint failed: " & OneLine(ex.Message))
             Return Nothing
@@ -107,7 +107,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Return World.AdvanceWithin(seconds, wallSeconds)
     End Function
 
-    ''' <summary>Puts the world of a checkpoint on show (the clock, the collision count and Restart's start with it).</summary>
+    ''' <summary>Puts the world of a checkpoint on show, with its clock and collision count.</summary>
     Private Sub Take(point As Checkpoint)
         Dim w = Timeline.Build(point)
         Dim resized = w.Width <> World.Width OrElse w.Height <> World.Height
@@ -116,8 +116,7 @@ Partial Public NotInheritable Class SimulationPresenter
         If _AimedBody IsNot Nothing Then _AimedBody = w.Find(_AimedBody.Id)
         _World = w
         Log.ContinueFrom(point.Collisions)
-        If point.Start IsNot Nothing Then _start = point.Start
-        ' Rewinding is not building: Restart keeps the start it had.
+        ' Going back is not building: Restart keeps the start it had.
         _startBodies = w.Bodies.ToArray()
         _startWidth = w.Width
         _startHeight = w.Height

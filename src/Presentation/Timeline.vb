@@ -141,9 +141,9 @@ Public NotInheritable Class Timeline
     End Function
 
     ''' <summary>Takes a checkpoint of <paramref name="world"/> as it is now.</summary>
-    Public Shared Function Take(world As World, solverName As String, collisions As Long, start As String) As Checkpoint
+    Public Shared Function Take(world As World, solverName As String, collisions As Long) As Checkpoint
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
         Dim dragged = world.DraggedBody
-        Return New Checkpoint(world.Time, Scenes.SceneFile.Save(world), solverName, dragged?.Id, world.DragTarget, collisions, start)
+        Return New Checkpoint(world.Time, Scenes.SceneFile.Save(world), solverName, dragged?.Id, world.DragTarget, collisions)
     End Function
 End Class

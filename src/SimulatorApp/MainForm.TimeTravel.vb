@@ -11,6 +11,7 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _previousCollision As New Button()
     Private ReadOnly _nextCollision As New Button()
     Private ReadOnly _timeline As New TrackBar()
+    Private _timelineTip As String = ""
 
     Private Sub BuildTimeControls()
         AddButton(_previousCollision, SimulationPresenter.PreviousCollisionCaption, Sub() _presenter.StepToPreviousCollision())
@@ -68,7 +69,11 @@ Partial Friend NotInheritable Class MainForm
 
     ''' <summary>The timeline's label and thumb follow the time on show.</summary>
     Private Sub ShowTimeline()
-        _tips.SetToolTip(_timeline, _presenter.TimelineText)
+        Dim tip = _presenter.TimelineText
+        If tip <> _timelineTip Then
+            _timelineTip = tip
+            _tips.SetToolTip(_timeline, tip)
+        End If
         Dim wanted = _presenter.TimelinePosition
         If _timeline.Value <> wanted AndAlso Not _timeline.Capture Then
             Dim was = _updating

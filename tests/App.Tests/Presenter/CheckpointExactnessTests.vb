@@ -30,7 +30,7 @@ Public Class CheckpointExactnessTests
         For k = 1 To 60
             original.Advance(1 / 60.0)
         Next
-        Dim midway = Timeline.Take(original, "event", 0, Nothing)
+        Dim midway = Timeline.Take(original, "event", 0)
         original.Advance(3.0)
 
         ' A copy of the positions and velocities at 1 s, with a fresh solver: not the same run.
@@ -46,7 +46,7 @@ Public Class CheckpointExactnessTests
         For k = 1 To 60
             restarted.Advance(1 / 60.0)
         Next
-        Dim point = Timeline.Take(restarted, "event", 0, Nothing)
+        Dim point = Timeline.Take(restarted, "event", 0)
         restarted.Solver.Invalidate(Nothing)
         restarted.Advance(3.0)
         Dim replayed = Timeline.Build(point)

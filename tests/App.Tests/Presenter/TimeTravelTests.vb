@@ -13,13 +13,13 @@ Public Class TimeTravelTests
 
     ''' <summary>Twelve balls in a 6 m × 4 m box under gravity, at e = 0.9: a run with many collisions and bounces.</summary>
     Private Shared Function BouncyHarness() As PresenterHarness
-        Dim h As New PresenterHarness(New World(6.0, 4.0, 9.81, 0.9))
+        Dim w As New World(6.0, 4.0, 9.81, 0.9)
         Dim rng As New Random(7)
         For i = 0 To 11
-            Dim c As New Circle(New Vector(0.5 + (i Mod 6) * 0.95, 1.0 + (i \ 6) * 1.2), 0.2, 1.0 + (i Mod 3), New Vector(rng.NextDouble() * 6 - 3, rng.NextDouble() * 6 - 3), "b" & i)
-            h.P.World.Add(c)
+            w.Add(New Circle(New Vector(0.5 + (i Mod 6) * 0.95, 1.0 + (i \ 6) * 1.2), 0.2, 1.0 + (i Mod 3), New Vector(rng.NextDouble() * 6 - 3, rng.NextDouble() * 6 - 3), "b" & i))
         Next
-        Return h
+        ' Given to the presenter as the scene it opens: that is the start Restart goes back to.
+        Return New PresenterHarness(w)
     End Function
 
     <Fact>
@@ -199,6 +199,26 @@ Public Class TimeTravelTests
         h.P.StepFrame()
         Assert.Equal(1.62, h.P.World.Gravity)
         Assert.True(h.P.Timeline.Latest > t)
+    End Sub
+
+    <Fact>
+    Public Sub GoingBack_IsNotBuilding_RestartStillGoesToTheStart()
+        Dim h = BouncyHarness()
+        h.P.Tick(1 / 60.0)
+        Dim start = h.P.Timeline.Points(0)
+        Dim startState = State(Timeline.Build(start))
+        For k = 1 To 60
+            h.P.Tick(1 / 60.0)
+        Next
+        Dim kept = h.TraceLines.Where(Function(l) l.StartsWith("start kept", StringComparison.Ordinal)).Count()
+        h.P.RewindTo(0.5)
+        h.P.StepBackFrame()
+        Assert.Equal(kept, h.TraceLines.Where(Function(l) l.StartsWith("start kept", StringComparison.Ordinal)).Count())
+        h.P.Restart()
+        Assert.Equal(0.0, h.P.World.Time)
+        Assert.Equal(startState, State(h.P.World))
+        ' Restart begins a new run: its timeline starts empty.
+        Assert.Empty(h.P.Timeline.Points)
     End Sub
 
     <Fact>
