@@ -61,7 +61,7 @@ Public NotInheritable Class Program
         End If
 
         Console.Out.WriteLine("recording for rewind: the 1000-ball gas with and without it")
-        Dim recording = RecordingOverhead.Measure(seconds:=If(options.Quick, 20, 60), repeats:=If(options.Quick, 3, 5))
+        Dim recording = RecordingOverhead.Measure(seconds:=If(options.Quick, 30, 60), repeats:=If(options.Quick, 3, 5))
         Console.Out.WriteLine("  overhead " & (100 * recording.Overhead).ToString("0.0", CultureInfo.InvariantCulture) & " % (from its parts " & (100 * recording.OverheadFromParts).ToString("0.0", CultureInfo.InvariantCulture) & " %), " & recording.Checkpoints & " checkpoints")
         WriteOutputs(options, machine, scenes, results, frame, recording)
         Console.Out.WriteLine("benchmarks: done in " & clock.Elapsed.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s; wrote " &

@@ -95,10 +95,15 @@ Public Class TimeTravelGuiTests
             Dim ends = Regex.Match(line, "timeline (\S+) to (\S+) s")
             Assert.InRange(latest.Time - Double.Parse(ends.Groups(2).Value, CultureInfo.InvariantCulture), -2.0E-6, 2.0E-6)
             Assert.True(latest.Time >= hit.Time)
-            ' Back one collision from there: the collision the step found, to the last bit.
-            from = app.Mark()
-            app.Click("previous-collision")
-            Dim again = StateAfter(app, "^previous collision t=", from)
+            ' Back collision by collision from there (the step looked a frame past the one it found, and
+            ' may have seen another): the collision the step found again, to the last bit.
+            Dim again = latest
+            For k = 1 To 5
+                from = app.Mark()
+                app.Click("previous-collision")
+                again = StateAfter(app, "^previous collision t=", from)
+                If again.Time <= hit.Time + 2.0E-6 Then Exit For
+            Next
             Assert.InRange(again.Time - hit.Time, -2.0E-6, 2.0E-6)
             Assert.Equal(hit.Collisions, again.Collisions)
             AssertSame(hit.Bodies, again.Bodies, 0.0, "the collision found again")
