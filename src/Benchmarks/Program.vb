@@ -60,7 +60,10 @@ Public NotInheritable Class Program
             Console.Out.WriteLine("  " & If(frame.Ran, "step " & NumberText.Fixed2(frame.StepMs) & " ms + paint " & NumberText.Fixed2(frame.PaintMs) & " ms", "skipped: " & frame.Note))
         End If
 
-        WriteOutputs(options, machine, scenes, results, frame)
+        Console.Out.WriteLine("recording for rewind: the 1000-ball gas with and without it")
+        Dim recording = RecordingOverhead.Measure(seconds:=If(options.Quick, 30, 60), repeats:=If(options.Quick, 3, 5))
+        Console.Out.WriteLine("  overhead " & (100 * recording.Overhead).ToString("0.0", CultureInfo.InvariantCulture) & " % (from its parts " & (100 * recording.OverheadFromParts).ToString("0.0", CultureInfo.InvariantCulture) & " %), " & recording.Checkpoints & " checkpoints")
+        WriteOutputs(options, machine, scenes, results, frame, recording)
         Console.Out.WriteLine("benchmarks: done in " & clock.Elapsed.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s; wrote " &
                               Path.Combine(options.OutDir, "benchmarks.md") & If(options.JsonPath Is Nothing, "", " and " & options.JsonPath))
         Return 0
@@ -236,13 +239,13 @@ Public NotInheritable Class Program
         Return 0
     End Function
 
-    Private Shared Sub WriteOutputs(options As BenchmarkOptions, machine As MachineInfo, scenes As List(Of IBenchScene), results As List(Of BenchResult), frame As FrameResult)
+    Private Shared Sub WriteOutputs(options As BenchmarkOptions, machine As MachineInfo, scenes As List(Of IBenchScene), results As List(Of BenchResult), frame As FrameResult, recording As RecordingResult)
         Directory.CreateDirectory(options.OutDir)
         Dim mode = If(options.Quick, "quick", "full")
         For Each kv In MarkdownReport.Plots(scenes, results)
             WriteAtomically(Path.Combine(options.OutDir, kv.Key), kv.Value)
         Next
-        WriteAtomically(Path.Combine(options.OutDir, "benchmarks.md"), MarkdownReport.Render(machine, mode, options.Repeats, scenes, results, frame))
+        WriteAtomically(Path.Combine(options.OutDir, "benchmarks.md"), MarkdownReport.Render(machine, mode, options.Repeats, scenes, results, frame) & ControlChars.Lf & RecordingOverhead.Section(recording))
         If options.ReadmePath IsNot Nothing Then CopyFiguresToReadme(options)
         If options.JsonPath IsNot Nothing Then
             Dim dir = Path.GetDirectoryName(Path.GetFullPath(options.JsonPath))

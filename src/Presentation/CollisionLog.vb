@@ -79,6 +79,12 @@ Public NotInheritable Class CollisionLog
         _Version += 1
     End Sub
 
+    ''' <summary>Empties the rows and goes on counting from <paramref name="total"/> collisions (a run taken up again at a recorded moment).</summary>
+    Public Sub ContinueFrom(total As Long)
+        Clear()
+        _TotalSeen = total
+    End Sub
+
     Private Sub Push(entry As CollisionLogEntry)
         _rows.Add(entry)
         If _rows.Count > Capacity Then _rows.RemoveAt(0)

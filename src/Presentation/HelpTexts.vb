@@ -15,7 +15,7 @@ Public Module HelpTexts
         New HelpTopic("5. Limits of the model",
             "Balls are perfectly smooth, rigid discs: they do not spin and there is no friction, so a ball rolling on a table never slows down except through collisions." & vbLf & "" & vbLf & "One coefficient of restitution e is used for every contact. Real pairs of materials each have their own." & vbLf & "" & vbLf & "Rectangles, boxes and polygons never rotate. Fixed balls and rectangles do not collide with each other, so you can build shapes from them." & vbLf & "" & vbLf & "There is no air resistance, and gravity is uniform (the same everywhere in the box)." & vbLf & "" & vbLf & "Collisions are instantaneous. Several balls touching at once are handled one pair at a time, in a definite order." & vbLf & "" & vbLf & "Numbers are shown to 3 significant figures (with a power of ten when very large or small); the simulation itself keeps full precision."),
         SimulationPresenter.LessonsHelp,
-        SimulationPresenter.GraphsHelp, SimulationPresenter.MomentumHelp}
+        SimulationPresenter.GraphsHelp, SimulationPresenter.MomentumHelp, SimulationPresenter.TimeTravelHelp}
 
     ''' <summary>The equations the engine uses, with their reasoning.</summary>
     Public ReadOnly Property Maths As IReadOnlyList(Of HelpTopic)

@@ -21,7 +21,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Shared ReadOnly Property LessonsHelp As New HelpTopic("6. Lesson scenes, Restart and keys",
         "Scenes (" & ScenesKey & ") lists ready-made lessons: head-on collisions, a glancing blow, Newton's cradle, a pool break, a bouncing ball, π from collisions, an ideal gas, a settling pile and more. One click on a lesson opens it, and the message box says what it shows. The lessons are the scene files in the scenes folder beside the app; a file you save there appears in the list too (its title comes from lessons.txt in that folder, else from the file's name)." & vbLf & "" & vbLf &
         "Restart (" & RestartKey & ") puts every body back where it was, with its velocity, when the scene was opened or last built (a body added or deleted, a fixed body moved, the container resized), and sets the clock and the collision count to 0. Gravity, restitution and speed stay as you set them, so you can run the same start again on the Moon or with e = 0.5. Reset (" & ResetKey & ") still removes every body." & vbLf & "" & vbLf &
-        "Keys: " & PauseKey & " pauses and resumes, " & RestartKey & " restarts, " & ResetKey & " resets, " & ScenesKey & " opens the Scenes menu, Esc drops a body you are placing." & vbLf & "" & vbLf &
+        "Keys: " & PauseKey & " pauses and resumes, " & RestartKey & " restarts, " & ResetKey & " resets, " & ScenesKey & " opens the Scenes menu, Esc drops a body you are placing; " & TimeKeysText & "." & vbLf & "" & vbLf &
         "A scene file opened with the app (double-clicked, or given on the command line) opens at the start. A file that cannot be opened leaves an empty box and a message saying why.")
 
     Private _start As String

@@ -160,13 +160,13 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' </summary>
     Private Function AdvanceOrFallBack(seconds As Double) As Double
         Try
-            Return World.AdvanceWithin(seconds, FrameBudgetSeconds)
+            Return AdvanceOnTimeline(seconds, FrameBudgetSeconds)
         Catch ex As UnsupportedSceneException
-            World.Solver = SolverFactory.Create("verlet")
+            World.Solver = Recording(SolverFactory.Create("verlet"))
             ShowMessage(OneLine(ex.Message) & " This scene now runs with the Verlet solver (fixed time step " &
                         Units.Sig(World.Solver.TimeStep.GetValueOrDefault() * 1000) & " ms), which is not exact.")
             Trace?.Invoke("solver verlet: " & OneLine(ex.Message))
-            Return World.AdvanceWithin(seconds, FrameBudgetSeconds)
+            Return AdvanceOnTimeline(seconds, FrameBudgetSeconds)
         End Try
     End Function
 
@@ -555,16 +555,11 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Makes <paramref name="w"/> the world on show: solver, collision log, colours, view, tables.</summary>
     Private Sub Attach(w As World)
-        w.Solver = SolverFactory.Create("auto")
+        StartTimeline(w, SolverFactory.Create("auto"))
         For Each b In w.Bodies
             ' A body without a colour in its file gets the same one every time: it follows from the id.
             If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
         Next
-        w.CollisionListener = Sub(r)
-                                  Log.Record(r, w.DraggedBody)
-                                  GraphCollision(r)
-                                  NoteImpulses(r)
-                              End Sub
         ForgetMomentumViews()
         _World = w
         Log.Clear()

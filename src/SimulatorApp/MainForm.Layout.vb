@@ -148,7 +148,9 @@ Partial Friend NotInheritable Class MainForm
             Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
             Row(rh + S(2), (_open, 0.5), (_save, 0.5))
         End If
+        ArrangeTimeControls(line)
         ArrangeMomentumControls(rh, pairs)
+        OrderTabsByPlace()
         _side.ResumeLayout(True)
         _side.AutoScrollPosition = New Point(0, -scrolled.Y)
         ShowState()
@@ -277,6 +279,7 @@ Partial Friend NotInheritable Class MainForm
         named.AddRange(LessonControls())
         named.AddRange(GraphControls())
         named.AddRange(MomentumControls())
+        named.AddRange(TimeControls())
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).

@@ -134,6 +134,7 @@ Partial Friend NotInheritable Class MainForm
                 ShowLessonMenu()
                 Return True
         End Select
+        If ProcessTimeKey(keyData) Then Return True
         Return MyBase.ProcessCmdKey(msg, keyData)
     End Function
 End Class

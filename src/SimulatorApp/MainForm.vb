@@ -229,6 +229,7 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_save, Captions.SaveScene, AddressOf OnSave)
         BuildMomentumControls()
         BuildEditingControls()
+        BuildTimeControls()
     End Sub
 
     Private Sub AddTab(title As String, list As BufferedListView)
@@ -560,6 +561,7 @@ Partial Friend NotInheritable Class MainForm
 
     Public Sub ShowState() Implements ISimulationView.ShowState
         If _presenter Is Nothing Then Return
+        ShowTimeline()
         Dim snap = _presenter.Snapshot
         ' Only the table on show is sized and repainted; the others when their tab is chosen.
         Dim shown = _tabs.SelectedIndex

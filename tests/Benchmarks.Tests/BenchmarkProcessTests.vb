@@ -46,6 +46,7 @@ Public Class BenchmarkProcessTests
             Assert.Contains("| euler | 1/60 |", md)
             Assert.Contains("| no-such-solver | — | — | — | — | not available in this build", md)
             Assert.Contains("## Scaling: elastic gas at packing fraction 0.1", md)
+            Assert.Contains("## Recording for rewind (the app)", md)
             Assert.False(File.Exists(Path.Combine(dir, "benchmarks.md.tmp")), "no temporary file is left behind")
 
             Dim svg = XDocument.Load(Path.Combine(dir, "benchmark-projectile.svg"))
