@@ -213,6 +213,98 @@ Public Module Scenarios
         Return w
     End Function
 
+    ''' <summary>
+    ''' A Galton board: <paramref name="balls"/> balls (radius 12.5 mm, 10 g) wait in rows on shelves
+    ''' that slope 0.25° towards the middle, two columns of them one above another. All slide at the
+    ''' same g sin θ, so they never touch, and drop off each shelf's end one after another into a funnel
+    ''' and a chute above <paramref name="rows"/> staggered rows of fixed pegs (radius 10 mm, 87.5 mm
+    ''' apart) between two side walls <paramref name="columns"/> peg spacings apart, with a bin under
+    ''' each gap of the last row. e = 0.5. Each row sends a ball half a spacing left or right, so the
+    ''' bins fill to a binomial (bell) shape.
+    ''' </summary>
+    Public Function GaltonBoard(Optional balls As Integer = 240, Optional rows As Integer = 12, Optional columns As Integer = 20,
+                                Optional shelves As Integer = 8) As World
+        If balls < 1 Then Throw New ArgumentOutOfRangeException(NameOf(balls))
+        If rows < 1 Then Throw New ArgumentOutOfRangeException(NameOf(rows))
+        If columns < 2 Then Throw New ArgumentOutOfRangeException(NameOf(columns))
+        If shelves < 2 OrElse shelves Mod 2 <> 0 Then Throw New ArgumentOutOfRangeException(NameOf(shelves), "an even number of shelves, 2 or more")
+        Const r = 0.0125, pegRadius = 0.01, spacing = 0.0875, mass = 0.01
+        Const ballGap = 2.6 * r           ' centre to centre along a shelf, m
+        Const binTop = 0.375, chuteHalf = 0.0625, levelGap = 0.2
+        Const Wall = "#546e7a"
+        Dim slope = 0.25 * Math.PI / 180
+        Dim rowGap = spacing * 0.866
+        Dim perShelf = (balls + shelves - 1) \ shelves
+        Dim shelfLength = perShelf * ballGap + 0.125
+        Dim levels = shelves \ 2
+        Dim boardWidth = columns * spacing
+        Dim width = Math.Max(boardWidth, 2 * (shelfLength * Math.Cos(slope) + 0.0375 + 0.05 * (levels - 1)) + 0.125)
+        Dim cx = width / 2
+        Dim left = cx - boardWidth / 2, right = cx + boardWidth / 2
+        Dim lastRow = binTop + 0.5 * rowGap + 0.0375
+        Dim topRow = lastRow + (rows - 1) * rowGap
+        Dim chuteBottom = topRow + 0.0625, chuteTop = chuteBottom + 0.3125
+        Dim funnelTop = chuteTop + 0.375
+        Dim top = funnelTop
+        Dim shelfEnds As New List(Of (Start As Vector, Finish As Vector, Side As Integer))
+        For s = 0 To shelves - 1
+            Dim side = If(s Mod 2 = 0, -1, 1)
+            Dim level = s \ 2
+            Dim yEnd = funnelTop + 0.0625 + level * levelGap + If(side > 0, 0.0375, 0)
+            Dim xEnd = cx + side * (0.0375 + 0.05 * (levels - 1 - level))
+            Dim start = New Vector(xEnd + side * shelfLength * Math.Cos(slope), yEnd + shelfLength * Math.Sin(slope))
+            shelfEnds.Add((start, New Vector(xEnd, yEnd), side))
+            top = Math.Max(top, start.Y + 0.0625)
+        Next
+        Dim w As New World(width, top + 0.0625, 9.81, 0.5)
+        w.Add(New Segment(New Vector(left, 0), New Vector(left, chuteTop), "side-left") With {.Color = Wall})
+        w.Add(New Segment(New Vector(right, 0), New Vector(right, chuteTop), "side-right") With {.Color = Wall})
+        Dim x = cx - spacing / 2
+        While x > left + spacing
+            x -= spacing
+        End While
+        Dim bin = 0
+        While x < right - r
+            bin += 1
+            w.Add(New Rectangle(New Vector(x - 0.005, 0), 0.01, binTop, "bin" & bin) With {.Color = "#78909c"})
+            x += spacing
+        End While
+        Dim peg = 0
+        For k = 0 To rows - 1
+            Dim y = lastRow + (rows - 1 - k) * rowGap
+            Dim offset = If(k Mod 2 = 0, 0.0, spacing / 2)
+            For j = -columns To columns
+                Dim px = cx + offset + j * spacing
+                If px < left + pegRadius + 0.01875 OrElse px > right - pegRadius - 0.01875 Then Continue For
+                peg += 1
+                Dim pin = Circle.CreateFixed(New Vector(px, y), pegRadius, "peg" & peg)
+                pin.Color = "#455a64"
+                w.Add(pin)
+            Next
+        Next
+        w.Add(New Segment(New Vector(cx - chuteHalf, chuteBottom), New Vector(cx - chuteHalf, chuteTop), "chute-left") With {.Color = Wall})
+        w.Add(New Segment(New Vector(cx + chuteHalf, chuteBottom), New Vector(cx + chuteHalf, chuteTop), "chute-right") With {.Color = Wall})
+        w.Add(New Segment(New Vector(cx - 0.5, funnelTop), New Vector(cx - chuteHalf, chuteTop), "funnel-left") With {.Color = Wall})
+        w.Add(New Segment(New Vector(cx + chuteHalf, chuteTop), New Vector(cx + 0.5, funnelTop), "funnel-right") With {.Color = Wall})
+        Dim colours = {"#e53935", "#1e88e5", "#43a047", "#fb8c00", "#8e24aa"}
+        Dim placed = 0
+        For s = 0 To shelves - 1
+            Dim shelf = shelfEnds(s)
+            w.Add(New Segment(shelf.Start, shelf.Finish, "shelf" & (s + 1)) With {.Color = Wall})
+            Dim down = New Vector(-shelf.Side * Math.Cos(slope), -Math.Sin(slope))
+            Dim up = New Vector(-down.Y, down.X)
+            If up.Y < 0 Then up = -1 * up
+            For k = 0 To perShelf - 1
+                If placed = balls Then Exit For
+                placed += 1
+                ' Touching the shelf to within a nanometre: it settles onto it at once and slides.
+                Dim p = shelf.Finish - (0.075 + k * ballGap) * down + (r + 0.000000001) * up
+                w.Add(New Circle(p, r, mass, id:="b" & placed) With {.Color = colours(placed Mod colours.Length)})
+            Next
+        Next
+        Return w
+    End Function
+
     ''' <summary>The app's opening scene: a few balls, a peg and a table, so something happens at once.</summary>
     Public Function Demo() As World
         Dim w As New World(8.0, 5.0, 9.81, 0.9)

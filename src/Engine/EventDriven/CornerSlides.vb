@@ -87,7 +87,7 @@ Friend NotInheritable Class CornerSlides
         ' at once; a wall or a fixed body in the way would not be seen. The contact rules carry it round
         ' instead (in hops).
         _Refusal = SlideRefusal.Crowded
-        If Crowded(i, New Vector(cx, cy) + normal * radius) Then Return False
+        If Crowded(i, New Vector(cx, cy), radius, New Vector(cx, cy) + normal * radius) Then Return False
         _Refusal = SlideRefusal.Blocked
         If Not Clear(i, cx, cy, radius) Then Return False
         _Refusal = SlideRefusal.Still
@@ -204,12 +204,13 @@ Friend NotInheritable Class CornerSlides
     ''' (energy), k at |v_k| + |a_k| t, so the gap closes no sooner than the root of
     ''' ½|a_k| t² + (V_j + |v_k|) t = gap. At that time the pair is looked at again (see
     ''' <see cref="StillApart"/>): a conservative advancement that follows the slide exactly until k
-    ''' really comes close. +∞ if k never gets there.
+    ''' really comes close. A body asleep counts as one at rest (a slide can run into a pile). +∞ if k
+    ''' never gets there, or slides round a corner itself.
     ''' </summary>
     Friend Function TimeToReach(j As Integer, k As Integer) As Double
         Dim b = _s.Bodies
         Dim mk = b.Slot(k).Mode
-        If mk = BodyMode.Rounding OrElse mk = BodyMode.Sleeping Then Return Double.PositiveInfinity
+        If mk = BodyMode.Rounding Then Return Double.PositiveInfinity
         Dim xk, yk, vxk, vyk As Double
         b.Motion(k).StateAt(_s.Now, xk, yk, vxk, vyk)
         Dim disc = TimeOfImpact.CircleCircleAccelerated(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay,
@@ -257,20 +258,25 @@ Friend NotInheritable Class CornerSlides
     End Function
 
     ''' <summary>
-    ''' Whether body i, with its reference point at <paramref name="p"/>, has a neighbour (moving, not
-    ''' itself sliding) within 10⁻³ of the smaller size (or <see cref="Near"/>, if larger): a slide would
+    ''' Whether body i, with its reference point at <paramref name="p"/>, has a neighbour (moving or asleep, not
+    ''' itself sliding) already within the slide's reach (the disc about the corner that its outline sweeps),
+    ''' which the slide's look-ahead does not watch (it sees bodies coming in), or within 10⁻³ of the
+    ''' smaller size (or <see cref="Near"/>, if larger): a slide would
     ''' be cut short almost at once, after ever shorter looks while the neighbour hovers just outside
     ''' <see cref="Near"/> (two balls pressed together on a peg). Such a pair settles as a cluster instead.
     ''' </summary>
-    Private Function Crowded(i As Integer, p As Vector) As Boolean
+    Private Function Crowded(i As Integer, corner As Vector, radius As Double, p As Vector) As Boolean
         Dim b = _s.Bodies
         Dim count = GridNeighbours.Collect(_s, i, _neighbours)
         For q = 0 To count - 1
             Dim k = _neighbours(q)
             Dim mk = b.Slot(k).Mode
-            If mk = BodyMode.Rounding OrElse mk = BodyMode.Sleeping Then Continue For
-            Dim gap = (b.PositionAt(k, _s.Now) - p).Length - b.Reach(i) - b.Reach(k)
+            If mk = BodyMode.Rounding Then Continue For
+            Dim pk = b.PositionAt(k, _s.Now)
+            Dim gap = (pk - p).Length - b.Reach(i) - b.Reach(k)
             If gap <= Math.Max(NearGap(i, k, p.X, p.Y), 0.001 * Math.Min(b.Reach(i), b.Reach(k))) Then Return True
+            ' Already where the slide could reach it: the slide's look-ahead only sees bodies coming in.
+            If (pk - corner).Length < b.Reach(k) + radius + b.Reach(i) Then Return True
         Next
         Return False
     End Function

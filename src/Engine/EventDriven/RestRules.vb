@@ -21,7 +21,7 @@ Friend NotInheritable Class RestRules
     ''' <summary>Contact normals gathered by IsHeld (scratch, fixed size).</summary>
     Private ReadOnly _normalX As Double() = New Double(15) {}
     Private ReadOnly _normalY As Double() = New Double(15) {}
-    ''' <summary>Whether each gathered normal is a fixed body's straight face or corner, or a wall (exact), rather than a curve's or a body's.</summary>
+    ''' <summary>Whether each gathered normal is a wall's or a fixed body's (exact), rather than another body's.</summary>
     Private ReadOnly _normalExact As Boolean() = New Boolean(15) {}
     Private _nNormals As Integer
     ''' <summary>Scratch: bodies being woken, and one body's neighbours.</summary>
@@ -509,7 +509,7 @@ Friend NotInheritable Class RestRules
                 Dim k = near(q)
                 If (_s.Obstacles.Kind(k) = ShapeKind.Rectangle) <> (pass = 0) Then Continue For
                 Dim c = ContactRules.OverlapWithObstacle(_s, i, k, p)
-                If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y, _s.Obstacles.Kind(k) <> ShapeKind.Circle)
+                If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y)
             Next
         Next
         Dim count = GridNeighbours.Collect(_s, i, _neighbours)
@@ -519,10 +519,10 @@ Friend NotInheritable Class RestRules
             Dim c = ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now))
             If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y, False)
         Next
-        ' One support alone holds a body only if it is level. A fixed body's straight face must be level
-        ' to rounding: on a frictionless slope of any angle, however small, a body slides (g sin θ along
-        ' it). A curve (a fixed circle, another body) within 2.6° of level also holds it: the top of a ball
-        ' is where a pile's balls sit, and rolling off from there is left to the pile's own settling.
+        ' One support alone holds a body only if it is level. A fixed body (a face, a corner, a peg) must
+        ' be level to rounding: on a frictionless slope of any angle, however small, a body slides (g sin θ
+        ' along it), and off a peg's top it rolls. Another body within 2.6° of level also holds it: the
+        ' top of a ball is where a pile's balls sit, and rolling off from there is left to the pile's own settling.
         ' Otherwise up = (0, 1) must lie between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.
         For a = 0 To _nNormals - 1
             If _normalY(a) > If(_normalExact(a), 1 - 1.0E-12, 0.999) Then Return True
