@@ -2,7 +2,7 @@ Option Strict On
 
 ''' <summary>How far bodies have sunk into each other or into the walls: zero for a correct solver.</summary>
 Friend Module Overlap
-    ''' <summary>The deepest overlap between two circles, a circle and a rectangle, or a circle and a wall, m (0 when none).</summary>
+    ''' <summary>The deepest overlap between two circles, a circle and a rectangle or a segment, or a circle and a wall, m (0 when none).</summary>
     Public Function Deepest(world As World) As Double
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
         Dim worst = 0.0
@@ -24,8 +24,18 @@ Friend Module Overlap
             For Each r In world.Rectangles
                 worst = Math.Max(worst, Collider.CircleRectangle(a.Position, a.Radius, r.Min, r.Max).Depth)
             Next
+            For Each s In world.Segments
+                worst = Math.Max(worst, a.Radius - DistanceToSegment(a.Position, s.StartPoint, s.EndPoint))
+            Next
         Next
         Return worst
+    End Function
+
+    ''' <summary>Distance (m) from p to the segment from a to b: to the nearest point on it.</summary>
+    Private Function DistanceToSegment(p As Vector, a As Vector, b As Vector) As Double
+        Dim ab = b - a
+        Dim t = Math.Max(0, Math.Min(1, Vector.Dot(p - a, ab) / Vector.Dot(ab, ab)))
+        Return (p - (a + t * ab)).Length
     End Function
 
     ''' <summary>How many movable circles have their centre inside a fixed body (a fixed circle or a rectangle).</summary>

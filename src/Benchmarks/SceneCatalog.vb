@@ -17,6 +17,7 @@ Friend Module SceneCatalog
             Case "box-drop" : Return New BoxDropScene()
             Case "pendulum" : Return New PendulumScene()
             Case "spring" : Return New SpringScene()
+            Case "galton" : Return New GaltonScene()
             Case "mixed" : Return New MixedScene(If(options.Quick, 0.02, 0.2))
             Case Else : Throw New ArgumentException("unknown scene '" & name & "'", NameOf(name))
         End Select

@@ -65,7 +65,9 @@ Friend Module XDisplays
             Dim psi As New ProcessStartInfo(xvfb) With {.UseShellExecute = False, .RedirectStandardError = True, .RedirectStandardOutput = True}
             ' -noreset: without it, Xvfb resets itself whenever its last client leaves, so a readiness
             ' probe (a client that connects and leaves) could reset it just as the real client connects.
-            For Each a In {":" & s, "-screen", "0", screen, "-nolisten", "tcp", "-noreset"}
+            ' -r: no auto-repeat, so a key held down by a slow, loaded machine (the release arriving late)
+            ' types once, as it was pressed, not twice.
+            For Each a In {":" & s, "-screen", "0", screen, "-nolisten", "tcp", "-noreset", "-r"}
                 psi.ArgumentList.Add(a)
             Next
             Dim p = Process.Start(psi)
