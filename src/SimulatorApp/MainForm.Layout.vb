@@ -261,25 +261,7 @@ Partial Friend NotInheritable Class MainForm
     ''' <summary>With --trace: every control's screen rectangle and the canvas transform, for GUI tests.</summary>
     Private Sub TraceLayout()
         If _trace Is Nothing Then Return
-        Dim named As New List(Of (Name As String, Control As Control)) From {
-            ("canvas", _canvas), ("totals", _totals), ("message", _message), ("pause", _pause), ("reset", _reset), ("delete-mode", _deleteMode),
-            ("speed-label", _speedLabel), ("speed", _speed), ("gravity-label", _gravityLabel), ("gravity", _gravity),
-            ("restitution-label", _restitutionLabel), ("restitution", _restitution),
-            ("radius-label", _radiusLabel), ("mass-label", _massLabel), ("rect-width-label", _widthLabel), ("rect-height-label", _heightLabel),
-            ("box-width-label", _boxWidthLabel), ("box-height-label", _boxHeightLabel),
-            ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),
-            ("radius", _radius), ("mass", _mass), ("fixed", _fixed), ("add-circle", _addCircle),
-            ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("rect-fixed", _rectFixed), ("add-rectangle", _addRectangle),
-            ("sides-label", _sidesLabel), ("sides", _sides), ("angle-label", _angleLabel), ("angle", _angle), ("add-polygon", _addPolygon),
-            ("stiffness-label", _stiffnessLabel), ("stiffness", _stiffness),
-            ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
-            ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
-            ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
-            ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
-        named.AddRange(LessonControls())
-        named.AddRange(GraphControls())
-        named.AddRange(MomentumControls())
-        named.AddRange(TimeControls())
+        Dim named = NamedControls()
         For Each n In named
             Dim p = n.Control.PointToScreen(Point.Empty)
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).
@@ -301,4 +283,28 @@ Partial Friend NotInheritable Class MainForm
         _trace("view scale " & Units.Num(v.Scale, 4) & " origin " & Units.Num(v.OffsetX, 2) & " " & Units.Num(v.OffsetY, 2))
         _trace("ready")
     End Sub
+
+    ''' <summary>The controls GUI tests know by name, with their names (see the "control" trace lines).</summary>
+    Private Function NamedControls() As List(Of (Name As String, Control As Control))
+        Dim named As New List(Of (Name As String, Control As Control)) From {
+            ("canvas", _canvas), ("totals", _totals), ("message", _message), ("pause", _pause), ("reset", _reset), ("delete-mode", _deleteMode),
+            ("speed-label", _speedLabel), ("speed", _speed), ("gravity-label", _gravityLabel), ("gravity", _gravity),
+            ("restitution-label", _restitutionLabel), ("restitution", _restitution),
+            ("radius-label", _radiusLabel), ("mass-label", _massLabel), ("rect-width-label", _widthLabel), ("rect-height-label", _heightLabel),
+            ("box-width-label", _boxWidthLabel), ("box-height-label", _boxHeightLabel),
+            ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),
+            ("radius", _radius), ("mass", _mass), ("fixed", _fixed), ("add-circle", _addCircle),
+            ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("rect-fixed", _rectFixed), ("add-rectangle", _addRectangle),
+            ("sides-label", _sidesLabel), ("sides", _sides), ("angle-label", _angleLabel), ("angle", _angle), ("add-polygon", _addPolygon),
+            ("stiffness-label", _stiffnessLabel), ("stiffness", _stiffness),
+            ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
+            ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
+            ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
+            ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
+        named.AddRange(LessonControls())
+        named.AddRange(GraphControls())
+        named.AddRange(MomentumControls())
+        named.AddRange(TimeControls())
+        Return named
+    End Function
 End Class

@@ -32,7 +32,8 @@ Partial Friend NotInheritable Class MainForm
                 Sub(s, e)
                     If _trace Is Nothing Then Return
                     Dim p = control.PointToScreen(Point.Empty)
-                    _trace("focus " & p.X & " " & p.Y & " " & control.GetType().Name)
+                    Dim name = NamedControls().FirstOrDefault(Function(n) n.Control Is control).Name
+                    _trace("focus " & p.X & " " & p.Y & " " & control.GetType().Name & " " & If(name, "-"))
                 End Sub
         Next
     End Sub
