@@ -1,0 +1,161 @@
+Option Strict On
+Imports PhysicsEngine
+Imports Xunit
+Imports Xunit.Abstractions
+
+Namespace EventDriven
+    ''' <summary>
+    ''' Chains of rods in the event solver (no closed form: integrated with error control): a double pendulum
+    ''' and a rope of ten balls keep their rods' lengths and their energy, the double pendulum agrees with
+    ''' Verlet to the order of Verlet's step over half a second, and a chain swinging into a free ball hits it.
+    ''' </summary>
+    Public Class ChainEventTests
+        Private Const G As Double = 9.81
+        Private Shared ReadOnly Anchor As New Vector(5, 6)
+        Private ReadOnly _output As ITestOutputHelper
+
+        Public Sub New(output As ITestOutputHelper)
+            _output = output
+        End Sub
+
+        ''' <summary>A chain of <paramref name="count"/> balls, each <paramref name="spacing"/> m from the last, level to the right of the anchor, joined by rods.</summary>
+        Private Shared Function LevelChain(w As World, count As Integer, spacing As Double, radius As Double, mass As Double) As List(Of Circle)
+            Dim balls As New List(Of Circle)
+            For k = 1 To count
+                Dim ball As New Circle(New Vector(Anchor.X + k * spacing, Anchor.Y), radius, mass)
+                w.Add(ball)
+                If k = 1 Then
+                    w.Add(Link.CreateTie(LinkKind.Rod, ball, Anchor, spacing))
+                Else
+                    w.Add(Link.CreateTie(LinkKind.Rod, ball, balls(k - 2), spacing))
+                End If
+                balls.Add(ball)
+            Next
+            Return balls
+        End Function
+
+        Private Shared Function Energy(w As World) As Double
+            Dim e = 0.0
+            For Each c In w.Circles
+                e += 0.5 * c.Mass * c.Velocity.LengthSquared + c.Mass * w.Gravity * c.Position.Y
+            Next
+            Return e
+        End Function
+
+        Private Shared Function WorstLengthError(w As World) As Double
+            Return w.Links.Max(Function(l) Math.Abs(l.Distance - l.Length))
+        End Function
+
+        <Fact>
+        Public Sub DoublePendulumReleasedLevel_KeepsItsEnergyAndRodLengths_For10Seconds()
+            Dim w As New World(10, 10, G, 1.0)
+            w.Solver = SolverFactory.Create("event")
+            LevelChain(w, 2, 1, 0.05, 1)
+            Dim e0 = Energy(w)
+            ' The energy's scale: m g L over the chain, 2 × 1 kg × g × 2 m.
+            Dim scale = 2 * 1 * G * 2
+            Dim worstEnergy = 0.0, worstLength = 0.0
+            TestSolvers.Frames(w, 10, 0.05, Sub()
+                                                  worstEnergy = Math.Max(worstEnergy, Math.Abs(Energy(w) - e0) / scale)
+                                                  worstLength = Math.Max(worstLength, WorstLengthError(w))
+                                              End Sub)
+            _output.WriteLine($"energy {worstEnergy:E2} of m g L, rod lengths {worstLength:E2} m")
+            Assert.Equal(10.0, w.Time, 12)
+            Assert.True(worstEnergy <= 0.000000001, $"energy drifted by {worstEnergy:E2} of m g L")
+            Assert.True(worstLength <= 0.000000001, $"a rod's length is off by {worstLength:E2} m")
+            ' It did swing: the lower bob has been far from where it started.
+            Assert.NotEqual(Anchor.Y, w.Circles(1).Position.Y)
+        End Sub
+
+        <Fact>
+        Public Sub RopeOfTenBallsReleasedLevel_KeepsItsEnergyAndRodLengths()
+            Dim w As New World(10, 10, G, 1.0)
+            w.Solver = SolverFactory.Create("event")
+            Dim rope = LevelChain(w, 10, 0.2, 0.05, 0.2)
+            Dim e0 = Energy(w)
+            Dim scale = 10 * 0.2 * G * 2
+            Dim worstEnergy = 0.0, worstLength = 0.0, lowest = Anchor.Y
+            TestSolvers.Frames(w, 3, 0.05, Sub()
+                                               worstEnergy = Math.Max(worstEnergy, Math.Abs(Energy(w) - e0) / scale)
+                                               worstLength = Math.Max(worstLength, WorstLengthError(w))
+                                               lowest = Math.Min(lowest, rope(9).Position.Y)
+                                           End Sub)
+            _output.WriteLine($"energy {worstEnergy:E2} of m g L, rod lengths {worstLength:E2} m, lowest end {lowest} m, {w.CollisionCount} collisions")
+            Assert.True(worstEnergy <= 0.000000001, $"energy drifted by {worstEnergy:E2} of m g L")
+            Assert.True(worstLength <= 0.000000001, $"a rod's length is off by {worstLength:E2} m")
+            Assert.True(lowest < Anchor.Y - 1.5, $"the rope's end only got down to {lowest} m")
+        End Sub
+
+        ''' <summary>Both bobs' positions after 0.5 s of the level double pendulum, with the named solver.</summary>
+        Private Shared Function DoublePendulumAfterHalfASecond(solver As String, Optional timeStep As Double? = Nothing) As Vector()
+            Dim w As New World(10, 10, G, 1.0)
+            w.Solver = SolverFactory.Create(solver, timeStep)
+            Dim balls = LevelChain(w, 2, 1, 0.05, 1)
+            w.Advance(0.5)
+            Return {balls(0).Position, balls(1).Position}
+        End Function
+
+        <Fact>
+        Public Sub DoublePendulum_AgreesWithVerlet_ToTheOrderOfItsStep()
+            Dim exact = DoublePendulumAfterHalfASecond("event")
+            Dim errors As New List(Of Double)
+            For Each dt In {0.002, 0.001, 0.0005}
+                Dim p = DoublePendulumAfterHalfASecond("verlet", dt)
+                Dim e = Math.Max((p(0) - exact(0)).Length, (p(1) - exact(1)).Length)
+                _output.WriteLine($"verlet dt = {dt}: {e:E3} m")
+                errors.Add(e)
+                ' O(dt): within a modest constant times the step.
+                Assert.True(e <= 2 * dt, $"verlet at dt = {dt} is {e} m from the event solver")
+            Next
+            ' And it shrinks with the step, as a convergent method's does: by at least half per halving.
+            Assert.True(errors(1) <= 0.6 * errors(0) AndAlso errors(2) <= 0.6 * errors(1), String.Join(", ", errors))
+        End Sub
+
+        <Fact>
+        Public Sub ChainSpinningWithoutGravity_HitsAFreeBallInItsPath_AtThePredictedTime()
+            ' With g = 0 a straight chain turning at ω stays straight: the lower bob runs round a circle of
+            ' radius 2L at 2ωL. A ball at rest on that circle is hit when the chord between them is r₁ + r₂.
+            Dim w As New World(10, 10, 0, 1.0)
+            w.Solver = SolverFactory.Create("event")
+            Dim centre As New Vector(5, 5)
+            Dim omega = 1.5
+            Dim upper As New Circle(centre + New Vector(1, 0), 0.1, 1, New Vector(0, omega))
+            Dim lower As New Circle(centre + New Vector(2, 0), 0.1, 1, New Vector(0, 2 * omega))
+            Dim psi = 1.2
+            Dim free As New Circle(centre + 2 * New Vector(Math.Cos(psi), Math.Sin(psi)), 0.1, 1)
+            w.Add(upper)
+            w.Add(lower)
+            w.Add(free)
+            w.Add(Link.CreateTie(LinkKind.Rod, upper, centre, 1))
+            w.Add(Link.CreateTie(LinkKind.Rod, lower, upper, 1))
+            Dim records As New List(Of CollisionRecord)
+            w.CollisionListener = Sub(c) records.Add(c)
+            Dim momentBefore = AngularMomentum(w, centre)
+            Dim energyBefore = Energy(w)
+            Dim expected = (psi - 2 * Math.Asin(0.2 / 4)) / omega
+            ' In frames, checking that the two never overlap (nothing is stepped over).
+            Dim worstOverlap = 0.0
+            TestSolvers.Frames(w, expected + 0.2, 0.001, Sub() worstOverlap = Math.Max(worstOverlap, 0.2 - (free.Position - lower.Position).Length))
+            Assert.True(records.Count >= 1, "the free ball was not hit")
+            Dim hit = records(0)
+            _output.WriteLine($"hit at {hit.Time} s (expected {expected} s), free ball leaves at {free.Velocity}, worst overlap {worstOverlap:E2} m")
+            Assert.Equal(expected, hit.Time, 0.000000001)
+            Assert.True(worstOverlap <= 0.000000001, $"they overlapped by {worstOverlap} m")
+            ' The blow is along the line of centres: the free ball leaves along it, away from the bob.
+            Dim freeAfter = If(hit.A Is free, hit.AVelocityAfter, hit.BVelocityAfter)
+            Assert.True(freeAfter.Length > 0.1, $"the free ball left at {freeAfter}")
+            Dim lineAtHit = freeAfter.Normalized(Vector.Zero)
+            Dim chord = New Vector(Math.Cos(psi), Math.Sin(psi)) * 2 - New Vector(Math.Cos(psi - 2 * Math.Asin(0.05)), Math.Sin(psi - 2 * Math.Asin(0.05))) * 2
+            Assert.Equal(0.0, Vector.Cross(lineAtHit, chord.Normalized(Vector.Zero)), 9)
+            ' The anchor's pull has no moment about the anchor, and e = 1: angular momentum and energy are kept.
+            Assert.Equal(momentBefore, AngularMomentum(w, centre), 9)
+            Assert.Equal(energyBefore, Energy(w), 9)
+            Assert.Equal(1.0, (upper.Position - centre).Length, 9)
+            Assert.Equal(1.0, (lower.Position - upper.Position).Length, 9)
+        End Sub
+
+        Private Shared Function AngularMomentum(w As World, about As Vector) As Double
+            Return w.Circles.Sum(Function(c) c.Mass * Vector.Cross(c.Position - about, c.Velocity))
+        End Function
+    End Class
+End Namespace
