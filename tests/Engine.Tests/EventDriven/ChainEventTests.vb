@@ -86,6 +86,56 @@ Namespace EventDriven
             Assert.True(lowest < Anchor.Y - 1.5, $"the rope's end only got down to {lowest} m")
         End Sub
 
+        <Fact>
+        Public Sub DoublePendulum_FollowsAnIndependentSolutionInAngles_To1e9Metres()
+            ' The textbook equations of the double pendulum in its two angles from straight down (Lagrange),
+            ' solved by classical Runge–Kutta with 10 μs steps: a different formulation and method altogether.
+            Dim w As New World(10, 10, G, 1.0)
+            w.Solver = SolverFactory.Create("event")
+            Dim balls = LevelChain(w, 2, 1, 0.05, 1)
+            Dim worst = 0.0
+            Dim y = {Math.PI / 2, Math.PI / 2, 0.0, 0.0}
+            Dim h = 0.00001
+            For frame = 1 To 20
+                For s = 1 To 10000
+                    y = RungeKuttaStep(y, h)
+                Next
+                w.Advance(0.1)
+                Dim upper = Anchor + New Vector(Math.Sin(y(0)), -Math.Cos(y(0)))
+                Dim lower = upper + New Vector(Math.Sin(y(1)), -Math.Cos(y(1)))
+                worst = Math.Max(worst, Math.Max((balls(0).Position - upper).Length, (balls(1).Position - lower).Length))
+            Next
+            _output.WriteLine($"largest distance from the angle solution over 2 s: {worst:E2} m")
+            Assert.True(worst <= 0.000000001, $"{worst:E2} m from the angle solution")
+        End Sub
+
+        ''' <summary>One classical Runge–Kutta step of (θ₁, θ₂, θ₁', θ₂') for unit masses and lengths.</summary>
+        Private Shared Function RungeKuttaStep(y As Double(), h As Double) As Double()
+            Dim k1 = AngleRates(y)
+            Dim k2 = AngleRates(Add(y, k1, h / 2))
+            Dim k3 = AngleRates(Add(y, k2, h / 2))
+            Dim k4 = AngleRates(Add(y, k3, h))
+            Dim r(3) As Double
+            For i = 0 To 3
+                r(i) = y(i) + h / 6 * (k1(i) + 2 * k2(i) + 2 * k3(i) + k4(i))
+            Next
+            Return r
+        End Function
+
+        Private Shared Function Add(y As Double(), k As Double(), h As Double) As Double()
+            Return {y(0) + h * k(0), y(1) + h * k(1), y(2) + h * k(2), y(3) + h * k(3)}
+        End Function
+
+        ''' <summary>The double pendulum's equations for m₁ = m₂ = 1 kg, L₁ = L₂ = 1 m.</summary>
+        Private Shared Function AngleRates(y As Double()) As Double()
+            Dim t1 = y(0), t2 = y(1), w1 = y(2), w2 = y(3)
+            Dim d = t1 - t2
+            Dim den = 3 - Math.Cos(2 * d)
+            Dim a1 = (-3 * G * Math.Sin(t1) - G * Math.Sin(t1 - 2 * t2) - 2 * Math.Sin(d) * (w2 * w2 + w1 * w1 * Math.Cos(d))) / den
+            Dim a2 = 2 * Math.Sin(d) * (2 * w1 * w1 + 2 * G * Math.Cos(t1) + w2 * w2 * Math.Cos(d)) / den
+            Return {w1, w2, a1, a2}
+        End Function
+
         ''' <summary>Both bobs' positions after 0.5 s of the level double pendulum, with the named solver.</summary>
         Private Shared Function DoublePendulumAfterHalfASecond(solver As String, Optional timeStep As Double? = Nothing) As Vector()
             Dim w As New World(10, 10, G, 1.0)

@@ -17,8 +17,8 @@ Option Strict On
 Friend NotInheritable Class ChainMotion
     Inherits LinkedMotion
 
-    Private Const RelativeTolerance As Double = 0.000000000001
-    Private Const AbsoluteTolerance As Double = 0.0000000000001
+    Private Const RelativeTolerance As Double = 0.00000000001
+    Private Const AbsoluteTolerance As Double = 0.000000000001
     ' Steps kept from one start at most: far more than any advance needs, far less than the memory holds.
     Private Const MaxSteps As Integer = 2000000
     ' A chain with strings is integrated this far ahead (s) to look for a string's change; where none is
@@ -50,7 +50,11 @@ Friend NotInheritable Class ChainMotion
     Private ReadOnly _states As New List(Of Double())
     Private ReadOnly _derivatives As New List(Of Double())
     Private ReadOnly _tensions As New List(Of Double())
+    ' Per step: each body's speed bound (m/s) and acceleration bound (m/s²), once asked for.
+    Private ReadOnly _bounds As New List(Of Double())
     Private _step As Double
+    ' The tensions (N) at the last evaluation.
+    Private _lastTensions As Double()
     ' The first string event found on the steps scanned so far.
     Private _scanned As Integer
     Private _eventTime As Double = Double.PositiveInfinity
@@ -180,6 +184,7 @@ Friend NotInheritable Class ChainMotion
     Private Function Derivative(y As Double(), ByRef tensions As Double()) As Double()
         Dim d = FreeDerivative(y)
         tensions = ChainConstraints.Tensions(y, d, _ties, _inverseMass)
+        _lastTensions = tensions
         Return d
     End Function
 
@@ -204,9 +209,12 @@ Friend NotInheritable Class ChainMotion
                 If worst <= 1 Then
                     Dim lengthError As Double, rateError As Double
                     ChainConstraints.Drift(result, _ties, lengthError, rateError)
-                    If lengthError > DriftFraction OrElse rateError > DriftFraction * SpeedScale(result) Then ChainConstraints.Project(result, _ties, _inverseMass)
-                    Dim tensions As Double() = Nothing
-                    slope = Derivative(result, tensions)
+                    ' The step's last evaluation was at its result: its tensions are those there, unless the result is moved back onto the lengths.
+                    Dim tensions = _lastTensions
+                    If lengthError > DriftFraction OrElse rateError > DriftFraction * SpeedScale(result) Then
+                        ChainConstraints.Project(result, _ties, _inverseMass)
+                        slope = Derivative(result, tensions)
+                    End If
                     _times.Add(t + h)
                     _states.Add(result)
                     _derivatives.Add(slope)
@@ -343,11 +351,20 @@ Friend NotInheritable Class ChainMotion
         Return Math.Sqrt(bx * bx + by * by) / Math.Pow(h, order) * (1 + 0.000000001)
     End Function
 
+    ''' <summary>The largest of body k's per-step bounds over the steps that meet [t0, t1]; each step's bounds are worked out once.</summary>
     Private Function Bound(k As Integer, t0 As Double, t1 As Double, order As Integer) As Double
         Dim first = StepAt(t0), last = StepAt(t1)
         Dim worst = 0.0
         For j = first To last
-            worst = Math.Max(worst, StepBound(j, k, order))
+            Do While _bounds.Count <= j
+                Dim b(2 * _n - 1) As Double
+                For body = 0 To _n - 1
+                    b(2 * body) = StepBound(_bounds.Count, body, 1)
+                    b(2 * body + 1) = StepBound(_bounds.Count, body, 2)
+                Next
+                _bounds.Add(b)
+            Loop
+            worst = Math.Max(worst, _bounds(j)(2 * k + order - 1))
         Next
         Return worst
     End Function
