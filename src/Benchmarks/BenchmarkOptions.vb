@@ -8,7 +8,7 @@ Imports System.Globalization
 Friend NotInheritable Class BenchmarkOptions
     ''' <summary>Every scene, in report order.</summary>
     Public Shared ReadOnly Property AllScenes As IReadOnlyList(Of String) =
-        {"bouncing-apex", "bouncing-rest", "projectile", "oblique-hit", "cradle", "gas-energy", "pile", "ramp-slide", "box-drop", "pendulum", "spring", "mixed"}
+        {"bouncing-apex", "bouncing-rest", "projectile", "oblique-hit", "cradle", "gas-energy", "pile", "ramp-slide", "box-drop", "pendulum", "spring", "rope", "cradle-strings", "mixed"}
 
     ''' <summary>The solvers compared, as SolverFactory names them.</summary>
     Public Shared ReadOnly Property AllSolvers As IReadOnlyList(Of String) = {"event", "euler", "verlet"}
