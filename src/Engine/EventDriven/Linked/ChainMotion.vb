@@ -29,9 +29,11 @@ Friend NotInheritable Class ChainMotion
     ' A string at full length snaps taut only once it is over-long by this fraction of its length, so that
     ' one that has just snapped (or just gone slack) is not caught again at once by rounding.
     Private Const OverLength As Double = 0.000000000001
-    ' Below this speed after a string snaps taut (a fraction of √(gL)), the string stays taut: the snaps of
-    ' an inelastic string form a geometric series whose end would otherwise take endless events.
-    Private Const SettleFraction As Double = 0.000001
+    ' A string snapping taut so gently that its ends would come back less than this fraction of its length
+    ' apart (v² < 2 g × fraction × L) stays taut: a bob riding the circle with the string just pulling would
+    ' otherwise bounce off its full length for ever (with e = 1 the bounces never shrink), as a ball resting on
+    ' the floor would (LinkedMotions.RestsOnFloor).
+    Private Const SettleFraction As Double = 0.000000001
 
     Private ReadOnly _gravity As Double
     Private ReadOnly _n As Integer
@@ -248,14 +250,24 @@ Friend NotInheritable Class ChainMotion
             Keep(root, _held(i), False)
         Next
         For i = 0 To _slack.Length - 1
-            Dim gap As New SpareLengthGap(Me, _slackTies(i))
+            Dim tie = _slackTies(i)
             Dim target = _snapAt(i)
-            Dim f0 = SpareLength(_states(j), _slackTies(i)), f1 = SpareLength(_states(j + 1), _slackTies(i))
-            Dim speed = StepBound(j, _slackTies(i).A, 1) + If(_slackTies(i).B >= 0, StepBound(j, _slackTies(i).B, 1), 0)
+            Dim f0 = SpareLength(_states(j), tie), f1 = SpareLength(_states(j + 1), tie)
+            Dim h = t1 - t0
+            Dim speed = StepBound(j, tie.A, 1) + If(tie.B >= 0, StepBound(j, tie.B, 1), 0)
             ' The spare length falls no faster than the ends' speeds together: from both ends of the step it cannot reach the target in between.
-            If f0 > target AndAlso f1 > target AndAlso (f0 + f1 - speed * (t1 - t0)) / 2 > target Then Continue For
-            Dim found = ConservativeAdvancement.FirstContact(gap, t0, t1, target, speed)
-            If found.Found Then Keep(found.Time, _slack(i), True)
+            If f0 > target AndAlso f1 > target AndAlso (f0 + f1 - speed * h) / 2 > target Then Continue For
+            ' On L² − d²: |d| ≤ d(t0) + speed × h over the step bounds |(d²)'| = 2|r·w| and |(d²)''| = 2| |w|² + r·a |.
+            Dim accel = StepBound(j, tie.A, 2) + If(tie.B >= 0, StepBound(j, tie.B, 2), 0)
+            Dim reach = tie.Length - f0 + speed * h
+            Dim reached = tie.Length - target
+            Dim found = ConservativeAdvancement.FirstContact(New SquaredSpareGap(Me, tie), t0, t1, tie.Length * tie.Length - reached * reached,
+                                                             2 * reach * speed, 2 * (speed * speed + reach * accel))
+            If found.Found Then
+                Keep(found.Time, _slack(i), True)
+            ElseIf found.ClearUntil < t1 Then
+                Throw New InvalidOperationException($"the chain integrator could not tell whether a string snaps taut between t = {found.ClearUntil} s and {t1} s")
+            End If
         Next
     End Sub
 
@@ -410,7 +422,7 @@ Friend NotInheritable Class ChainMotion
         Dim apart = l.StretchRate
         If apart <= 0 Then Return False
         Dim restitution = world.Restitution
-        If restitution * apart < SettleFraction * Math.Sqrt(Math.Max(world.Gravity, 0.000001) * l.Length) Then restitution = 0
+        If restitution * apart < Math.Sqrt(2 * Math.Max(world.Gravity, 0.000001) * SettleFraction * l.Length) Then restitution = 0
         Dim impulse As New LinkedImpulse()
         ' A contact whose normal points from B to A: "approaching" along it is the ends moving apart, and its push pulls them together.
         impulse.AddContact(DirectCast(l.A, Circle), If(l.IsAnchored, Nothing, DirectCast(l.B, Circle)), -(l.EndB - l.EndA).Normalized(Vector.Zero), restitution)
@@ -440,8 +452,11 @@ Friend NotInheritable Class ChainMotion
         Next
     End Sub
 
-    ''' <summary>A slack string's spare length along the quintics, for conservative advancement.</summary>
-    Private NotInheritable Class SpareLengthGap
+    ''' <summary>
+    ''' A slack string's L² − d² along the quintics (m²), for conservative advancement: unlike the spare length
+    ''' L − d, its second derivative, −2(|w|² + r·(a_B − a_A)), is bounded however close the ends come.
+    ''' </summary>
+    Private NotInheritable Class SquaredSpareGap
         Implements IDistanceFunction
 
         Private ReadOnly _motion As ChainMotion
@@ -452,15 +467,24 @@ Friend NotInheritable Class ChainMotion
             _tie = tie
         End Sub
 
-        Public Function Distance(time As Double) As Double Implements IDistanceFunction.Distance
+        Private Sub Ends(time As Double, ByRef r As Vector, ByRef w As Vector)
             Dim pa As Vector, va As Vector, pb = _tie.Anchor, vb = Vector.Zero
             _motion.StateAt(time, _tie.A, pa, va)
             If _tie.B >= 0 Then _motion.StateAt(time, _tie.B, pb, vb)
-            Return _tie.Length - (pb - pa).Length
+            r = pb - pa
+            w = vb - va
+        End Sub
+
+        Public Function Distance(time As Double) As Double Implements IDistanceFunction.Distance
+            Dim r As Vector, w As Vector
+            Ends(time, r, w)
+            Return _tie.Length * _tie.Length - r.LengthSquared
         End Function
 
         Public Function Rate(time As Double) As Double Implements IDistanceFunction.Rate
-            Return Double.NaN
+            Dim r As Vector, w As Vector
+            Ends(time, r, w)
+            Return -2 * Vector.Dot(r, w)
         End Function
     End Class
 End Class
