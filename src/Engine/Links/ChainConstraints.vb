@@ -10,32 +10,58 @@ Option Strict On
 ''' Writing the accelerations as the free ones plus the ties' forces ÷ mass gives one linear equation per
 ''' tie, M λ = n·(a_B − a_A)_free + (|w|² − (n·w)²)/d, with M_ij = (n_i·n_j) Σ σ_i σ_j w_p over the bodies p
 ''' the two ties share (w_p the inverse mass, σ = −1 at end A and +1 at end B). M is J W Jᵀ, symmetric and
-''' positive definite while no tie is redundant, so it is solved by Cholesky's method.
+''' positive definite while no tie is redundant, so it is solved by Cholesky's method. Which ties share
+''' which bodies never changes, so those sums are worked out once; the buffers are reused, so one instance
+''' serves one motion at a time.
 ''' </summary>
-Friend Module ChainConstraints
+Friend NotInheritable Class ChainConstraints
+    Private ReadOnly _ties As ChainTie()
+    Private ReadOnly _inverseMass As Double()
+    ' Σ σ_i σ_j w_p over the shared bodies, for i ≥ j; zero where ties i and j share none.
+    Private ReadOnly _shared As Double()()
+    Private ReadOnly _nx As Double(), _ny As Double(), _factor As Double()()
+
+    ''' <summary>The ties of a chain whose bodies have the given inverse masses (1/kg, 0 for a body that cannot move).</summary>
+    Friend Sub New(ties As ChainTie(), inverseMass As Double())
+        _ties = ties
+        _inverseMass = inverseMass
+        Dim m = ties.Length
+        _nx = New Double(m - 1) {}
+        _ny = New Double(m - 1) {}
+        _shared = New Double(m - 1)() {}
+        _factor = New Double(m - 1)() {}
+        For i = 0 To m - 1
+            _shared(i) = New Double(i) {}
+            _factor(i) = New Double(i) {}
+            For j = 0 To i
+                _shared(i)(j) = SharedInverseMass(ties(i), ties(j))
+            Next
+        Next
+    End Sub
+
     ''' <summary>
     ''' The ties' tensions (N) for <paramref name="state"/>, with <paramref name="accelerations"/> holding the
     ''' free accelerations (gravity, springs) on entry and, on return, those plus the ties' forces ÷ mass.
     ''' </summary>
-    Friend Function Tensions(state As Double(), accelerations As Double(), ties As ChainTie(), inverseMass As Double()) As Double()
-        Dim m = ties.Length
+    Friend Function Tensions(state As Double(), accelerations As Double()) As Double()
+        Dim m = _ties.Length
         Dim lambda(m - 1) As Double
         If m = 0 Then Return lambda
-        Dim nx(m - 1) As Double, ny(m - 1) As Double
         For i = 0 To m - 1
-            Dim t = ties(i)
+            Dim t = _ties(i)
             Dim r = EndB(state, t) - Position(state, t.A)
             Dim d = r.Length
             Dim n = r / d
-            nx(i) = n.X
-            ny(i) = n.Y
+            _nx(i) = n.X
+            _ny(i) = n.Y
             Dim w = VelocityB(state, t) - Velocity(state, t.A)
             Dim along = Vector.Dot(n, w)
             Dim relative = AccelerationB(accelerations, t) - Acceleration(accelerations, t.A)
             lambda(i) = Vector.Dot(n, relative) + (w.LengthSquared - along * along) / d
         Next
-        Solve(Coupling(ties, inverseMass, nx, ny), lambda)
-        Apply(accelerations, ties, inverseMass, nx, ny, lambda)
+        Factor()
+        Solve(lambda)
+        Apply(accelerations, lambda, 2)
         Return lambda
     End Function
 
@@ -44,44 +70,47 @@ Friend Module ChainConstraints
     ''' least mass-weighted change (a Gauss–Newton step on d − L, repeated until within a few roundings; then
     ''' one linear solve for the stretch rates). The centre of mass is not moved by ties between bodies.
     ''' </summary>
-    Friend Sub Project(state As Double(), ties As ChainTie(), inverseMass As Double())
-        Dim m = ties.Length
+    Friend Sub Project(state As Double())
+        Dim m = _ties.Length
         If m = 0 Then Return
-        Dim nx(m - 1) As Double, ny(m - 1) As Double, c(m - 1) As Double
-        For iteration = 1 To 8
+        Dim c(m - 1) As Double
+        For iteration = 1 To 4
             Dim worst = 0.0
             For i = 0 To m - 1
-                Dim t = ties(i)
+                Dim t = _ties(i)
                 Dim r = EndB(state, t) - Position(state, t.A)
                 Dim d = r.Length
-                nx(i) = r.X / d
-                ny(i) = r.Y / d
+                _nx(i) = r.X / d
+                _ny(i) = r.Y / d
                 ' Moving the ends by μ along n (A towards B, B towards A, each by its inverse mass) shortens the
                 ' ties by M μ: so M μ = d − L.
                 c(i) = d - t.Length
                 worst = Math.Max(worst, Math.Abs(c(i)) / t.Length)
             Next
-            If worst <= 0.0000000000000004 Then Exit For
-            Solve(Coupling(ties, inverseMass, nx, ny), c)
-            Apply(state, ties, inverseMass, nx, ny, c, 0)
+            ' Gauss–Newton converges quadratically: from the integrator's drift one step reaches rounding.
+            If worst <= 0.000000000000001 Then Exit For
+            Factor()
+            Solve(c)
+            Apply(state, c, 0)
         Next
         For i = 0 To m - 1
-            Dim t = ties(i)
+            Dim t = _ties(i)
             Dim r = EndB(state, t) - Position(state, t.A)
             Dim d = r.Length
-            nx(i) = r.X / d
-            ny(i) = r.Y / d
-            c(i) = Vector.Dot(New Vector(nx(i), ny(i)), VelocityB(state, t) - Velocity(state, t.A))
+            _nx(i) = r.X / d
+            _ny(i) = r.Y / d
+            c(i) = Vector.Dot(New Vector(_nx(i), _ny(i)), VelocityB(state, t) - Velocity(state, t.A))
         Next
-        Solve(Coupling(ties, inverseMass, nx, ny), c)
-        Apply(state, ties, inverseMass, nx, ny, c, 2)
+        Factor()
+        Solve(c)
+        Apply(state, c, 2)
     End Sub
 
     ''' <summary>The largest |d − L| ÷ L over the ties, and the largest |ḋ| (m/s).</summary>
-    Friend Sub Drift(state As Double(), ties As ChainTie(), ByRef lengthError As Double, ByRef rateError As Double)
+    Friend Sub Drift(state As Double(), ByRef lengthError As Double, ByRef rateError As Double)
         lengthError = 0
         rateError = 0
-        For Each t In ties
+        For Each t In _ties
             Dim r = EndB(state, t) - Position(state, t.A)
             Dim d = r.Length
             lengthError = Math.Max(lengthError, Math.Abs(d - t.Length) / t.Length)
@@ -89,102 +118,95 @@ Friend Module ChainConstraints
         Next
     End Sub
 
-    ''' <summary>M_ij = (n_i·n_j) Σ σ_i σ_j w_p over the bodies p that ties i and j share.</summary>
-    Private Function Coupling(ties As ChainTie(), inverseMass As Double(), nx As Double(), ny As Double()) As Double(,)
-        Dim m = ties.Length
-        Dim k(m - 1, m - 1) As Double
-        For i = 0 To m - 1
-            For j = i To m - 1
-                Dim s = SharedInverseMass(ties(i), ties(j), inverseMass)
-                If s = 0 Then Continue For
-                Dim v = s * (nx(i) * nx(j) + ny(i) * ny(j))
-                k(i, j) = v
-                k(j, i) = v
-            Next
-        Next
-        Return k
-    End Function
-
-    Private Function SharedInverseMass(p As ChainTie, q As ChainTie, inverseMass As Double()) As Double
+    Private Function SharedInverseMass(p As ChainTie, q As ChainTie) As Double
         Dim s = 0.0
-        If p.A = q.A Then s += inverseMass(p.A)
-        If p.B >= 0 AndAlso p.B = q.B Then s += inverseMass(p.B)
-        If p.A = q.B Then s -= inverseMass(p.A)
-        If p.B >= 0 AndAlso p.B = q.A Then s -= inverseMass(p.B)
+        If p.A = q.A Then s += _inverseMass(p.A)
+        If p.B >= 0 AndAlso p.B = q.B Then s += _inverseMass(p.B)
+        If p.A = q.B Then s -= _inverseMass(p.A)
+        If p.B >= 0 AndAlso p.B = q.A Then s -= _inverseMass(p.B)
         Return s
     End Function
 
-    ''' <summary>Adds Σ_j λ_j × (force direction of tie j on each end) × w to the values at <paramref name="offset"/> (0 positions, 2 velocities or accelerations).</summary>
-    Private Sub Apply(values As Double(), ties As ChainTie(), inverseMass As Double(), nx As Double(), ny As Double(), lambda As Double(), Optional offset As Integer = 2)
-        For j = 0 To ties.Length - 1
-            Dim t = ties(j)
-            Dim wa = inverseMass(t.A) * lambda(j)
-            values(4 * t.A + offset) += wa * nx(j)
-            values(4 * t.A + offset + 1) += wa * ny(j)
+    ''' <summary>Adds Σ_j λ_j × (tie j's direction at each end) × w to the values at <paramref name="offset"/> (0 positions, 2 velocities or accelerations).</summary>
+    Private Sub Apply(values As Double(), lambda As Double(), offset As Integer)
+        For j = 0 To _ties.Length - 1
+            Dim t = _ties(j)
+            Dim wa = _inverseMass(t.A) * lambda(j)
+            values(4 * t.A + offset) += wa * _nx(j)
+            values(4 * t.A + offset + 1) += wa * _ny(j)
             If t.B >= 0 Then
-                Dim wb = inverseMass(t.B) * lambda(j)
-                values(4 * t.B + offset) -= wb * nx(j)
-                values(4 * t.B + offset + 1) -= wb * ny(j)
+                Dim wb = _inverseMass(t.B) * lambda(j)
+                values(4 * t.B + offset) -= wb * _nx(j)
+                values(4 * t.B + offset + 1) -= wb * _ny(j)
             End If
         Next
     End Sub
 
-    ''' <summary>Solves k x = b in place by Cholesky's method (k symmetric positive definite; it is overwritten).</summary>
-    Private Sub Solve(k As Double(,), b As Double())
-        Dim m = b.Length
+    ''' <summary>Cholesky's factor L (M = L Lᵀ, lower triangle) of M for the directions in _nx, _ny.</summary>
+    Private Sub Factor()
+        Dim m = _ties.Length
         For j = 0 To m - 1
-            Dim diagonal = k(j, j)
+            Dim lj = _factor(j)
+            Dim diagonal = _shared(j)(j)
             For p = 0 To j - 1
-                diagonal -= k(j, p) * k(j, p)
+                diagonal -= lj(p) * lj(p)
             Next
-            If Not (diagonal > 0.000000000001 * Math.Abs(k(j, j))) Then Throw New InvalidOperationException("the rods and strings of a chain hold its bodies in more ways than they can move (a tie is redundant)")
+            If Not (diagonal > 0.000000000001 * _shared(j)(j)) Then Throw New InvalidOperationException("the rods and strings of a chain hold its bodies in more ways than they can move (a tie is redundant)")
             Dim root = Math.Sqrt(diagonal)
-            k(j, j) = root
+            lj(j) = root
             For i = j + 1 To m - 1
-                Dim s = k(i, j)
+                Dim li = _factor(i)
+                Dim s = _shared(i)(j)
+                If s <> 0 Then s *= _nx(i) * _nx(j) + _ny(i) * _ny(j)
                 For p = 0 To j - 1
-                    s -= k(i, p) * k(j, p)
+                    s -= li(p) * lj(p)
                 Next
-                k(i, j) = s / root
+                li(j) = s / root
             Next
         Next
+    End Sub
+
+    ''' <summary>Solves M x = b in place with the factor.</summary>
+    Private Sub Solve(b As Double())
+        Dim m = b.Length
         For i = 0 To m - 1
+            Dim li = _factor(i)
             Dim s = b(i)
             For p = 0 To i - 1
-                s -= k(i, p) * b(p)
+                s -= li(p) * b(p)
             Next
-            b(i) = s / k(i, i)
+            b(i) = s / li(i)
         Next
         For i = m - 1 To 0 Step -1
             Dim s = b(i)
             For p = i + 1 To m - 1
-                s -= k(p, i) * b(p)
+                s -= _factor(p)(i) * b(p)
             Next
-            b(i) = s / k(i, i)
+            b(i) = s / _factor(i)(i)
         Next
     End Sub
 
-    Private Function Position(state As Double(), k As Integer) As Vector
+    Private Shared Function Position(state As Double(), k As Integer) As Vector
         Return New Vector(state(4 * k), state(4 * k + 1))
     End Function
 
-    Private Function Velocity(state As Double(), k As Integer) As Vector
+    Private Shared Function Velocity(state As Double(), k As Integer) As Vector
         Return New Vector(state(4 * k + 2), state(4 * k + 3))
     End Function
 
-    Private Function Acceleration(accelerations As Double(), k As Integer) As Vector
+    Private Shared Function Acceleration(accelerations As Double(), k As Integer) As Vector
         Return New Vector(accelerations(4 * k + 2), accelerations(4 * k + 3))
     End Function
 
-    Private Function EndB(state As Double(), t As ChainTie) As Vector
+    Private Shared Function EndB(state As Double(), t As ChainTie) As Vector
         Return If(t.B >= 0, Position(state, t.B), t.Anchor)
     End Function
 
-    Private Function VelocityB(state As Double(), t As ChainTie) As Vector
+    Private Shared Function VelocityB(state As Double(), t As ChainTie) As Vector
         Return If(t.B >= 0, Velocity(state, t.B), Vector.Zero)
     End Function
 
-    Private Function AccelerationB(accelerations As Double(), t As ChainTie) As Vector
+    Private Shared Function AccelerationB(accelerations As Double(), t As ChainTie) As Vector
         Return If(t.B >= 0, Acceleration(accelerations, t.B), Vector.Zero)
     End Function
-End Module
+End Class

@@ -25,7 +25,7 @@ Friend NotInheritable Class ChainMotion
     ' found, the motion hands over to a new one there, which looks further.
     Private Const Lookahead As Double = 0.1
     ' The state is projected back onto the lengths when it has drifted off by more than this fraction.
-    Private Const DriftFraction As Double = 0.00000000000001
+    Private Const DriftFraction As Double = 0.000000000001
     ' A string at full length snaps taut only once it is over-long by this fraction of its length, so that
     ' one that has just snapped (or just gone slack) is not caught again at once by rounding.
     Private Const OverLength As Double = 0.000000000001
@@ -42,6 +42,7 @@ Friend NotInheritable Class ChainMotion
     ' The rods and taut strings, and their ties.
     Private ReadOnly _held As Link()
     Private ReadOnly _ties As ChainTie()
+    Private ReadOnly _constraints As ChainConstraints
     ' The slack strings, their ties, and how little spare length counts as reaching full length, m.
     Private ReadOnly _slack As Link()
     Private ReadOnly _slackTies As ChainTie()
@@ -52,6 +53,8 @@ Friend NotInheritable Class ChainMotion
     Private ReadOnly _states As New List(Of Double())
     Private ReadOnly _derivatives As New List(Of Double())
     Private ReadOnly _tensions As New List(Of Double())
+    ' Per step: the quintics' coefficients, once asked for.
+    Private ReadOnly _quintics As New List(Of Double())
     ' Per step: each body's speed bound (m/s) and acceleration bound (m/s²), once asked for.
     Private ReadOnly _bounds As New List(Of Double())
     Private _step As Double
@@ -98,7 +101,7 @@ Friend NotInheritable Class ChainMotion
         Do
             Dim ties = held.Select(Function(l) TieOf(l)).ToArray()
             Dim d = FreeDerivative(y)
-            Dim lambda = ChainConstraints.Tensions(y, d, ties, _inverseMass)
+            Dim lambda = New ChainConstraints(ties, _inverseMass).Tensions(y, d)
             Dim worst = -1, least = 0.0
             For i = 0 To held.Count - 1
                 If held(i).Kind <> LinkKind.String Then Continue For
@@ -113,6 +116,7 @@ Friend NotInheritable Class ChainMotion
         Loop
         _held = held.ToArray()
         _ties = _held.Select(Function(l) TieOf(l)).ToArray()
+        _constraints = New ChainConstraints(_ties, _inverseMass)
         _slack = slack.ToArray()
         _slackTies = _slack.Select(Function(l) TieOf(l)).ToArray()
         _snapAt = New Double(_slack.Length - 1) {}
@@ -185,7 +189,7 @@ Friend NotInheritable Class ChainMotion
     ''' <summary>dy/dt with the ties holding, and their tensions (N).</summary>
     Private Function Derivative(y As Double(), ByRef tensions As Double()) As Double()
         Dim d = FreeDerivative(y)
-        tensions = ChainConstraints.Tensions(y, d, _ties, _inverseMass)
+        tensions = _constraints.Tensions(y, d)
         _lastTensions = tensions
         Return d
     End Function
@@ -210,11 +214,11 @@ Friend NotInheritable Class ChainMotion
                 _step = h * DormandPrince.StepFactor(worst)
                 If worst <= 1 Then
                     Dim lengthError As Double, rateError As Double
-                    ChainConstraints.Drift(result, _ties, lengthError, rateError)
+                    _constraints.Drift(result, lengthError, rateError)
                     ' The step's last evaluation was at its result: its tensions are those there, unless the result is moved back onto the lengths.
                     Dim tensions = _lastTensions
                     If lengthError > DriftFraction OrElse rateError > DriftFraction * SpeedScale(result) Then
-                        ChainConstraints.Project(result, _ties, _inverseMass)
+                        _constraints.Project(result)
                         slope = Derivative(result, tensions)
                     End If
                     _times.Add(t + h)
@@ -316,15 +320,31 @@ Friend NotInheritable Class ChainMotion
         Return Math.Max(lo, 0)
     End Function
 
-    ''' <summary>The quintic's coefficients c₀…c₅ in s = (t − tₖ)/h for body k's coordinate (0: x, 1: y) on step j.</summary>
-    Private Function Coefficients(j As Integer, k As Integer, axis As Integer) As Double()
-        Dim h = _times(j + 1) - _times(j)
-        Dim p0 = _states(j)(4 * k + axis), v0 = _states(j)(4 * k + 2 + axis) * h, a0 = _derivatives(j)(4 * k + 2 + axis) * h * h
-        Dim p1 = _states(j + 1)(4 * k + axis), v1 = _states(j + 1)(4 * k + 2 + axis) * h, a1 = _derivatives(j + 1)(4 * k + 2 + axis) * h * h
-        Return {p0, v0, 0.5 * a0,
-                -10 * p0 - 6 * v0 - 1.5 * a0 + 10 * p1 - 4 * v1 + 0.5 * a1,
-                15 * p0 + 8 * v0 + 1.5 * a0 - 15 * p1 + 7 * v1 - a1,
-                -6 * p0 - 3 * v0 - 0.5 * a0 + 6 * p1 - 3 * v1 + 0.5 * a1}
+    ''' <summary>
+    ''' Step j's quintics, worked out once: for body k and coordinate a (0: x, 1: y), the coefficients c₀…c₅ in
+    ''' s = (t − tⱼ)/h are at 6(2k + a) onwards.
+    ''' </summary>
+    Private Function Quintics(j As Integer) As Double()
+        Do While _quintics.Count <= j
+            Dim i = _quintics.Count
+            Dim h = _times(i + 1) - _times(i)
+            Dim c(12 * _n - 1) As Double
+            For k = 0 To _n - 1
+                For axis = 0 To 1
+                    Dim p0 = _states(i)(4 * k + axis), v0 = _states(i)(4 * k + 2 + axis) * h, a0 = _derivatives(i)(4 * k + 2 + axis) * h * h
+                    Dim p1 = _states(i + 1)(4 * k + axis), v1 = _states(i + 1)(4 * k + 2 + axis) * h, a1 = _derivatives(i + 1)(4 * k + 2 + axis) * h * h
+                    Dim o = 6 * (2 * k + axis)
+                    c(o) = p0
+                    c(o + 1) = v0
+                    c(o + 2) = 0.5 * a0
+                    c(o + 3) = -10 * p0 - 6 * v0 - 1.5 * a0 + 10 * p1 - 4 * v1 + 0.5 * a1
+                    c(o + 4) = 15 * p0 + 8 * v0 + 1.5 * a0 - 15 * p1 + 7 * v1 - a1
+                    c(o + 5) = -6 * p0 - 3 * v0 - 0.5 * a0 + 6 * p1 - 3 * v1 + 0.5 * a1
+                Next
+            Next
+            _quintics.Add(c)
+        Loop
+        Return _quintics(j)
     End Function
 
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
@@ -337,28 +357,30 @@ Friend NotInheritable Class ChainMotion
         End If
         Dim h = _times(j + 1) - _times(j)
         Dim s = (time - _times(j)) / h
-        Dim cx = Coefficients(j, k, 0), cy = Coefficients(j, k, 1)
-        position = New Vector(Poly(cx, s), Poly(cy, s))
-        velocity = New Vector(Slope(cx, s) / h, Slope(cy, s) / h)
+        Dim c = Quintics(j)
+        Dim ox = 12 * k, oy = 12 * k + 6
+        position = New Vector(Poly(c, ox, s), Poly(c, oy, s))
+        velocity = New Vector(Slope(c, ox, s) / h, Slope(c, oy, s) / h)
     End Sub
 
-    Private Shared Function Poly(c As Double(), s As Double) As Double
-        Return c(0) + s * (c(1) + s * (c(2) + s * (c(3) + s * (c(4) + s * c(5)))))
+    Private Shared Function Poly(c As Double(), o As Integer, s As Double) As Double
+        Return c(o) + s * (c(o + 1) + s * (c(o + 2) + s * (c(o + 3) + s * (c(o + 4) + s * c(o + 5)))))
     End Function
 
-    Private Shared Function Slope(c As Double(), s As Double) As Double
-        Return c(1) + s * (2 * c(2) + s * (3 * c(3) + s * (4 * c(4) + s * 5 * c(5))))
+    Private Shared Function Slope(c As Double(), o As Integer, s As Double) As Double
+        Return c(o + 1) + s * (2 * c(o + 2) + s * (3 * c(o + 3) + s * (4 * c(o + 4) + s * 5 * c(o + 5))))
     End Function
 
     ''' <summary>|p'| (order 1) or |p''| (order 2) of body k on step j, bounded by Σ j|cⱼ| and Σ j(j − 1)|cⱼ| (s in [0, 1]).</summary>
     Private Function StepBound(j As Integer, k As Integer, order As Integer) As Double
         Dim h = _times(j + 1) - _times(j)
         Dim bx = 0.0, by = 0.0
-        Dim cx = Coefficients(j, k, 0), cy = Coefficients(j, k, 1)
+        Dim c = Quintics(j)
+        Dim ox = 12 * k, oy = 12 * k + 6
         For p = order To 5
             Dim w = If(order = 1, p, p * (p - 1))
-            bx += w * Math.Abs(cx(p))
-            by += w * Math.Abs(cy(p))
+            bx += w * Math.Abs(c(ox + p))
+            by += w * Math.Abs(c(oy + p))
         Next
         Return Math.Sqrt(bx * bx + by * by) / Math.Pow(h, order) * (1 + 0.000000001)
     End Function
