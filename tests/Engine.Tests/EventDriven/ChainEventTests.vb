@@ -9,7 +9,7 @@ Namespace EventDriven
     ''' and a rope of ten balls keep their rods' lengths and their energy, the double pendulum follows an
     ''' independent solution in its angles and agrees with Verlet to the order of Verlet's step over half a
     ''' second, a chain spinning into a free ball hits it when the geometry says, a rope swept through balls on
-    ''' the floor never overlaps them, and a chain with a spring in it keeps its energy.
+    ''' the floor never overlaps them, a chain with a spring in it keeps its energy, and redundant rods are refused.
     ''' </summary>
     Public Class ChainEventTests
         Private Const G As Double = 9.81
@@ -262,6 +262,24 @@ Namespace EventDriven
             _output.WriteLine($"energy {worst:E2} of m g L, rod {Math.Abs(w.Links(0).Distance - 1):E2} m")
             Assert.True(worst <= 0.000000001, $"energy drifted by {worst:E2} of m g L")
             Assert.Equal(1.0, w.Links(0).Distance, 9)
+        End Sub
+
+        <Fact>
+        Public Sub TwoRodsBetweenTheSameBalls_AreRefusedInPlainWords_BeforeAnythingMoves()
+            Dim w As New World(10, 10, G, 1.0)
+            w.Solver = SolverFactory.Create("event")
+            Dim a As New Circle(New Vector(5, 5), 0.05, 1)
+            Dim b As New Circle(New Vector(6, 5), 0.05, 1, New Vector(0, 1))
+            w.Add(a)
+            w.Add(b)
+            w.Add(Link.CreateTie(LinkKind.Rod, a, Anchor, 1))
+            w.Add(Link.CreateTie(LinkKind.Rod, b, a, 1))
+            w.Add(Link.CreateTie(LinkKind.Rod, a, b, 1))
+            Dim ex = Assert.Throws(Of UnsupportedSceneException)(Sub() w.Advance(0.1))
+            Assert.Contains("more ways than it can move", ex.Message)
+            Assert.Contains("--solver verlet", ex.Message)
+            Assert.Equal(0.0, w.Time)
+            Assert.Equal(New Vector(6, 5), b.Position)
         End Sub
 
         Private Shared Function AngularMomentum(w As World, about As Vector) As Double

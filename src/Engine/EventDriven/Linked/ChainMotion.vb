@@ -139,6 +139,29 @@ Friend NotInheritable Class ChainMotion
         _step = 0.06 * Math.Sqrt(shortest / Math.Max(gravity, 1))
     End Sub
 
+    ''' <summary>
+    ''' Whether every rod and every string at full length could hold at once where its bodies are now: false when
+    ''' some are redundant (two rods between the same two balls, a ball held by rods to two points in line
+    ''' with it), which the tension solve cannot take.
+    ''' </summary>
+    Friend Shared Function CanHoldAll(bodies As Circle(), links As List(Of Link)) As Boolean
+        Dim inverseMass = bodies.Select(Function(b) b.InverseMass).ToArray()
+        Dim ties = links.Where(Function(l) l.Kind = LinkKind.Rod OrElse (l.Kind = LinkKind.String AndAlso l.Distance >= l.Length * (1 - LinkedMotions.FullFraction))).
+                         Select(Function(l) New ChainTie(Array.IndexOf(bodies, l.A), If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B)), If(l.IsAnchored, l.EndB, Vector.Zero), l.Length)).ToArray()
+        Dim y(4 * bodies.Length - 1) As Double
+        For k = 0 To bodies.Length - 1
+            y(4 * k) = bodies(k).Position.X
+            y(4 * k + 1) = bodies(k).Position.Y
+        Next
+        Dim accelerations(y.Length - 1) As Double
+        Try
+            Call New ChainConstraints(ties, inverseMass).Tensions(y, accelerations)
+            Return True
+        Catch ex As InvalidOperationException
+            Return False
+        End Try
+    End Function
+
     ''' <summary>−1 slack, 0 taut (at full length, not moving along itself), +1 over-long and stretching (it must snap now).</summary>
     Private Function StringState(l As Link, slackened As Link) As Integer
         If l Is slackened Then Return -1

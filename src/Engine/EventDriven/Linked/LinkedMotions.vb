@@ -17,6 +17,10 @@ Friend Module LinkedMotions
             If b.Kind <> ShapeKind.Circle Then Throw New UnsupportedSceneException("the event solver does not yet move boxes or polygons in a scene with links" & UseVerlet)
         Next
         ' Groups that no closed form fits are integrated: springs alone by IntegratedMotion, chains with rods or strings by ChainMotion.
+        For Each g In groups
+            If OnlySprings(g) OrElse Not IsChain(g) Then Continue For
+            If Not ChainMotion.CanHoldAll(g.Bodies.ToArray(), g.Links) Then Throw New UnsupportedSceneException("the event solver does not yet move rods or strings that hold a body in more ways than it can move (two rods between the same two balls, or a ball on rods to two points in line with it)" & UseVerlet)
+        Next
     End Sub
 
     ''' <summary>
