@@ -282,6 +282,32 @@ Namespace EventDriven
             Assert.Equal(New Vector(6, 5), b.Position)
         End Sub
 
+        <Fact>
+        Public Sub DoublePendulumCarriedByHand_AndLetGo_SwingsOnWithItsRodsHeld()
+            Dim w As New World(10, 10, G, 1.0)
+            w.Solver = SolverFactory.Create("event")
+            Dim balls = LevelChain(w, 2, 1, 0.05, 1)
+            w.Advance(0.3)
+            ' The lower bob carried over a few frames to below the anchor and a little to the side, then let go at rest.
+            w.BeginDrag(balls(1))
+            Dim hand = Anchor + New Vector(0.5, -1.8)
+            Dim start = balls(1).Position
+            For k = 1 To 20
+                w.DragTo(start + (hand - start) * (k / 20.0))
+                w.Advance(1 / 60.0)
+            Next
+            w.EndDrag(Vector.Zero)
+            Dim e0 = Energy(w)
+            Dim worstEnergy = 0.0, worstLength = 0.0
+            TestSolvers.Frames(w, 2, 0.05, Sub()
+                                               worstEnergy = Math.Max(worstEnergy, Math.Abs(Energy(w) - e0) / (2 * G * 2))
+                                               worstLength = Math.Max(worstLength, WorstLengthError(w))
+                                           End Sub)
+            _output.WriteLine($"after the hand: energy {worstEnergy:E2} of m g L, rods {worstLength:E2} m")
+            Assert.True(worstLength <= 0.000000001, $"a rod's length is off by {worstLength} m")
+            Assert.True(worstEnergy <= 0.000000001, $"energy drifted by {worstEnergy:E2} of m g L")
+        End Sub
+
         Private Shared Function AngularMomentum(w As World, about As Vector) As Double
             Return w.Circles.Sum(Function(c) c.Mass * Vector.Cross(c.Position - about, c.Velocity))
         End Function
