@@ -83,5 +83,30 @@ Namespace EventDriven
             Assert.True(worstOver <= 0.000000001, $"a string was {worstOver} m over its length")
             Assert.True(worstEnergy <= 0.000000001, $"energy drifted by {worstEnergy:E2} of m g L")
         End Sub
+        <Fact>
+        Public Sub DoublePendulumOnStringsReleasedLevel_StartsWithNoTension_AndKeepsItsEnergy()
+            ' Released level at rest, both strings start with zero tension (the bobs fall together at first):
+            ' the start must neither stall on the zero nor let a string stretch.
+            Dim w As New World(10, 10, G, 1.0)
+            w.Solver = SolverFactory.Create("event")
+            Dim upper As New Circle(Anchor + New Vector(1, 0), 0.05, 1)
+            Dim lower As New Circle(Anchor + New Vector(2, 0), 0.05, 1)
+            w.Add(upper)
+            w.Add(lower)
+            w.Add(Link.CreateTie(LinkKind.String, upper, Anchor, 1))
+            w.Add(Link.CreateTie(LinkKind.String, lower, upper, 1))
+            Dim energy As Func(Of Double) = Function() w.Circles.Sum(Function(c) 0.5 * c.Mass * c.Velocity.LengthSquared + c.Mass * G * c.Position.Y)
+            Dim e0 = energy()
+            Dim worstEnergy = 0.0, worstOver = 0.0
+            For k = 1 To 100
+                w.Advance(0.02)
+                worstEnergy = Math.Max(worstEnergy, Math.Abs(energy() - e0) / (2 * G * 2))
+                worstOver = Math.Max(worstOver, w.Links.Max(Function(l) l.Distance - l.Length))
+            Next
+            _output.WriteLine($"energy {worstEnergy:E2} of m g L, over-long by at most {worstOver:E2} m, lower bob at {lower.Position}")
+            Assert.True(lower.Position.Y < Anchor.Y - 1, $"the lower bob is at {lower.Position}")
+            Assert.True(worstOver <= 0.000000001, $"a string was {worstOver} m over its length")
+            Assert.True(worstEnergy <= 0.000000001, $"energy drifted by {worstEnergy:E2} of m g L")
+        End Sub
     End Class
 End Namespace

@@ -11,7 +11,7 @@ Option Strict On
 ''' the speed and acceleration bounds read from its coefficients, as for springs (<see cref="IntegratedMotion"/>).
 ''' A taut string goes slack where its tension would turn negative (a root of the tension along the quintic,
 ''' by Brent's method), and a slack one snaps taut where its ends reach its length (conservative advancement
-''' on its spare length); both end this motion, and the next starts from the state there.
+''' on L² − d²); both end this motion, and the next starts from the state there.
 ''' Steps are taken lazily, as far as anything asks.
 ''' </summary>
 Friend NotInheritable Class ChainMotion
