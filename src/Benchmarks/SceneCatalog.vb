@@ -17,6 +17,8 @@ Friend Module SceneCatalog
             Case "box-drop" : Return New BoxDropScene()
             Case "pendulum" : Return New PendulumScene()
             Case "spring" : Return New SpringScene()
+            Case "rope" : Return New RopeScene()
+            Case "cradle-strings" : Return New CradleStringsScene()
             Case "galton" : Return New GaltonScene()
             Case "mixed" : Return New MixedScene(If(options.Quick, 0.02, 0.2))
             Case Else : Throw New ArgumentException("unknown scene '" & name & "'", NameOf(name))

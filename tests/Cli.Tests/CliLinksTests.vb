@@ -5,8 +5,8 @@ Imports Xunit
 
 ''' <summary>
 ''' run with links, with every solver: a pendulum on a string ends where the elliptic closed form puts it
-''' (to the step's order for the stepping solvers), and a scene the event solver cannot move yet fails
-''' with its plain message, not an internal error.
+''' (to the step's order for the stepping solvers), the lesson scenes with chains of rods run with the event
+''' solver, and a scene it cannot move yet fails with its plain message, not an internal error.
 ''' </summary>
 Public Class CliLinksTests
     Private Const G As Double = 9.81
@@ -16,10 +16,10 @@ Public Class CliLinksTests
         "{'id':'bob','type':'circle','x':" & (5 + Math.Sin(Math.PI / 3)).ToString("R", CultureInfo.InvariantCulture) &
         ",'y':5.5,'radius':0.05,'mass':0.5}],'links':[{'type':'string','a':'bob','at':[5,6],'length':1}]}")
 
-    ''' <summary>Two bobs, one below the other: a chain of two rods.</summary>
-    Private Shared ReadOnly ChainScene As String = Q("{'format':'physics-scene/1','world':{'width':10,'height':10,'gravity':9.81,'restitution':1},'bodies':[" &
-        "{'id':'upper','type':'circle','x':5,'y':5,'radius':0.05,'mass':0.5},{'id':'lower','type':'circle','x':5,'y':4,'radius':0.05,'mass':0.5,'vx':1}]," &
-        "'links':[{'type':'rod','a':'upper','at':[5,6]},{'type':'rod','a':'lower','b':'upper'}]}")
+    ''' <summary>A bob on a rod and a movable box: the event solver does not move boxes in a scene with links.</summary>
+    Private Shared ReadOnly BoxScene As String = Q("{'format':'physics-scene/1','world':{'width':10,'height':10,'gravity':9.81,'restitution':1},'bodies':[" &
+        "{'id':'bob','type':'circle','x':5,'y':5,'radius':0.05,'mass':0.5,'vx':1},{'id':'box','type':'rectangle','x':1,'y':0,'width':0.3,'height':0.2,'fixed':false,'mass':2}]," &
+        "'links':[{'type':'rod','a':'bob','at':[5,6]}]}")
 
     <Theory>
     <InlineData("event", 0.000000001)>
@@ -41,16 +41,46 @@ Public Class CliLinksTests
     End Sub
 
     <Fact>
-    Public Sub AChainOfLinks_WithTheEventSolver_FailsInPlainWords_AndRunsWithVerlet()
+    Public Sub ABoxInASceneWithLinks_WithTheEventSolver_FailsInPlainWords_AndRunsWithVerlet()
         Using t As New TempFolder()
-            Dim scene = t.Write("chain.json", ChainScene)
+            Dim scene = t.Write("box.json", BoxScene)
             Dim r = RunCli("run", scene, "--time", "1", "--solver", "event")
             Assert.Equal(1, r.ExitCode)
-            Assert.Contains("chain of links", r.StdErr)
+            Assert.Contains("boxes or polygons", r.StdErr)
             Assert.Contains("--solver verlet", r.StdErr)
             Assert.DoesNotContain("internal error", r.StdErr)
             Dim ok = RunCli("run", scene, "--time", "1", "--solver", "verlet")
             Assert.True(ok.ExitCode = 0, ok.ToString())
         End Using
     End Sub
+
+    <Theory>
+    <InlineData("double-pendulum.json")>
+    <InlineData("rope.json")>
+    Public Sub ChainLessonScenes_RunWithTheEventSolver_AndKeepTheirRodLengths(file As String)
+        Using t As New TempFolder()
+            Dim scene = Path.Combine(RepoRoot, "scenes", file)
+            Dim states = t.File("states.csv")
+            Dim r = RunCli("run", scene, "--time", "2", "--sample", "0.5", "--solver", "event", "--states", states)
+            Assert.True(r.ExitCode = 0, r.ToString())
+            Assert.DoesNotContain("verlet", r.StdErr, StringComparison.OrdinalIgnoreCase)
+            ' Each rod's length from the last sample's positions, against its ends' distance at the start.
+            Dim rows = IO.File.ReadAllLines(states).Skip(1).Select(Function(l) l.Split(","c)).ToList()
+            Dim first = rows.Where(Function(c) c(0) = "0").ToDictionary(Function(c) c(1), Function(c) New Vector(D(c(2)), D(c(3))))
+            Dim last = rows.Where(Function(c) c(0) = "2").ToDictionary(Function(c) c(1), Function(c) New Vector(D(c(2)), D(c(3))))
+            Assert.Equal(first.Count, last.Count)
+            Dim names = first.Keys.Where(Function(k) Not k.StartsWith("free", StringComparison.Ordinal)).ToList()
+            For i = 1 To names.Count - 1
+                Dim before = (first(names(i)) - first(names(i - 1))).Length
+                Dim after = (last(names(i)) - last(names(i - 1))).Length
+                Assert.True(Math.Abs(after - before) < 0.000000001, $"{file}: {names(i - 1)}–{names(i)} was {before} m apart and is {after} m")
+            Next
+            ' And it moved.
+            Assert.NotEqual(first(names.Last()), last(names.Last()))
+        End Using
+    End Sub
+
+    Private Shared Function D(text As String) As Double
+        Return Double.Parse(text, CultureInfo.InvariantCulture)
+    End Function
 End Class

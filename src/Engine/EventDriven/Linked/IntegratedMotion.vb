@@ -92,46 +92,19 @@ Friend NotInheritable Class IntegratedMotion
             Dim k1 = _accelerations(_accelerations.Count - 1)
             Do
                 Dim h = _step
-                Dim k2 = Derivative(Combine(y, h, k1, 1 / 5.0))
-                Dim k3 = Derivative(Combine(y, h, k1, 3 / 40.0, k2, 9 / 40.0))
-                Dim k4 = Derivative(Combine(y, h, k1, 44 / 45.0, k2, -56 / 15.0, k3, 32 / 9.0))
-                Dim k5 = Derivative(Combine(y, h, k1, 19372 / 6561.0, k2, -25360 / 2187.0, k3, 64448 / 6561.0, k4, -212 / 729.0))
-                Dim k6 = Derivative(Combine(y, h, k1, 9017 / 3168.0, k2, -355 / 33.0, k3, 46732 / 5247.0, k4, 49 / 176.0, k5, -5103 / 18656.0))
-                Dim next5 = Combine(y, h, k1, 35 / 384.0, k3, 500 / 1113.0, k4, 125 / 192.0, k5, -2187 / 6784.0, k6, 11 / 84.0)
-                Dim k7 = Derivative(next5)
-                ' The fifth-order result minus the embedded fourth-order one.
-                Dim worst = 0.0
-                For i = 0 To y.Length - 1
-                    Dim e = h * (71 / 57600.0 * k1(i) - 71 / 16695.0 * k3(i) + 71 / 1920.0 * k4(i) - 17253 / 339200.0 * k5(i) + 22 / 525.0 * k6(i) - 1 / 40.0 * k7(i))
-                    Dim scale = AbsoluteTolerance + RelativeTolerance * Math.Max(Math.Abs(y(i)), Math.Abs(next5(i)))
-                    worst = Math.Max(worst, Math.Abs(e) / scale)
-                Next
-                Dim factor = If(worst = 0, 5, Math.Min(5, Math.Max(0.2, 0.9 * Math.Pow(worst, -0.2))))
+                Dim next5 As Double() = Nothing, k7 As Double() = Nothing
+                Dim worst = DormandPrince.TryStep(AddressOf Derivative, y, k1, h, RelativeTolerance, AbsoluteTolerance, next5, k7)
+                _step = h * DormandPrince.StepFactor(worst)
                 If worst <= 1 Then
                     _times.Add(t + h)
                     _states.Add(next5)
                     _accelerations.Add(k7)
-                    _step = h * factor
                     Exit Do
                 End If
-                _step = h * factor
                 If Not (_step > 0.000000000000001 * Math.Max(1, Math.Abs(t))) Then Throw New InvalidOperationException($"the spring integrator could not keep its error down at t = {t} s")
             Loop
         Loop
     End Sub
-
-    ''' <summary>y + h Σ wᵢ kᵢ, for pairs (k, w).</summary>
-    Private Shared Function Combine(y As Double(), h As Double, ParamArray terms As Object()) As Double()
-        Dim r = DirectCast(y.Clone(), Double())
-        For p = 0 To terms.Length - 1 Step 2
-            Dim k = DirectCast(terms(p), Double())
-            Dim w = h * CDbl(terms(p + 1))
-            For i = 0 To r.Length - 1
-                r(i) += w * k(i)
-            Next
-        Next
-        Return r
-    End Function
 
     ''' <summary>The step holding <paramref name="time"/> (the last whose start is at or before it).</summary>
     Private Function StepAt(time As Double) As Integer

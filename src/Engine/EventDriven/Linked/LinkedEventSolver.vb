@@ -347,8 +347,9 @@ Friend NotInheritable Class LinkedEventSolver
         Dim depth = gap.GapAndNormal(t, normal, rate)
         Dim speeds = _circles(i).Velocity.Length + If(j >= 0, _circles(j).Velocity.Length, 0)
         If depth > Slop OrElse rate >= -(CreepSpeed + 0.000000001 * speeds) Then
-            ' Not a contact: a search that reached its horizon or its budget, or a touch that does not press.
-            PredictBody(i, tEnd, 0)
+            ' Not a contact: a search that reached its horizon or its budget, or a touch that does not press. Only
+            ' this prediction is taken up again from now: nothing has moved differently, so ball i's others stand.
+            PredictAgain(i, j, side, f, tEnd)
             Return
         End If
         Dim a = _circles(i)
@@ -374,6 +375,17 @@ Friend NotInheritable Class LinkedEventSolver
         Restart(gi, t, False)
         If gj >= 0 AndAlso gj <> gi Then Restart(gj, t, False)
         Repredict(gi, gj, tEnd)
+    End Sub
+
+    ''' <summary>Predicts again from now the one contact of ball i with ball j, wall <paramref name="side"/> or fixed body f.</summary>
+    Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)
+        If j >= 0 Then
+            _pairTime(Math.Min(i, j), Math.Max(i, j)) = PredictPair(Math.Min(i, j), Math.Max(i, j), tEnd)
+        ElseIf f >= 0 Then
+            _fixedTime(i, f) = PredictGap(i, LinkedGap.Obstacle(MotionOf(i), _slotOf(i), _differences(i, f), _fixed(f).Position), _differences(i, f).Radius, tEnd)
+        Else
+            _wallTime(i, side) = PredictGap(i, LinkedGap.Wall(MotionOf(i), _slotOf(i), _circles(i).Radius, side, _world.Width, _world.Height), 0, tEnd)
+        End If
     End Sub
 
     ''' <summary>Predicts again every contact of the bodies of groups g and h (−1: none).</summary>

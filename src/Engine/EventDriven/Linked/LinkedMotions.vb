@@ -16,10 +16,10 @@ Friend Module LinkedMotions
         For Each b In world.Movables
             If b.Kind <> ShapeKind.Circle Then Throw New UnsupportedSceneException("the event solver does not yet move boxes or polygons in a scene with links" & UseVerlet)
         Next
+        ' Groups that no closed form fits are integrated: springs alone by IntegratedMotion, chains with rods or strings by ChainMotion.
         For Each g In groups
-            ' Springs alone are integrated when no closed form fits them (IntegratedMotion).
-            If OnlySprings(g) Then Continue For
-            If g.Bodies.Count > 2 OrElse g.Links.Count > 1 Then Throw New UnsupportedSceneException("the event solver does not yet move a chain of links with a rod or string in it (a body with more than one link, or more than two bodies linked together)" & UseVerlet)
+            If OnlySprings(g) OrElse Not IsChain(g) Then Continue For
+            If Not ChainMotion.CanHoldAll(g.Bodies.ToArray(), g.Links) Then Throw New UnsupportedSceneException("the event solver does not yet move rods or strings that hold a body in more ways than it can move (two rods between the same two balls, or a ball on rods to two points in line with it)" & UseVerlet)
         Next
     End Sub
 
@@ -43,6 +43,11 @@ Friend Module LinkedMotions
             If group.Bodies.Count = 1 AndAlso group.Links.Count = 1 AndAlso SpringMotion.Fits(a, l, g) Then Return New SpringMotion(a, l, time, g)
             Return New IntegratedMotion(group.Bodies.ToArray(), group.Links, time, g)
         End If
+        If IsChain(group) Then
+            ' A string whose tension has just fallen to zero is slack in the next motion, whatever the rounding says.
+            Dim previous = TryCast(group.Motion, ChainMotion)
+            Return New ChainMotion(group.Bodies.ToArray(), group.Links, time, g, If(slack AndAlso previous IsNot Nothing, previous.Slackened, Nothing))
+        End If
         If group.Bodies.Count = 1 Then
             Select Case l.Kind
                 Case LinkKind.Rod
@@ -58,6 +63,11 @@ Friend Module LinkedMotions
             Return New DumbbellMotion(first, If(first Is a, b, a), l, time, g)
         End If
         Return New PairFlightMotion(a, b, l, time, g, slop)
+    End Function
+
+    ''' <summary>Whether the group has a rod or string and is more than one body on one link or two bodies on one link (a double pendulum, a rope, a chain).</summary>
+    Private Function IsChain(group As LinkedGroup) As Boolean
+        Return group.Bodies.Count > 2 OrElse group.Links.Count > 1
     End Function
 
     ''' <summary>Whether every link of the group is a spring (and it has one).</summary>
