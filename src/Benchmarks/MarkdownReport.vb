@@ -235,7 +235,7 @@ Friend Module MarkdownReport
         sb.Append("```json").Append(ControlChars.Lf).Append(frame.RawJson).Append(ControlChars.Lf).Append("```").Append(ControlChars.Lf)
         Dim views = frame.Views
         If views IsNot Nothing AndAlso views.Ran Then
-            sb.Append(ControlChars.Lf).Append("Traces + COM on (path traces, the centre of mass and the Σp arrow; the same 1000-ball gas): step ").
+            sb.Append(ControlChars.Lf).Append("Traces + COM on (path traces, the centre of mass and the Σp arrow, with the speed histogram also drawn each frame: its time is the line's graph_median_ms, and the whole frame's total_median_ms; the same 1000-ball gas): step ").
                Append(Fixed2(views.StepMs)).Append(" ms + paint ").Append(Fixed2(views.PaintMs)).Append(" ms, target < 16 ms").
                Append(If(views.StepMs + views.PaintMs < 16, " (met).", " (missed).")).Append(" The app printed:").Append(ControlChars.Lf).Append(ControlChars.Lf)
             sb.Append("```json").Append(ControlChars.Lf).Append(views.RawJson).Append(ControlChars.Lf).Append("```").Append(ControlChars.Lf)
