@@ -7,6 +7,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Const MaxTypedSpeed As Double = 1000.0
     ''' <summary>The farthest from the origin a position can be typed, m (only a box without walls lets a body go beyond the container).</summary>
     Public Const MaxTypedPosition As Double = 1000.0
+    ''' <summary>What may stand between a typed width and height: "0.8 × 0.5", "0.8 x 0.5", "0.8*0.5", "0.8 0.5".</summary>
+    Private Shared ReadOnly SizeSeparators As Char() = {"×"c, "x"c, "X"c, "*"c, " "c}
 
     ''' <summary>What column <paramref name="column"/> of table <paramref name="table"/> (an index into <see cref="Tables"/>) holds, when it can be typed into.</summary>
     Public Shared Function EditableQuantity(table As Integer, column As Integer) As TableQuantity
@@ -20,6 +22,7 @@ Partial Public NotInheritable Class SimulationPresenter
             Case "vy (m/s)" : Return TableQuantity.Vy
             Case "Mass (kg)" : Return TableQuantity.Mass
             Case "Radius (m)" : Return TableQuantity.Radius
+            Case "Width × height (m)", "Size (m)" : Return TableQuantity.Size
         End Select
         Return TableQuantity.None
     End Function
@@ -50,6 +53,11 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The text an edit box opens with: the cell's value with more figures than the table shows ("" when it cannot be edited).</summary>
     Public Function CellEditText(table As Integer, row As Integer, column As Integer) As String
         If Not CanEditCell(table, row, column) Then Return ""
+        Dim body = BodyInRow(table, row)
+        If EditableQuantity(table, column) = TableQuantity.Size AndAlso body.Kind <> ShapeKind.Circle Then
+            Dim size = body.BoundsMax - body.BoundsMin
+            Return size.X.ToString("G6", Globalization.CultureInfo.InvariantCulture) & " × " & size.Y.ToString("G6", Globalization.CultureInfo.InvariantCulture)
+        End If
         Return CurrentValue(BodyInRow(table, row), table, EditableQuantity(table, column)).ToString("G6", Globalization.CultureInfo.InvariantCulture)
     End Function
 
@@ -62,7 +70,7 @@ Partial Public NotInheritable Class SimulationPresenter
             Case TableQuantity.Vx : Return body.Velocity.X
             Case TableQuantity.Vy : Return body.Velocity.Y
             Case TableQuantity.Mass : Return body.Mass
-            Case TableQuantity.Radius : Return DirectCast(body, Circle).Radius
+            Case TableQuantity.Radius, TableQuantity.Size : Return DirectCast(body, Circle).Radius
         End Select
         Return 0
     End Function
@@ -83,7 +91,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim body = BodyInRow(table, row)
         Dim q = EditableQuantity(table, column)
         If body Is Nothing OrElse q = TableQuantity.None Then
-            ShowMessage("That cell cannot be typed into: the position, velocity, mass and radius of a moving body can.")
+            ShowMessage("That cell cannot be typed into: the position, velocity, mass and size of a moving body can.")
             Return False
         End If
         If body.IsFixed Then
@@ -97,6 +105,10 @@ Partial Public NotInheritable Class SimulationPresenter
     End Function
 
     Private Function ApplyEdit(body As Shape, table As Integer, q As TableQuantity, text As String) As Boolean
+        If q = TableQuantity.Size Then
+            If body.Kind = ShapeKind.Circle Then Return ApplyEdit(body, table, TableQuantity.Radius, text)
+            Return ApplySize(body, text)
+        End If
         Dim label = LabelOf(q)
         Dim read As NumberInput
         Select Case q
@@ -139,6 +151,52 @@ Partial Public NotInheritable Class SimulationPresenter
         Emit("edited " & body.Id & " " & label & " = " & value.ToString("R", Globalization.CultureInfo.InvariantCulture))
         Dim note = If(read.WasClamped, LabelOf(q) & " set to the " & If(read.WasRaised, "minimum", "maximum") & ", " & Units.Sig(value) & ". ", "")
         ShowMessage(note & body.Id & ": " & label & " is now " & Units.Sig(value) & ". Restart comes back to this.")
+        RememberStart()
+        TakeSnapshot()
+        Return True
+    End Function
+
+    ''' <summary>
+    ''' A box's or polygon's new width × height, m ("0.8 × 0.5"; x, * or a space between them also do),
+    ''' each checked as the Add panel checks a rectangle's sides. The body keeps its centre of mass,
+    ''' mass and velocity; a polygon is stretched about its centre of mass (it stays convex). Refused
+    ''' with the reason when it would overlap another body or leave a walled container.
+    ''' </summary>
+    Private Function ApplySize(body As Shape, text As String) As Boolean
+        Dim asking = If(body.Kind = ShapeKind.Rectangle, InputLimits.BoxMessage, InputLimits.PolygonMessage)
+        Dim parts = If(text, "").Split(SizeSeparators, StringSplitOptions.RemoveEmptyEntries)
+        If parts.Length <> 2 Then
+            ShowMessage(asking & " Type the width and the height in metres, as 0.8 × 0.5, not '" & OneLine(text) & "'.")
+            Return False
+        End If
+        Dim width = NumberInput.ReadPositive(parts(0), "width (m)", InputLimits.MaxSide, InputLimits.MinSide)
+        Dim height = NumberInput.ReadPositive(parts(1), "height (m)", InputLimits.MaxSide, InputLimits.MinSide)
+        If Not width.IsValid OrElse Not height.IsValid Then
+            ShowMessage(asking & " " & Problems(width, height))
+            Return False
+        End If
+        EndGestures()
+        Dim centre = body.CentreOfMass
+        Dim replacement As Shape
+        If body.Kind = ShapeKind.Rectangle Then
+            replacement = Rectangle.CreateMovable(centre - New Vector(width.Value / 2, height.Value / 2), width.Value, height.Value, body.Mass, body.Velocity, body.Id)
+        Else
+            Dim old = body.BoundsMax - body.BoundsMin
+            Dim sx = width.Value / old.X, sy = height.Value / old.Y
+            Dim corners = DirectCast(body, Polygon).Vertices.Select(Function(v) centre + New Vector((v.X - centre.X) * sx, (v.Y - centre.Y) * sy)).ToList()
+            replacement = New Polygon(corners, body.Mass, body.Velocity, body.Id)
+        End If
+        replacement.Color = body.Color
+        Dim said = Units.Sig(width.Value) & " × " & Units.Sig(height.Value) & " m"
+        Dim refusal = PlacementRefusal(replacement, body, Vector.Zero)
+        If refusal IsNot Nothing Then
+            ShowMessage("A size of " & said & " would put " & body.Id & " " & refusal & "; it keeps its size.")
+            Return False
+        End If
+        World.Replace(body, replacement)
+        Emit("edited " & body.Id & " size (m) = " & width.Value.ToString("R", Globalization.CultureInfo.InvariantCulture) & " × " & height.Value.ToString("R", Globalization.CultureInfo.InvariantCulture))
+        Dim note = If(width.WasClamped OrElse height.WasClamped, "A side was brought to its limit (" & Units.Sig(InputLimits.MinSide) & " to " & Units.Sig(InputLimits.MaxSide) & " m). ", "")
+        ShowMessage(note & body.Id & ": its size is now " & said & ". Restart comes back to this.")
         RememberStart()
         TakeSnapshot()
         Return True

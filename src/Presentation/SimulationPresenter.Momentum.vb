@@ -11,7 +11,7 @@ Partial Public NotInheritable Class SimulationPresenter
         MomentumCaptions.Impulses & """ shows, for a second, the impulse Δp each body receives at a collision, from the point of contact: two balls get equal and opposite arrows; a ball at a wall gets one. """ &
         MomentumCaptions.Traces & """ leaves a fading line behind each body (the last 3 s; in a crowded scene, the first 16 bodies). The key in the corner gives the scale of every momentum arrow." & vbLf & "" & vbLf &
         """" & MomentumCaptions.Walls & """ off takes the sides of the box away: it is drawn as an orange dashed outline, and balls fly out through it. On again, balls outside are brought back in. Restart goes back to the scene's own choice." & vbLf & "" & vbLf &
-        "To set a value exactly, double-click its cell in a table (or select a row and press F2): x, y, vx, vy, mass and, for a ball, radius. Type the value and press Enter; Esc cancels. It is checked as the Add panel checks its boxes, and a position inside another body or outside the box is refused. Restart comes back to what you typed.")
+        "To set a value exactly, double-click its cell in a table (or select a row and press F2): x, y, vx, vy, mass and the size (a ball's radius, or a box's or polygon's width × height, typed as 0.8 × 0.5). Type the value and press Enter; Esc cancels. It is checked as the Add panel checks its boxes, and a position inside another body or outside the box is refused. Restart comes back to what you typed.")
 
     ''' <summary>The maths page on the momentum views.</summary>
     Public Shared ReadOnly Property MomentumMaths As New HelpTopic("Centre of mass, total momentum and impulse",

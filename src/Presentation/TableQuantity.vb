@@ -16,4 +16,6 @@ Public Enum TableQuantity
     Mass
     ''' <summary>A circle's radius, m.</summary>
     Radius
+    ''' <summary>A box's or polygon's width × height (m), or a ball's radius where a table lists sizes.</summary>
+    Size
 End Enum

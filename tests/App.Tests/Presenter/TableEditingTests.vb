@@ -181,7 +181,56 @@ Public Class TableEditingTests
         Assert.Equal(6.0, h.P.World.Find("box").Position.X, 12)
         Assert.True(h.P.EditCell(RectanglesTable, 0, Column(RectanglesTable, TableQuantity.Mass), "0.5"))
         Assert.Equal(0.5, h.P.World.Find("box").Mass)
-        Assert.False(h.P.CanEditCell(RectanglesTable, 0, 8)) ' its size is not typed here
+        ' Its width × height is typed as two numbers; it keeps its centre of mass, mass and velocity.
+        Dim centre = h.P.World.Find("box").CentreOfMass
+        Assert.True(h.P.EditCell(RectanglesTable, 0, Column(RectanglesTable, TableQuantity.Size), "0.8 × 0.4"))
+        Dim box = DirectCast(h.P.World.Find("box"), Rectangle)
+        Assert.Equal(0.8, box.Width, 12)
+        Assert.Equal(0.4, box.Height, 12)
+        Assert.Equal(centre.X, box.CentreOfMass.X, 12)
+        Assert.Equal(centre.Y, box.CentreOfMass.Y, 12)
+        Assert.Equal(0.5, box.Mass)
+    End Sub
+
+    <Theory>
+    <InlineData("0.8")>
+    <InlineData("0.8 × 0")>
+    <InlineData("wide × tall")>
+    <InlineData("")>
+    Public Sub ABadSize_IsRefused_WithTheAddPanelsMessage_AndTheWorldIsUnchanged(text As String)
+        Dim h = TwoBalls()
+        h.P.World.Add(Rectangle.CreateMovable(New Vector(1, 3), 1.0, 0.5, 2.0, id:="box"))
+        h.P.TogglePause()
+        h.P.TogglePause()
+        Dim before = Saved(h)
+        Assert.False(h.P.EditCell(RectanglesTable, 0, Column(RectanglesTable, TableQuantity.Size), text))
+        Assert.StartsWith(InputLimits.BoxMessage, h.View.LastMessage, StringComparison.Ordinal)
+        Assert.Equal(before, Saved(h))
+    End Sub
+
+    <Fact>
+    Public Sub ASizeThatWouldReachANeighbour_IsRefused_AndAPolygonIsStretchedAboutItsCentre()
+        Dim h = TwoBalls()
+        ' A box beside ball a (centre (2, 2), r 0.2): 1 m wide would reach into it.
+        h.P.World.Add(Rectangle.CreateMovable(New Vector(2.5, 1.8), 0.4, 0.4, 1.0, id:="box"))
+        h.P.World.Add(New Polygon({New Vector(3.5, 4), New Vector(4.5, 4), New Vector(4, 4.6)}, 1.0, id:="tri"))
+        h.P.TogglePause()
+        h.P.TogglePause()
+        Dim before = Saved(h)
+        Dim boxRow = Enumerable.Range(0, h.P.Snapshot.RowCount(BodiesTable)).First(Function(i) h.P.Snapshot.Row(BodiesTable, i).Id = "box")
+        Assert.False(h.P.EditCell(BodiesTable, boxRow, Column(BodiesTable, TableQuantity.Size), "1.4 × 0.4"))
+        Assert.Contains("into a", h.View.LastMessage, StringComparison.Ordinal)
+        Assert.Equal(before, Saved(h))
+        Dim triRow = Enumerable.Range(0, h.P.Snapshot.RowCount(BodiesTable)).First(Function(i) h.P.Snapshot.Row(BodiesTable, i).Id = "tri")
+        Dim centre = h.P.World.Find("tri").CentreOfMass
+        Assert.Equal("1 × 0.6", h.P.CellEditText(BodiesTable, triRow, Column(BodiesTable, TableQuantity.Size)))
+        Assert.True(h.P.EditCell(BodiesTable, triRow, Column(BodiesTable, TableQuantity.Size), "0.5 x 0.3"))
+        Dim tri = h.P.World.Find("tri")
+        Assert.Equal(0.5, tri.BoundsMax.X - tri.BoundsMin.X, 12)
+        Assert.Equal(0.3, tri.BoundsMax.Y - tri.BoundsMin.Y, 12)
+        Assert.Equal(centre.X, tri.CentreOfMass.X, 12)
+        Assert.Equal(centre.Y, tri.CentreOfMass.Y, 12)
+        Assert.Equal(1.0, tri.Mass)
     End Sub
 
     <Fact>
