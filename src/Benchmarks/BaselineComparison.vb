@@ -44,10 +44,17 @@ Friend NotInheritable Class BaselineComparison
         Dim comparison As New BaselineComparison With {.Commit = If(commit, "")}
         For Each n In now.Select(Function(r) r.BodyCount).Concat(before.Select(Function(r) r.BodyCount)).Distinct().OrderBy(Function(x) x)
             Dim size = n
-            comparison.Rows.Add(New BaselineRow With {
+            Dim row As New BaselineRow With {
                 .BodyCount = size,
                 .Now = now.FirstOrDefault(Function(r) r.BodyCount = size),
-                .Before = before.FirstOrDefault(Function(r) r.BodyCount = size)})
+                .Before = before.FirstOrDefault(Function(r) r.BodyCount = size)}
+            For k = 0 To Math.Min(nowRounds.Count, beforeRounds.Count) - 1
+                Dim pair As New BaselineRow With {
+                    .Now = nowRounds(k).FirstOrDefault(Function(r) r.BodyCount = size),
+                    .Before = beforeRounds(k).FirstOrDefault(Function(r) r.BodyCount = size)}
+                If Not Double.IsNaN(pair.Ratio) Then row.PairRatios.Add(pair.Ratio)
+            Next
+            comparison.Rows.Add(row)
         Next
         Return comparison
     End Function

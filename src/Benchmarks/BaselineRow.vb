@@ -12,6 +12,13 @@ Friend NotInheritable Class BaselineRow
     ''' <summary>The engine now: the median of its rounds.</summary>
     Public Property Now As BenchResult
 
+    ''' <summary>
+    ''' Each round's own ratio, now ÷ before, in round order: the two runs of a pair ran one right after
+    ''' the other, so a pair's ratio is steadier than the machine's speed from round to round. A round
+    ''' where either side failed has none.
+    ''' </summary>
+    Public ReadOnly Property PairRatios As New List(Of Double)
+
     ''' <summary>Collisions per wall-clock second now ÷ before: above 1 the engine is faster now; NaN when either side has no figure.</summary>
     Public ReadOnly Property Ratio As Double
         Get

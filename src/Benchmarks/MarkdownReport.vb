@@ -93,17 +93,21 @@ Friend Module MarkdownReport
            Append("and times its gas (the same Scenarios.ElasticGas at packing fraction 0.1, the event solver, the same measurement: warm-up, then the median of equal slices) ").
            Append("beside the engine now, in the same run on the same machine. Each round runs both engines at each size one right after the other, each in its own process ").
            Append("with the same settings, the order alternating by round; each figure is the median round, its note the range. ").
-           Append("**now ÷ before** is collisions per second now over before: above 1 the engine is faster now. Differences of a few per cent are within a shared machine's noise.").
+           Append("**now ÷ before** is collisions per second now over before, of the median rounds: above 1 the engine is faster now. ").
+           Append("A shared machine's speed can change by tens of per cent between rounds (the note gives each side's range), but the two runs of a pair ").
+           Append("meet much the same spell, so each round's own ratio (*pairs*) shows how far the figure can be trusted: when they agree, so does the machine.").
            Append(ControlChars.Lf).Append(ControlChars.Lf)
         If baseline.Rows.Count = 0 Then
             sb.Append("*Not measured in this run:* ").Append(If(baseline.Note.Length > 0, baseline.Note, "no result.")).Append(ControlChars.Lf).Append(ControlChars.Lf)
             Return
         End If
-        sb.Append("| N | collisions/s before (").Append(before).Append(") | collisions/s now | now ÷ before | ms per simulated s before | ms per simulated s now | note |").Append(ControlChars.Lf)
-        sb.Append("|---|---|---|---|---|---|---|").Append(ControlChars.Lf)
+        sb.Append("| N | collisions/s before (").Append(before).Append(") | collisions/s now | now ÷ before | pairs, round by round | ms per simulated s before | ms per simulated s now | note |").Append(ControlChars.Lf)
+        sb.Append("|---|---|---|---|---|---|---|---|").Append(ControlChars.Lf)
         For Each row In baseline.Rows
             sb.Append("| ").Append(Whole(row.BodyCount)).Append(" | ").Append(Rate(row.Before)).Append(" | ").Append(Rate(row.Now)).Append(" | **").
-               Append(BaselineComparison.RatioText(row.Ratio)).Append("** | ").Append(MsOf(row.Before)).Append(" | ").Append(MsOf(row.Now)).Append(" | ").
+               Append(BaselineComparison.RatioText(row.Ratio)).Append("** | ").
+               Append(If(row.PairRatios.Count = 0, "—", String.Join(", ", row.PairRatios.Select(AddressOf BaselineComparison.RatioText)))).Append(" | ").
+               Append(MsOf(row.Before)).Append(" | ").Append(MsOf(row.Now)).Append(" | ").
                Append(Cell(String.Join("; ", {If(row.Before Is Nothing, "", "before: " & row.Before.Note), If(row.Now Is Nothing, "", "now: " & row.Now.Note)}.Where(Function(t) t.Length > 0)))).
                Append(" |").Append(ControlChars.Lf)
         Next
