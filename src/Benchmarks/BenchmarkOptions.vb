@@ -29,7 +29,10 @@ Friend NotInheritable Class BenchmarkOptions
         "  --out DIR    where docs/benchmarks.md and the SVG plots go (default: docs)" & vbLf &
         "  --readme FILE  copy the report's headline figures into FILE (README.md) between its markers" & vbLf &
         "  --readme-only  with --readme: copy the figures of the report already in --out, and run nothing" & vbLf &
-        "  --no-frame   skip the app's frame benchmark (mono + Xvfb)" & vbLf &
+        "  --no-frame   skip the app's frame benchmarks (mono + Xvfb): the gas and the lesson scenes" & vbLf &
+        "  --baseline-dll PATH  the Benchmarks.dll of the baseline commit: the full run times its gas beside this one's" & vbLf &
+        "  --baseline-commit HASH  which commit that is, for the report" & vbLf &
+        "  --baseline-note TEXT    why there is no baseline build (the report says so instead)" & vbLf &
         "  --gas-rounds K  run every gas size K times, in rounds that take the sizes in turn and every solver" & vbLf &
         "               at a size one after the other; report the median run with the range (default 3; 1 with --quick)" & vbLf &
         "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, ramp-slide, box-drop, pendulum," & vbLf &
@@ -47,6 +50,12 @@ Friend NotInheritable Class BenchmarkOptions
     ''' <summary>Only copy the figures of the report already in <see cref="OutDir"/> into <see cref="ReadmePath"/>; run nothing.</summary>
     Public Property ReadmeOnly As Boolean
     Public Property NoFrame As Boolean
+    ''' <summary>The baseline commit's Benchmarks.dll (scripts/bench.sh builds it), or Nothing: see <see cref="BaselineComparison"/>.</summary>
+    Public Property BaselineDll As String
+    ''' <summary>The baseline commit's hash, for the report.</summary>
+    Public Property BaselineCommit As String = ""
+    ''' <summary>Why there is no baseline build, for the report; "" when there is one or none was tried.</summary>
+    Public Property BaselineNote As String = ""
     Public Property AppPath As String = "src/SimulatorApp/bin/Release/net48/SimulatorApp.exe"
     Public Property Scenes As IReadOnlyList(Of String) = AllScenes.Concat({GasScaling.SceneName}).ToList()
     Public Property Solvers As IReadOnlyList(Of String) = AllSolvers
@@ -174,6 +183,9 @@ Friend NotInheritable Class BenchmarkOptions
                 Case "--readme" : o.ReadmePath = value(a)
                 Case "--readme-only" : o.ReadmeOnly = True
                 Case "--app" : o.AppPath = value(a)
+                Case "--baseline-dll" : o.BaselineDll = value(a)
+                Case "--baseline-commit" : o.BaselineCommit = value(a)
+                Case "--baseline-note" : o.BaselineNote = value(a)
                 Case "--scenes" : o.Scenes = ParseNames(a, value(a), AllScenes.Concat({GasScaling.SceneName}).ToList())
                 Case "--solvers" : o.Solvers = ParseList(a, value(a))
                 Case "--dts" : o._timeSteps = ParseList(a, value(a)).Select(Function(t) ParseTimeStep(a, t)).ToList()

@@ -25,7 +25,17 @@ Friend Module ChildProcess
     ''' most <paramref name="timeout"/>.
     ''' </summary>
     Public Function Run(args As IEnumerable(Of String), timeout As TimeSpan, Optional environment As IReadOnlyDictionary(Of String, String) = Nothing) As Outcome
-        Dim psi = SelfStartInfo()
+        Return RunProgram(SelfStartInfo(), args, timeout, environment)
+    End Function
+
+    ''' <summary>
+    ''' Runs another build of this benchmark (<paramref name="psi"/> starts it) as a child, with these
+    ''' arguments after the ones <paramref name="psi"/> already has: it speaks the same RESULT lines.
+    ''' </summary>
+    Public Function RunProgram(psi As ProcessStartInfo, args As IEnumerable(Of String), timeout As TimeSpan,
+                               Optional environment As IReadOnlyDictionary(Of String, String) = Nothing) As Outcome
+        If psi Is Nothing Then Throw New ArgumentNullException(NameOf(psi))
+        If args Is Nothing Then Throw New ArgumentNullException(NameOf(args))
         For Each a In args
             psi.ArgumentList.Add(a)
         Next
@@ -58,12 +68,17 @@ Friend Module ChildProcess
             outcome.ExitCode = If(outcome.TimedOut, -1, p.ExitCode)
         End Using
         SyncLock lines
-            For Each line In lines
-                If line.StartsWith(ResultPrefix, StringComparison.Ordinal) Then outcome.Results.Add(JsonReport.Parse(line.Substring(ResultPrefix.Length)))
-            Next
+            outcome.Results.AddRange(ReadResults(lines))
         End SyncLock
         outcome.ErrorText = errors.ToString().Trim()
         Return outcome
+    End Function
+
+    ''' <summary>The results in a child's standard output: its RESULT lines, in order; other lines are ignored.</summary>
+    Public Function ReadResults(lines As IEnumerable(Of String)) As List(Of BenchResult)
+        If lines Is Nothing Then Throw New ArgumentNullException(NameOf(lines))
+        Return lines.Where(Function(line) line IsNot Nothing AndAlso line.StartsWith(ResultPrefix, StringComparison.Ordinal)).
+                     Select(Function(line) JsonReport.Parse(line.Substring(ResultPrefix.Length))).ToList()
     End Function
 
     ''' <summary>Writes a finished case for the parent, at once, so it survives a later timeout.</summary>

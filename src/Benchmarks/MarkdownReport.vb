@@ -34,7 +34,9 @@ Friend Module MarkdownReport
 
     ''' <summary>The whole document.</summary>
     Public Function Render(machine As MachineInfo, mode As String, repeats As Integer, scenes As IReadOnlyList(Of IBenchScene),
-                           results As IReadOnlyList(Of BenchResult), frame As FrameResult) As String
+                           results As IReadOnlyList(Of BenchResult), frame As FrameResult,
+                           Optional sceneFrames As IReadOnlyList(Of SceneFrameResult) = Nothing,
+                           Optional baseline As BaselineComparison = Nothing) As String
         If machine Is Nothing Then Throw New ArgumentNullException(NameOf(machine))
         If scenes Is Nothing Then Throw New ArgumentNullException(NameOf(scenes))
         If results Is Nothing Then Throw New ArgumentNullException(NameOf(results))
@@ -75,9 +77,99 @@ Friend Module MarkdownReport
 
         Dim scaling = results.Where(Function(r) r.Scene = GasScaling.SceneName).ToList()
         If scaling.Count > 0 Then ScalingSection(sb, scaling)
+        If baseline IsNot Nothing Then BaselineSection(sb, baseline)
 
         FrameSection(sb, frame)
+        If sceneFrames IsNot Nothing AndAlso sceneFrames.Count > 0 Then SceneFrameSection(sb, sceneFrames)
         Return sb.ToString()
+    End Function
+
+    ''' <summary>The elastic gas with the engine at the baseline commit beside the engine now, and the ratio.</summary>
+    Private Sub BaselineSection(sb As StringBuilder, baseline As BaselineComparison)
+        Dim before = If(baseline.Commit.Length > 0, "`" & baseline.ShortCommit & "`", "the baseline commit")
+        sb.Append("## Elastic gas: the engine before the event solver's restructure, and now").Append(ControlChars.Lf).Append(ControlChars.Lf)
+        sb.Append("The product promises that the elastic gas is no slower than before the event solver was restructured. The full run builds the engine and ").
+           Append("benchmark of the commit just before the restructure (").Append(before).Append(", named once in scripts/bench.sh) from the repository in a scratch folder, ").
+           Append("and times its gas (the same Scenarios.ElasticGas at packing fraction 0.1, the event solver, the same measurement: warm-up, then the median of equal slices) ").
+           Append("beside the engine now, in the same run on the same machine. Each round runs both engines at each size one right after the other, each in its own process ").
+           Append("with the same settings, the order alternating by round; each figure is the median round, its note the range. ").
+           Append("**now ÷ before** is collisions per second now over before, of the median rounds: above 1 the engine is faster now. ").
+           Append("A shared machine's speed can change by tens of per cent between rounds (the note gives each side's range), but the two runs of a pair ").
+           Append("meet much the same spell, so each round's own ratio (*pairs*) shows how far the figure can be trusted: when they agree, so does the machine.").
+           Append(ControlChars.Lf).Append(ControlChars.Lf)
+        If baseline.Rows.Count = 0 Then
+            sb.Append("*Not measured in this run:* ").Append(If(baseline.Note.Length > 0, baseline.Note, "no result.")).Append(ControlChars.Lf).Append(ControlChars.Lf)
+            Return
+        End If
+        sb.Append("| N | collisions/s before (").Append(before).Append(") | collisions/s now | now ÷ before | pairs, round by round | ms per simulated s before | ms per simulated s now | note |").Append(ControlChars.Lf)
+        sb.Append("|---|---|---|---|---|---|---|---|").Append(ControlChars.Lf)
+        For Each row In baseline.Rows
+            sb.Append("| ").Append(Whole(row.BodyCount)).Append(" | ").Append(Rate(row.Before)).Append(" | ").Append(Rate(row.Now)).Append(" | **").
+               Append(BaselineComparison.RatioText(row.Ratio)).Append("** | ").
+               Append(If(row.PairRatios.Count = 0, "—", String.Join(", ", row.PairRatios.Select(AddressOf BaselineComparison.RatioText)))).Append(" | ").
+               Append(MsOf(row.Before)).Append(" | ").Append(MsOf(row.Now)).Append(" | ").
+               Append(Cell(String.Join("; ", {If(row.Before Is Nothing, "", "before: " & row.Before.Note), If(row.Now Is Nothing, "", "now: " & row.Now.Note)}.Where(Function(t) t.Length > 0)))).
+               Append(" |").Append(ControlChars.Lf)
+        Next
+        If baseline.Note.Length > 0 Then sb.Append(ControlChars.Lf).Append(baseline.Note).Append(ControlChars.Lf)
+        sb.Append(ControlChars.Lf)
+    End Sub
+
+    Private Function Rate(r As BenchResult) As String
+        Return If(r Is Nothing OrElse Not r.Available OrElse Double.IsNaN(r.CollisionsPerSecond), "—", Whole(r.CollisionsPerSecond))
+    End Function
+
+    Private Function MsOf(r As BenchResult) As String
+        Return If(r Is Nothing OrElse Not r.Available OrElse Double.IsNaN(r.MsPerSimulatedSecond), "—", Ms(r.MsPerSimulatedSecond))
+    End Function
+
+    ''' <summary>The lesson scenes' frames in the app: median, 95th percentile and worst of step, paint and the whole frame, against the target.</summary>
+    Private Sub SceneFrameSection(sb As StringBuilder, scenes As IReadOnlyList(Of SceneFrameResult))
+        sb.Append(ControlChars.Lf).Append("### Lesson scenes in the app").Append(ControlChars.Lf).Append(ControlChars.Lf)
+        sb.Append("`mono src/SimulatorApp/bin/Release/net48/SimulatorApp.exe --frame-benchmark galton|rope|cradle` on Xvfb: the report's 500-ball Galton board, ").
+           Append("rope and Newton's cradle on strings (the app builds the same worlds; the benchmark checks their bodies, links and starting energy), ").
+           Append("run through the presenter with the solver the app picks, as the window runs them: each frame is one step of 1/60 s (with the tables' ").
+           Append("snapshot ten times a second) and one full paint of the 860×496 canvas into an offscreen bitmap, after an untimed run of the same frames. ").
+           Append("The span is the whole run: the Galton board's 15 s (900 frames: the balls leave the shelves, cross the pegs and fill the bins), ").
+           Append("5 s (300 frames) of the rope and of the cradle. The target is one frame (step + paint) under 16 ms; a frame may take at most the ").
+           Append("presenter's budget of 40 ms for its step, after which time on screen lags (*lagging frames*).").Append(ControlChars.Lf).Append(ControlChars.Lf)
+        sb.Append("| Scene | frames (simulated s) | solver | step ms: median / p95 / worst | paint ms: median / p95 / worst | frame ms: median / p95 / worst | target | frames over 16 ms | lagging frames | verdict |").Append(ControlChars.Lf)
+        sb.Append("|---|---|---|---|---|---|---|---|---|---|").Append(ControlChars.Lf)
+        For Each s In scenes
+            sb.Append("| ").Append(s.Scene).Append(" | ")
+            If Not s.Ran Then
+                sb.Append("— | — | — | — | — | < 16 ms | — | — | not measured: ").Append(Cell(s.Note)).Append(" |").Append(ControlChars.Lf)
+                Continue For
+            End If
+            sb.Append(Whole(s.Frames)).Append(" (").Append(s.SimulatedSeconds.ToString("0.00", CultureInfo.InvariantCulture)).Append(") | ").Append(Cell(s.Solver)).Append(" | ").
+               Append(Times(s.StepMs)).Append(" | ").Append(Times(s.PaintMs)).Append(" | ").Append(Times(s.TotalMs)).Append(" | < ").
+               Append(s.TargetMs.ToString("0.##", CultureInfo.InvariantCulture)).Append(" ms | ").Append(Whole(s.OverTargetFrames)).Append(" | ").
+               Append(Whole(s.SlowFrames)).Append(" | ").Append(Cell(Verdict(s) & If(s.Note.Length > 0, " " & s.Note, ""))).Append(" |").Append(ControlChars.Lf)
+        Next
+        Dim lines = scenes.Where(Function(s) s.RawJson.Length > 0).ToList()
+        If lines.Count > 0 Then
+            sb.Append(ControlChars.Lf).Append("The app printed:").Append(ControlChars.Lf).Append(ControlChars.Lf).Append("```json").Append(ControlChars.Lf)
+            For Each s In lines
+                sb.Append(s.RawJson).Append(ControlChars.Lf)
+            Next
+            sb.Append("```").Append(ControlChars.Lf)
+        End If
+    End Sub
+
+    ''' <summary>
+    ''' Met when every frame is under the target; "p95 met" when at least 95 % are (the worst are
+    ''' counted beside it); missed otherwise.
+    ''' </summary>
+    Friend Function Verdict(s As SceneFrameResult) As String
+        If s Is Nothing Then Throw New ArgumentNullException(NameOf(s))
+        If Not s.Ran Then Return "not measured"
+        If s.TotalMs.Worst < s.TargetMs Then Return "met: every frame under " & s.TargetMs.ToString("0.##", CultureInfo.InvariantCulture) & " ms."
+        If s.TotalMs.P95 < s.TargetMs Then Return "met by 95 % of frames, not by the worst " & Whole(s.OverTargetFrames) & "."
+        Return "missed: " & Whole(s.OverTargetFrames) & " of " & Whole(s.Frames) & " frames took " & s.TargetMs.ToString("0.##", CultureInfo.InvariantCulture) & " ms or more."
+    End Function
+
+    Private Function Times(t As FrameTimes) As String
+        Return Fixed2(t.Median) & " / " & Fixed2(t.P95) & " / " & Fixed2(t.Worst)
     End Function
 
     ''' <summary>Work-precision plots, one per scene that has a measured point, by file name.</summary>

@@ -1,4 +1,5 @@
 Option Strict On
+Imports System.Diagnostics
 Imports System.Globalization
 Imports System.IO
 Imports System.Text
@@ -48,22 +49,31 @@ Public NotInheritable Class Program
             Next
         Next
         If options.Scenes.Contains(GasScaling.SceneName) Then results.AddRange(RunScaling(options))
+        Dim baseline = RunBaseline(options)
 
         Dim frame As FrameResult
-        If options.Quick Then
-            frame = New FrameResult With {.Note = "the quick run skips it."}
-        ElseIf options.NoFrame Then
-            frame = New FrameResult With {.Note = "skipped (--no-frame)."}
+        Dim sceneFrames As List(Of SceneFrameResult)
+        If options.Quick OrElse options.NoFrame Then
+            Dim why = If(options.Quick, "the quick run skips it.", "skipped (--no-frame).")
+            frame = New FrameResult With {.Note = why}
+            sceneFrames = FrameBenchmark.SceneRows.Select(Function(row) New SceneFrameResult With {.Scene = row.AppName, .ReportScene = row.ReportScene, .Note = why}).ToList()
         Else
             Console.Out.WriteLine("frame benchmark: " & options.AppPath)
             frame = FrameBenchmark.TryRun(options.AppPath, 1000)
             Console.Out.WriteLine("  " & If(frame.Ran, "step " & NumberText.Fixed2(frame.StepMs) & " ms + paint " & NumberText.Fixed2(frame.PaintMs) & " ms", "skipped: " & frame.Note))
+            sceneFrames = FrameBenchmark.TryRunScenes(options.AppPath, Function(name) SceneCatalog.Create(name, options))
+            For Each s In sceneFrames
+                Console.Out.WriteLine("  " & s.Scene & ": " &
+                                      If(s.Ran, "frame median " & NumberText.Fixed2(s.TotalMs.Median) & " ms, p95 " & NumberText.Fixed2(s.TotalMs.P95) &
+                                                " ms, worst " & NumberText.Fixed2(s.TotalMs.Worst) & " ms over " & s.Frames.ToString(CultureInfo.InvariantCulture) & " frames", "skipped") &
+                                      If(s.Note.Length > 0, "; " & s.Note, ""))
+            Next
         End If
 
         Console.Out.WriteLine("recording for rewind: the 1000-ball gas with and without it")
         Dim recording = RecordingOverhead.Measure(seconds:=If(options.Quick, 30, 60), repeats:=If(options.Quick, 3, 5))
         Console.Out.WriteLine("  overhead " & (100 * recording.Overhead).ToString("0.0", CultureInfo.InvariantCulture) & " % (from its parts " & (100 * recording.OverheadFromParts).ToString("0.0", CultureInfo.InvariantCulture) & " %), " & recording.Checkpoints & " checkpoints")
-        WriteOutputs(options, machine, scenes, results, frame, recording)
+        WriteOutputs(options, machine, scenes, results, frame, recording, sceneFrames, baseline)
         Console.Out.WriteLine("benchmarks: done in " & clock.Elapsed.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s; wrote " &
                               Path.Combine(options.OutDir, "benchmarks.md") & If(options.JsonPath Is Nothing, "", " and " & options.JsonPath))
         Return 0
@@ -177,6 +187,74 @@ Public NotInheritable Class Program
         Return results
     End Function
 
+    ''' <summary>
+    ''' The gas at the compared sizes with the engine at the baseline commit (its own Benchmarks.dll,
+    ''' built by scripts/bench.sh) and with this one, <see cref="BenchmarkOptions.GasRounds"/> times;
+    ''' or why not. Both run the same measurement (GasScaling.Measure is the same at that commit) in
+    ''' child processes with the same settings.
+    ''' </summary>
+    Private Shared Function RunBaseline(options As BenchmarkOptions) As BaselineComparison
+        Dim commit = options.BaselineCommit
+        If options.Quick Then Return BaselineComparison.NotRun(commit, "the quick run skips it.")
+        If Not options.Scenes.Contains(GasScaling.SceneName) Then Return BaselineComparison.NotRun(commit, "not run: this run left out the gas scaling.")
+        If options.BaselineDll Is Nothing Then
+            Return BaselineComparison.NotRun(commit, If(options.BaselineNote.Length > 0, options.BaselineNote,
+                                                        "not run: no baseline build was given (scripts/bench.sh builds one in a full run)."))
+        End If
+        If Not File.Exists(options.BaselineDll) Then Return BaselineComparison.NotRun(commit, "not run: the baseline build is missing (" & options.BaselineDll & ").")
+        Dim sizes = BaselineComparison.SizesIn(options.GasSizes)
+        If sizes.Count = 0 Then Return BaselineComparison.NotRun(commit, "not run: this run's gas sizes include neither N = 1 000 nor N = 10 000.")
+        Dim label = If(commit.Length > 0, commit.Substring(0, Math.Min(7, commit.Length)), "the baseline")
+        Dim nowRounds As New List(Of IReadOnlyList(Of BenchResult))
+        Dim beforeRounds As New List(Of IReadOnlyList(Of BenchResult))
+        For round = 1 To options.GasRounds
+            Console.Out.WriteLine("elastic gas, the engine at " & label & " and now, round " & round.ToString(CultureInfo.InvariantCulture) & " of " &
+                                  options.GasRounds.ToString(CultureInfo.InvariantCulture))
+            Dim nowRound As New List(Of BenchResult), beforeRound As New List(Of BenchResult)
+            For Each n In sizes
+                ' Which engine goes first alternates by round, so a machine speeding up or slowing down
+                ' within a pair does not favour the same side every time.
+                Dim beforeFirst = round Mod 2 = 0
+                Dim before As BenchResult = Nothing
+                If beforeFirst Then before = RunBaselineChild(options, n, label)
+                Dim now = RunGasChild(options, "event", Nothing, n)
+                Console.Out.Write("  now:")
+                Print(now)
+                If Not beforeFirst Then before = RunBaselineChild(options, n, label)
+                nowRound.Add(now)
+                beforeRound.Add(before)
+            Next
+            nowRounds.Add(nowRound)
+            beforeRounds.Add(beforeRound)
+        Next
+        Return BaselineComparison.Combine(commit, nowRounds, beforeRounds)
+    End Function
+
+    ''' <summary>The gas at N = <paramref name="n"/> with the baseline build's event solver, in its own child process.</summary>
+    Private Shared Function RunBaselineChild(options As BenchmarkOptions, n As Integer, label As String) As BenchResult
+        Dim psi As New ProcessStartInfo(DotnetHost())
+        psi.ArgumentList.Add(options.BaselineDll)
+        Dim args = options.ChildArguments()
+        args.AddRange({"--child-gas", n.ToString(CultureInfo.InvariantCulture), "--child-solver", "event"})
+        Dim outcome = ChildProcess.RunProgram(psi, args, options.GasChildTimeout, GasScaling.ChildEnvironment)
+        Dim r = outcome.Results.FirstOrDefault()
+        If r Is Nothing Then
+            r = SceneRunner.NotAvailable(GasScaling.SceneName, "event", Nothing,
+                If(outcome.TimedOut, "timed out after " & options.GasChildTimeout.TotalSeconds.ToString("0", CultureInfo.InvariantCulture) & " s",
+                   "failed (exit " & outcome.ExitCode.ToString(CultureInfo.InvariantCulture) & "): " & FirstLine(outcome.ErrorText)))
+            r.BodyCount = n
+        End If
+        Console.Out.Write("  " & label & ":")
+        Print(r)
+        Return r
+    End Function
+
+    ''' <summary>The dotnet host running this program, or "dotnet" from the PATH.</summary>
+    Private Shared Function DotnetHost() As String
+        Dim host = Environment.ProcessPath
+        Return If(host IsNot Nothing AndAlso String.Equals(Path.GetFileNameWithoutExtension(host), "dotnet", StringComparison.OrdinalIgnoreCase), host, "dotnet")
+    End Function
+
     ''' <summary>The gas at N = <paramref name="n"/> with one solver, in a child process; a failure or time-out becomes a row saying so.</summary>
     Private Shared Function RunGasChild(options As BenchmarkOptions, solver As String, dt As Double?, n As Integer) As BenchResult
         Dim args = options.ChildArguments()
@@ -239,13 +317,14 @@ Public NotInheritable Class Program
         Return 0
     End Function
 
-    Private Shared Sub WriteOutputs(options As BenchmarkOptions, machine As MachineInfo, scenes As List(Of IBenchScene), results As List(Of BenchResult), frame As FrameResult, recording As RecordingResult)
+    Private Shared Sub WriteOutputs(options As BenchmarkOptions, machine As MachineInfo, scenes As List(Of IBenchScene), results As List(Of BenchResult), frame As FrameResult,
+                                    recording As RecordingResult, sceneFrames As List(Of SceneFrameResult), baseline As BaselineComparison)
         Directory.CreateDirectory(options.OutDir)
         Dim mode = If(options.Quick, "quick", "full")
         For Each kv In MarkdownReport.Plots(scenes, results)
             WriteAtomically(Path.Combine(options.OutDir, kv.Key), kv.Value)
         Next
-        WriteAtomically(Path.Combine(options.OutDir, "benchmarks.md"), MarkdownReport.Render(machine, mode, options.Repeats, scenes, results, frame) & ControlChars.Lf & RecordingOverhead.Section(recording))
+        WriteAtomically(Path.Combine(options.OutDir, "benchmarks.md"), MarkdownReport.Render(machine, mode, options.Repeats, scenes, results, frame, sceneFrames, baseline) & ControlChars.Lf & RecordingOverhead.Section(recording))
         If options.ReadmePath IsNot Nothing Then CopyFiguresToReadme(options)
         If options.JsonPath IsNot Nothing Then
             Dim dir = Path.GetDirectoryName(Path.GetFullPath(options.JsonPath))

@@ -13,6 +13,7 @@ Imports PhysicsEngine.Presentation
 ''' SimulatorApp.exe --trace              print one line per action to stdout (for GUI tests)
 ''' SimulatorApp.exe --stats S            print the frame time and memory every S seconds (for the soak script)
 ''' SimulatorApp.exe --frame-benchmark N  no window: time 300 frames of N circles (step + paint), print one JSON line
+''' SimulatorApp.exe --frame-benchmark galton|rope|cradle   no window: time that lesson scene's frames, print one JSON line
 ''' </code>
 ''' </summary>
 Public NotInheritable Class Program
@@ -25,6 +26,7 @@ Public NotInheritable Class Program
         X11KeyboardSafety.Apply()
         Dim trace As Action(Of String) = Nothing
         Dim benchmark As Integer? = Nothing
+        Dim benchmarkScene As String = Nothing
         Dim gas As Integer? = Nothing
         Dim stats As Double? = Nothing
         Dim scenePath As String = Nothing
@@ -36,11 +38,21 @@ Public NotInheritable Class Program
                     trace = Sub(line) out.WriteLine(line)
                 Case "--frame-benchmark", "--gas"
                     Dim n As Integer
-                    If i + 1 >= args.Length OrElse Not Integer.TryParse(args(i + 1), NumberStyles.None, CultureInfo.InvariantCulture, n) OrElse n < 1 OrElse n > 100000 Then
-                        Console.Error.WriteLine("SimulatorApp: " & args(i) & " needs a number of circles from 1 to 100000")
+                    Dim isBenchmark = args(i) = "--frame-benchmark"
+                    If isBenchmark AndAlso i + 1 < args.Length AndAlso FrameBenchmark.IsSceneName(args(i + 1)) Then
+                        benchmarkScene = args(i + 1)
+                        benchmark = Nothing
+                    ElseIf i + 1 >= args.Length OrElse Not Integer.TryParse(args(i + 1), NumberStyles.None, CultureInfo.InvariantCulture, n) OrElse n < 1 OrElse n > 100000 Then
+                        Console.Error.WriteLine("SimulatorApp: " & args(i) & " needs a number of circles from 1 to 100000" &
+                                                If(isBenchmark, " or a scene (" & String.Join(", ", FrameBenchmark.SceneNames) & ")", "") &
+                                                If(i + 1 < args.Length, ", not '" & args(i + 1) & "'", ""))
                         Return 2
+                    ElseIf isBenchmark Then
+                        benchmark = n
+                        benchmarkScene = Nothing
+                    Else
+                        gas = n
                     End If
-                    If args(i) = "--gas" Then gas = n Else benchmark = n
                     i += 1
                 Case "--stats"
                     Dim s As Double
@@ -52,13 +64,14 @@ Public NotInheritable Class Program
                     i += 1
                 Case Else
                     If args(i).StartsWith("-", StringComparison.Ordinal) OrElse scenePath IsNot Nothing Then
-                        Console.Error.WriteLine("SimulatorApp: unknown argument '" & args(i) & "' (expected a scene file, --trace, --gas N, --stats S or --frame-benchmark N)")
+                        Console.Error.WriteLine("SimulatorApp: unknown argument '" & args(i) & "' (expected a scene file, --trace, --gas N, --stats S or --frame-benchmark N|galton|rope|cradle)")
                         Return 2
                     End If
                     scenePath = args(i)
             End Select
             i += 1
         Loop
+        If benchmarkScene IsNot Nothing Then Return FrameBenchmark.RunScene(benchmarkScene, Console.Out)
         If benchmark.HasValue Then Return FrameBenchmark.Run(benchmark.Value, Console.Out)
 
         trace?.Invoke("keyboard " & X11KeyboardSafety.Summary)
