@@ -8,7 +8,7 @@ set -euo pipefail
 
 # A scene file named relative to where the script was started from: made absolute before the cd
 # below, so "bash scripts/run.sh my-scene.json" opens the file in the caller's folder. The values
-# of --gas, --stats and --frame-benchmark are numbers and stay as they are.
+# of --gas, --stats and --frame-benchmark (a number, or a lesson scene's name) stay as they are.
 caller="$PWD"
 args=()
 takes_value=0
