@@ -28,8 +28,9 @@ Friend NotInheritable Class LinkedEventSolver
     ' A touching pair closes if it approaches faster than this (m/s) plus a billionth of its speeds:
     ' slower is rounding left over from a cascade, and would only report collisions of nothing.
     Private Const CreepSpeed As Double = 0.000000000001
-    ' A contact this close to a sharp corner of the pair shape is corner on corner (four slops, as between two movable bodies in the main solver), m.
-    Private Const CornerTolerance As Double = 4 * Slop
+    ' Two sharp shapes touching: how many steps (of the speed bound alone) to spend looking for the gap to
+    ' open before searching for the overlap to grow instead.
+    Private Const SharpOpeningBudget As Integer = 64
 
     Private ReadOnly _impulse As New LinkedImpulse()
     Private _world As World
@@ -323,9 +324,11 @@ Friend NotInheritable Class LinkedEventSolver
     ''' <summary>
     ''' Bodies a &lt; b. The gap is a 1-Lipschitz function of their relative position, so it closes no faster
     ''' than V, the sum of their speed bounds (or, for two bodies each on its parabola, the bound on their
-    ''' relative speed). Its second derivative is the relative acceleration along the normal plus the turning
-    ''' of the normal, at most V²/R for a pair shape rounded by R (a ball is involved); two sharp shapes (boxes,
-    ''' polygons) have no such bound near a corner of the pair shape, and are searched with V alone.
+    ''' relative speed). Two balls: its second derivative is at most the relative acceleration plus V²/(r₁ + r₂)
+    ''' for the turning of the line of centres. A box or polygon in the pair: the gap is also convex in the
+    ''' relative position, which bounds it from below with the relative acceleration alone
+    ''' (<see cref="OneSidedAdvancement"/>); from above, the turning of the normal is at most V²/R about a pair
+    ''' shape rounded by R (a ball is involved) and unbounded about a sharp one (boxes and polygons).
     ''' </summary>
     Private Function PredictPair(a As Integer, b As Integer, tEnd As Double) As Double
         Dim gap = PairGap(a, b)
@@ -341,15 +344,14 @@ Friend NotInheritable Class LinkedEventSolver
             accel = ma.AccelerationBound(_slotOf(a), t0, until) + mb.AccelerationBound(_slotOf(b), t0, until)
         End If
         If BothBalls(a, b) Then
-            accel += speed * speed / (DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
-        Else
-            accel = Curved(accel, speed, _pairDifferences(a, b).Radius)
+            Dim curved = accel + speed * speed / (DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
+            Return Recheck(FirstContact(gap, t0, until, speed, curved), until, tEnd)
         End If
-        Return Recheck(FirstContact(gap, t0, until, speed, accel), until, tEnd)
+        Return Recheck(FirstShapeContact(gap, t0, until, speed, accel, UpperCurvature(accel, speed, _pairDifferences(a, b).Radius)), until, tEnd)
     End Function
 
-    ''' <summary>A bound on the gap's second derivative (m/s²): the acceleration's, plus V²/R for the turning of the normal about a pair shape rounded by R; +∞ (none) for a sharp one.</summary>
-    Private Shared Function Curved(accel As Double, speed As Double, radius As Double) As Double
+    ''' <summary>A bound on the gap's second derivative (m/s²) from above: the acceleration's, plus V²/R for the turning of the normal about a pair shape rounded by R; +∞ (none) for a sharp one.</summary>
+    Private Shared Function UpperCurvature(accel As Double, speed As Double, radius As Double) As Double
         If radius > 0 Then Return accel + speed * speed / radius
         Return If(speed > 0, Double.PositiveInfinity, accel)
     End Function
@@ -360,9 +362,12 @@ Friend NotInheritable Class LinkedEventSolver
         Dim speed = m.SpeedBound(_slotOf(i), _now, until)
         Dim accel = m.AccelerationBound(_slotOf(i), _now, until)
         ' A wall is flat: its gap's second derivative is the acceleration across it.
-        If gap.Difference IsNot Nothing Then accel = Curved(accel, speed, gap.Difference.Radius)
-        Return Recheck(FirstContact(gap, _now, until, speed, accel), until, tEnd)
+        If gap.Difference Is Nothing Then Return Recheck(FirstContact(gap, _now, until, speed, accel), until, tEnd)
+        Dim curved = UpperCurvature(accel, speed, gap.Difference.Radius)
+        If _bodies(i).Kind = ShapeKind.Circle Then Return Recheck(FirstContact(gap, _now, until, speed, curved), until, tEnd)
+        Return Recheck(FirstShapeContact(gap, _now, until, speed, accel, curved), until, tEnd)
     End Function
+
     ''' <summary>A search that found nothing before the horizon is taken up again there (an event that is not a contact).</summary>
     Private Shared Function Recheck(found As Double, until As Double, tEnd As Double) As Double
         If Double.IsPositiveInfinity(found) AndAlso until < tEnd Then Return until
@@ -391,6 +396,35 @@ Friend NotInheritable Class LinkedEventSolver
             End If
         End If
         Dim result = ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, accel)
+        If result.Found Then Return result.Time
+        If result.ClearUntil < tEnd Then Return result.ClearUntil
+        Return Double.PositiveInfinity
+    End Function
+
+    ''' <summary>
+    ''' As <see cref="FirstContact"/>, for a pair with a box or polygon in it: the gap closing is searched with
+    ''' the one-sided bound (<paramref name="accel"/>, the relative acceleration's); its opening, after a
+    ''' bounce, with the bound from above, <paramref name="curved"/> (+∞ for two sharp shapes: then with the
+    ''' speed alone, and briefly). A touching pair that does not open soon (two boxes sliding past each other
+    ''' flush, or pressed together) is searched from now for the overlap growing by the slop.
+    ''' </summary>
+    Private Shared Function FirstShapeContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, accel As Double, curved As Double) As Double
+        Dim n As Vector, rate As Double
+        Dim d = gap.GapAndNormal(t0, n, rate)
+        Dim tolerance = 0.0
+        If d <= Slop Then
+            If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
+            Dim sharp = Double.IsPositiveInfinity(curved)
+            Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, tEnd, 0, speed, curved, If(sharp, SharpOpeningBudget, 100000))
+            If opened.Found Then
+                t0 = opened.Time
+            ElseIf opened.ClearUntil < tEnd AndAlso Not sharp Then
+                Return opened.ClearUntil
+            Else
+                tolerance = Math.Min(d, 0) - Slop
+            End If
+        End If
+        Dim result = OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, accel)
         If result.Found Then Return result.Time
         If result.ClearUntil < tEnd Then Return result.ClearUntil
         Return Double.PositiveInfinity
@@ -449,7 +483,7 @@ Friend NotInheritable Class LinkedEventSolver
             Return
         End If
         ' A corner on a corner of two sharp shapes takes the bisector of the pair shape's corner (docs/shapes.md).
-        If gap.Difference IsNot Nothing Then normal = gap.ContactNormal(t, CornerTolerance)
+        If gap.Difference IsNot Nothing Then normal = gap.ContactNormal(t)
         Dim a = _bodies(i)
         Dim b = If(j >= 0, _bodies(j), Nothing)
         Dim aBefore = a.Velocity

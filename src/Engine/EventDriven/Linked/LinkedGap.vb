@@ -13,6 +13,13 @@ Option Strict On
 Friend NotInheritable Class LinkedGap
     Implements IDistanceFunction
 
+    ''' <summary>
+    ''' How near a sharp corner of K (m) d counts as on it: far below the slop, so that the rate the corner rule
+    ''' gives differs from the gap's own slope only where that cannot matter, and far above the rounding of a
+    ''' contact's position.
+    ''' </summary>
+    Friend Const CornerReach As Double = 0.00000000001
+
     Private ReadOnly _motion As LinkedMotion
     Private ReadOnly _k As Integer
     Private ReadOnly _otherMotion As LinkedMotion
@@ -89,17 +96,36 @@ Friend NotInheritable Class LinkedGap
     ''' <summary>
     ''' The normal of a contact at <paramref name="time"/> (unit, from the body towards what it hits) by the
     ''' contact rules of docs/shapes.md: a corner on a face takes the face's normal (d on an edge of K), a
-    ''' corner on a corner (d within <paramref name="slop"/> m of a sharp corner of K) the bisector of K's two
+    ''' corner on a corner (d within <see cref="CornerReach"/> of a sharp corner of K) the bisector of K's two
     ''' faces there, which does not depend on which face was reached first.
     ''' </summary>
-    Friend Function ContactNormal(time As Double, slop As Double) As Vector
+    Friend Function ContactNormal(time As Double) As Vector
         Dim normal As Vector, rate As Double, d As Vector
         GapAt(time, normal, rate, d)
-        If _obstacle Is Nothing OrElse _obstacle.Radius > 0 OrElse _obstacle.VertexCount < 3 Then Return normal
+        If _obstacle Is Nothing Then Return normal
+        Dim k = SharpCornerAt(d)
+        Return If(k >= 0, -_obstacle.CornerBisector(k), normal)
+    End Function
+
+    ''' <summary>The sharp corner of K within <see cref="CornerReach"/> of d (a box's or polygon's corner on another's), or −1.</summary>
+    Private Function SharpCornerAt(d As Vector) As Integer
+        If _obstacle.Radius > 0 OrElse _obstacle.VertexCount < 3 Then Return -1
         For k = 0 To _obstacle.VertexCount - 1
-            If (d - _obstacle.Vertices(k)).Length <= slop Then Return -_obstacle.CornerBisector(k)
+            If (d - _obstacle.Vertices(k)).Length <= CornerReach Then Return k
         Next
-        Return normal
+        Return -1
+    End Function
+
+    ''' <summary>
+    ''' The gap's rate (m/s) at K's sharp corner k for d moving at <paramref name="u"/>: the larger of its rates
+    ''' across the two faces that meet there (the gap's derivative in that direction; the gap is convex, and
+    ''' both normals are its slopes there). It closes only if d closes on both faces, going into the corner; one
+    ''' sliding along a face or passing the corner does not collide (docs/shapes.md, "A sharp corner").
+    ''' </summary>
+    Private Function CornerRate(k As Integer, u As Vector) As Double
+        Dim m = _obstacle.VertexCount
+        Dim before = _obstacle.Normals((k + m - 1) Mod m), after = _obstacle.Normals(k)
+        Return Math.Max(Vector.Dot(u, before), Vector.Dot(u, after))
     End Function
 
     Private Function GapAt(time As Double, ByRef normal As Vector, ByRef rate As Double, ByRef d As Vector) As Double
@@ -126,6 +152,8 @@ Friend NotInheritable Class LinkedGap
             ' Its normal points from K (the other body) to d (this one).
             normal = -c.Normal
             rate = Vector.Dot(v - w, c.Normal)
+            Dim k = SharpCornerAt(d)
+            If k >= 0 Then rate = CornerRate(k, v - w)
             Return -c.Depth
         End If
         Select Case _wall
