@@ -29,14 +29,18 @@ Public Class FrameBudgetTests
     End Sub
 
     <Fact>
-    Public Sub ABoxInASceneWithLinks_TheEventSolverRefuses_RunsWithVerlet_AndSaysSo()
+    Public Sub ABoxRestingOnATableInASceneWithLinks_TheEventSolverRefuses_RunsWithVerlet_AndSaysSo()
         Dim w As New World(4.0, 4.0, 9.81, 1.0)
         Dim bob As New Circle(New Vector(3.0, 3.0), 0.1, 1.0, id:="bob")
         w.Add(bob)
-        w.Add(PhysicsEngine.Rectangle.CreateMovable(New Vector(0.5, 0.0), 0.3, 0.2, 2.0, Vector.Zero, "box"))
+        ' The event solver moves boxes in a scene with links, but does not yet let one rest on anything but the floor.
+        w.Add(New PhysicsEngine.Rectangle(New Vector(0.25, 0.0), 1.0, 0.5, "table"))
+        w.Add(PhysicsEngine.Rectangle.CreateMovable(New Vector(0.5, 0.5), 0.3, 0.2, 2.0, Vector.Zero, "box"))
         w.Add(Link.CreateTie(LinkKind.Rod, bob, New Vector(2.0, 3.0), 1.0))
         w.Solver = SolverFactory.Create("event")
         Dim h As New PresenterHarness(w)
+        ' Time enough for every frame (the first also compiles the code it runs): this is about the fall-back, not speed.
+        h.P.FrameBudgetSeconds = 10
         For i = 1 To 10
             h.P.Tick(0.02)
         Next

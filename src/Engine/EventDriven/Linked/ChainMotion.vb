@@ -72,7 +72,7 @@ Friend NotInheritable Class ChainMotion
     ''' worked out with the others, is not negative; <paramref name="slackened"/> (a string whose tension has
     ''' just fallen to zero) is slack whatever the rounding says.
     ''' </summary>
-    Friend Sub New(bodies As Circle(), links As List(Of Link), startTime As Double, gravity As Double, slackened As Link)
+    Friend Sub New(bodies As Shape(), links As List(Of Link), startTime As Double, gravity As Double, slackened As Link)
         MyBase.New(bodies, startTime)
         _gravity = gravity
         _n = bodies.Length
@@ -81,8 +81,8 @@ Friend NotInheritable Class ChainMotion
         _hasStrings = links.Any(Function(l) l.Kind = LinkKind.String)
         Dim y(4 * _n - 1) As Double
         For k = 0 To _n - 1
-            y(4 * k) = bodies(k).Position.X
-            y(4 * k + 1) = bodies(k).Position.Y
+            y(4 * k) = bodies(k).CentreOfMass.X
+            y(4 * k + 1) = bodies(k).CentreOfMass.Y
             y(4 * k + 2) = bodies(k).Velocity.X
             y(4 * k + 3) = bodies(k).Velocity.Y
         Next
@@ -144,14 +144,14 @@ Friend NotInheritable Class ChainMotion
     ''' some are redundant (two rods between the same two balls, a ball held by rods to two points in line
     ''' with it), which the tension solve cannot take.
     ''' </summary>
-    Friend Shared Function CanHoldAll(bodies As Circle(), links As List(Of Link)) As Boolean
+    Friend Shared Function CanHoldAll(bodies As Shape(), links As List(Of Link)) As Boolean
         Dim inverseMass = bodies.Select(Function(b) b.InverseMass).ToArray()
         Dim ties = links.Where(Function(l) l.Kind = LinkKind.Rod OrElse (l.Kind = LinkKind.String AndAlso l.Distance >= l.Length * (1 - LinkedMotions.FullFraction))).
                          Select(Function(l) New ChainTie(Array.IndexOf(bodies, l.A), If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B)), If(l.IsAnchored, l.EndB, Vector.Zero), l.Length)).ToArray()
         Dim y(4 * bodies.Length - 1) As Double
         For k = 0 To bodies.Length - 1
-            y(4 * k) = bodies(k).Position.X
-            y(4 * k + 1) = bodies(k).Position.Y
+            y(4 * k) = bodies(k).CentreOfMass.X
+            y(4 * k + 1) = bodies(k).CentreOfMass.Y
         Next
         Dim accelerations(y.Length - 1) As Double
         Try
@@ -470,7 +470,7 @@ Friend NotInheritable Class ChainMotion
         If restitution * apart < Math.Sqrt(2 * Math.Max(world.Gravity, 0.000001) * SettleFraction * l.Length) Then restitution = 0
         Dim impulse As New LinkedImpulse()
         ' A contact whose normal points from B to A: "approaching" along it is the ends moving apart, and its push pulls them together.
-        impulse.AddContact(DirectCast(l.A, Circle), If(l.IsAnchored, Nothing, DirectCast(l.B, Circle)), -(l.EndB - l.EndA).Normalized(Vector.Zero), restitution)
+        impulse.AddContact(l.A, If(l.IsAnchored, Nothing, l.B), -(l.EndB - l.EndA).Normalized(Vector.Zero), restitution)
         For Each other In _held
             impulse.AddLink(other)
         Next

@@ -14,11 +14,11 @@ Friend NotInheritable Class DumbbellMotion
     Private ReadOnly _centreVelocity As Vector
     Private ReadOnly _arm As Double()
 
-    Friend Sub New(a As Circle, b As Circle, link As Link, startTime As Double, gravity As Double)
+    Friend Sub New(a As Shape, b As Shape, link As Link, startTime As Double, gravity As Double)
         MyBase.New({a, b}, startTime)
         _link = link
         _gravity = gravity
-        _dumbbell = New Dumbbell(a.Mass, a.Position, a.Velocity, b.Mass, b.Position, b.Velocity, link.Length, gravity)
+        _dumbbell = New Dumbbell(a.Mass, a.CentreOfMass, a.Velocity, b.Mass, b.CentreOfMass, b.Velocity, link.Length, gravity)
         Dim total = a.Mass + b.Mass
         _centreVelocity = (a.Mass / total) * a.Velocity + (b.Mass / total) * b.Velocity
         ' Each end turns about the centre of mass on a circle of radius L m_other / (m₁ + m₂).

@@ -26,15 +26,15 @@ Friend NotInheritable Class IntegratedMotion
     Private ReadOnly _accelerations As New List(Of Double())
     Private _step As Double
 
-    Friend Sub New(bodies As Circle(), links As List(Of Link), startTime As Double, gravity As Double)
+    Friend Sub New(bodies As Shape(), links As List(Of Link), startTime As Double, gravity As Double)
         MyBase.New(bodies, startTime)
         _links = links.ToArray()
         _gravity = gravity
         _n = bodies.Length
         Dim y(4 * _n - 1) As Double
         For k = 0 To _n - 1
-            y(4 * k) = bodies(k).Position.X
-            y(4 * k + 1) = bodies(k).Position.Y
+            y(4 * k) = bodies(k).CentreOfMass.X
+            y(4 * k + 1) = bodies(k).CentreOfMass.Y
             y(4 * k + 2) = bodies(k).Velocity.X
             y(4 * k + 3) = bodies(k).Velocity.Y
         Next

@@ -3,13 +3,18 @@ Option Strict On
 ''' <summary>
 ''' The event solver's loop for a world with links (docs/links.md, "Links in the event solver"). Each group
 ''' of linked bodies moves by its closed form (<see cref="LinkedMotions"/>): a pendulum, a body on a slack
-''' string flying its parabola, a body on a spring, a dumbbell; a free ball flies its parabola. The loop
+''' string flying its parabola, a body on a spring, a dumbbell; a free body flies its parabola. Balls, boxes
+''' and polygons alike: a link holds a body at its centre of mass, which is the point the closed forms move
+''' (a body's reference point is that centre less its outline's centroid), and shape matters only for
+''' contacts. The loop
 ''' reads as the event solver's: find the earliest event → advance to it → resolve it → re-predict what it
 ''' changed. Events are a string going slack or snapping taut (exact times from the closed forms) and
 ''' contacts, found by conservative advancement (<see cref="ConservativeAdvancement"/>): from bounds on the
 ''' speeds and accelerations it proves how long each gap stays open, so no contact is stepped over, and
 ''' ends on the first one to rounding. A contact is resolved with the links of both bodies in the same
-''' solve (<see cref="LinkedImpulse"/>). Every pair is predicted again after an event that changes one of
+''' solve (<see cref="LinkedImpulse"/>). What it cannot follow exactly (a box or polygon coming to rest on
+''' anything but the floor) it refuses with <see cref="UnsupportedSceneException"/>, and the world is put
+''' back as it was before the advance. Every pair is predicted again after an event that changes one of
 ''' its bodies: fine for the classroom scenes with links (tens of bodies), not for a gas.
 ''' </summary>
 Friend NotInheritable Class LinkedEventSolver
@@ -23,13 +28,20 @@ Friend NotInheritable Class LinkedEventSolver
     ' A touching pair closes if it approaches faster than this (m/s) plus a billionth of its speeds:
     ' slower is rounding left over from a cascade, and would only report collisions of nothing.
     Private Const CreepSpeed As Double = 0.000000000001
+    ' Two sharp shapes touching: how many steps (of the speed bound alone) to spend looking for the gap to
+    ' open before searching for the overlap to grow instead.
+    Private Const SharpOpeningBudget As Integer = 64
 
     Private ReadOnly _impulse As New LinkedImpulse()
     Private _world As World
     Private _dirty As Boolean = True
     Private _now As Double
     Private _groups As New List(Of LinkedGroup)
-    Private _circles As Circle() = Array.Empty(Of Circle)()
+    Private _bodies As Shape() = Array.Empty(Of Shape)()
+    ' Each body's centroid offset (its centre less its reference point), and its extents from its centre, m.
+    Private _offset As Vector() = Array.Empty(Of Vector)()
+    Private _low As Vector() = Array.Empty(Of Vector)()
+    Private _high As Vector() = Array.Empty(Of Vector)()
     Private _groupOf As Integer() = Array.Empty(Of Integer)()
     Private _slotOf As Integer() = Array.Empty(Of Integer)()
     Private _fixed As Shape() = Array.Empty(Of Shape)()
@@ -38,6 +50,10 @@ Friend NotInheritable Class LinkedEventSolver
     Private _wallTime As Double(,) = New Double(-1, -1) {}
     Private _fixedTime As Double(,) = New Double(-1, -1) {}
     Private _differences As Outline(,) = New Outline(-1, -1) {}
+    ' For each pair (i < j) not of two balls: the Minkowski difference of j's outline and i's.
+    Private _pairDifferences As Outline(,) = New Outline(-1, -1) {}
+    ' Collisions of the advance under way, reported when it is done (none, if it is refused part-way).
+    Private ReadOnly _reports As New List(Of CollisionRecord)
     ' Rods join their ends for good: those pairs are never tested.
     Private _rodPair As HashSet(Of Long) = New HashSet(Of Long)()
 
@@ -55,7 +71,32 @@ Friend NotInheritable Class LinkedEventSolver
     ''' <summary>Advances exactly <paramref name="duration"/> s and writes every body's state back.</summary>
     Friend Sub Advance(duration As Double)
         If _dirty OrElse _now <> _world.Time Then Rebuild()
-        Dim tEnd = _now + duration
+        Dim positions = _bodies.Select(Function(b) b.Position).ToArray()
+        Dim velocities = _bodies.Select(Function(b) b.Velocity).ToArray()
+        Dim tensions = _world.Links.Select(Function(l) l.Tension).ToArray()
+        _reports.Clear()
+        Try
+            AdvanceTo(_now + duration)
+        Catch ex As UnsupportedSceneException
+            ' Refused part-way: the world goes back to where the advance started, as the exception promises.
+            For i = 0 To _bodies.Length - 1
+                _bodies(i).Position = positions(i)
+                _bodies(i).Velocity = velocities(i)
+            Next
+            For k = 0 To _world.Links.Count - 1
+                If _world.Links(k).Kind <> LinkKind.Spring Then _world.Links(k).SetTension(tensions(k))
+            Next
+            _reports.Clear()
+            _dirty = True
+            Throw
+        End Try
+        For Each r In _reports
+            _world.ReportCollision(r)
+        Next
+        _reports.Clear()
+    End Sub
+
+    Private Sub AdvanceTo(tEnd As Double)
         PredictAll(tEnd)
         Dim instant = 0
         Dim lastTime = Double.NaN
@@ -88,20 +129,26 @@ Friend NotInheritable Class LinkedEventSolver
     Private Sub Rebuild()
         Dim w = _world
         _now = w.Time
-        Dim circles As New List(Of Circle)
-        For Each b In w.Movables
-            If b.Kind = ShapeKind.Circle Then circles.Add(DirectCast(b, Circle))
-        Next
-        Dim groups = FormGroups(w, circles)
+        Dim bodies = w.Movables.ToList()
+        Dim groups = FormGroups(w, bodies)
         LinkedMotions.CheckSupported(w, groups)
-        _circles = circles.ToArray()
+        _bodies = bodies.ToArray()
         _groups = groups
-        Dim n = _circles.Length
+        Dim n = _bodies.Length
+        _offset = New Vector(n - 1) {}
+        _low = New Vector(n - 1) {}
+        _high = New Vector(n - 1) {}
+        For i = 0 To n - 1
+            Dim o = _bodies(i).Outline
+            _offset(i) = o.Centroid
+            _low(i) = New Vector(o.MinX - _offset(i).X, o.MinY - _offset(i).Y)
+            _high(i) = New Vector(o.MaxX - _offset(i).X, o.MaxY - _offset(i).Y)
+        Next
         _groupOf = New Integer(n - 1) {}
         _slotOf = New Integer(n - 1) {}
-        Dim index As New Dictionary(Of Circle, Integer)
+        Dim index As New Dictionary(Of Shape, Integer)
         For i = 0 To n - 1
-            index(_circles(i)) = i
+            index(_bodies(i)) = i
         Next
         _rodPair.Clear()
         For g = 0 To _groups.Count - 1
@@ -109,14 +156,20 @@ Friend NotInheritable Class LinkedEventSolver
                 _groupOf(index(c)) = g
             Next
             For Each l In _groups(g).Links
-                If l.Kind = LinkKind.Rod AndAlso l.B IsNot Nothing AndAlso Not l.B.IsFixed Then _rodPair.Add(PairKey(index(DirectCast(l.A, Circle)), index(DirectCast(l.B, Circle))))
+                If l.Kind = LinkKind.Rod AndAlso l.B IsNot Nothing AndAlso Not l.B.IsFixed Then _rodPair.Add(PairKey(index(l.A), index(l.B)))
             Next
         Next
         _fixed = w.Bodies.Where(Function(b) b.IsFixed).ToArray()
         _differences = New Outline(n - 1, _fixed.Length - 1) {}
         For i = 0 To n - 1
             For f = 0 To _fixed.Length - 1
-                _differences(i, f) = Outline.MinkowskiDifference(_fixed(f).Outline, _circles(i).Outline)
+                _differences(i, f) = Outline.MinkowskiDifference(_fixed(f).Outline, _bodies(i).Outline)
+            Next
+        Next
+        _pairDifferences = New Outline(n - 1, n - 1) {}
+        For i = 0 To n - 1
+            For j = i + 1 To n - 1
+                If Not BothBalls(i, j) Then _pairDifferences(i, j) = Outline.MinkowskiDifference(_bodies(j).Outline, _bodies(i).Outline)
             Next
         Next
         _pairTime = New Double(n - 1, n - 1) {}
@@ -128,17 +181,21 @@ Friend NotInheritable Class LinkedEventSolver
         _dirty = False
     End Sub
 
+    Private Function BothBalls(i As Integer, j As Integer) As Boolean
+        Return _bodies(i).Kind = ShapeKind.Circle AndAlso _bodies(j).Kind = ShapeKind.Circle
+    End Function
+
     Private Shared Function PairKey(i As Integer, j As Integer) As Long
         Return CLng(Math.Min(i, j)) * Integer.MaxValue + Math.Max(i, j)
     End Function
 
     ''' <summary>Bodies joined through links, by union–find; a link to a fixed body or a point joins nothing.</summary>
-    Private Shared Function FormGroups(w As World, circles As List(Of Circle)) As List(Of LinkedGroup)
+    Private Shared Function FormGroups(w As World, bodies As List(Of Shape)) As List(Of LinkedGroup)
         Dim index As New Dictionary(Of Shape, Integer)
-        For i = 0 To circles.Count - 1
-            index(circles(i)) = i
+        For i = 0 To bodies.Count - 1
+            index(bodies(i)) = i
         Next
-        Dim parent = Enumerable.Range(0, circles.Count).ToArray()
+        Dim parent = Enumerable.Range(0, bodies.Count).ToArray()
         Dim root As Func(Of Integer, Integer) = Function(x)
                                                     Do While parent(x) <> x
                                                         parent(x) = parent(parent(x))
@@ -154,15 +211,15 @@ Friend NotInheritable Class LinkedEventSolver
         Next
         Dim byRoot As New Dictionary(Of Integer, LinkedGroup)
         Dim groups As New List(Of LinkedGroup)
-        For i = 0 To circles.Count - 1
+        For i = 0 To bodies.Count - 1
             Dim r = root(i)
             Dim g As LinkedGroup = Nothing
             If Not byRoot.TryGetValue(r, g) Then
-                g = New LinkedGroup(New List(Of Circle), New List(Of Link))
+                g = New LinkedGroup(New List(Of Shape), New List(Of Link))
                 byRoot(r) = g
                 groups.Add(g)
             End If
-            g.Bodies.Add(circles(i))
+            g.Bodies.Add(bodies(i))
         Next
         For Each l In w.Links
             Dim a As Integer
@@ -176,19 +233,20 @@ Friend NotInheritable Class LinkedEventSolver
         Dim group = _groups(g)
         group.Motion = LinkedMotions.Create(group, _world, t, slack, Slop)
         For Each c In group.Bodies
-            Dim i = Array.IndexOf(_circles, c)
+            Dim i = Array.IndexOf(_bodies, c)
             _slotOf(i) = Array.IndexOf(group.Motion.Bodies, c)
         Next
     End Sub
 
-    ''' <summary>Writes group g's bodies' states at <paramref name="t"/> to them.</summary>
+    ''' <summary>Writes group g's bodies' states at <paramref name="t"/> to them: the motion's centre less the centroid offset is the reference point.</summary>
     Private Sub Sync(g As Integer, t As Double)
         Dim m = _groups(g).Motion
         For k = 0 To m.Bodies.Length - 1
             Dim p As Vector, v As Vector
             m.StateAt(t, k, p, v)
-            m.Bodies(k).Position = p
-            m.Bodies(k).Velocity = v
+            Dim body = m.Bodies(k)
+            body.Position = p - _offset(Array.IndexOf(_bodies, body))
+            body.Velocity = v
         Next
     End Sub
 
@@ -206,7 +264,7 @@ Friend NotInheritable Class LinkedEventSolver
             Dim t = _groups(g).Motion.TransitionTime
             If t < best Then best = t : kind = 0 : i = g
         Next
-        Dim n = _circles.Length
+        Dim n = _bodies.Length
         For a = 0 To n - 1
             For b = a + 1 To n - 1
                 If _pairTime(a, b) < best Then best = _pairTime(a, b) : kind = 1 : i = a : j = b
@@ -222,25 +280,24 @@ Friend NotInheritable Class LinkedEventSolver
     End Function
 
     Private Sub PredictAll(tEnd As Double)
-        For i = 0 To _circles.Length - 1
+        For i = 0 To _bodies.Length - 1
             PredictBody(i, tEnd, -1)
         Next
     End Sub
 
-    ''' <summary>Predicts every contact of ball i (with balls after it, or all of them when <paramref name="everyPair"/> ≥ 0).</summary>
+    ''' <summary>Predicts every contact of body i (with bodies after it, or all of them when <paramref name="everyPair"/> ≥ 0).</summary>
     Private Sub PredictBody(i As Integer, tEnd As Double, everyPair As Integer)
-        Dim n = _circles.Length
+        Dim n = _bodies.Length
         For j = 0 To n - 1
             If j = i OrElse (everyPair < 0 AndAlso j < i) Then Continue For
             Dim a = Math.Min(i, j), b = Math.Max(i, j)
             _pairTime(a, b) = If(_rodPair.Contains(PairKey(a, b)), Double.PositiveInfinity, PredictPair(a, b, tEnd))
         Next
         For s = 1 To 4
-            _wallTime(i, s) = If(_world.Walls, PredictGap(i, LinkedGap.Wall(MotionOf(i), _slotOf(i), _circles(i).Radius, CType(s, WallSide), _world.Width, _world.Height), 0, tEnd), Double.PositiveInfinity)
+            _wallTime(i, s) = If(_world.Walls, PredictGap(i, WallGap(i, CType(s, WallSide)), tEnd), Double.PositiveInfinity)
         Next
         For f = 0 To _fixed.Length - 1
-            Dim gap = LinkedGap.Obstacle(MotionOf(i), _slotOf(i), _differences(i, f), _fixed(f).Position)
-            _fixedTime(i, f) = PredictGap(i, gap, _differences(i, f).Radius, tEnd)
+            _fixedTime(i, f) = PredictGap(i, FixedGap(i, f), tEnd)
         Next
     End Sub
 
@@ -248,23 +305,67 @@ Friend NotInheritable Class LinkedEventSolver
         Return _groups(_groupOf(i)).Motion
     End Function
 
-    Private Function PredictPair(a As Integer, b As Integer, tEnd As Double) As Double
-        Dim gap = LinkedGap.Pair(MotionOf(a), _slotOf(a), MotionOf(b), _slotOf(b), _circles(a).Radius + _circles(b).Radius)
-        Dim t0 = _now
-        Dim until = Math.Min(tEnd, t0 + Horizon)
-        Dim speed = MotionOf(a).SpeedBound(_slotOf(a), t0, until) + MotionOf(b).SpeedBound(_slotOf(b), t0, until)
-        Dim accel = MotionOf(a).AccelerationBound(_slotOf(a), t0, until) + MotionOf(b).AccelerationBound(_slotOf(b), t0, until) +
-                    speed * speed / (_circles(a).Radius + _circles(b).Radius)
-        Return Recheck(FirstContact(gap, t0, until, speed, accel), until, tEnd)
+    Private Function WallGap(i As Integer, side As WallSide) As LinkedGap
+        Return LinkedGap.Wall(MotionOf(i), _slotOf(i), _low(i), _high(i), side, _world.Width, _world.Height)
     End Function
 
-    Private Function PredictGap(i As Integer, gap As LinkedGap, curvatureRadius As Double, tEnd As Double) As Double
+    Private Function FixedGap(i As Integer, f As Integer) As LinkedGap
+        Return LinkedGap.Obstacle(MotionOf(i), _slotOf(i), _differences(i, f), _fixed(f).Position + _offset(i))
+    End Function
+
+    ''' <summary>The gap between bodies a &lt; b: centre distance less the radii for two balls, else the distance to their Minkowski difference.</summary>
+    Private Function PairGap(a As Integer, b As Integer) As LinkedGap
+        If BothBalls(a, b) Then
+            Return LinkedGap.Pair(MotionOf(a), _slotOf(a), MotionOf(b), _slotOf(b), DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
+        End If
+        Return LinkedGap.Shapes(MotionOf(a), _slotOf(a), MotionOf(b), _slotOf(b), _pairDifferences(a, b), _offset(a) - _offset(b))
+    End Function
+
+    ''' <summary>
+    ''' Bodies a &lt; b. The gap is a 1-Lipschitz function of their relative position, so it closes no faster
+    ''' than V, the sum of their speed bounds (or, for two bodies each on its parabola, the bound on their
+    ''' relative speed). Two balls: its second derivative is at most the relative acceleration plus V²/(r₁ + r₂)
+    ''' for the turning of the line of centres. A box or polygon in the pair: the gap is also convex in the
+    ''' relative position, which bounds it from below with the relative acceleration alone
+    ''' (<see cref="OneSidedAdvancement"/>); from above, the turning of the normal is at most V²/R about a pair
+    ''' shape rounded by R (a ball is involved) and unbounded about a sharp one (boxes and polygons).
+    ''' </summary>
+    Private Function PredictPair(a As Integer, b As Integer, tEnd As Double) As Double
+        Dim gap = PairGap(a, b)
+        Dim t0 = _now
+        Dim until = Math.Min(tEnd, t0 + Horizon)
+        Dim ma = MotionOf(a), mb = MotionOf(b)
+        Dim speed As Double, accel As Double
+        Dim flightA = TryCast(ma, FlightMotion), flightB = TryCast(mb, FlightMotion)
+        If Not BothBalls(a, b) AndAlso flightA IsNot Nothing AndAlso flightB IsNot Nothing Then
+            FlightMotion.RelativeBounds(flightA, flightB, t0, until, speed, accel)
+        Else
+            speed = ma.SpeedBound(_slotOf(a), t0, until) + mb.SpeedBound(_slotOf(b), t0, until)
+            accel = ma.AccelerationBound(_slotOf(a), t0, until) + mb.AccelerationBound(_slotOf(b), t0, until)
+        End If
+        If BothBalls(a, b) Then
+            Dim curved = accel + speed * speed / (DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
+            Return Recheck(FirstContact(gap, t0, until, speed, curved), until, tEnd)
+        End If
+        Return Recheck(FirstShapeContact(gap, t0, until, speed, accel, UpperCurvature(accel, speed, _pairDifferences(a, b).Radius)), until, tEnd)
+    End Function
+
+    ''' <summary>A bound on the gap's second derivative (m/s²) from above: the acceleration's, plus V²/R for the turning of the normal about a pair shape rounded by R; +∞ (none) for a sharp one.</summary>
+    Private Shared Function UpperCurvature(accel As Double, speed As Double, radius As Double) As Double
+        If radius > 0 Then Return accel + speed * speed / radius
+        Return If(speed > 0, Double.PositiveInfinity, accel)
+    End Function
+
+    Private Function PredictGap(i As Integer, gap As LinkedGap, tEnd As Double) As Double
         Dim m = MotionOf(i)
         Dim until = Math.Min(tEnd, _now + Horizon)
         Dim speed = m.SpeedBound(_slotOf(i), _now, until)
         Dim accel = m.AccelerationBound(_slotOf(i), _now, until)
-        If curvatureRadius > 0 Then accel += speed * speed / curvatureRadius
-        Return Recheck(FirstContact(gap, _now, until, speed, accel), until, tEnd)
+        ' A wall is flat: its gap's second derivative is the acceleration across it.
+        If gap.Difference Is Nothing Then Return Recheck(FirstContact(gap, _now, until, speed, accel), until, tEnd)
+        Dim curved = UpperCurvature(accel, speed, gap.Difference.Radius)
+        If _bodies(i).Kind = ShapeKind.Circle Then Return Recheck(FirstContact(gap, _now, until, speed, curved), until, tEnd)
+        Return Recheck(FirstShapeContact(gap, _now, until, speed, accel, curved), until, tEnd)
     End Function
 
     ''' <summary>A search that found nothing before the horizon is taken up again there (an event that is not a contact).</summary>
@@ -300,6 +401,35 @@ Friend NotInheritable Class LinkedEventSolver
         Return Double.PositiveInfinity
     End Function
 
+    ''' <summary>
+    ''' As <see cref="FirstContact"/>, for a pair with a box or polygon in it: the gap closing is searched with
+    ''' the one-sided bound (<paramref name="accel"/>, the relative acceleration's); its opening, after a
+    ''' bounce, with the bound from above, <paramref name="curved"/> (+∞ for two sharp shapes: then with the
+    ''' speed alone, and briefly). A touching pair that does not open soon (two boxes sliding past each other
+    ''' flush, or pressed together) is searched from now for the overlap growing by the slop.
+    ''' </summary>
+    Private Shared Function FirstShapeContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, accel As Double, curved As Double) As Double
+        Dim n As Vector, rate As Double
+        Dim d = gap.GapAndNormal(t0, n, rate)
+        Dim tolerance = 0.0
+        If d <= Slop Then
+            If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
+            Dim sharp = Double.IsPositiveInfinity(curved)
+            Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, tEnd, 0, speed, curved, If(sharp, SharpOpeningBudget, 100000))
+            If opened.Found Then
+                t0 = opened.Time
+            ElseIf opened.ClearUntil < tEnd AndAlso Not sharp Then
+                Return opened.ClearUntil
+            Else
+                tolerance = Math.Min(d, 0) - Slop
+            End If
+        End If
+        Dim result = OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, accel)
+        If result.Found Then Return result.Time
+        If result.ClearUntil < tEnd Then Return result.ClearUntil
+        Return Double.PositiveInfinity
+    End Function
+
     ''' <summary>How far a gap is from opening to <c>target</c> (m): target − gap, zero once it has opened that far.</summary>
     Private NotInheritable Class Opening
         Implements IDistanceFunction
@@ -329,7 +459,7 @@ Friend NotInheritable Class LinkedEventSolver
         Repredict(g, -1, tEnd)
     End Sub
 
-    ''' <summary>Ball i hits ball j, a wall or fixed body f at t: resolve it with the links of both, and report it.</summary>
+    ''' <summary>Body i hits body j (i &lt; j), a wall or fixed body f at t: resolve it with the links of both, and report it.</summary>
     Private Sub Collide(i As Integer, j As Integer, side As WallSide, f As Integer, t As Double, tEnd As Double)
         Dim gi = _groupOf(i)
         Dim gj = If(j >= 0, _groupOf(j), -1)
@@ -337,23 +467,25 @@ Friend NotInheritable Class LinkedEventSolver
         If gj >= 0 AndAlso gj <> gi Then Sync(gj, t)
         Dim gap As LinkedGap
         If j >= 0 Then
-            gap = LinkedGap.Pair(MotionOf(i), _slotOf(i), MotionOf(j), _slotOf(j), _circles(i).Radius + _circles(j).Radius)
+            gap = PairGap(i, j)
         ElseIf f >= 0 Then
-            gap = LinkedGap.Obstacle(MotionOf(i), _slotOf(i), _differences(i, f), _fixed(f).Position)
+            gap = FixedGap(i, f)
         Else
-            gap = LinkedGap.Wall(MotionOf(i), _slotOf(i), _circles(i).Radius, side, _world.Width, _world.Height)
+            gap = WallGap(i, side)
         End If
         Dim normal As Vector, rate As Double
         Dim depth = gap.GapAndNormal(t, normal, rate)
-        Dim speeds = _circles(i).Velocity.Length + If(j >= 0, _circles(j).Velocity.Length, 0)
+        Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
         If depth > Slop OrElse rate >= -(CreepSpeed + 0.000000001 * speeds) Then
             ' Not a contact: a search that reached its horizon or its budget, or a touch that does not press. Only
-            ' this prediction is taken up again from now: nothing has moved differently, so ball i's others stand.
+            ' this prediction is taken up again from now: nothing has moved differently, so body i's others stand.
             PredictAgain(i, j, side, f, tEnd)
             Return
         End If
-        Dim a = _circles(i)
-        Dim b = If(j >= 0, _circles(j), Nothing)
+        ' A corner on a corner of two sharp shapes takes the bisector of the pair shape's corner (docs/shapes.md).
+        If gap.Difference IsNot Nothing Then normal = gap.ContactNormal(t)
+        Dim a = _bodies(i)
+        Dim b = If(j >= 0, _bodies(j), Nothing)
         Dim aBefore = a.Velocity
         Dim bBefore = If(b Is Nothing, Vector.Zero, b.Velocity)
         _impulse.Clear()
@@ -367,30 +499,58 @@ Friend NotInheritable Class LinkedEventSolver
             Next
         End If
         _impulse.Resolve()
-        Dim kind = If(j >= 0, CollisionKind.CircleCircle, If(f >= 0, CollisionKind.CircleFixed, CollisionKind.CircleWall))
-        If f >= 0 AndAlso _fixed(f).Kind = ShapeKind.Rectangle Then kind = CollisionKind.CircleRectangle
-        If f >= 0 AndAlso _fixed(f).Kind <> ShapeKind.Rectangle AndAlso _fixed(f).Kind <> ShapeKind.Circle Then kind = CollisionKind.Other
-        _world.ReportCollision(New CollisionRecord(t, a, If(b, If(f >= 0, _fixed(f), Nothing)), side, kind,
-                                                   aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
+        Dim other = If(b, If(f >= 0, _fixed(f), Nothing))
+        RefuseRest(a, other, side, normal, If(b Is Nothing, Vector.Zero, b.Velocity) - a.Velocity)
+        _reports.Add(New CollisionRecord(t, a, other, side, KindOf(a, other),
+                                         aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
         Restart(gi, t, False)
         If gj >= 0 AndAlso gj <> gi Then Restart(gj, t, False)
         Repredict(gi, gj, tEnd)
     End Sub
 
-    ''' <summary>Predicts again from now the one contact of ball i with ball j, wall <paramref name="side"/> or fixed body f.</summary>
+    ''' <summary>
+    ''' A box or polygon that, after a contact with anything but the floor (or as a body with links, with the floor
+    ''' too), would bounce less than four slops high, pressed on by gravity across the contact, is coming to rest
+    ''' on it: the series of ever smaller bounces has a finite sum but endless terms, and only a free body on the
+    ''' floor has a rest rule here (<see cref="LinkedMotions"/>). Refused, rather than followed into a pile-up of events.
+    ''' </summary>
+    Private Sub RefuseRest(a As Shape, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
+        ' Balls among balls, walls and fixed bodies are as before; a box or polygon that moves is what is new.
+        If a.Kind = ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind = ShapeKind.Circle OrElse other.IsFixed) Then Return
+        If other Is Nothing AndAlso side <> WallSide.Bottom Then Return
+        If other Is Nothing AndAlso _groups(_groupOf(Array.IndexOf(_bodies, a))).Links.Count = 0 Then Return
+        Dim pressing = _world.Gravity * Math.Abs(normal.Y)
+        If pressing <= 0 Then Return
+        Dim separating = Vector.Dot(relativeAfter, normal)
+        If separating > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
+        Throw New UnsupportedSceneException("the event solver does not yet let a box or polygon come to rest on anything but the floor in a scene with links, nor anything come to rest on one; use --solver verlet")
+    End Sub
+
+    ''' <summary>How the outputs' enumeration names a pair (as the main event solver's rules do).</summary>
+    Private Shared Function KindOf(a As Shape, b As Shape) As CollisionKind
+        If a.Kind <> ShapeKind.Circle Then Return CollisionKind.Other
+        If b Is Nothing Then Return CollisionKind.CircleWall
+        Select Case b.Kind
+            Case ShapeKind.Circle : Return If(b.IsFixed, CollisionKind.CircleFixed, CollisionKind.CircleCircle)
+            Case ShapeKind.Rectangle : Return CollisionKind.CircleRectangle
+            Case Else : Return CollisionKind.Other
+        End Select
+    End Function
+
+    ''' <summary>Predicts again from now the one contact of body i with body j, wall <paramref name="side"/> or fixed body f.</summary>
     Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)
         If j >= 0 Then
             _pairTime(Math.Min(i, j), Math.Max(i, j)) = PredictPair(Math.Min(i, j), Math.Max(i, j), tEnd)
         ElseIf f >= 0 Then
-            _fixedTime(i, f) = PredictGap(i, LinkedGap.Obstacle(MotionOf(i), _slotOf(i), _differences(i, f), _fixed(f).Position), _differences(i, f).Radius, tEnd)
+            _fixedTime(i, f) = PredictGap(i, FixedGap(i, f), tEnd)
         Else
-            _wallTime(i, side) = PredictGap(i, LinkedGap.Wall(MotionOf(i), _slotOf(i), _circles(i).Radius, side, _world.Width, _world.Height), 0, tEnd)
+            _wallTime(i, side) = PredictGap(i, WallGap(i, side), tEnd)
         End If
     End Sub
 
     ''' <summary>Predicts again every contact of the bodies of groups g and h (−1: none).</summary>
     Private Sub Repredict(g As Integer, h As Integer, tEnd As Double)
-        For i = 0 To _circles.Length - 1
+        For i = 0 To _bodies.Length - 1
             If _groupOf(i) = g OrElse _groupOf(i) = h Then PredictBody(i, tEnd, 0)
         Next
     End Sub

@@ -5,13 +5,13 @@ Option Strict On
 ''' with the closed form that moves them now.
 ''' </summary>
 Friend NotInheritable Class LinkedGroup
-    Friend Sub New(bodies As List(Of Circle), links As List(Of Link))
+    Friend Sub New(bodies As List(Of Shape), links As List(Of Link))
         Me.Bodies = bodies
         Me.Links = links
     End Sub
 
     ''' <summary>The group's bodies.</summary>
-    Friend ReadOnly Property Bodies As List(Of Circle)
+    Friend ReadOnly Property Bodies As List(Of Shape)
 
     ''' <summary>The links among them and to fixed points.</summary>
     Friend ReadOnly Property Links As List(Of Link)

@@ -14,7 +14,7 @@ Option Strict On
 Friend NotInheritable Class LinkedImpulse
     Private Const MaxSweeps As Integer = 10000
 
-    Private ReadOnly _bodies As New List(Of Circle)
+    Private ReadOnly _bodies As New List(Of Shape)
     Private ReadOnly _velocities As New List(Of Vector)
     Private ReadOnly _rows As New List(Of Row)
 
@@ -37,16 +37,15 @@ Friend NotInheritable Class LinkedImpulse
 
     Private Function IndexOf(body As Shape) As Integer
         If body Is Nothing OrElse body.IsFixed Then Return -1
-        Dim c = DirectCast(body, Circle)
-        Dim i = _bodies.IndexOf(c)
+        Dim i = _bodies.IndexOf(body)
         If i >= 0 Then Return i
-        _bodies.Add(c)
-        _velocities.Add(c.Velocity)
+        _bodies.Add(body)
+        _velocities.Add(body.Velocity)
         Return _bodies.Count - 1
     End Function
 
     ''' <summary>The contact: <paramref name="a"/> touches <paramref name="b"/> (Nothing: a wall or a fixed body) with <paramref name="normal"/> from a towards b.</summary>
-    Friend Sub AddContact(a As Circle, b As Circle, normal As Vector, restitution As Double)
+    Friend Sub AddContact(a As Shape, b As Shape, normal As Vector, restitution As Double)
         Dim row As New Row With {.A = IndexOf(a), .B = If(b Is Nothing, -1, IndexOf(b)), .U = normal, .Lower = 0, .Upper = Double.PositiveInfinity}
         row.Target = -restitution * Math.Min(SeparationSpeed(row), 0)
         _rows.Add(row)

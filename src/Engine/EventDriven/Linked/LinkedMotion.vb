@@ -7,13 +7,13 @@ Option Strict On
 ''' find contacts without ever stepping over one. Times are absolute (s, like <see cref="World.Time"/>).
 ''' </summary>
 Friend MustInherit Class LinkedMotion
-    Protected Sub New(bodies As Circle(), startTime As Double)
+    Protected Sub New(bodies As Shape(), startTime As Double)
         Me.Bodies = bodies
         Me.StartTime = startTime
     End Sub
 
     ''' <summary>The bodies this motion moves, in its own order (one or two).</summary>
-    Friend ReadOnly Property Bodies As Circle()
+    Friend ReadOnly Property Bodies As Shape()
 
     ''' <summary>When the motion started, s.</summary>
     Friend ReadOnly Property StartTime As Double

@@ -13,9 +13,6 @@ Friend Module LinkedMotions
 
     ''' <summary>Throws <see cref="UnsupportedSceneException"/> when the world has links the event solver cannot move.</summary>
     Friend Sub CheckSupported(world As World, groups As List(Of LinkedGroup))
-        For Each b In world.Movables
-            If b.Kind <> ShapeKind.Circle Then Throw New UnsupportedSceneException("the event solver does not yet move boxes or polygons in a scene with links" & UseVerlet)
-        Next
         ' Groups that no closed form fits are integrated: springs alone by IntegratedMotion, chains with rods or strings by ChainMotion.
         For Each g In groups
             If OnlySprings(g) OrElse Not IsChain(g) Then Continue For
@@ -32,7 +29,8 @@ Friend Module LinkedMotions
         Dim a = group.Bodies(0)
         If group.Links.Count = 0 Then
             If RestsOnFloor(a, world, slop) Then
-                a.Position = New Vector(a.Position.X, a.Radius)
+                ' Its lowest point exactly on the floor (0 − MinY, not −MinY: a box's is 0, and −0 is not wanted).
+                a.Position = New Vector(a.Position.X, 0 - a.Outline.MinY)
                 a.Velocity = New Vector(a.Velocity.X, 0)
                 Return New FlightMotion(a, time, 0)
             End If
@@ -80,8 +78,8 @@ Friend Module LinkedMotions
     ''' and the string pulls: T/m = v_across²/L + g cos θ ≥ 0 (θ from straight down). Where the pull is
     ''' within rounding of zero, the free parabola decides: if it would leave the circle at once, the string is taut.
     ''' </summary>
-    Private Function AnchoredTaut(body As Circle, l As Link, g As Double, slop As Double) As Boolean
-        Dim r = body.Position - l.EndB
+    Private Function AnchoredTaut(body As Shape, l As Link, g As Double, slop As Double) As Boolean
+        Dim r = body.CentreOfMass - l.EndB
         Dim d = r.Length
         If d < l.Length * (1 - FullFraction) Then Return False
         Dim v = body.Velocity
@@ -91,12 +89,12 @@ Friend Module LinkedMotions
         Dim pull = (v.LengthSquared - along * along) / l.Length - g * r.Y / d
         If pull > FullFraction * (g + v.LengthSquared / l.Length) Then Return True
         If pull < -FullFraction * (g + v.LengthSquared / l.Length) Then Return False
-        Return StringTaut.AnchoredTautTime(l.EndB, l.Length, body.Position, v, g, slop) = 0
+        Return StringTaut.AnchoredTautTime(l.EndB, l.Length, body.CentreOfMass, v, g, slop) = 0
     End Function
 
     ''' <summary>A string between two free bodies is taut at full length when they do not move along it (its pull, μω²L, is never negative).</summary>
-    Private Function PairTaut(a As Circle, b As Circle, l As Link) As Boolean
-        Dim r = b.Position - a.Position
+    Private Function PairTaut(a As Shape, b As Shape, l As Link) As Boolean
+        Dim r = b.CentreOfMass - a.CentreOfMass
         Dim d = r.Length
         If d < l.Length * (1 - FullFraction) Then Return False
         Dim w = b.Velocity - a.Velocity
@@ -104,13 +102,22 @@ Friend Module LinkedMotions
     End Function
 
     ''' <summary>
-    ''' A free ball on the floor that would bounce less than four times <paramref name="slop"/> high: it rests
-    ''' there (sliding), instead of bouncing ever lower at ever shorter intervals (the series of bounces has
-    ''' a finite sum). Contacts are told apart from touches by twice the slop, so lower bounces cannot be followed.
+    ''' A free body on the floor (its lowest point, a ball's bottom or a box's bottom face, within
+    ''' <paramref name="slop"/> of it) that would bounce less than four times the slop high: it rests there
+    ''' (sliding), instead of bouncing ever lower at ever shorter intervals (the series of bounces has a finite
+    ''' sum). Contacts are told apart from touches by twice the slop, so lower bounces cannot be followed.
     ''' </summary>
-    Private Function RestsOnFloor(body As Circle, world As World, slop As Double) As Boolean
+    Private Function RestsOnFloor(body As Shape, world As World, slop As Double) As Boolean
         If Not world.Walls OrElse world.Gravity <= 0 Then Return False
-        If body.Position.Y - body.Radius > slop Then Return False
-        Return Math.Abs(body.Velocity.Y) <= Math.Sqrt(8 * world.Gravity * slop)
+        If body.Position.Y + body.Outline.MinY > slop Then Return False
+        Return Math.Abs(body.Velocity.Y) <= RestingSpeed(world.Gravity, slop)
+    End Function
+
+    ''' <summary>
+    ''' The speed (m/s) below which a bounce against a support pressed on by <paramref name="gravity"/> (m/s²)
+    ''' would rise less than four times <paramref name="slop"/> (m): v² = 2 g h with h = 4 slop.
+    ''' </summary>
+    Friend Function RestingSpeed(gravity As Double, slop As Double) As Double
+        Return Math.Sqrt(8 * Math.Max(gravity, 0) * slop)
     End Function
 End Module

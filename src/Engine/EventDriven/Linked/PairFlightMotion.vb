@@ -13,11 +13,11 @@ Friend NotInheritable Class PairFlightMotion
     Private ReadOnly _flights As FlightMotion()
     Private ReadOnly _taut As Double
 
-    Friend Sub New(a As Circle, b As Circle, link As Link, startTime As Double, gravity As Double, slop As Double)
+    Friend Sub New(a As Shape, b As Shape, link As Link, startTime As Double, gravity As Double, slop As Double)
         MyBase.New({a, b}, startTime)
         _link = link
         _flights = {New FlightMotion(a, startTime, gravity), New FlightMotion(b, startTime, gravity)}
-        _taut = startTime + StringTaut.PairTautTime(a.Position, a.Velocity, b.Position, b.Velocity, link.Length, slop)
+        _taut = startTime + StringTaut.PairTautTime(a.CentreOfMass, a.Velocity, b.CentreOfMass, b.Velocity, link.Length, slop)
     End Sub
 
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
@@ -41,7 +41,7 @@ Friend NotInheritable Class PairFlightMotion
     ''' <summary>The string snaps taut: an impulse along it, equal and opposite, so the ends separate at −e times the speed they arrived.</summary>
     Friend Overrides Function Transition(world As World) As Boolean
         Dim a = Bodies(0), b = Bodies(1)
-        Dim n = (b.Position - a.Position).Normalized(Vector.Zero)
+        Dim n = (b.CentreOfMass - a.CentreOfMass).Normalized(Vector.Zero)
         Dim apart = Vector.Dot(b.Velocity - a.Velocity, n)
         If apart <= 0 Then Return False
         Dim after = world.Restitution * apart

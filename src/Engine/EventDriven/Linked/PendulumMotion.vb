@@ -13,12 +13,12 @@ Friend NotInheritable Class PendulumMotion
     Private ReadOnly _speedBound As Double
     Private ReadOnly _gravity As Double
 
-    Friend Sub New(body As Circle, link As Link, startTime As Double, gravity As Double)
+    Friend Sub New(body As Shape, link As Link, startTime As Double, gravity As Double)
         MyBase.New({body}, startTime)
         _link = link
         _gravity = gravity
         Dim anchor = link.EndB
-        _pendulum = New Pendulum(anchor, link.Length, gravity, body.Position, body.Velocity)
+        _pendulum = New Pendulum(anchor, link.Length, gravity, body.CentreOfMass, body.Velocity)
         If link.Kind = LinkKind.String Then
             Dim slackAfter = _pendulum.SlackTime()
             ' Released at full length with no pull yet (from the horizontal, at rest), the tension grows

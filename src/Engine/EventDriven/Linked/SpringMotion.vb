@@ -18,22 +18,22 @@ Friend NotInheritable Class SpringMotion
     Private ReadOnly _end As Double = Double.PositiveInfinity
 
     ''' <summary>Whether <see cref="SpringMotion"/> has a closed form for this body on this spring now.</summary>
-    Friend Shared Function Fits(body As Circle, link As Link, gravity As Double) As Boolean
-        If link.Length = 0 Then Return New ZeroLengthSpring(link.EndB, body.Mass, link.Stiffness, link.Damping, gravity, body.Position, body.Velocity).IsExact
+    Friend Shared Function Fits(body As Shape, link As Link, gravity As Double) As Boolean
+        If link.Length = 0 Then Return New ZeroLengthSpring(link.EndB, body.Mass, link.Stiffness, link.Damping, gravity, body.CentreOfMass, body.Velocity).IsExact
         ' Clear of the anchor's height: at it (where this form hands over) the integrator goes on.
-        Return body.Position.X = link.EndB.X AndAlso body.Velocity.X = 0 AndAlso Math.Abs(body.Position.Y - link.EndB.Y) > 0.000001 * link.Length
+        Return body.CentreOfMass.X = link.EndB.X AndAlso body.Velocity.X = 0 AndAlso Math.Abs(body.CentreOfMass.Y - link.EndB.Y) > 0.000001 * link.Length
     End Function
 
-    Friend Sub New(body As Circle, link As Link, startTime As Double, gravity As Double)
+    Friend Sub New(body As Shape, link As Link, startTime As Double, gravity As Double)
         MyBase.New({body}, startTime)
         _link = link
         Dim m = body.Mass, k = link.Stiffness, c = link.Damping
         Dim anchor = link.EndB
-        Dim r = body.Position - anchor
+        Dim r = body.CentreOfMass - anchor
         Dim v = body.Velocity
         Dim weight = m * gravity
         If link.Length = 0 Then
-            _zero = New ZeroLengthSpring(anchor, m, k, c, gravity, body.Position, v)
+            _zero = New ZeroLengthSpring(anchor, m, k, c, gravity, body.CentreOfMass, v)
             ' E = ½mv² + ½k|r|² + mg r_y; the potential is least, −(mg)²/(2k), where it hangs.
             Dim energy = 0.5 * m * v.LengthSquared + 0.5 * k * r.LengthSquared + weight * r.Y
             Dim spare = Math.Max(energy + weight * weight / (2 * k), 0)
@@ -41,7 +41,7 @@ Friend NotInheritable Class SpringMotion
             Dim reach = (weight + Math.Sqrt(weight * weight + 2 * k * Math.Max(energy, -weight * weight / (2 * k)))) / k
             _accelerationBound = gravity + (k * reach + c * _speedBound) / m
         Else
-            _vertical = New VerticalSpring(anchor, m, k, link.Length, c, gravity, body.Position, v)
+            _vertical = New VerticalSpring(anchor, m, k, link.Length, c, gravity, body.CentreOfMass, v)
             ' On one side of the anchor m s'' = −k(s − s_eq) − c s': the energy above the least, at s_eq, bounds
             ' the speed (½mv²) and the distance from s_eq (½k e²).
             Dim s = r.Y
