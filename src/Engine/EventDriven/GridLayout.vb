@@ -12,8 +12,15 @@ Friend Module GridLayout
     End Function
 
     ''' <summary>
+    ''' With gravity, cells are at most this many of the largest gridded diameters wide, m/m: about two
+    ''' bodies to a cell in a close-packed pile. Measured on the Galton board (balls spread over a large
+    ''' board, piling in its bins) and the gas under gravity.
+    ''' </summary>
+    Friend Const PileCellDiameters As Double = 3.0
+
+    ''' <summary>
     ''' Cells holding about <paramref name="perCell"/> bodies each (few crossings, few neighbours),
-    ''' never narrower than the largest gridded diameter. Bodies reaching more than four times the median
+    ''' never narrower than the largest gridded diameter (nor, under gravity, wider than <see cref="PileCellDiameters"/> of it). Bodies reaching more than four times the median
     ''' from their reference point are "oversized": kept out of the grid and checked against every body, so one giant does not
     ''' make every cell huge. Every body is filed in its cell and published; every obstacle is listed
     ''' in the cells it can be touched from.
@@ -43,7 +50,11 @@ Friend Module GridLayout
         Next
         s.RMax = rMax
         Dim gridded = Math.Max(1, n - s.OversizedCount)
-        Dim cell = Math.Max(2 * rMax * (1 + 1.0E-9), Math.Sqrt(perCell * s.Width * s.Height / gridded))
+        Dim cell = Math.Sqrt(perCell * s.Width * s.Height / gridded)
+        ' Under gravity bodies gather where it pulls them, up to close packing, however thinly they are
+        ' spread over the container on average: a cell sized for the average would hold tens of them there.
+        If s.G <> 0 AndAlso rMax > 0 Then cell = Math.Min(cell, PileCellDiameters * 2 * rMax)
+        cell = Math.Max(2 * rMax * (1 + 1.0E-9), cell)
         s.Grid.Layout(s.Width, s.Height, cell, n, 4 * n + 64)
         For i = 0 To n - 1
             If b.Reach(i) > limit Then
