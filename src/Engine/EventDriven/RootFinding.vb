@@ -126,7 +126,8 @@ Public Module RootFinding
     ''' The earliest t ≥ 0 at which f (a gap or a squared-distance excess: positive means apart)
     ''' crosses from positive to ≤ 0 while decreasing; +∞ when it never does. When f(0) ≤ tolerance
     ''' the bodies already touch: they collide now (t = 0) if f is decreasing at 0 (the first
-    ''' non-zero derivative is negative), and touching bodies that separate are not a collision.
+    ''' non-zero derivative is negative); touching bodies that separate collide only when f comes back
+    ''' down to where it started (or to 0, if it started above), as in <see cref="EarliestEntryQuadratic"/>.
     ''' </summary>
     Public Function EarliestEntry(c4 As Double, c3 As Double, c2 As Double, c1 As Double, c0 As Double,
                                   tolerance As Double) As Double
@@ -135,6 +136,13 @@ Public Module RootFinding
         Dim direction = If(c1 <> 0, c1, If(c2 <> 0, c2, If(c3 <> 0, c3, c4)))
         Dim touching = c0 <= tolerance
         If touching AndAlso direction < 0 Then Return 0
+        ' Touching and separating, f starting within the tolerance below 0 (rounding): measured from
+        ' its start, so a pair that parts at a rounding error's speed while its acceleration presses it
+        ' together (a ball left at rest on another) is found coming back at once. From f(0) < 0 it
+        ' would have to rise above 0 first, and a rise far below rounding never shows in the sum: the
+        ' pair would be missed, and sink into each other. (A start deeper inside keeps its meaning: the
+        ' next time f falls through 0.)
+        If touching AndAlso c0 < 0 AndAlso c0 >= -tolerance Then c0 = 0
         ' Cauchy's bound: every real root of f and of f' lies below it.
         Dim lead = If(c4 <> 0, c4, c3)
         Dim bound = 1 + Math.Max(Math.Max(Math.Abs(c3 / lead), Math.Abs(c2 / lead)), Math.Max(Math.Abs(c1 / lead), Math.Abs(c0 / lead)))

@@ -63,6 +63,24 @@ Public Class TimeOfImpactTests
     End Sub
 
     <Fact>
+    Public Sub CircleCircleAccelerated_TouchingByRounding_PartingAtARoundingSpeed_MeetsAgainAsABallThrownUpLands()
+        ' A ball resting on a still one (its centre 0.13 mm right of the other's top), overlapping by
+        ' rounding, that a contact solve left moving up at 2.7e-48 m/s (zero but for rounding) under
+        ' g = 47.8 m/s²: it is thrown up at v and lands back where it started after 2 v / g. Before,
+        ' the return was missed (f had to rise above 0 first) and the ball sank into the other.
+        Const g As Double = 47.77712974689722, v As Double = 2.666223792282384E-48
+        Const sumR As Double = 0.0025715489075532295, dx As Double = 0.00012818996373285905
+        Dim dy = Math.Sqrt(sumR * sumR - dx * dx - 5.0E-20)
+        Dim c0 = dx * dx + dy * dy - sumR * sumR
+        Assert.InRange(c0, -2 * sumR * Slop, -1.0E-21) ' within the touching tolerance, below zero
+        Dim t = TimeOfImpact.CircleCircle(dx, dy, 0, v, -g, sumR, Slop, v)
+        Assert.InRange(t / (2 * v / g), 1 - 1.0E-9, 1 + 1.0E-9)
+        ' The same pair at a speed that rounding does not hide lands after 2 v / g as well.
+        Dim slow = TimeOfImpact.CircleCircle(dx, dy, 0, 0.001, -g, sumR, Slop, 0.001)
+        Assert.InRange(slow / (2 * 0.001 / g), 1 - 1.0E-6, 1 + 1.0E-6)
+    End Sub
+
+    <Fact>
     Public Sub CircleCircle_HeadOn_MatchesGapOverClosingSpeed()
         ' Centres 1 m apart, radii sum 0.2, closing at 2 m/s: contact after 0.8 / 2 = 0.4 s.
         Dim t = TimeOfImpact.CircleCircle(-1, 0, 2, 0, 0, 0.2, Slop)
