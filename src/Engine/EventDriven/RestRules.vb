@@ -155,10 +155,11 @@ Friend NotInheritable Class RestRules
     ''' <summary>
     ''' After a free body touched something that does not give way (floor, rectangle, fixed circle,
     ''' a body at rest, moving at (sx, sy) m/s) with normal n: the resting and sleeping rules that end
-    ''' the Zeno series. Speeds are relative to the support.
+    ''' the Zeno series. Speeds are relative to the support. <paramref name="before"/> is the body's velocity
+    ''' just before the contact (m/s; Nothing: as now), which a hop down a slope may not exceed in energy.
     ''' </summary>
     Friend Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, edge As Integer, sx As Double, sy As Double,
-                                   Optional curve As CurvedSupport? = Nothing)
+                                   Optional curve As CurvedSupport? = Nothing, Optional before As Vector? = Nothing)
         If _s.G = 0 OrElse n.Y <= 0 Then Return
         Dim b = _s.Bodies
         Dim r = b.Scale(i)
@@ -199,10 +200,22 @@ Friend NotInheritable Class RestRules
             If b.Mode(i) = BodyMode.Sleeping Then Return
         End If
         ' Zeno guard on a support that moves: never leave it slower than restSpeed, so a body sliding
-        ' down a curved support hops down it in finitely many events instead of infinitely many.
+        ' down a curved support hops down it in finitely many events instead of infinitely many. The hop
+        ' is paid for by the body's own speed, or by a move down the slope (SlopeHop): never by new energy.
         If vn < restSpeed Then
-            b.Motion(i).Vx += n.X * (restSpeed - vn)
-            b.Motion(i).Vy += n.Y * (restSpeed - vn)
+            Dim shift As Vector
+            Dim maxShift = If(still, MaxSlopeShift * r, 0.0)
+            Dim came = If(before.HasValue, before.Value - New Vector(sx, sy), New Vector(rx, ry))
+            Dim v = SlopeHop.Depart(came, New Vector(rx, ry), n, restSpeed, _s.G, maxShift, shift)
+            Dim p = New Vector(b.Motion(i).Px, b.Motion(i).Py)
+            If shift <> Vector.Zero AndAlso Not IsClear(i, p + shift) Then v = SlopeHop.Depart(came, New Vector(rx, ry), n, restSpeed, _s.G, 0, shift)
+            b.Motion(i).Vx = sx + v.X
+            b.Motion(i).Vy = sy + v.Y
+            If shift <> Vector.Zero Then
+                b.Motion(i).Px = p.X + shift.X
+                b.Motion(i).Py = p.Y + shift.Y
+                _s.MoveToCellOfPosition(i)
+            End If
         End If
     End Sub
 
@@ -352,6 +365,13 @@ Friend NotInheritable Class RestRules
     ''' than this, s: a state sampled later than the rest time minus this is truly at rest.
     ''' </summary>
     Friend Const RestWindow As Double = 0.0001
+
+    ''' <summary>
+    ''' The furthest a body at rest on a slope moves down its tangent to pay for a hop, as a fraction of
+    ''' its size: near the top of a curve the full height would take a long move, and a lower hop is paid
+    ''' by a short one instead.
+    ''' </summary>
+    Private Const MaxSlopeShift As Double = 0.001
 
     ''' <summary>Bounce height (m) of the slowest hop a body may leave a slope with: 10⁻⁶ of its radius.</summary>
     Private Shared Function RestHeight(r As Double) As Double
