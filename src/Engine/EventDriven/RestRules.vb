@@ -199,24 +199,41 @@ Friend NotInheritable Class RestRules
             SleepIfSettled(i)
             If b.Mode(i) = BodyMode.Sleeping Then Return
         End If
-        ' Zeno guard on a support that moves: never leave it slower than restSpeed, so a body sliding
-        ' down a curved support hops down it in finitely many events instead of infinitely many. The hop
-        ' is paid for by the body's own speed, or by a move down the slope (SlopeHop): never by new energy.
+        ' Zeno guard: never leave the support slower than restSpeed, so a body sliding down a curved
+        ' support hops down it in finitely many events instead of infinitely many. On a support that does
+        ' not move, the hop is paid for by the body's own speed or by a move down the slope, never by new
+        ' energy (see HopDownSlope). On one that moves (a body resting and sliding, touched gently, taken
+        ' as immovable), energy is not kept anyway: the hop is given.
         If vn < restSpeed Then
-            Dim shift As Vector
-            Dim maxShift = If(still, MaxSlopeShift * r, 0.0)
-            Dim came = If(before.HasValue, before.Value - New Vector(sx, sy), New Vector(rx, ry))
-            Dim v = SlopeHop.Depart(came, New Vector(rx, ry), n, restSpeed, _s.G, maxShift, shift)
-            Dim p = New Vector(b.Motion(i).Px, b.Motion(i).Py)
-            If shift <> Vector.Zero AndAlso Not IsClear(i, p + shift) Then v = SlopeHop.Depart(came, New Vector(rx, ry), n, restSpeed, _s.G, 0, shift)
-            b.Motion(i).Vx = sx + v.X
-            b.Motion(i).Vy = sy + v.Y
-            If shift <> Vector.Zero Then
-                b.Motion(i).Px = p.X + shift.X
-                b.Motion(i).Py = p.Y + shift.Y
-                _s.MoveToCellOfPosition(i)
+            If still Then
+                HopDownSlope(i, n, restSpeed, If(before.HasValue, before.Value, New Vector(rx, ry)))
+            Else
+                b.Motion(i).Vx += n.X * (restSpeed - vn)
+                b.Motion(i).Vy += n.Y * (restSpeed - vn)
             End If
         End If
+    End Sub
+
+    ''' <summary>
+    ''' Body i (at the clock, touching a support that does not move along normal n, too slow to leave it)
+    ''' leaves it at the normal speed <paramref name="minimum"/> (m/s) with no more energy than it came with
+    ''' at <paramref name="before"/> (m/s): from its speed along the slope, or from height, by first moving
+    ''' down the tangent (<see cref="SlopeHop"/>), at most <see cref="MaxSlopeShift"/> of its size and only
+    ''' where it is clear. A body that cannot move there is held by what is in the way; it gets no hop.
+    ''' </summary>
+    Private Sub HopDownSlope(i As Integer, n As Vector, minimum As Double, before As Vector)
+        Dim m = _s.Bodies.Motion
+        Dim after = New Vector(m(i).Vx, m(i).Vy)
+        Dim p = New Vector(m(i).Px, m(i).Py)
+        Dim shift As Vector
+        Dim v = SlopeHop.Depart(before, after, n, minimum, _s.G, MaxSlopeShift * _s.Bodies.Scale(i), shift)
+        If shift <> Vector.Zero AndAlso Not IsClear(i, p + shift) Then v = SlopeHop.Depart(before, after, n, minimum, _s.G, 0, shift)
+        m(i).Vx = v.X
+        m(i).Vy = v.Y
+        If shift = Vector.Zero Then Return
+        m(i).Px = p.X + shift.X
+        m(i).Py = p.Y + shift.Y
+        _s.MoveToCellOfPosition(i)
     End Sub
 
     ''' <summary>
