@@ -108,7 +108,7 @@ Friend NotInheritable Class Responder
             _rest.NoteHit(i)
         End If
         If b.Mode(i) = BodyMode.Supported AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then _rest.MakeFree(i)
-        If b.Mode(i) = BodyMode.Free Then _rest.AfterSupportContact(i, n, support, edge, 0, 0, curve)
+        If b.Mode(i) = BodyMode.Free Then _rest.AfterSupportContact(i, n, support, edge, 0, 0, curve, before)
         _s.Changed(i)
     End Sub
 
@@ -158,12 +158,12 @@ Friend NotInheritable Class Responder
         If result.A <> vi AndAlso b.Mode(i) <> BodyMode.Dragged Then _rest.WakeFrom(i)
         If result.B <> vj AndAlso b.Mode(j) <> BodyMode.Dragged Then _rest.WakeFrom(j)
         If b.Mode(i) = BodyMode.Free AndAlso invJ = 0 AndAlso b.Mode(j) <> BodyMode.Dragged Then
-            _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy)
+            _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy, before:=vi)
         ElseIf b.Mode(i) = BodyMode.Free Then
             _rest.SleepIfSettled(i)
         End If
         If b.Mode(j) = BodyMode.Free AndAlso invI = 0 AndAlso b.Mode(i) <> BodyMode.Dragged Then
-            _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy)
+            _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy, before:=vj)
         ElseIf b.Mode(j) = BodyMode.Free Then
             _rest.SleepIfSettled(j)
         End If

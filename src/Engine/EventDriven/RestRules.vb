@@ -155,10 +155,11 @@ Friend NotInheritable Class RestRules
     ''' <summary>
     ''' After a free body touched something that does not give way (floor, rectangle, fixed circle,
     ''' a body at rest, moving at (sx, sy) m/s) with normal n: the resting and sleeping rules that end
-    ''' the Zeno series. Speeds are relative to the support.
+    ''' the Zeno series. Speeds are relative to the support. <paramref name="before"/> is the body's velocity
+    ''' just before the contact (m/s; Nothing: as now), which a hop down a slope may not exceed in energy.
     ''' </summary>
     Friend Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, edge As Integer, sx As Double, sy As Double,
-                                   Optional curve As CurvedSupport? = Nothing)
+                                   Optional curve As CurvedSupport? = Nothing, Optional before As Vector? = Nothing)
         If _s.G = 0 OrElse n.Y <= 0 Then Return
         Dim b = _s.Bodies
         Dim r = b.Scale(i)
@@ -198,12 +199,41 @@ Friend NotInheritable Class RestRules
             SleepIfSettled(i)
             If b.Mode(i) = BodyMode.Sleeping Then Return
         End If
-        ' Zeno guard on a support that moves: never leave it slower than restSpeed, so a body sliding
-        ' down a curved support hops down it in finitely many events instead of infinitely many.
+        ' Zeno guard: never leave the support slower than restSpeed, so a body sliding down a curved
+        ' support hops down it in finitely many events instead of infinitely many. On a support that does
+        ' not move, the hop is paid for by the body's own speed or by a move down the slope, never by new
+        ' energy (see HopDownSlope). On one that moves (a body resting and sliding, touched gently, taken
+        ' as immovable), energy is not kept anyway: the hop is given.
         If vn < restSpeed Then
-            b.Motion(i).Vx += n.X * (restSpeed - vn)
-            b.Motion(i).Vy += n.Y * (restSpeed - vn)
+            If still Then
+                HopDownSlope(i, n, restSpeed, If(before.HasValue, before.Value, New Vector(rx, ry)))
+            Else
+                b.Motion(i).Vx += n.X * (restSpeed - vn)
+                b.Motion(i).Vy += n.Y * (restSpeed - vn)
+            End If
         End If
+    End Sub
+
+    ''' <summary>
+    ''' Body i (at the clock, touching a support that does not move along normal n, too slow to leave it)
+    ''' leaves it at the normal speed <paramref name="minimum"/> (m/s) with no more energy than it came with
+    ''' at <paramref name="before"/> (m/s): from its speed along the slope, or from height, by first moving
+    ''' down the tangent (<see cref="SlopeHop"/>), at most <see cref="MaxSlopeShift"/> of its size and only
+    ''' where it is clear. A body that cannot move there is held by what is in the way; it gets no hop.
+    ''' </summary>
+    Private Sub HopDownSlope(i As Integer, n As Vector, minimum As Double, before As Vector)
+        Dim m = _s.Bodies.Motion
+        Dim after = New Vector(m(i).Vx, m(i).Vy)
+        Dim p = New Vector(m(i).Px, m(i).Py)
+        Dim shift As Vector
+        Dim v = SlopeHop.Depart(before, after, n, minimum, _s.G, MaxSlopeShift * _s.Bodies.Scale(i), shift)
+        If shift <> Vector.Zero AndAlso Not IsClear(i, p + shift) Then v = SlopeHop.Depart(before, after, n, minimum, _s.G, 0, shift)
+        m(i).Vx = v.X
+        m(i).Vy = v.Y
+        If shift = Vector.Zero Then Return
+        m(i).Px = p.X + shift.X
+        m(i).Py = p.Y + shift.Y
+        _s.MoveToCellOfPosition(i)
     End Sub
 
     ''' <summary>
@@ -352,6 +382,13 @@ Friend NotInheritable Class RestRules
     ''' than this, s: a state sampled later than the rest time minus this is truly at rest.
     ''' </summary>
     Friend Const RestWindow As Double = 0.0001
+
+    ''' <summary>
+    ''' The furthest a body at rest on a slope moves down its tangent to pay for a hop, as a fraction of
+    ''' its size: near the top of a curve the full height would take a long move, and a lower hop is paid
+    ''' by a short one instead.
+    ''' </summary>
+    Private Const MaxSlopeShift As Double = 0.001
 
     ''' <summary>Bounce height (m) of the slowest hop a body may leave a slope with: 10⁻⁶ of its radius.</summary>
     Private Shared Function RestHeight(r As Double) As Double

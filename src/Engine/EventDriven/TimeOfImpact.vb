@@ -130,13 +130,16 @@ Public Module TimeOfImpact
     End Function
 
     ''' <summary>
-    ''' Whether a hit at coordinate h along a face [lo, hi] lands on the face. A hit exactly at an end
-    ''' while moving outwards belongs to the corner (the body is leaving the face there).
+    ''' Whether a hit at coordinate h along a face [lo, hi] lands on the face. A hit at an end (to within
+    ''' the touching tolerance) while moving outwards belongs to the corner: the body is leaving the face
+    ''' there. A body that has just slid off a face's end is exactly there in the world's coordinates but,
+    ''' by rounding, a few ulps short of it in the face's own; counted as on the face, it would be put back
+    ''' on it and leave again, for ever, the clock creeping on by ulps.
     ''' </summary>
     Private Function WithinFace(h As Double, rate As Double, lo As Double, hi As Double, slop As Double) As Boolean
         If h < lo - slop OrElse h > hi + slop Then Return False
-        If h >= hi AndAlso rate > 0 Then Return False
-        If h <= lo AndAlso rate < 0 Then Return False
+        If h >= hi - slop AndAlso rate > 0 Then Return False
+        If h <= lo + slop AndAlso rate < 0 Then Return False
         Return True
     End Function
 End Module

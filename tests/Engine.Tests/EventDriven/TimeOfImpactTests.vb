@@ -178,6 +178,20 @@ Public Class TimeOfImpactTests
     End Sub
 
     <Fact>
+    Public Sub CircleRectangle_BallLeavingTheEndOfTheTopFace_IsNotCaughtByIt()
+        ' On the top face (y1 = 1) an ulp short of its right end (x1 = 1), r = 1 mm, moving right at
+        ' 0.85 m/s: faster than √(g r), it flies off. Touching the face, pulled in by gravity, it must
+        ' not count as landing on it again: it is leaving there, and nothing else is in its way.
+        Dim f As Integer
+        Dim t = TimeOfImpact.CircleRectangle(1 - 1.0E-16, 1.001, 0.85, 0, -100, 0.001, 0, 0, 1, 1, Slop, f)
+        Assert.Equal(Double.PositiveInfinity, t)
+        ' Moving back onto the face from there, it lands on it at once.
+        t = TimeOfImpact.CircleRectangle(1 - 1.0E-16, 1.001, -0.85, 0, -100, 0.001, 0, 0, 1, 1, Slop, f)
+        Assert.Equal(0.0, t)
+        Assert.Equal(3, f)
+    End Sub
+
+    <Fact>
     Public Sub CornerSlide_LeaveAngle_FromRestAtTheTop_IsTheTextbookAngle()
         ' Starting from (almost) rest at the top: cos θ* = 2/3.
         Assert.Equal(Math.Acos(2.0 / 3.0), CornerSlide.LeaveAngle(0, 9.81, 0.05, 0), 12)
