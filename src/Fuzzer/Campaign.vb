@@ -30,7 +30,7 @@ Friend Module Campaign
                     outcomes(index) = outcome
                     SyncLock log
                         For Each v In outcome.Violations
-                            log.WriteLine("FAIL " & outcome.Label & " " & v.ToString())
+                            log.WriteLine(If(v.Invariant = Invariants.Heavy, "HEAVY ", "FAIL ") & outcome.Label & " " & v.ToString())
                         Next
                     End SyncLock
                 End Sub)
@@ -135,6 +135,11 @@ Friend Module Campaign
             result.Outcomes.Count.ToString(inv) & " scenes (seeds " & options.Seed.ToString(inv) & " to " & (options.Seed + options.Scenes - 1).ToString(inv) & ")")
         log.WriteLine("fuzz: " & what & ", solvers " & String.Join(",", options.Solvers) & ", kinds " & BodyKindNames.Format(options.Kinds) & ": " &
             runs.ToString(inv) & " scene runs in " & result.ElapsedSeconds.ToString("0.0", inv) & " s")
+        For Each o In result.Outcomes
+            For Each v In o.Violations.Where(Function(x) x.Invariant = Invariants.Heavy)
+                log.WriteLine("fuzz: heavy, not a failure: " & o.Label & " (" & v.Solver & ", sample " & v.Sample.ToString("R", inv) & " s): " & v.Message)
+            Next
+        Next
         If failures.Count = 0 Then
             log.WriteLine("fuzz: no failures")
             Return

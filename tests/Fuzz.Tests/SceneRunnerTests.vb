@@ -27,6 +27,29 @@ Public Class SceneRunnerTests
         Assert.False(outcome.Completed)
     End Sub
 
+    <Fact>
+    Public Sub AnEventRunDoingPhysics_IsHeavy_ButOneSpinningOrStalledIsNot()
+        Dim world = Scenarios.ElasticGas(200)
+        world.Solver = New EventDrivenSolver()
+        world.Advance(2.0)
+        Dim collisions = world.CollisionCount
+        Assert.True(collisions > 100, collisions & " collisions")
+        ' The same run seen as having taken a thousandth of a second per thousand collisions: the engine's rate.
+        Dim fast = collisions / (10 * Invariants.HeavyCollisionRate)
+        Dim heavy = SceneRunner.HeavyWork(world, 0, fast)
+        Assert.NotNull(heavy)
+        Assert.Contains("events per collision", heavy, StringComparison.Ordinal)
+        ' Too slow per collision, or its collisions all at the instant before (a runaway at one instant): not heavy.
+        Assert.Null(SceneRunner.HeavyWork(world, 0, collisions / (0.5 * Invariants.HeavyCollisionRate)))
+        Assert.Null(SceneRunner.HeavyWork(world, collisions \ 2, fast))
+        ' No collisions at all (a solver spinning on other events): not heavy.
+        Dim still = Scenarios.ElasticGas(1, 0.01)
+        still.Solver = New EventDrivenSolver()
+        still.Advance(0.001)
+        Assert.Equal(0L, still.CollisionCount)
+        Assert.Null(SceneRunner.HeavyWork(still, 0, 0.001))
+    End Sub
+
     <Theory>
     <InlineData("event")>
     <InlineData("euler")>

@@ -18,13 +18,33 @@ Namespace Checking
         Friend Const Energy As String = "energy"
         ''' <summary>Two sampling intervals give the same collisions and the same final state, to the bit. Event solver.</summary>
         Friend Const Sampling As String = "sampling"
-        ''' <summary>A run finishes within the wall-time cap. All solvers.</summary>
+        ''' <summary>
+        ''' A run finishes within the wall-time cap, or (event solver) is still doing physics at the engine's
+        ''' rate when it reaches it (see <see cref="Heavy"/>). All solvers.
+        ''' </summary>
         Friend Const WallTime As String = "wall-time"
         ''' <summary>The solver threw (or the process running it died). All solvers.</summary>
         Friend Const Crash As String = "exception"
 
         ''' <summary>The scene reader refused a generated scene: a fault of the generator (or of the reader, when the scene follows the format).</summary>
         Friend Const Refused As String = "scene-refused"
+
+        ''' <summary>
+        ''' Not a failure: an event-solver run that reached the wall-time cap while still doing physics at the
+        ''' engine's rate (at least <see cref="HeavyCollisionRate"/> collisions per wall-clock second, at most
+        ''' <see cref="HeavyEventsPerCollision"/> events per collision, and at most <see cref="HeavyRepeatFraction"/>
+        ''' of its collisions at the instant of the one before). A scene can need millions of collisions per
+        ''' simulated second (a microgram ball heated by heavy ones to 10⁴ m/s crosses its box 10⁵ times a
+        ''' second); a runaway spins on events that are not collisions, or on collisions at one instant. The run
+        ''' stops there and is reported as heavy, with its figures.
+        ''' </summary>
+        Friend Const Heavy As String = "heavy"
+        ''' <summary>Collisions per wall-clock second a heavy run keeps up at least: a tenth of the gas's rate.</summary>
+        Friend Const HeavyCollisionRate As Double = 100000.0
+        ''' <summary>Solver events per collision a heavy run makes at most (the gas makes about 1.3).</summary>
+        Friend Const HeavyEventsPerCollision As Double = 3.0
+        ''' <summary>Fraction of a heavy run's collisions at the same instant as the collision before, at most.</summary>
+        Friend Const HeavyRepeatFraction As Double = 0.01
 
         ''' <summary>Every name, in the order reports list them.</summary>
         Friend ReadOnly Property All As IReadOnlyList(Of String) = {NotFinite, Outside, CentreInside, Overlap, Energy, Sampling, WallTime, Crash, Refused}

@@ -22,11 +22,20 @@ Namespace Checking
             world.Solver = SolverFactory.Create(solver)
             Dim isEvent = TypeOf world.Solver Is EventDrivenSolver
             Dim outcome As New RunOutcome()
+            Dim log As CollisionLog = Nothing
             If keepLog Then
-                Dim log As New CollisionLog()
+                log = New CollisionLog()
                 outcome.Log = log
-                world.CollisionListener = AddressOf log.Add
             End If
+            ' Collisions at the instant of the one before: a heavy run has few (see Invariants.Heavy).
+            Dim repeats = 0L
+            Dim lastTime = Double.NaN
+            world.CollisionListener =
+                Sub(c)
+                    If c.Time = lastTime Then repeats += 1
+                    lastTime = c.Time
+                    log?.Add(c)
+                End Sub
             Dim energy = If(isEvent, New EnergyBudget(world), Nothing)
             Dim clock = Stopwatch.StartNew()
             Dim seen As New HashSet(Of String)(StringComparer.Ordinal)
@@ -65,6 +74,14 @@ Namespace Checking
                 If clock.Elapsed.TotalSeconds > cap Then
                     Dim inv = Globalization.CultureInfo.InvariantCulture
                     Dim collisions = world.CollisionCount.ToString(inv) & " collisions"
+                    Dim heavy = If(isEvent, HeavyWork(world, repeats, clock.Elapsed.TotalSeconds), Nothing)
+                    If heavy IsNot Nothing Then
+                        ' Physics at the engine's rate, not a runaway: noted, and the run ends here.
+                        report(Invariants.Heavy, t, "reached t = " & t.ToString("R", inv) & " s of " & total.ToString("R", inv) & " s in the cap of " &
+                            cap.ToString("R", inv) & " s, doing physics: " & heavy)
+                        stopped = True
+                        Exit For
+                    End If
                     If t < total Then
                         report(Invariants.WallTime, t, "reached only t = " & t.ToString("R", inv) & " s of " & total.ToString("R", inv) &
                             " s in the cap of " & cap.ToString("R", inv) & " s (" & collisions & ")")
@@ -80,6 +97,24 @@ Namespace Checking
             outcome.Completed = Not stopped
             If Not stopped Then outcome.Final = New FinalState(world)
             Return outcome
+        End Function
+
+        ''' <summary>
+        ''' The figures of an event-solver run that is still doing physics at the engine's rate (see
+        ''' <see cref="Invariants.Heavy"/>), or Nothing when it is not: too few collisions per wall-clock second,
+        ''' too many events per collision, or too many collisions at one instant.
+        ''' </summary>
+        Friend Function HeavyWork(world As World, repeats As Long, wallSeconds As Double) As String
+            Dim collisions = world.CollisionCount
+            If collisions = 0 OrElse wallSeconds <= 0 OrElse world.Time <= 0 Then Return Nothing
+            Dim rate = collisions / wallSeconds
+            Dim perCollision = DirectCast(world.Solver, EventDrivenSolver).EventCount / CDbl(collisions)
+            Dim repeated = repeats / CDbl(collisions)
+            If rate < Invariants.HeavyCollisionRate OrElse perCollision > Invariants.HeavyEventsPerCollision OrElse repeated > Invariants.HeavyRepeatFraction Then Return Nothing
+            Dim inv = Globalization.CultureInfo.InvariantCulture
+            Return collisions.ToString(inv) & " collisions, " & (collisions / world.Time).ToString("0.00E+0", inv) & " per simulated s, " &
+                rate.ToString("0.00E+0", inv) & " per wall-clock s, " & perCollision.ToString("0.00", inv) & " events per collision, " &
+                repeated.ToString("0.0000", inv) & " of them at the instant before"
         End Function
 
         ''' <summary>A message on one line (worker lines and failure lines are one line each).</summary>
