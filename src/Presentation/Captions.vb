@@ -20,6 +20,7 @@ Public Module Captions
     Public Const CollisionLog As String = "Collision log"
     Public Const AddPolygon As String = "Add polygon"
     Public Const AddRamp As String = "Add ramp"
+    Public Const AddByCorners As String = "Add by corners"
     Public Const AddSpring As String = "+ Spring"
     Public Const AddRod As String = "+ Rod"
     Public Const AddString As String = "+ String"
@@ -28,6 +29,6 @@ Public Module Captions
     Public ReadOnly Property All As IReadOnlyList(Of String) = {
         "Pause", "Resume", Reset, "Delete mode", AddCircle, AddRectangle, ResizeContainer, Fixed, LargeFonts, HighContrast, Arrows,
         Tutorial, MathsUsed, OpenScene, SaveScene, "Open", "Save", CollisionLog, "Circles", "Rectangles",
-        AddPolygon, AddRamp, AddSpring, AddRod, AddString, "Bodies", "Links",
+        AddPolygon, AddByCorners, AddRamp, AddSpring, AddRod, AddString, "Bodies", "Links",
         "Moon", "Mars", "Earth", "Jupiter"}.Concat(MomentumCaptions.All).ToArray()
 End Module

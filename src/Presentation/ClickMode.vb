@@ -10,4 +10,6 @@ Public Enum ClickMode
     Ramp
     ''' <summary>Joins two bodies, or a body and a fixed point, with a link: click one end, then the other.</summary>
     Link
+    ''' <summary>Draws a polygon: click its corners one after another, then finish (first corner again, a double click, or Enter).</summary>
+    Corners
 End Enum

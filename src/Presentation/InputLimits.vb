@@ -42,6 +42,8 @@ Public Module InputLimits
     Public Const RectangleMessage As String = "Please enter a suitable value for the width and height!"
     ''' <summary>Asked when a polygon's sides, size, angle or mass is missing, zero or not a number.</summary>
     Public Const PolygonMessage As String = "Please enter a suitable value for the sides, radius, angle and mass!"
+    ''' <summary>Asked when the mass of a polygon drawn by its corners is missing, zero or not a number.</summary>
+    Public Const CornersMessage As String = "Please enter a suitable value for the mass!"
     ''' <summary>Asked when a box's mass is missing, zero or not a number.</summary>
     Public Const BoxMessage As String = "Please enter a suitable value for the width, height and mass!"
     ''' <summary>Asked when a spring's stiffness is missing, zero or not a number.</summary>

@@ -162,7 +162,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Return String.Join(", ", notes) & ". "
     End Function
 
-    ''' <summary>Drops the body waiting to be placed, or the ramp or link being drawn (Esc).</summary>
+    ''' <summary>Drops the body waiting to be placed, or the ramp, link or polygon being drawn (Esc).</summary>
     Public Sub CancelPlacement()
         If Draft Is Nothing Then
             CancelTool()

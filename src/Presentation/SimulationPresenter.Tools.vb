@@ -21,7 +21,7 @@ Partial Public NotInheritable Class SimulationPresenter
         End Get
     End Property
 
-    ''' <summary>Where the cursor is while a ramp or link is drawn, m (Nothing before it has moved over the canvas).</summary>
+    ''' <summary>Where the cursor is while a ramp, link or polygon is drawn, m (Nothing before it has moved over the canvas).</summary>
     Public ReadOnly Property ToolCursor As Vector?
         Get
             Return _toolCursor
@@ -153,13 +153,14 @@ Partial Public NotInheritable Class SimulationPresenter
             End Sub)
     End Sub
 
-    ''' <summary>Ends the ramp or link tool without making anything.</summary>
+    ''' <summary>Ends the ramp, link or corner tool without making anything.</summary>
     Private Sub CancelTool()
-        If _Mode <> ClickMode.Ramp AndAlso _Mode <> ClickMode.Link Then Return
+        If _Mode <> ClickMode.Ramp AndAlso _Mode <> ClickMode.Link AndAlso _Mode <> ClickMode.Corners Then Return
         _Mode = ClickMode.Move
         _rampStart = Nothing
         _toolCursor = Nothing
         _LinkStart = Nothing
+        _CornerDraft = Nothing
         Emit("tool cancelled")
         ShowMessage("")
         _window.ShowSettings()
@@ -178,17 +179,26 @@ Partial Public NotInheritable Class SimulationPresenter
             If button = PointerButton.Left Then LinkClick(p)
             Return True
         End If
+        If _Mode = ClickMode.Corners Then
+            ' A right click gives up the polygon, as Esc does.
+            If button = PointerButton.Left Then
+                CornerClick(p)
+            ElseIf button = PointerButton.Right Then
+                CancelTool()
+            End If
+            Return True
+        End If
         Return False
     End Function
 
-    ''' <summary>The cursor moved to <paramref name="p"/> (m): a ramp or link being drawn follows it.</summary>
+    ''' <summary>The cursor moved to <paramref name="p"/> (m): a ramp, link or polygon being drawn follows it.</summary>
     Private Sub ToolMove(p As Vector)
-        If _Mode = ClickMode.Ramp OrElse _Mode = ClickMode.Link Then _toolCursor = World.Inside(p, 0)
+        If _Mode = ClickMode.Ramp OrElse _Mode = ClickMode.Link OrElse _Mode = ClickMode.Corners Then _toolCursor = World.Inside(p, 0)
     End Sub
 
     ''' <summary>A button came up at <paramref name="p"/> (m) while a tool is on; True when the tool took it.</summary>
     Private Function ToolUp(button As PointerButton, p As Vector) As Boolean
-        If _Mode = ClickMode.Link Then Return True
+        If _Mode = ClickMode.Link OrElse _Mode = ClickMode.Corners Then Return True
         If _Mode <> ClickMode.Ramp Then Return False
         If button <> PointerButton.Left OrElse Not _rampStart.HasValue Then Return True
         Dim a = _rampStart.Value

@@ -401,6 +401,7 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The Fixed box was ticked or cleared.</summary>
     Public Sub FixedChanged(isFixed As Boolean)
         Inputs.IsFixed = isFixed
+        Emit("fixed " & If(isFixed, "on", "off"))
         _window.ShowSettings()
     End Sub
 

@@ -112,11 +112,14 @@ Partial Friend NotInheritable Class MainForm
         Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
         ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
         Fields(rh, pairs, (_sidesLabel, _sides), (_angleLabel, _angle))
+        ' A polygon drawn by clicking its corners takes the mass and Fixed box too: its button sits under the regular one's.
         If pairs Then
             Row(rh + S(2), (_fixed, 0.2), (_addCircle, 0.4), (_addPolygon, 0.4))
+            Row(rh + S(2), (Nothing, 0.2), (Nothing, 0.4), (_addCorners, 0.4))
         Else
             Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
             Row(rh + S(2), (Nothing, 0.35), (_addPolygon, 0.65))
+            Row(rh + S(2), (Nothing, 0.35), (_addCorners, 0.65))
         End If
         Gap()
         Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
@@ -295,7 +298,7 @@ Partial Friend NotInheritable Class MainForm
             ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),
             ("radius", _radius), ("mass", _mass), ("fixed", _fixed), ("add-circle", _addCircle),
             ("rect-width", _rectWidth), ("rect-height", _rectHeight), ("rect-fixed", _rectFixed), ("add-rectangle", _addRectangle),
-            ("sides-label", _sidesLabel), ("sides", _sides), ("angle-label", _angleLabel), ("angle", _angle), ("add-polygon", _addPolygon),
+            ("sides-label", _sidesLabel), ("sides", _sides), ("angle-label", _angleLabel), ("angle", _angle), ("add-polygon", _addPolygon), ("add-corners", _addCorners),
             ("stiffness-label", _stiffnessLabel), ("stiffness", _stiffness),
             ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),

@@ -135,6 +135,7 @@ Partial Friend NotInheritable Class MainForm
                 Return True
         End Select
         If ProcessTimeKey(keyData) Then Return True
+        If ProcessCornerKey(keyData) Then Return True
         Return MyBase.ProcessCmdKey(msg, keyData)
     End Function
 End Class

@@ -64,6 +64,7 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _angleLabel As New Label()
     Private ReadOnly _angle As New TextBox()
     Private ReadOnly _addPolygon As New Button()
+    Private ReadOnly _addCorners As New Button()
     Private ReadOnly _stiffnessLabel As New Label()
     Private ReadOnly _stiffness As New TextBox()
     Private ReadOnly _addSpring As New Button()
@@ -209,6 +210,7 @@ Partial Friend NotInheritable Class MainForm
         AddField(_sidesLabel, "Sides n", _sides, InputField.Sides)
         AddField(_angleLabel, "Angle (°)", _angle, InputField.PolygonAngle)
         AddButton(_addPolygon, Captions.AddPolygon, Sub() _presenter.BeginAddPolygon())
+        AddButton(_addCorners, Captions.AddByCorners, Sub() _presenter.BeginAddCorners())
 
         AddField(_stiffnessLabel, "k (N/m)", _stiffness, InputField.Stiffness)
         AddButton(_addSpring, Captions.AddSpring, Sub() _presenter.BeginAddLink(LinkKind.Spring))
@@ -332,6 +334,17 @@ Partial Friend NotInheritable Class MainForm
         _timer.Start()
         TraceLayout()
     End Sub
+
+    ''' <summary>
+    ''' Enter finishes a polygon drawn by its corners, wherever the focus is (a focused button would
+    ''' otherwise take Enter as a click); an open table edit box keeps its Enter.
+    ''' </summary>
+    Private Function ProcessCornerKey(keyData As Keys) As Boolean
+        If keyData <> Keys.Enter OrElse _presenter Is Nothing OrElse _presenter.Mode <> ClickMode.Corners OrElse _cellBox.Visible Then Return False
+        _trace?.Invoke("key finish corners")
+        Act(Sub() _presenter.FinishCorners())
+        Return True
+    End Function
 
     Protected Overrides Sub OnKeyDown(e As KeyEventArgs)
         MyBase.OnKeyDown(e)
@@ -525,7 +538,8 @@ Partial Friend NotInheritable Class MainForm
             For Each tool In {(_addSpring, link AndAlso _presenter.LinkToolKind = LinkKind.Spring),
                               (_addRod, link AndAlso _presenter.LinkToolKind = LinkKind.Rod),
                               (_addString, link AndAlso _presenter.LinkToolKind = LinkKind.String),
-                              (_addRamp, _presenter.Mode = ClickMode.Ramp)}
+                              (_addRamp, _presenter.Mode = ClickMode.Ramp),
+                              (_addCorners, _presenter.Mode = ClickMode.Corners)}
                 tool.Item1.BackColor = ScenePainter.Rgb(If(tool.Item2, theme.MessageBack, theme.Button))
             Next
             _largeFonts.Checked = _presenter.LargeFonts

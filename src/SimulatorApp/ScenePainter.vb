@@ -136,6 +136,7 @@ Partial Friend NotInheritable Class ScenePainter
         End If
 
         DrawToolPreview(g, p, view, theme, k)
+        DrawCornerDraft(g, p, view, outline, theme, k)
 
         DrawDraft(g, p, view, outline, theme, k)
         DrawCue(g, p, view, theme, k)
@@ -338,6 +339,11 @@ Partial Friend NotInheritable Class ScenePainter
             text = "Drag from one end of the ramp to the other  (Esc cancels)"
         ElseIf p.Mode = ClickMode.Link Then
             text = "Click two bodies, or a body and an empty place  (Esc cancels)"
+        ElseIf p.Mode = ClickMode.Corners Then
+            ' Short, to fit beside the scale bar: the message box says the rest.
+            text = If(p.CornerDraft IsNot Nothing AndAlso p.CornerDraft.Count >= 3,
+                      "Enter or the first corner finishes",
+                      "Click the corners  (Esc cancels)")
         ElseIf p.Draft IsNot Nothing Then
             text = "Click to place the " & p.Draft.KindName & "  (Esc cancels)"
         ElseIf p.IsPaused Then

@@ -115,14 +115,24 @@ Public Class LayoutGuiTests
         End Using
     End Sub
 
+    ''' <summary>
+    ''' The control lines of the last layout the app printed: those since the "ready" before the last
+    ''' one (each layout ends with "ready"). Other trace lines can come between them (a table row the
+    ''' running scene changes, traced while the layout asks a list where its cells are), so the block is
+    ''' not cut short at the first other line; a control printed twice counts once, as printed last.
+    ''' </summary>
     Private Shared Function LastLayout(app As AppDriver) As List(Of String)
         Dim lines = app.Lines()
         Dim lastReady = Array.LastIndexOf(lines, "ready")
-        Dim first = lastReady
-        Do While first > 0 AndAlso (lines(first - 1).StartsWith("control ", StringComparison.Ordinal) OrElse lines(first - 1).StartsWith("window ", StringComparison.Ordinal) OrElse lines(first - 1).StartsWith("view ", StringComparison.Ordinal))
-            first -= 1
-        Loop
-        Return lines.Skip(first).Take(lastReady - first).Where(Function(l) l.StartsWith("control ", StringComparison.Ordinal)).ToList()
+        Dim previousReady = If(lastReady > 0, Array.LastIndexOf(lines, "ready", lastReady - 1), -1)
+        Dim byName As New Dictionary(Of String, String)(StringComparer.Ordinal)
+        For Each l In lines.Skip(previousReady + 1).Take(lastReady - previousReady - 1)
+            If Not l.StartsWith("control ", StringComparison.Ordinal) Then Continue For
+            Dim name = l.Split(" "c)(1)
+            byName.Remove(name)
+            byName(name) = l
+        Next
+        Return byName.Values.ToList()
     End Function
 
     Private Shared Function Int(text As String) As Integer
