@@ -243,7 +243,11 @@ Public Class ClassroomGuiTests
 
     <GuiFact>
     Public Sub SaveThenOpen_ThroughTheFileDialogs()
-        Dim path = IO.Path.Combine(IO.Path.GetTempPath(), "gui-scene-" & Guid.NewGuid().ToString("N") & ".json")
+        ' A folder of its own: Mono's file dialog lists the folder it is shown, and on a shared temporary
+        ' folder of thousands of files its list asks X for a pixmap too large (BadAlloc) and never draws.
+        Dim folder = IO.Path.Combine(IO.Path.GetTempPath(), "gui-dialogs-" & Guid.NewGuid().ToString("N"))
+        IO.Directory.CreateDirectory(folder)
+        Dim path = IO.Path.Combine(folder, "gui-scene.json")
         Try
             Using app As New AppDriver()
                 app.PauseAndClear()
@@ -263,7 +267,7 @@ Public Class ClassroomGuiTests
                 Assert.True(ColouredAround(app.X.Shoot("opened"), p.X + 12, p.Y + 12) > 0.8, "the opened ball is drawn")
             End Using
         Finally
-            IO.File.Delete(path)
+            IO.Directory.Delete(folder, recursive:=True)
         End Try
     End Sub
 
