@@ -240,7 +240,7 @@ Friend NotInheritable Class ClusterResponse
                 bAfter = bBefore - n * (j * _inverseMass(other))
             End If
             Dim body = b.Shapes(_members(a))
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, body, _against(c), _side(c), ContactRules.KindOf(body, _against(c)),
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, body, _against(c), _side(c), CollisionKinds.Between(body, _against(c)),
                                                          aBefore, aAfter, bBefore, bAfter))
         Next
     End Sub

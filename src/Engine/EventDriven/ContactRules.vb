@@ -112,17 +112,6 @@ Friend Module ContactRules
         Return curve
     End Function
 
-    ''' <summary>How the outputs' enumeration names a pair (the kind name itself comes from the shapes).</summary>
-    Friend Function KindOf(a As Shape, b As Shape) As CollisionKind
-        If a.Kind <> ShapeKind.Circle Then Return CollisionKind.Other
-        If b Is Nothing Then Return CollisionKind.CircleWall
-        Select Case b.Kind
-            Case ShapeKind.Circle : Return If(b.IsFixed, CollisionKind.CircleFixed, CollisionKind.CircleCircle)
-            Case ShapeKind.Rectangle : Return CollisionKind.CircleRectangle
-            Case Else : Return CollisionKind.Other
-        End Select
-    End Function
-
     ''' <summary>How much body i (its reference point at p) overlaps obstacle k (m; ≤ 0 when apart), with the normal towards the body.</summary>
     Friend Function OverlapWithObstacle(s As SolverState, i As Integer, k As Integer, p As Vector) As Contact
         Dim o = s.Obstacles

@@ -103,7 +103,7 @@ Friend NotInheritable Class Responder
         b.Motion(i).Vx = after.X
         b.Motion(i).Vy = after.Y
         If approach < 0 Then
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), other, side, ContactRules.KindOf(b.Shapes(i), other),
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), other, side, CollisionKinds.Between(b.Shapes(i), other),
                                                          before, after, Vector.Zero, Vector.Zero))
             _rest.NoteHit(i)
         End If
@@ -150,7 +150,7 @@ Friend NotInheritable Class Responder
         _s.Publish(i)
         _s.Publish(j)
         If approach < 0 AndAlso (invI > 0 OrElse invJ > 0) Then
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), b.Shapes(j), WallSide.None, ContactRules.KindOf(b.Shapes(i), b.Shapes(j)), vi, result.A, vj, result.B))
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), b.Shapes(j), WallSide.None, CollisionKinds.Between(b.Shapes(i), b.Shapes(j)), vi, result.A, vj, result.B))
             _rest.NoteHit(i)
             _rest.NoteHit(j)
         End If

@@ -354,7 +354,7 @@ Friend NotInheritable Class StepContacts
                 MarkTouched(ib)
             End If
             If Not resting Then
-                _world.ReportCollision(New CollisionRecord(_time, a, b, side, KindOf(a, b), before, va, vb,
+                _world.ReportCollision(New CollisionRecord(_time, a, b, side, CollisionKinds.Between(a, b), before, va, vb,
                                                            If(bMovable, b.Velocity, Vector.Zero)))
             End If
         End If
@@ -365,17 +365,6 @@ Friend NotInheritable Class StepContacts
         ' Resting on something immovable (or on a body that is): the bodies resting on A can lean on it.
         If bImmovable AndAlso Math.Abs(Vector.Dot(va - vb, n)) <= _restingSpeed Then _support(ia) += n
     End Sub
-
-    ''' <summary>The kind of a collision of movable body A with B (Nothing for a wall).</summary>
-    Private Shared Function KindOf(a As Shape, b As Shape) As CollisionKind
-        If a.Kind <> ShapeKind.Circle Then Return CollisionKind.Other
-        If b Is Nothing Then Return CollisionKind.CircleWall
-        Select Case b.Kind
-            Case ShapeKind.Circle : Return If(b.IsFixed, CollisionKind.CircleFixed, CollisionKind.CircleCircle)
-            Case ShapeKind.Rectangle : Return CollisionKind.CircleRectangle
-            Case Else : Return CollisionKind.Other
-        End Select
-    End Function
 
     Private Sub MarkTouched(i As Integer)
         _moved = True

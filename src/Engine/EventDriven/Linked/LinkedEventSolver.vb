@@ -501,7 +501,7 @@ Friend NotInheritable Class LinkedEventSolver
         _impulse.Resolve()
         Dim other = If(b, If(f >= 0, _fixed(f), Nothing))
         RefuseRest(a, other, side, normal, If(b Is Nothing, Vector.Zero, b.Velocity) - a.Velocity)
-        _reports.Add(New CollisionRecord(t, a, other, side, KindOf(a, other),
+        _reports.Add(New CollisionRecord(t, a, other, side, CollisionKinds.Between(a, other),
                                          aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
         Restart(gi, t, False)
         If gj >= 0 AndAlso gj <> gi Then Restart(gj, t, False)
@@ -525,17 +525,6 @@ Friend NotInheritable Class LinkedEventSolver
         If separating > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
         Throw New UnsupportedSceneException("the event solver does not yet let a box or polygon come to rest on anything but the floor in a scene with links, nor anything come to rest on one; use --solver verlet")
     End Sub
-
-    ''' <summary>How the outputs' enumeration names a pair (as the main event solver's rules do).</summary>
-    Private Shared Function KindOf(a As Shape, b As Shape) As CollisionKind
-        If a.Kind <> ShapeKind.Circle Then Return CollisionKind.Other
-        If b Is Nothing Then Return CollisionKind.CircleWall
-        Select Case b.Kind
-            Case ShapeKind.Circle : Return If(b.IsFixed, CollisionKind.CircleFixed, CollisionKind.CircleCircle)
-            Case ShapeKind.Rectangle : Return CollisionKind.CircleRectangle
-            Case Else : Return CollisionKind.Other
-        End Select
-    End Function
 
     ''' <summary>Predicts again from now the one contact of body i with body j, wall <paramref name="side"/> or fixed body f.</summary>
     Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)
