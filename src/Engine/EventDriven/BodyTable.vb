@@ -12,16 +12,10 @@ Friend NotInheritable Class BodyTable
     Friend Shapes As Shape() = Array.Empty(Of Shape)()
     Friend Motion As Motion() = Array.Empty(Of Motion)()
     Friend Slot As EventSlot() = Array.Empty(Of EventSlot)()
-    ''' <summary>1/kg; 0 while the body is dragged (it pushes and is not pushed back).</summary>
-    Friend InverseMass As Double() = Array.Empty(Of Double)()
+    ''' <summary>Each body's inverse mass, reach, size and kind (see <see cref="BodyInfo"/>).</summary>
+    Friend Info As BodyInfo() = Array.Empty(Of BodyInfo)()
     ''' <summary>The body's outline (offsets from its reference point); its rounding radius is also Motion.R.</summary>
     Friend Outlines As Outline() = Array.Empty(Of Outline)()
-    ''' <summary>True for a circle: the pair tests of two circles have a fast path of their own.</summary>
-    Friend IsCircle As Boolean() = Array.Empty(Of Boolean)()
-    ''' <summary>How far the body reaches from its reference point, m (a circle's radius).</summary>
-    Friend Reach As Double() = Array.Empty(Of Double)()
-    ''' <summary>The body's size for the resting rules' thresholds, m: a circle's radius, else the radius of a disc of the same area.</summary>
-    Friend Scale As Double() = Array.Empty(Of Double)()
     ''' <summary>True while a body is out of the grid for a long slide (see SolverState.Roam).</summary>
     Friend Roaming As Boolean() = Array.Empty(Of Boolean)()
     ''' <summary>What a supported body rests on: an obstacle index ≥ 0, <see cref="SupportFloor"/> or <see cref="SupportBody"/>.</summary>
@@ -54,13 +48,13 @@ Friend NotInheritable Class BodyTable
             _index(body) = i
             Dim o = body.Outline
             Outlines(i) = o
-            IsCircle(i) = body.Kind = ShapeKind.Circle
+            Dim isCircle = body.Kind = ShapeKind.Circle
             Dim farthest = 0.0
             For Each v In o.Vertices
                 farthest = Math.Max(farthest, v.Length)
             Next
-            Reach(i) = farthest + o.Radius
-            Scale(i) = If(IsCircle(i), o.Radius, Math.Sqrt(body.Area / Math.PI))
+            Info(i) = New BodyInfo() With {.Kind = body.Kind, .IsCircle = isCircle, .Reach = farthest + o.Radius,
+                                           .Scale = If(isCircle, o.Radius, Math.Sqrt(body.Area / Math.PI))}
             Slot(i) = New EventSlot() With {.ColTime = Double.PositiveInfinity, .CellTime = Double.PositiveInfinity}
             Roaming(i) = False
             Reload(i, world, now)
@@ -76,11 +70,11 @@ Friend NotInheritable Class BodyTable
         SupportEdge(i) = -1
         If body Is world.DraggedBody Then
             SetMode(i, BodyMode.Dragged)
-            InverseMass(i) = 0
+            Info(i).InverseMass = 0
         Else
             SetMode(i, BodyMode.Free)
             Motion(i).Ay = -world.Gravity
-            InverseMass(i) = body.InverseMass
+            Info(i).InverseMass = body.InverseMass
         End If
     End Sub
 
@@ -113,11 +107,8 @@ Friend NotInheritable Class BodyTable
         ReDim Shapes(capacity - 1)
         ReDim Motion(capacity - 1)
         ReDim Slot(capacity - 1)
-        ReDim InverseMass(capacity - 1)
+        ReDim Info(capacity - 1)
         ReDim Outlines(capacity - 1)
-        ReDim IsCircle(capacity - 1)
-        ReDim Reach(capacity - 1)
-        ReDim Scale(capacity - 1)
         ReDim Roaming(capacity - 1)
         ReDim Support(capacity - 1)
         ReDim SupportEdge(capacity - 1)

@@ -84,7 +84,7 @@ Friend NotInheritable Class ClusterResponse
     Private Function ClusteredJustNow(i As Integer, alone As Boolean) As Boolean
         Dim last = _clusteredAt(i)
         If last = _s.Now Then Return True
-        Dim soon = alone AndAlso _s.G > 0 AndAlso _s.Now - last <= 1.0E-4 * Math.Sqrt(_s.Bodies.Scale(i) / _s.G) ' False for NaN
+        Dim soon = alone AndAlso _s.G > 0 AndAlso _s.Now - last <= 1.0E-4 * Math.Sqrt(_s.Bodies.Info(i).Scale / _s.G) ' False for NaN
         _clusterRun(i) = If(soon, _clusterRun(i) + 1, 0)
         Return _clusterRun(i) >= 3
     End Function
@@ -118,7 +118,7 @@ Friend NotInheritable Class ClusterResponse
     ''' <summary>Whether body i gives way in a cluster (bodies asleep, dragged or sliding round a corner do not).</summary>
     Friend Function CanMove(i As Integer) As Boolean
         Dim mode = _s.Bodies.Mode(i)
-        Return Not (mode = BodyMode.Sleeping OrElse mode = BodyMode.Dragged OrElse mode = BodyMode.Rounding) AndAlso _s.Bodies.InverseMass(i) > 0
+        Return Not (mode = BodyMode.Sleeping OrElse mode = BodyMode.Dragged OrElse mode = BodyMode.Rounding) AndAlso _s.Bodies.Info(i).InverseMass > 0
     End Function
 
     ''' <summary>Adds body i to the cluster (at the clock) and returns its slot.</summary>
@@ -130,7 +130,7 @@ Friend NotInheritable Class ClusterResponse
         slot = _members.Count
         _members.Add(i)
         _slotOf(i) = slot
-        _inverseMass.Add(If(CanMove(i), b.InverseMass(i), 0.0))
+        _inverseMass.Add(If(CanMove(i), b.Info(i).InverseMass, 0.0))
         _velocity.Add(New Vector(b.Motion(i).Vx, b.Motion(i).Vy))
         Return slot
     End Function

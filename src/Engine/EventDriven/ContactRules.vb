@@ -45,7 +45,7 @@ Friend Module ContactRules
     ''' <summary>Movable bodies i and j: when they touch (s from now; +∞ if not before <paramref name="horizon"/> s), and which feature.</summary>
     Friend Function TimeBetweenBodies(s As SolverState, i As Integer, j As Integer, slop As Double, horizon As Double, ByRef feature As Integer) As Double
         Dim q = BodyQuery(s, i, j, slop, horizon)
-        Return RuleFor(s.Bodies.IsCircle(i), s.Bodies.Shapes(j).Kind).TimeOfImpact(q, feature)
+        Return RuleFor(s.Bodies.Info(i).IsCircle, s.Bodies.Info(j).Kind).TimeOfImpact(q, feature)
     End Function
 
     ''' <summary>Movable body i, at (px, py) with the given velocity and acceleration, against obstacle k.</summary>
@@ -56,9 +56,9 @@ Friend Module ContactRules
         ' a box test spares the root finding (quartics, for corners under gravity).
         Dim xmin, ymin, xmax, ymax As Double
         o.Bounds(k, xmin, ymin, xmax, ymax)
-        If Not PathBox.MayReach(px, py, vx, vy, ax, ay, horizon, xmin, ymin, xmax, ymax, s.Bodies.Reach(i) + slop) Then Return Double.PositiveInfinity
+        If Not PathBox.MayReach(px, py, vx, vy, ax, ay, horizon, xmin, ymin, xmax, ymax, s.Bodies.Info(i).Reach + slop) Then Return Double.PositiveInfinity
         Dim q = ObstacleQuery(s, i, k, px, py, vx, vy, ax, ay, slop, horizon)
-        Return RuleFor(s.Bodies.IsCircle(i), o.Kind(k)).TimeOfImpact(q, feature)
+        Return RuleFor(s.Bodies.Info(i).IsCircle, o.Kind(k)).TimeOfImpact(q, feature)
     End Function
 
     ''' <summary>
@@ -69,7 +69,7 @@ Friend Module ContactRules
     Friend Function NormalAtObstacle(s As SolverState, i As Integer, k As Integer, feature As Integer, ByRef px As Double, ByRef py As Double) As Vector
         Dim q = ObstacleQuery(s, i, k, px, py, 0, 0, 0, 0, SolverState.SlopAt(px, py), Double.PositiveInfinity)
         Dim correction As Double
-        Dim n = RuleFor(s.Bodies.IsCircle(i), s.Obstacles.Kind(k)).Normal(q, feature, correction)
+        Dim n = RuleFor(s.Bodies.Info(i).IsCircle, s.Obstacles.Kind(k)).Normal(q, feature, correction)
         px += n.X * correction
         py += n.Y * correction
         Return n
@@ -121,7 +121,7 @@ Friend Module ContactRules
     ''' <summary>How much body i (at pi) overlaps body j (at pj) (m; ≤ 0 when apart), with the normal from j towards i.</summary>
     Friend Function OverlapWithBody(s As SolverState, i As Integer, j As Integer, pi As Vector, pj As Vector) As Contact
         Dim b = s.Bodies
-        If b.IsCircle(i) AndAlso b.IsCircle(j) Then Return Collider.CircleCircle(pi, b.Motion(i).R, pj, b.Motion(j).R)
+        If b.Info(i).IsCircle AndAlso b.Info(j).IsCircle Then Return Collider.CircleCircle(pi, b.Motion(i).R, pj, b.Motion(j).R)
         Return OutlineContact.Penetration(s.Shapes.Difference(b.Outlines(j), b.Outlines(i)), pi - pj)
     End Function
 

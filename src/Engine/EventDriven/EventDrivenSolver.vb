@@ -301,7 +301,7 @@ Public NotInheritable Class EventDrivenSolver
         b.SetMode(i, BodyMode.Dragged)
         b.Motion(i).Ay = 0
         b.Motion(i).Ax = 0
-        b.InverseMass(i) = 0
+        b.Info(i).InverseMass = 0
         b.Motion(i).Vx = (target.X - b.Motion(i).Px) / duration
         b.Motion(i).Vy = (target.Y - b.Motion(i).Py) / duration
         _s.Changed(i)

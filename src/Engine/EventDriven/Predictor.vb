@@ -76,7 +76,7 @@ Friend NotInheritable Class Predictor
         Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, dir)
         Dim moving = m = BodyMode.Free OrElse m = BodyMode.Supported
         If moving Then
-            If _s.Walls Then CheckWalls(i, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0), px, py, vx, vy, ay, r, best, kind, feature)
+            If _s.Walls AndAlso AlongWall(i) Then CheckWalls(i, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0), px, py, vx, vy, ay, r, best, kind, feature)
             If b.Slot(i).Cell >= 0 Then
                 ' An obstacle is listed in every cell within half a cell of it, so the body's own cell
                 ' suffices, and only until it leaves the cell: the next cell's obstacles are tested then.
@@ -95,7 +95,7 @@ Friend NotInheritable Class Predictor
             Dim c0, c1, r0, r1 As Integer
             ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
             ScanCells(i, c0, c1, r0, r1, -1, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
-            CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
+            If _s.OversizedCount > 0 Then CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
         Else
             For j = 0 To b.Count - 1
                 If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
@@ -147,7 +147,7 @@ Friend NotInheritable Class Predictor
         Dim exitDir = 0
         Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, exitDir)
         If m = BodyMode.Free OrElse m = BodyMode.Supported Then
-            If _s.Walls Then CheckWalls(i, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0), px, py, vx, vy, ay, r, best, kind, feature)
+            If _s.Walls AndAlso AlongWall(i) Then CheckWalls(i, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0), px, py, vx, vy, ay, r, best, kind, feature)
             For s = _s.Grid.StaticStart(target) To _s.Grid.StaticStart(target + 1) - 1
                 CheckObstacle(i, _s.Grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
             Next
@@ -155,7 +155,7 @@ Friend NotInheritable Class Predictor
         Dim c0, c1, r0, r1 As Integer
         ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
         ScanCells(i, c0, c1, r0, r1, previous, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
-        CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
+        If _s.OversizedCount > 0 Then CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
         File(i, best, kind, other, feature, exitTime, exitDir)
     End Sub
 
@@ -175,7 +175,7 @@ Friend NotInheritable Class Predictor
             If sc >= c0 AndAlso sc <= c1 AndAlso sr >= r0 AndAlso sr <= r1 Then _s.CellsSearched -= 1
         End If
         ' A body asleep, not a circle, or whose acceleration is not vertical (sliding down a slope), takes no hot path.
-        Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0 OrElse Not _s.Bodies.IsCircle(i)
+        Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0 OrElse Not _s.Bodies.Info(i).IsCircle
         _deferredCount = 0
 #If NET Then
         If VectorScan Then
@@ -186,7 +186,7 @@ Friend NotInheritable Class Predictor
 #Else
         ScanBodies(i, c0, c1, r0, r1, skip, True, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
 #End If
-        CheckDeferred(i, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+        If _deferredCount > 0 Then CheckDeferred(i, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
     End Sub
 
     ''' <summary>A pair the scan leaves to <see cref="CheckPair"/>: tested after the scan, nearest first.</summary>
@@ -209,7 +209,7 @@ Friend NotInheritable Class Predictor
         If _deferredCount = 0 Then Return
         Dim b = _s.Bodies
         Dim ax = b.Motion(i).Ax
-        Dim reachI = b.Reach(i)
+        Dim reachI = b.Info(i).Reach
         Dim now = _s.Now
         Dim n = 0
         For q = 0 To _deferredCount - 1
@@ -221,7 +221,7 @@ Friend NotInheritable Class Predictor
                 Dim xj, yj, vxj, vyj As Double
                 b.Motion(j).StateAt(now, xj, yj, vxj, vyj)
                 Dim dx = px - xj, dy = py - yj
-                Dim gap = Math.Sqrt(dx * dx + dy * dy) - reachI - b.Reach(j) - 4 * slop
+                Dim gap = Math.Sqrt(dx * dx + dy * dy) - reachI - b.Info(j).Reach - 4 * slop
                 If gap > 0 Then
                     Dim dvx = vx - vxj, dvy = vy - vyj
                     Dim daX = ax - b.Motion(j).Ax, daY = ay - b.Motion(j).Ay
@@ -430,6 +430,17 @@ Friend NotInheritable Class Predictor
     End Sub
 
     ''' <summary>
+    ''' Whether body i's cell lies along a wall of the container (or it is out of the grid): only then
+    ''' can it reach a wall before it next crosses into another cell (see <see cref="CheckWalls"/>).
+    ''' Tested before the call, which most bodies, far from the walls, are spared.
+    ''' </summary>
+    Private Function AlongWall(i As Integer) As Boolean
+        Dim slot = _s.Bodies.Slot
+        Dim col = slot(i).Col, row = slot(i).Row
+        Return slot(i).Cell < 0 OrElse col = 0 OrElse row = 0 OrElse col = _s.Grid.Nx - 1 OrElse row = _s.Grid.Ny - 1
+    End Function
+
+    ''' <summary>
     ''' Body i against the container's walls (the floor and the ceiling only when it is free or slides
     ''' on a fixed body: a ramp may end below the point where a ball sliding down it meets the floor;
     ''' one resting on the floor or on a body is held by what it rests on). The
@@ -439,31 +450,39 @@ Friend NotInheritable Class Predictor
     ''' </summary>
     Private Sub CheckWalls(i As Integer, vertical As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
                            r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef feature As Integer)
-        Dim slot = _s.Bodies.Slot
-        Dim o = _s.Bodies.Outlines(i)
-        Dim ax = _s.Bodies.Motion(i).Ax
+        Dim b = _s.Bodies
+        Dim slot = b.Slot
+        Dim ax = b.Motion(i).Ax
         Dim all = slot(i).Cell < 0
         Dim col = slot(i).Col, row = slot(i).Row
+        Dim atLeft = all OrElse col = 0, atRight = all OrElse col = _s.Grid.Nx - 1
+        Dim atBottom = vertical AndAlso (all OrElse row = 0), atTop = vertical AndAlso (all OrElse row = _s.Grid.Ny - 1)
+        If Not (atLeft OrElse atRight OrElse atBottom OrElse atTop) Then Return
+        ' The outline's extents; a circle's are its radius (read from the motion, not the outline object).
+        Dim minX = -r, maxX = r, minY = -r, maxY = r
+        If Not b.Info(i).IsCircle Then
+            Dim o = b.Outlines(i)
+            minX = o.MinX : maxX = o.MaxX : minY = o.MinY : maxY = o.MaxY
+        End If
         ' Each wall's gap is measured along one axis (from the outline's extent on that side), so its
         ' tolerance follows that coordinate alone.
         Dim slop = SolverState.SlopAlong(px)
         Dim t As Double
-        If all OrElse col = 0 Then
-            t = TimeOfImpact.GapCloses(px + o.MinX, vx, ax, slop)
+        If atLeft Then
+            t = TimeOfImpact.GapCloses(px + minX, vx, ax, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Left
         End If
-        If all OrElse col = _s.Grid.Nx - 1 Then
-            t = TimeOfImpact.GapCloses(_s.Width - o.MaxX - px, -vx, -ax, slop)
+        If atRight Then
+            t = TimeOfImpact.GapCloses(_s.Width - maxX - px, -vx, -ax, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Right
         End If
-        If Not vertical Then Return
         slop = SolverState.SlopAlong(py)
-        If all OrElse row = 0 Then
-            t = TimeOfImpact.GapCloses(py + o.MinY, vy, ay, slop)
+        If atBottom Then
+            t = TimeOfImpact.GapCloses(py + minY, vy, ay, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Bottom
         End If
-        If all OrElse row = _s.Grid.Ny - 1 Then
-            t = TimeOfImpact.GapCloses(_s.Height - o.MaxY - py, -vy, -ay, slop)
+        If atTop Then
+            t = TimeOfImpact.GapCloses(_s.Height - maxY - py, -vy, -ay, slop)
             If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Top
         End If
     End Sub
@@ -538,7 +557,8 @@ Friend NotInheritable Class Predictor
         PathBox.Bounds(px, py, vx, vy, ay, span, xlo, xhi, ylo, yhi)
         ' A body sliding round a corner is listed where it started the slide but can reach 3 r_max
         ' beyond; the margin covers rounding and the touching tolerance.
-        Dim reach = _s.Bodies.Reach(i) + If(_s.Bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
+        ' A circle's reach is its radius (R > 0 only for a circle), read from the motion already at hand.
+        Dim reach = If(r > 0, r, _s.Bodies.Info(i).Reach) + If(_s.Bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
         ' Written so that NaN keeps the neighbour.
         If xlo - reach >= col * grid.CellWidth Then c0 = col
         If xhi + reach <= (col + 1) * grid.CellWidth Then c1 = col

@@ -65,7 +65,7 @@ Friend NotInheritable Class Responder
             Case WallSide.Bottom : n = New Vector(0, 1) : m(i).Py = -o.MinY
             Case Else : n = New Vector(0, -1) : m(i).Py = _s.Height - o.MaxY
         End Select
-        CollideImmovable(i, n, Nothing, side, If(side = WallSide.Bottom, BodyTable.SupportFloor, BodyTable.SupportNone), -1)
+        CollideImmovable(i, n, Nothing, CollisionKinds.AgainstWall(_s.Bodies.Info(i).Kind), side, If(side = WallSide.Bottom, BodyTable.SupportFloor, BodyTable.SupportNone), -1)
     End Sub
 
     Private Sub CollideObstacle(i As Integer, s As Integer, feature As Integer)
@@ -77,15 +77,15 @@ Friend NotInheritable Class Responder
         Dim edge = ContactRules.FaceOf(_s, i, s, feature)
         Dim curve = ContactRules.CurveAt(_s, i, s, feature)
         Dim support = If(edge >= 0, s, If(curve.HasValue, BodyTable.SupportBody, BodyTable.SupportNone))
-        CollideImmovable(i, n, _s.Obstacles.Shapes(s), WallSide.None, support, edge, curve)
+        CollideImmovable(i, n, _s.Obstacles.Shapes(s), CollisionKinds.Between(_s.Bodies.Info(i).Kind, _s.Obstacles.Kind(s), True), WallSide.None, support, edge, curve)
     End Sub
 
     ''' <summary>
     ''' Body i (already at the clock) hits something of infinite mass along unit normal n (pointing
     ''' towards i). <paramref name="support"/> names what it would rest on if n points straight up
-    ''' (and <paramref name="edge"/> which face of it).
+    ''' (and <paramref name="edge"/> which face of it); <paramref name="kind"/> is what the collision is reported as.
     ''' </summary>
-    Private Sub CollideImmovable(i As Integer, n As Vector, other As Shape, side As WallSide, support As Integer, edge As Integer,
+    Private Sub CollideImmovable(i As Integer, n As Vector, other As Shape, kind As CollisionKind, side As WallSide, support As Integer, edge As Integer,
                                  Optional curve As CurvedSupport? = Nothing)
         If _rest.HitTooOften(i) Then
             _clusters.Resolve(i)
@@ -103,7 +103,7 @@ Friend NotInheritable Class Responder
         b.Motion(i).Vx = after.X
         b.Motion(i).Vy = after.Y
         If approach < 0 Then
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), other, side, CollisionKinds.Between(b.Shapes(i), other),
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), other, side, kind,
                                                          before, after, Vector.Zero, Vector.Zero))
             _rest.NoteHit(i)
         End If
@@ -122,7 +122,7 @@ Friend NotInheritable Class Responder
             Return
         End If
         Dim m = b.Motion
-        Dim n = If(b.IsCircle(i) AndAlso b.IsCircle(j),
+        Dim n = If(b.Info(i).IsCircle AndAlso b.Info(j).IsCircle,
                    New Vector(m(i).Px - m(j).Px, m(i).Py - m(j).Py).Normalized(New Vector(0, 1)),
                    ContactRules.NormalBetweenBodies(_s, i, j))
         Dim vi = New Vector(m(i).Vx, m(i).Vy), vj = New Vector(m(j).Vx, m(j).Vy)
@@ -150,7 +150,7 @@ Friend NotInheritable Class Responder
         _s.Publish(i)
         _s.Publish(j)
         If approach < 0 AndAlso (invI > 0 OrElse invJ > 0) Then
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), b.Shapes(j), WallSide.None, CollisionKinds.Between(b.Shapes(i), b.Shapes(j)), vi, result.A, vj, result.B))
+            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), b.Shapes(j), WallSide.None, CollisionKinds.Between(b.Info(i).Kind, b.Info(j).Kind, False), vi, result.A, vj, result.B))
             _rest.NoteHit(i)
             _rest.NoteHit(j)
         End If

@@ -3,7 +3,8 @@ Option Strict On
 ''' <summary>
 ''' The bodies one event changed, each listed once in the order it first changed, so the solver
 ''' reschedules them together after the event is resolved: every prediction is then made with the
-''' final courses of every body the event moved. A stamp per body makes adding O(1) with no search.
+''' final courses of every body the event moved. A short list is searched; a long one (a cluster) keeps
+''' a stamp per body, so that adding stays O(1).
 ''' </summary>
 Friend NotInheritable Class TouchedList
     Private _items As Integer() = Array.Empty(Of Integer)()
@@ -23,7 +24,27 @@ Friend NotInheritable Class TouchedList
         Count = 0
     End Sub
 
+    ''' <summary>
+    ''' Up to this many bodies, a repeat is found by searching the list; from then on by the stamps.
+    ''' An event usually changes two bodies, and a search of two items costs less than reading a stamp
+    ''' of a body far away in memory.
+    ''' </summary>
+    Private Const SearchLimit As Integer = 8
+
     Friend Sub Add(i As Integer)
+        If Count < SearchLimit Then
+            For k = 0 To Count - 1
+                If _items(k) = i Then Return
+            Next
+            _items(Count) = i
+            Count += 1
+            If Count = SearchLimit Then
+                For k = 0 To Count - 1
+                    _stamp(_items(k)) = _current
+                Next
+            End If
+            Return
+        End If
         If _stamp(i) = _current Then Return
         _stamp(i) = _current
         _items(Count) = i
