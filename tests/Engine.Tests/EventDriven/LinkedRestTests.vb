@@ -108,6 +108,72 @@ Namespace EventDriven
             Assert.Equal(Vector.Zero, ball.Velocity)
         End Sub
 
+        ' ---- Other level faces, other shapes ----
+
+        <Theory>
+        <InlineData("box on a level segment")>
+        <InlineData("ball on a level segment")>
+        <InlineData("triangle on a fixed polygon's top")>
+        <InlineData("box on a fixed triangle's level top")>
+        Public Sub ABodyDroppedOnALevelFace_ComesToRestOnIt_NeverBelowIt(scene As String)
+            Dim w = NewWorld("event", 0.5)
+            AddPendulum(w)
+            Dim body As Shape
+            Select Case scene
+                Case "box on a level segment"
+                    w.Add(New Segment(New Vector(1, 1), New Vector(3, 1), "shelf"))
+                    body = Rectangle.CreateMovable(New Vector(1.875, 1.5), 0.25, 0.25, 1, Vector.Zero, "body")
+                Case "ball on a level segment"
+                    w.Add(New Segment(New Vector(1, 1), New Vector(3, 1), "shelf"))
+                    body = New Circle(New Vector(2, 1.5), 0.125, 1, Vector.Zero, "body")
+                Case "triangle on a fixed polygon's top"
+                    w.Add(Polygon.CreateFixed({New Vector(1, 0), New Vector(3, 0), New Vector(2.75, 1), New Vector(1.25, 1)}, "trapezium"))
+                    body = New Polygon({New Vector(1.75, 1.5), New Vector(2.25, 1.5), New Vector(2, 1.75)}, 1, Vector.Zero, "body")
+                Case Else
+                    ' A triangle standing on its point: its level top is a face at y = 1.
+                    w.Add(Polygon.CreateFixed({New Vector(2, 0), New Vector(3, 1), New Vector(1, 1)}, "wedge"))
+                    body = Rectangle.CreateMovable(New Vector(1.875, 1.5), 0.25, 0.25, 1, Vector.Zero, "body")
+            End Select
+            w.Add(body)
+            Dim hits = 0
+            w.CollisionListener = Sub(r) If r.A Is body OrElse r.B Is body Then hits += 1
+            Dim lowest = Double.PositiveInfinity
+            Do While w.Time < 3
+                w.Advance(0.001)
+                lowest = Math.Min(lowest, body.Position.Y + body.Outline.MinY)
+            Loop
+            Dim bottom = body.Position.Y + body.Outline.MinY
+            _output.WriteLine($"{scene}: {hits} bounces; its lowest point at {bottom} m, never below {lowest} m; moving at {body.Velocity}")
+            Assert.InRange(hits, 10, 40)
+            Assert.Equal(1.0, bottom, 12)
+            Assert.True(lowest >= 1 - 0.000000000001, $"{lowest} m: below the face")
+            Assert.Equal(Vector.Zero, body.Velocity)
+        End Sub
+
+        <Fact>
+        Public Sub ABoxSlidingAlongATable_LeavesItsEdge_AndLandsAtTheFreeFallTime()
+            Dim w = NewWorld("event", 0.5)
+            AddPendulum(w)
+            Dim table As New Rectangle(New Vector(1, 0), 2, 1, "table")
+            w.Add(table)
+            Dim box = Rectangle.CreateMovable(New Vector(2, 1), 0.25, 0.25, 1, New Vector(1, 0), "box")
+            w.Add(box)
+            Dim records As New List(Of CollisionRecord)
+            w.CollisionListener = Sub(r) If r.A Is box Then records.Add(r)
+            w.Advance(0.5)
+            Assert.Equal(New Vector(2.5, 1), box.Position)
+            Assert.Equal(New Vector(1, 0), box.Velocity)
+            ' Its left end passes the table's edge at x = 3 after 1 s; then it falls 1 m, sliding on at 1 m/s.
+            w.Advance(1.5)
+            Dim fall = Math.Sqrt(2 / G)
+            Dim landing = records.First()
+            Assert.Equal(WallSide.Bottom, landing.Wall)
+            Assert.Equal(1 + fall, landing.Time, 9)
+            Assert.Equal(1.0, landing.AVelocityBefore.X)
+            Assert.Equal(-G * fall, landing.AVelocityBefore.Y, 9)
+            Assert.Equal(3 + fall, box.Position.X - (w.Time - landing.Time), 9)
+        End Sub
+
         ' ---- A vertical spring over a shelf ----
 
         Private Shared Function SpringOverShelf(restLength As Double, boxBottom As Double, ByRef box As Rectangle, ByRef spring As Link) As World

@@ -87,8 +87,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Dim f = faces(level)
             Dim w = v - f.SupportVelocity
             If tie IsNot Nothing AndAlso tie.Kind = LinkKind.Spring Then
-                ' Held still: the spring pulls straight up, less than the weight; moving, it would not stay on the vertical.
-                If w.Length > restSpeed Then Return Nothing
+                ' Held still: the spring pulls straight up, less than the weight; moving, or on a support that
+                ' moves, it would not stay on the vertical.
+                If v.Length > restSpeed OrElse f.SupportVelocity <> Vector.Zero Then Return Nothing
                 w = Vector.Zero
             End If
             Return Rest(i, body, t, {f}, OnFace(p, f), f.SupportVelocity + (w - f.Normal * Vector.Dot(w, f.Normal)), Vector.Zero, slack)
@@ -105,9 +106,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 If q = k OrElse other.Support.Kind = RestSupportKind.Body OrElse Not RestingFaces.HoldsUp(f.Normal, other.Normal) Then Continue For
                 ' Held from both sides: still once it is too slow to leave either face.
                 If w.Length > restSpeed Then Continue For
+                ' Exactly where the two faces cross; it touches both within the slop, so that is within a few slops
+                ' (for a V far from shallow), else it stays where it is.
                 Dim corner = RestingFaces.Crossing(f.Normal, f.Level, other.Normal, other.Level)
-                If Not corner.HasValue OrElse (corner.Value - p).Length > 4 * Slop Then Continue For
-                Return Rest(i, body, t, {f, other}, corner.Value, Vector.Zero, Vector.Zero, Nothing)
+                Dim at = If(corner.HasValue AndAlso (corner.Value - p).Length <= 4 * Slop, corner.Value, p)
+                Return Rest(i, body, t, {f, other}, at, Vector.Zero, Vector.Zero, Nothing)
             Next
             Dim a = RestingFaces.SlideAcceleration(f.Normal, gravity)
             Dim along = RestingFaces.Along(f.Normal)
