@@ -378,6 +378,32 @@ Namespace EventDriven
         End Sub
 
         <Fact>
+        Public Sub ThreeBoxesDroppedOneAboveAnother_SettleIntoAStack_FaceOnFace_NeverOverlapping()
+            ' Falling together they touch and part without pressing (free fall presses nothing); landing, the
+            ' floor takes each blow through the boxes resting on the one it strikes; the stack comes to rest.
+            Dim w = NewWorld("event", 0.3)
+            AddPendulum(w)
+            Dim boxes = {Rectangle.CreateMovable(New Vector(4, 0.5), 0.5, 0.25, 1, Vector.Zero, "bottom"),
+                         Rectangle.CreateMovable(New Vector(4.0625, 1.25), 0.5, 0.25, 2, Vector.Zero, "middle"),
+                         Rectangle.CreateMovable(New Vector(4.125, 2), 0.5, 0.25, 1, Vector.Zero, "top")}
+            For Each b In boxes
+                w.Add(b)
+            Next
+            Dim worst = Double.PositiveInfinity
+            Do While w.Time < 5
+                w.Advance(0.001)
+                worst = Math.Min(worst, Math.Min(boxes(0).Position.Y, Math.Min(boxes(1).Position.Y - boxes(0).Position.Y - 0.25, boxes(2).Position.Y - boxes(1).Position.Y - 0.25)))
+            Loop
+            _output.WriteLine($"the stack: {String.Join(", ", boxes.Select(Function(b) b.Position.ToString()))}; the least gap {worst} m")
+            Assert.True(worst >= -0.000000000001, $"{worst} m: overlapping")
+            For k = 0 To 2
+                Assert.Equal(0.25 * k, boxes(k).Position.Y, 12)
+                Assert.Equal(4 + 0.0625 * k, boxes(k).Position.X)
+                Assert.Equal(Vector.Zero, boxes(k).Velocity)
+            Next
+        End Sub
+
+        <Fact>
         Public Sub BoxResting_OnABoxKnockedAway_StaysWhereItWas_ThenFallsFromItsEdge_AtTheFreeFallTime()
             Const E As Double = 0.5
             Dim w = NewWorld("event", E)

@@ -545,12 +545,24 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim a = _bodies(i)
         If a.Kind = ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind = ShapeKind.Circle OrElse other.IsFixed) Then Return
         If other Is Nothing AndAlso side <> WallSide.Bottom Then Return
-        Dim pressing = _world.Gravity * Math.Abs(normal.Y)
+        ' How hard their motions press them together: two bodies falling freely together do not press at all,
+        ' and part after a gentle touch in finitely many events.
+        Dim pressing = Vector.Dot(AccelerationOf(i) - If(j >= 0, AccelerationOf(j), Vector.Zero), normal)
         If pressing <= 0 Then Return
         Dim separating = Vector.Dot(relativeAfter, normal)
         If separating > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
+        ' The body above is the one coming to rest.
+        If j >= 0 AndAlso normal.Y > 0 Then
+            Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(j), _groups(_groupOf(j)).Links, a, _groups(_groupOf(i)).Links, -normal))
+        End If
         Throw New UnsupportedSceneException(RestRefusal.Message(a, _groups(_groupOf(i)).Links, other, If(j >= 0, _groups(_groupOf(j)).Links, Nothing), normal))
     End Sub
+
+    ''' <summary>Body k's acceleration now (m/s²): a body on a parabola or sliding has its own; any other is taken to fall at g (the links' pull aside).</summary>
+    Private Function AccelerationOf(k As Integer) As Vector
+        Dim flight = TryCast(MotionOf(k), FlightMotion)
+        Return If(flight IsNot Nothing, flight.Acceleration, New Vector(0, -_world.Gravity))
+    End Function
 
     ''' <summary>Predicts again from now the one contact of body i with body j, wall <paramref name="side"/> or fixed body f.</summary>
     Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)
