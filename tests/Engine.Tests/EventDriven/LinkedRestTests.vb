@@ -238,21 +238,35 @@ Namespace EventDriven
 
         Private Const Theta As Double = Math.PI / 6
 
-        ''' <summary>A fixed ramp whose slope falls from (1, 2 + 3 tan θ) to (4, 2), in the air; a box with its lower-left corner <paramref name="along"/> m down the slope.</summary>
-        Private Shared Function Ramp(solver As String, along As Double, ByRef box As Rectangle, ByRef top As Vector, Optional dt As Double = 0.001) As World
+        ''' <summary>
+        ''' A fixed ramp whose slope falls from (1, 2 + 3 tan θ) to (4, 2), in the air; a body touching it
+        ''' <paramref name="along"/> m down the slope: a box or a triangle by its lower-left corner, a ball by its rim.
+        ''' </summary>
+        Private Shared Function Ramp(solver As String, along As Double, ByRef body As Shape, ByRef top As Vector, Optional dt As Double = 0.001, Optional shape As String = "box") As World
             Dim w = NewWorld(solver, 0.5, dt)
             AddPendulum(w)
             top = New Vector(1, 2 + 3 * Math.Tan(Theta))
             w.Add(Polygon.CreateFixed({New Vector(1, 2), New Vector(4, 2), top}, "ramp"))
-            box = Rectangle.CreateMovable(top + New Vector(Math.Cos(Theta), -Math.Sin(Theta)) * along, 0.25, 0.25, 1, Vector.Zero, "box")
-            w.Add(box)
+            Dim p = top + New Vector(Math.Cos(Theta), -Math.Sin(Theta)) * along
+            Select Case shape
+                Case "ball"
+                    body = New Circle(p + New Vector(Math.Sin(Theta), Math.Cos(Theta)) * 0.125, 0.125, 1, Vector.Zero, "body")
+                Case "triangle"
+                    body = New Polygon({p, p + New Vector(0.25, 0), p + New Vector(0.125, 0.25)}, 1, Vector.Zero, "body")
+                Case Else
+                    body = Rectangle.CreateMovable(p, 0.25, 0.25, 1, Vector.Zero, "body")
+            End Select
+            w.Add(body)
             Return w
         End Function
 
-        <Fact>
-        Public Sub BoxReleasedOnARamp_InASceneWithLinks_SlidesWithHalfGSinThetaTSquared_AndLeavesItsEndOnTheParabola()
-            Dim box As Rectangle = Nothing, top As Vector
-            Dim w = Ramp("event", 0.5, box, top)
+        <Theory>
+        <InlineData("box")>
+        <InlineData("ball")>
+        <InlineData("triangle")>
+        Public Sub ABodyReleasedOnARamp_InASceneWithLinks_SlidesWithHalfGSinThetaTSquared_AndLeavesItsEndOnTheParabola(shape As String)
+            Dim box As Shape = Nothing, top As Vector
+            Dim w = Ramp("event", 0.5, box, top, shape:=shape)
             Dim down As New Vector(Math.Cos(Theta), -Math.Sin(Theta))
             Dim start = box.Position
             Dim hits = 0
@@ -272,7 +286,9 @@ Namespace EventDriven
             Dim rest = 3 / Math.Cos(Theta) - 0.5
             Dim tEnd = Math.Sqrt(2 * rest / (G * Math.Sin(Theta)))
             Dim vEnd = down * (G * Math.Sin(Theta) * tEnd)
-            Dim pEnd = New Vector(4, 2)
+            ' Its reference point as it leaves: the box's corner at the ramp's end; a ball's centre or a
+            ' triangle's centroid as far from that end as it started from where it touched.
+            Dim pEnd = New Vector(4, 2) + (start - (top + down * 0.5))
             w.Advance(tEnd + 0.1 - w.Time)
             Dim flown = pEnd + vEnd * 0.1 + New Vector(0, -0.5 * G * 0.01)
             _output.WriteLine($"off the end at {tEnd} s; at {tEnd + 0.1} s {box.Position}, expected {flown}")
@@ -285,7 +301,7 @@ Namespace EventDriven
             ' On the slope the acceleration is constant, which Verlet follows exactly; leaving the end it can only
             ' notice at a step, which costs O(dt). So compare 0.1 s after the end (about 1.1 s).
             Const T As Double = 1.2
-            Dim box As Rectangle = Nothing, top As Vector
+            Dim box As Shape = Nothing, top As Vector
             Dim w = Ramp("event", 0.5, box, top)
             w.Advance(T)
             Dim exact = box.Position
