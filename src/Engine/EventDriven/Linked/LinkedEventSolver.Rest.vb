@@ -10,6 +10,8 @@ Option Strict On
 Partial Friend NotInheritable Class LinkedEventSolver
     ' What each resting body rests on (Nothing while it does not rest).
     Private _restOn As RestSupport()() = Array.Empty(Of RestSupport())()
+    ' Pair shapes of a support j's outline and a body i's for i > j (Minkowski differences, m), built when first wanted.
+    Private ReadOnly _supportDifferences As New Dictionary(Of Long, Outline)
 
     ''' <summary>One face a body touches: of a wall, a fixed body or a movable body resting level.</summary>
     Private Structure TouchedFace
@@ -166,10 +168,21 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Dim centre As Vector, velocity As Vector
             m.StateAt(t, _slotOf(j), centre, velocity)
             If velocity.Y <> 0 Then Continue For
-            Dim k = If(i < j, _pairDifferences(i, j), Outline.MinkowskiDifference(_bodies(j).Outline, o))
+            Dim k = If(i < j, _pairDifferences(i, j), SupportDifference(j, i))
             AddEdges(faces, k, centre - _offset(j), p, velocity, New RestSupport(RestSupportKind.Body, j, Vector.Zero))
         Next
         Return faces
+    End Function
+
+    ''' <summary>The pair shape K of support j's outline and body i's, for i &gt; j (the pair table holds only i &lt; j), built once.</summary>
+    Private Function SupportDifference(j As Integer, i As Integer) As Outline
+        Dim key = CLng(j) * Integer.MaxValue + i
+        Dim k As Outline = Nothing
+        If Not _supportDifferences.TryGetValue(key, k) Then
+            k = Outline.MinkowskiDifference(_bodies(j).Outline, _bodies(i).Outline)
+            _supportDifferences(key) = k
+        End If
+        Return k
     End Function
 
     Private Shared Sub AddWall(faces As List(Of TouchedFace), p As Vector, n As Vector, level As Double, side As WallSide)

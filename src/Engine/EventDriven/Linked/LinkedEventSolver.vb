@@ -14,8 +14,8 @@ Option Strict On
 ''' ends on the first one to rounding. A contact is resolved with the links of both bodies in the same
 ''' solve (<see cref="LinkedImpulse"/>). A body that comes to rest on flat faces rests and slides on them
 ''' exactly (LinkedEventSolver.Rest.vb). What it cannot follow exactly (a box or polygon coming to rest on a
-''' curve, on a moving body, or on a slope while on a link) it refuses with <see cref="UnsupportedSceneException"/>, and the world is put
-''' back as it was before the advance. Every pair is predicted again after an event that changes one of
+''' curve or on a body that swings, a body on a rod coming to rest) it refuses with
+''' <see cref="UnsupportedSceneException"/>, and the world is put back as it was before the advance. Every pair is predicted again after an event that changes one of
 ''' its bodies: fine for the classroom scenes with links (tens of bodies), not for a gas.
 ''' </summary>
 Partial Friend NotInheritable Class LinkedEventSolver
@@ -177,6 +177,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         _wallTime = New Double(n - 1, 4) {}
         _fixedTime = New Double(n - 1, Math.Max(_fixed.Length, 1) - 1) {}
         _restOn = New RestSupport(n - 1)() {}
+        _supportDifferences.Clear()
         ' Lowest first, so that a body resting on another finds it resting already.
         Dim lowest = Function(g As LinkedGroup) g.Bodies.Min(Function(b) b.Position.Y + b.Outline.MinY)
         For Each g In Enumerable.Range(0, _groups.Count).OrderBy(Function(k) lowest(_groups(k))).ToList()

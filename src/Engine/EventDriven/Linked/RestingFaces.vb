@@ -39,8 +39,8 @@ Friend Module RestingFaces
     ''' <summary>
     ''' How long (s) a point at <paramref name="position"/> along a face of <paramref name="length"/>, moving along
     ''' it as s(τ) = s₀ + u τ + ½ a τ², stays on it: the first τ &gt; 0 at which s reaches an end it is not
-    ''' already beyond; +∞ when it never does (at rest, or on a level face slowing to a stop is impossible:
-    ''' a = 0 there). A point starting within rounding outside an end counts the end as where it is.
+    ''' already beyond; +∞ when it never does (at rest on a level face, or on a face with no ends: u = a = 0).
+    ''' A point starting within rounding outside an end counts the end as where it is.
     ''' </summary>
     Friend Function TimeOnFace(position As Double, rate As Double, acceleration As Double, length As Double) As Double
         Dim lo = Math.Min(0, position), hi = Math.Max(length, position)
