@@ -8,7 +8,8 @@ Namespace EventDriven
     ''' Boxes and polygons in a scene with links, in the event solver, against closed forms: the ballistic
     ''' pendulum (momentum in the blow, then the swing up to v'²/(2g)), a pendulum bob stopping dead on a box at
     ''' rest, a box on a vertical spring, a box bouncing to rest on the floor beside a pendulum, a polygon
-    ''' pendulum's period, two boxes head on; the Verlet solver agreeing at O(dt); and what is still refused.
+    ''' pendulum's period, two boxes head on; the Verlet solver agreeing at O(dt); and what is still refused (resting
+    ''' elsewhere is in <see cref="LinkedRestTests"/>).
     ''' </summary>
     Public Class LinkedBoxTests
         Private Const G As Double = 9.81
@@ -400,27 +401,45 @@ Namespace EventDriven
         ' ---- What is still refused ----
 
         <Fact>
-        Public Sub ABoxComingToRestOnAFixedTable_InASceneWithLinks_IsRefusedInPlainWords_AndTheWorldIsLeftAsItWas()
+        Public Sub ABoxOnARodComingToRestOnAFixedTable_IsRefusedInPlainWords_AndTheWorldIsLeftAsItWas()
+            ' A box on a rod swings down onto a table and bounces on it, each time less, at the same point of its
+            ' circle: no rule holds a body on a rod at rest, so the solver says so rather than follow the bounces.
             Dim w = NewWorld("event", 0.5)
-            Dim bob As New Circle(OnCircle(New Vector(8, 8), 1, 0.5), 0.05, 0.5, Vector.Zero, "bob")
-            w.Add(bob)
-            w.Add(Link.CreateTie(LinkKind.Rod, bob, New Vector(8, 8), 1))
-            w.Add(New Rectangle(New Vector(1, 0), 2, 1, "table"))
-            Dim box = Rectangle.CreateMovable(New Vector(1.5, 1.3), 0.2, 0.2, 1, Vector.Zero, "box")
+            w.Add(New Rectangle(New Vector(1, 0), 4, 1, "table"))
+            Dim box = Rectangle.CreateMovable(New Vector(3.675, 1.375), 0.25, 0.25, 1, Vector.Zero, "box")
             w.Add(box)
+            w.Add(Link.CreateTie(LinkKind.Rod, box, New Vector(3, 1.5), 0.8))
             Dim records As New List(Of CollisionRecord)
             w.CollisionListener = Sub(r) records.Add(r)
             w.Advance(0.1)
-            Dim p = box.Position, v = box.Velocity, q = bob.Position
-            Dim ex = Assert.Throws(Of UnsupportedSceneException)(Sub() w.Advance(5))
+            Dim p = box.Position, v = box.Velocity
+            Dim count = records.Count
+            Dim ex = Assert.Throws(Of UnsupportedSceneException)(Sub() w.Advance(10))
             _output.WriteLine(ex.Message)
-            Assert.Contains("come to rest", ex.Message)
+            Assert.Contains("a box 'box' on a rod come to rest on a fixed rectangle 'table'", ex.Message)
             Assert.Contains("--solver verlet", ex.Message)
             Assert.Equal(0.1, w.Time)
             Assert.Equal(p, box.Position)
             Assert.Equal(v, box.Velocity)
-            Assert.Equal(q, bob.Position)
-            Assert.Empty(records)
+            Assert.Equal(count, records.Count)
+        End Sub
+        <Fact>
+        Public Sub ABoxOnASpringPullingSideways_RestingOnAFixedTable_IsRefusedAtTheFirstStep_AndTheWorldIsLeftAsItWas()
+            ' The spring pulls it along the table while gravity holds it down on it: it slides with a normal force
+            ' that changes as it goes, which no closed form here follows. Refused at once, in plain words.
+            Dim w = NewWorld("event", 1.0)
+            w.Add(New Rectangle(New Vector(0.25, 0), 1, 0.5, "table"))
+            Dim box = Rectangle.CreateMovable(New Vector(0.5, 0.5), 0.3, 0.2, 2, Vector.Zero, "box")
+            w.Add(box)
+            w.Add(Link.CreateSpring(box, New Vector(1.65, 0.6), 10, 0.5))
+            Dim ex = Assert.Throws(Of UnsupportedSceneException)(Sub() w.Advance(1 / 60.0))
+            _output.WriteLine(ex.Message)
+            Assert.Contains("a box 'box' on a spring come to rest on a fixed rectangle 'table'", ex.Message)
+            Assert.Contains("spring straight up", ex.Message)
+            Assert.Contains("--solver verlet", ex.Message)
+            Assert.Equal(0.0, w.Time)
+            Assert.Equal(New Vector(0.5, 0.5), box.Position)
+            Assert.Equal(Vector.Zero, box.Velocity)
         End Sub
     End Class
 End Namespace

@@ -32,7 +32,7 @@ Friend NotInheritable Class ChainMotion
     ' A string snapping taut so gently that its ends would come back less than this fraction of its length
     ' apart (v² < 2 g × fraction × L) stays taut: a bob riding the circle with the string just pulling would
     ' otherwise bounce off its full length for ever (with e = 1 the bounces never shrink), as a ball resting on
-    ' the floor would (LinkedMotions.RestsOnFloor).
+    ' the floor would (LinkedEventSolver.Rest.vb).
     Private Const SettleFraction As Double = 0.000000001
 
     Private ReadOnly _gravity As Double

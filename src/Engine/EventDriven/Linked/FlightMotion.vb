@@ -3,7 +3,9 @@ Option Strict On
 ''' <summary>
 ''' One body on its parabola, p = p₀ + v₀τ + ½aτ² with a = (0, −g): a free body, or a body on a slack string
 ''' (then <see cref="LinkedMotion.TransitionTime"/> is when the string snaps taut, a quartic solved by
-''' <see cref="StringTaut"/>). A body resting on the floor slides with a = 0.
+''' <see cref="StringTaut"/>). A body resting on a support slides along it: on a level face with a = 0, down
+''' a slope with gravity's part along it (<see cref="RestingFaces.SlideAcceleration"/>), until it leaves the
+''' face's end (<see cref="LinkedMotion.TransitionTime"/>).
 ''' </summary>
 Friend NotInheritable Class FlightMotion
     Inherits LinkedMotion
@@ -14,30 +16,41 @@ Friend NotInheritable Class FlightMotion
 
     Private ReadOnly _p0 As Vector
     Private ReadOnly _v0 As Vector
-    Private ReadOnly _gravity As Double
+    Private ReadOnly _acceleration As Vector
     Private ReadOnly _string As Link
     Private ReadOnly _taut As Double = Double.PositiveInfinity
+    Private ReadOnly _leaves As Double = Double.PositiveInfinity
 
-    ''' <summary>A body flying (or sliding, with <paramref name="gravity"/> 0) from its state now; tied by a slack <paramref name="slack"/> string when given.</summary>
+    ''' <summary>A body flying (or sliding on a level face, with <paramref name="gravity"/> 0) from its state now; tied by a slack <paramref name="slack"/> string when given.</summary>
     Friend Sub New(body As Shape, startTime As Double, gravity As Double, Optional slack As Link = Nothing, Optional slop As Double = 0)
+        Me.New(body, startTime, New Vector(0, -gravity), Double.PositiveInfinity, slack, slop)
+    End Sub
+
+    ''' <summary>
+    ''' A body sliding from its state now with the constant <paramref name="acceleration"/> (m/s²) until
+    ''' <paramref name="leaves"/> (s, absolute; +∞ for never). A slack string it is tied by must see a vertical
+    ''' acceleration (the quartic of <see cref="StringTaut"/> knows no other).
+    ''' </summary>
+    Friend Sub New(body As Shape, startTime As Double, acceleration As Vector, leaves As Double, Optional slack As Link = Nothing, Optional slop As Double = 0)
         MyBase.New({body}, startTime)
         _p0 = body.CentreOfMass
         _v0 = body.Velocity
-        _gravity = gravity
+        _acceleration = acceleration
         _string = slack
-        If slack IsNot Nothing Then _taut = startTime + StringTaut.AnchoredTautTime(slack.EndB, slack.Length, _p0, _v0, gravity, slop)
+        _leaves = leaves
+        If slack IsNot Nothing Then _taut = startTime + StringTaut.AnchoredTautTime(slack.EndB, slack.Length, _p0, _v0, -acceleration.Y, slop)
     End Sub
 
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
         Dim tau = time - StartTime
-        position = New Vector(_p0.X + _v0.X * tau, _p0.Y + (_v0.Y - 0.5 * _gravity * tau) * tau)
-        velocity = New Vector(_v0.X, _v0.Y - _gravity * tau)
+        position = New Vector(_p0.X + (_v0.X + 0.5 * _acceleration.X * tau) * tau, _p0.Y + (_v0.Y + 0.5 * _acceleration.Y * tau) * tau)
+        velocity = New Vector(_v0.X + _acceleration.X * tau, _v0.Y + _acceleration.Y * tau)
     End Sub
 
-    ''' <summary>Its downward acceleration, m/s² (g in flight, 0 resting on the floor).</summary>
-    Friend ReadOnly Property Gravity As Double
+    ''' <summary>Its acceleration, m/s²: (0, −g) in flight, zero resting on a level face, g's part along a slope sliding down it.</summary>
+    Friend ReadOnly Property Acceleration As Vector
         Get
-            Return _gravity
+            Return _acceleration
         End Get
     End Property
 
@@ -54,7 +67,7 @@ Friend NotInheritable Class FlightMotion
         b.StateAt(t0, 0, p, vb0)
         b.StateAt(t1, 0, p, vb1)
         speed = Math.Max((va0 - vb0).Length, (va1 - vb1).Length) * (1 + 0.000000001)
-        acceleration = Math.Abs(a._gravity - b._gravity)
+        acceleration = (a._acceleration - b._acceleration).Length
     End Sub
 
     Friend Overrides Function SpeedBound(k As Integer, t0 As Double, t1 As Double) As Double
@@ -66,12 +79,12 @@ Friend NotInheritable Class FlightMotion
     End Function
 
     Friend Overrides Function AccelerationBound(k As Integer, t0 As Double, t1 As Double) As Double
-        Return _gravity
+        Return _acceleration.Length
     End Function
 
     Friend Overrides ReadOnly Property TransitionTime As Double
         Get
-            Return _taut
+            Return Math.Min(_taut, _leaves)
         End Get
     End Property
 
@@ -80,7 +93,8 @@ Friend NotInheritable Class FlightMotion
     ''' becomes e times as much inwards; the speed across the string is kept.
     ''' </summary>
     Friend Overrides Function Transition(world As World) As Boolean
-        If _string Is Nothing Then Return False
+        ' Leaving the end of the face it slid on changes nothing at that instant: it flies on from there.
+        If _string Is Nothing OrElse _leaves < _taut Then Return False
         Dim body = Bodies(0)
         Dim n = (body.CentreOfMass - _string.EndB).Normalized(Vector.Zero)
         Dim outwards = Vector.Dot(body.Velocity, n)

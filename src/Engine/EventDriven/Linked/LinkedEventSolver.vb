@@ -12,12 +12,13 @@ Option Strict On
 ''' contacts, found by conservative advancement (<see cref="ConservativeAdvancement"/>): from bounds on the
 ''' speeds and accelerations it proves how long each gap stays open, so no contact is stepped over, and
 ''' ends on the first one to rounding. A contact is resolved with the links of both bodies in the same
-''' solve (<see cref="LinkedImpulse"/>). What it cannot follow exactly (a box or polygon coming to rest on
-''' anything but the floor) it refuses with <see cref="UnsupportedSceneException"/>, and the world is put
-''' back as it was before the advance. Every pair is predicted again after an event that changes one of
+''' solve (<see cref="LinkedImpulse"/>). A body that comes to rest on flat faces rests and slides on them
+''' exactly (LinkedEventSolver.Rest.vb). What it cannot follow exactly (a box or polygon coming to rest on a
+''' curve or on a body that swings, a body on a rod coming to rest) it refuses with
+''' <see cref="UnsupportedSceneException"/>, and the world is put back as it was before the advance. Every pair is predicted again after an event that changes one of
 ''' its bodies: fine for the classroom scenes with links (tens of bodies), not for a gas.
 ''' </summary>
-Friend NotInheritable Class LinkedEventSolver
+Partial Friend NotInheritable Class LinkedEventSolver
     ' Gaps this close count as touching, m; a touching pair that does not approach collides only if it overlaps by this much.
     Private Const Slop As Double = 0.000000001
     ' Events at one instant (a cascade through a row of touching balls) beyond this are a fault, reported.
@@ -175,11 +176,20 @@ Friend NotInheritable Class LinkedEventSolver
         _pairTime = New Double(n - 1, n - 1) {}
         _wallTime = New Double(n - 1, 4) {}
         _fixedTime = New Double(n - 1, Math.Max(_fixed.Length, 1) - 1) {}
-        For g = 0 To _groups.Count - 1
+        _restOn = New RestSupport(n - 1)() {}
+        _supportDifferences.Clear()
+        ' Lowest first, so that a body resting on another finds it resting already.
+        Dim lowest = Function(g As LinkedGroup) g.Bodies.Min(Function(b) b.Position.Y + b.Outline.MinY)
+        For Each g In Enumerable.Range(0, _groups.Count).OrderBy(Function(k) lowest(_groups(k))).ToList()
             Restart(g, _now, False)
         Next
         _dirty = False
     End Sub
+
+    ''' <summary>The height of body i's lowest point as written to it, m.</summary>
+    Private Function Lowest(i As Integer) As Double
+        Return _bodies(i).Position.Y + _bodies(i).Outline.MinY
+    End Function
 
     Private Function BothBalls(i As Integer, j As Integer) As Boolean
         Return _bodies(i).Kind = ShapeKind.Circle AndAlso _bodies(j).Kind = ShapeKind.Circle
@@ -231,7 +241,7 @@ Friend NotInheritable Class LinkedEventSolver
     ''' <summary>Group g's closed form from its bodies' states (already written to them) at <paramref name="t"/>.</summary>
     Private Sub Restart(g As Integer, t As Double, slack As Boolean)
         Dim group = _groups(g)
-        group.Motion = LinkedMotions.Create(group, _world, t, slack, Slop)
+        group.Motion = If(RestingMotion(g, t), LinkedMotions.Create(group, _world, t, slack, Slop))
         For Each c In group.Bodies
             Dim i = Array.IndexOf(_bodies, c)
             _slotOf(i) = Array.IndexOf(group.Motion.Bodies, c)
@@ -291,13 +301,15 @@ Friend NotInheritable Class LinkedEventSolver
         For j = 0 To n - 1
             If j = i OrElse (everyPair < 0 AndAlso j < i) Then Continue For
             Dim a = Math.Min(i, j), b = Math.Max(i, j)
-            _pairTime(a, b) = If(_rodPair.Contains(PairKey(a, b)), Double.PositiveInfinity, PredictPair(a, b, tEnd))
+            ' A body resting on another moves along its face exactly: that contact is not searched.
+            Dim resting = RestsOn(a, RestSupportKind.Body, b) OrElse RestsOn(b, RestSupportKind.Body, a)
+            _pairTime(a, b) = If(resting OrElse _rodPair.Contains(PairKey(a, b)), Double.PositiveInfinity, PredictPair(a, b, tEnd))
         Next
         For s = 1 To 4
-            _wallTime(i, s) = If(_world.Walls, PredictGap(i, WallGap(i, CType(s, WallSide)), tEnd), Double.PositiveInfinity)
+            _wallTime(i, s) = If(_world.Walls AndAlso Not RestsOn(i, RestSupportKind.Wall, s), PredictGap(i, WallGap(i, CType(s, WallSide)), tEnd), Double.PositiveInfinity)
         Next
         For f = 0 To _fixed.Length - 1
-            _fixedTime(i, f) = PredictGap(i, FixedGap(i, f), tEnd)
+            _fixedTime(i, f) = If(RestsOn(i, RestSupportKind.Fixed, f), Double.PositiveInfinity, PredictGap(i, FixedGap(i, f), tEnd))
         Next
     End Sub
 
@@ -345,9 +357,9 @@ Friend NotInheritable Class LinkedEventSolver
         End If
         If BothBalls(a, b) Then
             Dim curved = accel + speed * speed / (DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
-            Return Recheck(FirstContact(gap, t0, until, speed, curved), until, tEnd)
+            Return Recheck(FirstContact(gap, t0, until, speed, curved, curved, False), until, tEnd)
         End If
-        Return Recheck(FirstShapeContact(gap, t0, until, speed, accel, UpperCurvature(accel, speed, _pairDifferences(a, b).Radius)), until, tEnd)
+        Return Recheck(FirstContact(gap, t0, until, speed, accel, UpperCurvature(accel, speed, _pairDifferences(a, b).Radius), True), until, tEnd)
     End Function
 
     ''' <summary>A bound on the gap's second derivative (m/s²) from above: the acceleration's, plus V²/R for the turning of the normal about a pair shape rounded by R; +∞ (none) for a sharp one.</summary>
@@ -362,10 +374,10 @@ Friend NotInheritable Class LinkedEventSolver
         Dim speed = m.SpeedBound(_slotOf(i), _now, until)
         Dim accel = m.AccelerationBound(_slotOf(i), _now, until)
         ' A wall is flat: its gap's second derivative is the acceleration across it.
-        If gap.Difference Is Nothing Then Return Recheck(FirstContact(gap, _now, until, speed, accel), until, tEnd)
+        If gap.Difference Is Nothing Then Return Recheck(FirstContact(gap, _now, until, speed, accel, accel, False), until, tEnd)
         Dim curved = UpperCurvature(accel, speed, gap.Difference.Radius)
-        If _bodies(i).Kind = ShapeKind.Circle Then Return Recheck(FirstContact(gap, _now, until, speed, curved), until, tEnd)
-        Return Recheck(FirstShapeContact(gap, _now, until, speed, accel, curved), until, tEnd)
+        If _bodies(i).Kind = ShapeKind.Circle Then Return Recheck(FirstContact(gap, _now, until, speed, curved, curved, False), until, tEnd)
+        Return Recheck(FirstContact(gap, _now, until, speed, accel, curved, True), until, tEnd)
     End Function
 
     ''' <summary>A search that found nothing before the horizon is taken up again there (an event that is not a contact).</summary>
@@ -375,59 +387,64 @@ Friend NotInheritable Class LinkedEventSolver
     End Function
 
     ''' <summary>
-    ''' The first contact in [t0, tEnd]: now when touching and closing. When touching and not closing (just
-    ''' after a bounce), first the time the gap opens to twice the slop, and from there when it closes; if it
-    ''' never opens that far, when the overlap grows by the slop. Otherwise when the gap closes. +∞ for none;
-    ''' a search that ran out of its budget returns where it stopped, to be taken up again from there.
+    ''' The first contact of a gap in [t0, tEnd] (s): now when touching and closing. When touching and not
+    ''' closing (just after a bounce), first the time the gap has opened to twice the slop, and from there
+    ''' when it closes; if it cannot be shown to open that far, when the overlap grows by the slop. Otherwise
+    ''' when the gap closes. <paramref name="below"/> (m/s²) bounds the gap's second derivative from below
+    ''' (its fall): the relative acceleration for a box or polygon, whose gap is convex, else the same as
+    ''' <paramref name="above"/>, the two-sided bound (+∞ for two sharp shapes, where none exists). The closing
+    ''' is searched with the bound from below alone (<see cref="OneSidedAdvancement"/>) when
+    ''' <paramref name="oneSided"/>, else with <see cref="ConservativeAdvancement"/>. +∞ for none; a search that
+    ''' ran out of its budget returns where it stopped, to be taken up again from there.
     ''' </summary>
-    Private Shared Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, accel As Double) As Double
+    Private Shared Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean) As Double
         Dim n As Vector, rate As Double
         Dim d = gap.GapAndNormal(t0, n, rate)
         Dim tolerance = 0.0
         If d <= Slop Then
             If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
-            Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, tEnd, 0, speed, accel)
-            If opened.Found Then
-                t0 = opened.Time
-            ElseIf opened.ClearUntil < tEnd Then
-                Return opened.ClearUntil
+            ' Leaving at rate ḋ, the gap is at least d + ḋ s − ½ A s² (A the bound from below): where that
+            ' parabola first reaches twice the slop, the gap has opened that far, and it did not close before.
+            Dim opens = OpeningTime(d, rate, below, 2 * Slop)
+            If opens < Double.PositiveInfinity Then
+                If t0 + opens > tEnd Then Return Double.PositiveInfinity
+                t0 += opens
             Else
-                tolerance = Math.Min(d, 0) - Slop
+                ' Too slow to show it opening from the bound below (a body sliding along a face, or resting):
+                ' look for the opening step by step, with the bound from above; two sharp shapes have none,
+                ' so briefly, with the speed alone.
+                Dim sharp = Double.IsPositiveInfinity(above)
+                Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, tEnd, 0, speed, above, If(sharp, SharpOpeningBudget, 100000))
+                If opened.Found Then
+                    t0 = opened.Time
+                ElseIf opened.ClearUntil < tEnd AndAlso Not sharp Then
+                    Return opened.ClearUntil
+                Else
+                    tolerance = Math.Min(d, 0) - Slop
+                End If
             End If
         End If
-        Dim result = ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, accel)
+        Dim result = If(oneSided,
+                        OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, below),
+                        ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, above))
         If result.Found Then Return result.Time
         If result.ClearUntil < tEnd Then Return result.ClearUntil
         Return Double.PositiveInfinity
     End Function
 
     ''' <summary>
-    ''' As <see cref="FirstContact"/>, for a pair with a box or polygon in it: the gap closing is searched with
-    ''' the one-sided bound (<paramref name="accel"/>, the relative acceleration's); its opening, after a
-    ''' bounce, with the bound from above, <paramref name="curved"/> (+∞ for two sharp shapes: then with the
-    ''' speed alone, and briefly). A touching pair that does not open soon (two boxes sliding past each other
-    ''' flush, or pressed together) is searched from now for the overlap growing by the slop.
+    ''' The first s &gt; 0 (s) at which d + ḋ s − ½ A s² reaches <paramref name="target"/> (m), for a gap d (m)
+    ''' opening at ḋ (m/s) with its second derivative at least −A (m/s²); +∞ when that parabola never does.
     ''' </summary>
-    Private Shared Function FirstShapeContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, accel As Double, curved As Double) As Double
-        Dim n As Vector, rate As Double
-        Dim d = gap.GapAndNormal(t0, n, rate)
-        Dim tolerance = 0.0
-        If d <= Slop Then
-            If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
-            Dim sharp = Double.IsPositiveInfinity(curved)
-            Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, tEnd, 0, speed, curved, If(sharp, SharpOpeningBudget, 100000))
-            If opened.Found Then
-                t0 = opened.Time
-            ElseIf opened.ClearUntil < tEnd AndAlso Not sharp Then
-                Return opened.ClearUntil
-            Else
-                tolerance = Math.Min(d, 0) - Slop
-            End If
-        End If
-        Dim result = OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, accel)
-        If result.Found Then Return result.Time
-        If result.ClearUntil < tEnd Then Return result.ClearUntil
-        Return Double.PositiveInfinity
+    Private Shared Function OpeningTime(d As Double, rate As Double, accel As Double, target As Double) As Double
+        If rate <= 0 OrElse Double.IsInfinity(accel) OrElse Double.IsNaN(accel) Then Return Double.PositiveInfinity
+        Dim rise = target - d
+        If rise <= 0 Then Return 0
+        If accel <= 0 Then Return rise / rate
+        Dim disc = rate * rate - 2 * accel * rise
+        If disc < 0 Then Return Double.PositiveInfinity
+        ' The smaller root of ½ A s² − ḋ s + rise = 0, written without cancellation.
+        Return 2 * rise / (rate + Math.Sqrt(disc))
     End Function
 
     ''' <summary>How far a gap is from opening to <c>target</c> (m): target − gap, zero once it has opened that far.</summary>
@@ -456,7 +473,7 @@ Friend NotInheritable Class LinkedEventSolver
         Sync(g, t)
         Dim slack = _groups(g).Motion.Transition(_world)
         Restart(g, t, slack)
-        Repredict(g, -1, tEnd)
+        Repredict(RestartResting(New List(Of Integer) From {g}, t), tEnd)
     End Sub
 
     ''' <summary>Body i hits body j (i &lt; j), a wall or fixed body f at t: resolve it with the links of both, and report it.</summary>
@@ -490,6 +507,9 @@ Friend NotInheritable Class LinkedEventSolver
         Dim bBefore = If(b Is Nothing, Vector.Zero, b.Velocity)
         _impulse.Clear()
         _impulse.AddContact(a, b, normal, _world.Restitution)
+        Dim held As New HashSet(Of Integer)
+        AddSupportRows(i, held)
+        If j >= 0 Then AddSupportRows(j, held)
         For Each l In _groups(gi).Motion.HeldLinks
             _impulse.AddLink(l)
         Next
@@ -500,31 +520,50 @@ Friend NotInheritable Class LinkedEventSolver
         End If
         _impulse.Resolve()
         Dim other = If(b, If(f >= 0, _fixed(f), Nothing))
-        RefuseRest(a, other, side, normal, If(b Is Nothing, Vector.Zero, b.Velocity) - a.Velocity)
-        _reports.Add(New CollisionRecord(t, a, other, side, CollisionKinds.Between(a, other),
-                                         aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
-        Restart(gi, t, False)
-        If gj >= 0 AndAlso gj <> gi Then Restart(gj, t, False)
-        Repredict(gi, gj, tEnd)
+        Dim aAfter = a.Velocity
+        Dim bAfter = If(b Is Nothing, Vector.Zero, b.Velocity)
+        ' Every group the blow moved, the lowest first: a body that comes to rest on another finds its new motion.
+        held.Add(i)
+        If j >= 0 Then held.Add(j)
+        Dim changed = held.Select(Function(k) _groupOf(k)).Distinct().OrderBy(Function(g) _groups(g).Bodies.Min(Function(c) Lowest(Array.IndexOf(_bodies, c)))).ToList()
+        For Each g In changed
+            Restart(g, t, False)
+        Next
+        RefuseRest(i, j, other, side, normal, bAfter - aAfter)
+        _reports.Add(New CollisionRecord(t, a, other, side, CollisionKinds.Between(a, other), aBefore, aAfter, bBefore, bAfter))
+        Repredict(RestartResting(changed, t), tEnd)
     End Sub
 
     ''' <summary>
-    ''' A box or polygon that, after a contact with anything but the floor (or as a body with links, with the floor
-    ''' too), would bounce less than four slops high, pressed on by gravity across the contact, is coming to rest
-    ''' on it: the series of ever smaller bounces has a finite sum but endless terms, and only a free body on the
-    ''' floor has a rest rule here (<see cref="LinkedMotions"/>). Refused, rather than followed into a pile-up of events.
+    ''' A contact after which neither body rests (<see cref="RestingMotion"/>), yet one would bounce less than
+    ''' four slops high across a contact that gravity presses on: it is coming to rest where no rule here holds
+    ''' it. The series of ever smaller bounces has a finite sum but endless terms; it is refused, in words that
+    ''' say what was coming to rest on what, rather than followed into a pile-up of events. Balls among balls,
+    ''' walls and fixed bodies (curves they roll off) are followed as they always were.
     ''' </summary>
-    Private Sub RefuseRest(a As Shape, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
-        ' Balls among balls, walls and fixed bodies are as before; a box or polygon that moves is what is new.
+    Private Sub RefuseRest(i As Integer, j As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
+        If _restOn(i) IsNot Nothing OrElse (j >= 0 AndAlso _restOn(j) IsNot Nothing) Then Return
+        Dim a = _bodies(i)
         If a.Kind = ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind = ShapeKind.Circle OrElse other.IsFixed) Then Return
         If other Is Nothing AndAlso side <> WallSide.Bottom Then Return
-        If other Is Nothing AndAlso _groups(_groupOf(Array.IndexOf(_bodies, a))).Links.Count = 0 Then Return
-        Dim pressing = _world.Gravity * Math.Abs(normal.Y)
+        ' How hard their motions press them together: two bodies falling freely together do not press at all,
+        ' and part after a gentle touch in finitely many events.
+        Dim pressing = Vector.Dot(AccelerationOf(i) - If(j >= 0, AccelerationOf(j), Vector.Zero), normal)
         If pressing <= 0 Then Return
         Dim separating = Vector.Dot(relativeAfter, normal)
         If separating > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
-        Throw New UnsupportedSceneException("the event solver does not yet let a box or polygon come to rest on anything but the floor in a scene with links, nor anything come to rest on one; use --solver verlet")
+        ' The body above is the one coming to rest.
+        If j >= 0 AndAlso normal.Y > 0 Then
+            Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(j), _groups(_groupOf(j)).Links, a, _groups(_groupOf(i)).Links, -normal))
+        End If
+        Throw New UnsupportedSceneException(RestRefusal.Message(a, _groups(_groupOf(i)).Links, other, If(j >= 0, _groups(_groupOf(j)).Links, Nothing), normal))
     End Sub
+
+    ''' <summary>Body k's acceleration now (m/s²): a body on a parabola or sliding has its own; any other is taken to fall at g (the links' pull aside).</summary>
+    Private Function AccelerationOf(k As Integer) As Vector
+        Dim flight = TryCast(MotionOf(k), FlightMotion)
+        Return If(flight IsNot Nothing, flight.Acceleration, New Vector(0, -_world.Gravity))
+    End Function
 
     ''' <summary>Predicts again from now the one contact of body i with body j, wall <paramref name="side"/> or fixed body f.</summary>
     Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)
@@ -537,10 +576,10 @@ Friend NotInheritable Class LinkedEventSolver
         End If
     End Sub
 
-    ''' <summary>Predicts again every contact of the bodies of groups g and h (−1: none).</summary>
-    Private Sub Repredict(g As Integer, h As Integer, tEnd As Double)
+    ''' <summary>Predicts again every contact of the bodies of the given groups.</summary>
+    Private Sub Repredict(groups As List(Of Integer), tEnd As Double)
         For i = 0 To _bodies.Length - 1
-            If _groupOf(i) = g OrElse _groupOf(i) = h Then PredictBody(i, tEnd, 0)
+            If groups.Contains(_groupOf(i)) Then PredictBody(i, tEnd, 0)
         Next
     End Sub
 End Class

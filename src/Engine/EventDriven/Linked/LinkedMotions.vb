@@ -27,15 +27,8 @@ Friend Module LinkedMotions
     Friend Function Create(group As LinkedGroup, world As World, time As Double, slack As Boolean, slop As Double) As LinkedMotion
         Dim g = world.Gravity
         Dim a = group.Bodies(0)
-        If group.Links.Count = 0 Then
-            If RestsOnFloor(a, world, slop) Then
-                ' Its lowest point exactly on the floor (0 − MinY, not −MinY: a box's is 0, and −0 is not wanted).
-                a.Position = New Vector(a.Position.X, 0 - a.Outline.MinY)
-                a.Velocity = New Vector(a.Velocity.X, 0)
-                Return New FlightMotion(a, time, 0)
-            End If
-            Return New FlightMotion(a, time, g)
-        End If
+        ' A free body that rests has had its motion chosen already (LinkedEventSolver.Rest.vb): this one flies.
+        If group.Links.Count = 0 Then Return New FlightMotion(a, time, g)
         Dim l = group.Links(0)
         If OnlySprings(group) Then
             If group.Bodies.Count = 1 AndAlso group.Links.Count = 1 AndAlso SpringMotion.Fits(a, l, g) Then Return New SpringMotion(a, l, time, g)
@@ -99,18 +92,6 @@ Friend Module LinkedMotions
         If d < l.Length * (1 - FullFraction) Then Return False
         Dim w = b.Velocity - a.Velocity
         Return Math.Abs(Vector.Dot(w, r) / d) <= FullFraction * (w.Length + a.Velocity.Length + b.Velocity.Length)
-    End Function
-
-    ''' <summary>
-    ''' A free body on the floor (its lowest point, a ball's bottom or a box's bottom face, within
-    ''' <paramref name="slop"/> of it) that would bounce less than four times the slop high: it rests there
-    ''' (sliding), instead of bouncing ever lower at ever shorter intervals (the series of bounces has a finite
-    ''' sum). Contacts are told apart from touches by twice the slop, so lower bounces cannot be followed.
-    ''' </summary>
-    Private Function RestsOnFloor(body As Shape, world As World, slop As Double) As Boolean
-        If Not world.Walls OrElse world.Gravity <= 0 Then Return False
-        If body.Position.Y + body.Outline.MinY > slop Then Return False
-        Return Math.Abs(body.Velocity.Y) <= RestingSpeed(world.Gravity, slop)
     End Function
 
     ''' <summary>
