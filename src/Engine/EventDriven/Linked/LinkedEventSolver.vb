@@ -31,6 +31,10 @@ Friend NotInheritable Class LinkedEventSolver
     ' Two sharp shapes touching: how many steps (of the speed bound alone) to spend looking for the gap to
     ' open before searching for the overlap to grow instead.
     Private Const SharpOpeningBudget As Integer = 64
+    ' Predictions look to their horizon whatever the advance's end, and are kept from one advance to the
+    ' next: a search that began at an advance's end, or stopped there, would find a contact at a time a few
+    ' ulps off the one a longer advance finds, so a run would depend on how it is cut into advances.
+    Private Const Unbounded As Double = Double.PositiveInfinity
 
     Private ReadOnly _impulse As New LinkedImpulse()
     Private _world As World
@@ -70,7 +74,10 @@ Friend NotInheritable Class LinkedEventSolver
 
     ''' <summary>Advances exactly <paramref name="duration"/> s and writes every body's state back.</summary>
     Friend Sub Advance(duration As Double)
-        If _dirty OrElse _now <> _world.Time Then Rebuild()
+        If _dirty OrElse _now <> _world.Time Then
+            Rebuild()
+            PredictAll(Unbounded)
+        End If
         Dim positions = _bodies.Select(Function(b) b.Position).ToArray()
         Dim velocities = _bodies.Select(Function(b) b.Velocity).ToArray()
         Dim tensions = _world.Links.Select(Function(l) l.Tension).ToArray()
@@ -97,7 +104,6 @@ Friend NotInheritable Class LinkedEventSolver
     End Sub
 
     Private Sub AdvanceTo(tEnd As Double)
-        PredictAll(tEnd)
         Dim instant = 0
         Dim lastTime = Double.NaN
         Do
@@ -115,10 +121,10 @@ Friend NotInheritable Class LinkedEventSolver
             End If
             _now = t
             Select Case kind
-                Case 0 : TransitionOf(i, t, tEnd)
-                Case 1 : Collide(i, j, WallSide.None, -1, t, tEnd)
-                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, tEnd)
-                Case Else : Collide(i, -1, WallSide.None, j, t, tEnd)
+                Case 0 : TransitionOf(i, t, Unbounded)
+                Case 1 : Collide(i, j, WallSide.None, -1, t, Unbounded)
+                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded)
+                Case Else : Collide(i, -1, WallSide.None, j, t, Unbounded)
             End Select
         Loop
         _now = tEnd
