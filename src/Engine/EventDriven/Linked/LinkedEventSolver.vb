@@ -385,23 +385,26 @@ Friend NotInheritable Class LinkedEventSolver
     ''' after a bounce), first the time the gap opens to twice the slop, and from there when it closes; if it
     ''' never opens that far, when the overlap grows by the slop. Otherwise when the gap closes. +∞ for none;
     ''' a search that ran out of its budget returns where it stopped, to be taken up again from there.
+    ''' The opening is looked for only until the overlap could have grown by the slop: a body pressed into
+    ''' another (a ball falling onto a peg it sits on) would otherwise be "opened" on the far side, after
+    ''' passing right through it, and the contact between never looked for.
     ''' </summary>
     Private Shared Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, accel As Double) As Double
         Dim n As Vector, rate As Double
         Dim d = gap.GapAndNormal(t0, n, rate)
-        Dim tolerance = 0.0
         If d <= Slop Then
             If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
-            Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, tEnd, 0, speed, accel)
-            If opened.Found Then
-                t0 = opened.Time
-            ElseIf opened.ClearUntil < tEnd Then
-                Return opened.ClearUntil
-            Else
-                tolerance = Math.Min(d, 0) - Slop
-            End If
+            Dim sinks = ConservativeAdvancement.FirstContact(gap, t0, tEnd, Math.Min(d, 0) - Slop, speed, accel)
+            Dim limit = If(sinks.Found, sinks.Time, sinks.ClearUntil)
+            Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, limit, 0, speed, accel)
+            If Not opened.Found Then Return If(opened.ClearUntil < limit, opened.ClearUntil, Finding(sinks, tEnd))
+            t0 = opened.Time
         End If
-        Dim result = ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, accel)
+        Return Finding(ConservativeAdvancement.FirstContact(gap, t0, tEnd, 0, speed, accel), tEnd)
+    End Function
+
+    ''' <summary>A search's answer as a time: when it found the contact, where it stopped short of <paramref name="tEnd"/> (to be taken up again), or +∞.</summary>
+    Private Shared Function Finding(result As AdvancementResult, tEnd As Double) As Double
         If result.Found Then Return result.Time
         If result.ClearUntil < tEnd Then Return result.ClearUntil
         Return Double.PositiveInfinity
@@ -417,23 +420,17 @@ Friend NotInheritable Class LinkedEventSolver
     Private Shared Function FirstShapeContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, accel As Double, curved As Double) As Double
         Dim n As Vector, rate As Double
         Dim d = gap.GapAndNormal(t0, n, rate)
-        Dim tolerance = 0.0
         If d <= Slop Then
             If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
             Dim sharp = Double.IsPositiveInfinity(curved)
-            Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, tEnd, 0, speed, curved, If(sharp, SharpOpeningBudget, 100000))
-            If opened.Found Then
-                t0 = opened.Time
-            ElseIf opened.ClearUntil < tEnd AndAlso Not sharp Then
-                Return opened.ClearUntil
-            Else
-                tolerance = Math.Min(d, 0) - Slop
-            End If
+            ' As in FirstContact: the opening counts only before the overlap could have grown by the slop.
+            Dim sinks = OneSidedAdvancement.FirstContact(gap, t0, tEnd, Math.Min(d, 0) - Slop, speed, accel)
+            Dim limit = If(sinks.Found, sinks.Time, sinks.ClearUntil)
+            Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, limit, 0, speed, curved, If(sharp, SharpOpeningBudget, 100000))
+            If Not opened.Found Then Return If(opened.ClearUntil < limit AndAlso Not sharp, opened.ClearUntil, Finding(sinks, tEnd))
+            t0 = opened.Time
         End If
-        Dim result = OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, accel)
-        If result.Found Then Return result.Time
-        If result.ClearUntil < tEnd Then Return result.ClearUntil
-        Return Double.PositiveInfinity
+        Return Finding(OneSidedAdvancement.FirstContact(gap, t0, tEnd, 0, speed, accel), tEnd)
     End Function
 
     ''' <summary>How far a gap is from opening to <c>target</c> (m): target − gap, zero once it has opened that far.</summary>
