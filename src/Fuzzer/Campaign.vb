@@ -127,9 +127,14 @@ Friend Module Campaign
         Return New RunPlan(plan.Time, v.Sample, 0, plan.Cap)
     End Function
 
-    ''' <summary>How a line starts: HEAVY and UNSUPPORTED runs are noted, not failures (see <see cref="Invariants"/>).</summary>
+    ''' <summary>Heavy, unsupported and unstable runs are noted, not failures (see <see cref="Invariants"/>).</summary>
+    Friend Function IsNoted(invariant As String) As Boolean
+        Return invariant = Invariants.Heavy OrElse invariant = Invariants.Unsupported OrElse invariant = Invariants.Unstable
+    End Function
+
+    ''' <summary>How a line starts: FAIL, or HEAVY, UNSUPPORTED or UNSTABLE for a run that is noted.</summary>
     Friend Function LinePrefix(invariant As String) As String
-        If invariant = Invariants.Heavy OrElse invariant = Invariants.Unsupported Then Return invariant.ToUpperInvariant() & " "
+        If IsNoted(invariant) Then Return invariant.ToUpperInvariant() & " "
         Return "FAIL "
     End Function
 
@@ -142,7 +147,7 @@ Friend Module Campaign
         log.WriteLine("fuzz: " & what & ", solvers " & String.Join(",", options.Solvers) & ", kinds " & BodyKindNames.Format(options.Kinds) & ": " &
             runs.ToString(inv) & " scene runs in " & result.ElapsedSeconds.ToString("0.0", inv) & " s")
         For Each o In result.Outcomes
-            For Each v In o.Violations.Where(Function(x) x.Invariant = Invariants.Heavy OrElse x.Invariant = Invariants.Unsupported)
+            For Each v In o.Violations.Where(Function(x) IsNoted(x.Invariant))
                 log.WriteLine("fuzz: " & v.Invariant & ", not a failure: " & o.Label & " (" & v.Solver & ", sample " & v.Sample.ToString("R", inv) & " s): " & v.Message)
             Next
         Next

@@ -37,6 +37,8 @@ Namespace Checking
                     log?.Add(c)
                 End Sub
             Dim energy = If(isEvent, New EnergyBudget(world), Nothing)
+            ' A stepping solver cannot follow a spring beyond its stability limit: blowing up there is the method's, not a fault.
+            Dim unstable = If(Not isEvent AndAlso world.Solver.TimeStep.HasValue, StepStability.BeyondLimit(world, world.Solver.TimeStep.Value), Nothing)
             Dim clock = Stopwatch.StartNew()
             Dim seen As New HashSet(Of String)(StringComparer.Ordinal)
             Dim report =
@@ -64,6 +66,12 @@ Namespace Checking
                     stopped = True
                     Exit For
                 Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
+                    If unstable IsNot Nothing Then
+                        report(Invariants.Unstable, t, "blew up (" & ex.GetType().Name & ") between t = " & world.Time.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s and t = " &
+                            t.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s: " & unstable)
+                        stopped = True
+                        Exit For
+                    End If
                     report(Invariants.Crash, t, ex.GetType().Name & " between t = " & world.Time.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s and t = " &
                         t.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s: " & OneLine(ex.Message))
                     stopped = True
@@ -71,7 +79,11 @@ Namespace Checking
                 End Try
                 Dim notFinite = StateChecks.NotFinite(world)
                 If notFinite IsNot Nothing Then
-                    report(Invariants.NotFinite, t, notFinite)
+                    If unstable IsNot Nothing Then
+                        report(Invariants.Unstable, t, "blew up (" & notFinite & "): " & unstable)
+                    Else
+                        report(Invariants.NotFinite, t, notFinite)
+                    End If
                     stopped = True
                     Exit For
                 End If
