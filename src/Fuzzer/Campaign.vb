@@ -30,7 +30,7 @@ Friend Module Campaign
                     outcomes(index) = outcome
                     SyncLock log
                         For Each v In outcome.Violations
-                            log.WriteLine(If(v.Invariant = Invariants.Heavy, "HEAVY ", "FAIL ") & outcome.Label & " " & v.ToString())
+                            log.WriteLine(LinePrefix(v.Invariant) & outcome.Label & " " & v.ToString())
                         Next
                     End SyncLock
                 End Sub)
@@ -127,6 +127,17 @@ Friend Module Campaign
         Return New RunPlan(plan.Time, v.Sample, 0, plan.Cap)
     End Function
 
+    ''' <summary>Heavy, unsupported and unstable runs are noted, not failures (see <see cref="Invariants"/>).</summary>
+    Friend Function IsNoted(invariant As String) As Boolean
+        Return invariant = Invariants.Heavy OrElse invariant = Invariants.Unsupported OrElse invariant = Invariants.Unstable
+    End Function
+
+    ''' <summary>How a line starts: FAIL, or HEAVY, UNSUPPORTED or UNSTABLE for a run that is noted.</summary>
+    Friend Function LinePrefix(invariant As String) As String
+        If IsNoted(invariant) Then Return invariant.ToUpperInvariant() & " "
+        Return "FAIL "
+    End Function
+
     Private Sub Summarize(options As FuzzOptions, result As CampaignResult, log As TextWriter)
         Dim inv = CultureInfo.InvariantCulture
         Dim failures = result.Failures()
@@ -136,8 +147,8 @@ Friend Module Campaign
         log.WriteLine("fuzz: " & what & ", solvers " & String.Join(",", options.Solvers) & ", kinds " & BodyKindNames.Format(options.Kinds) & ": " &
             runs.ToString(inv) & " scene runs in " & result.ElapsedSeconds.ToString("0.0", inv) & " s")
         For Each o In result.Outcomes
-            For Each v In o.Violations.Where(Function(x) x.Invariant = Invariants.Heavy)
-                log.WriteLine("fuzz: heavy, not a failure: " & o.Label & " (" & v.Solver & ", sample " & v.Sample.ToString("R", inv) & " s): " & v.Message)
+            For Each v In o.Violations.Where(Function(x) IsNoted(x.Invariant))
+                log.WriteLine("fuzz: " & v.Invariant & ", not a failure: " & o.Label & " (" & v.Solver & ", sample " & v.Sample.ToString("R", inv) & " s): " & v.Message)
             Next
         Next
         If failures.Count = 0 Then

@@ -2,12 +2,14 @@ Option Strict On
 
 Namespace Checking
     ''' <summary>
-    ''' Kinetic plus potential energy (Σ ½ m v² + m g y over movable circles, J) may never grow when e ≤ 1:
-    ''' nothing in the model adds energy. Two allowances, both far below a real leak:
+    ''' Kinetic plus potential energy (Σ ½ m v² + m g y over every movable body, circle, box or polygon, at its
+    ''' centre of mass, plus Σ ½ k x² over springs, J) may never grow when e ≤ 1: nothing in the model adds
+    ''' energy. Two allowances, both far below a real leak:
     ''' <list type="bullet">
-    ''' <item>Rounding: 1e-9 of the energy's scale (the sum of the magnitudes of every body's kinetic and
-    ''' potential energy at the start, so a scene whose total is near zero, with walls off and balls below
-    ''' y = 0, still has a scale). Each collision rounds each velocity to about 1e-16 relative; the engine's
+    ''' <item>Rounding: 1e-9 of the energy's scale (the sum of the magnitudes of every movable body's kinetic
+    ''' and potential energy and every spring's stored energy at the start, so a scene whose total is near
+    ''' zero, with walls off and bodies below y = 0, still has a scale). The scale counts what the total
+    ''' counts: a scene of boxes and springs has as much rounding as one of balls. Each collision rounds each velocity to about 1e-16 relative; the engine's
     ''' own invariant tests see about 1e-12 of the energy over thousands of collisions. A real leak, such as
     ''' lifting a ball by a step's penetration without paying for it, is 1e-3 of that ball's energy.</item>
     ''' <item>The overlaps a scene may start with: the format accepts 1e-9 m, and pushing such an overlap
@@ -26,10 +28,12 @@ Namespace Checking
             If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
             _start = Total(world)
             Dim scale = 0.0, lift = 0.0
-            For Each c In world.Circles
-                If c.IsFixed Then Continue For
-                scale += c.KineticEnergy + c.Mass * world.Gravity * Math.Abs(c.Position.Y)
-                lift += c.Mass * world.Gravity * StateChecks.Tolerance
+            For Each b In world.Movables
+                scale += b.KineticEnergy + b.Mass * world.Gravity * Math.Abs(b.CentreOfMass.Y)
+                lift += b.Mass * world.Gravity * StateChecks.Tolerance
+            Next
+            For Each l In world.Links
+                scale += l.StoredEnergy
             Next
             _allowed = RelativeTolerance * scale + lift
         End Sub
@@ -57,7 +61,7 @@ Namespace Checking
                 " J; allowed " & StateChecks.Brief(_allowed) & " J)"
         End Function
 
-        ''' <summary>Kinetic plus potential energy of the movable circles, J, as the command line's summary gives it.</summary>
+        ''' <summary>Kinetic plus potential energy of the movable bodies and springs, J, as the command line's summary gives it.</summary>
         Friend Shared Function Total(world As World) As Double
             Return world.KineticEnergy() + world.PotentialEnergy()
         End Function

@@ -39,6 +39,24 @@ Namespace Checking
         ''' stops there and is reported as heavy, with its figures.
         ''' </summary>
         Friend Const Heavy As String = "heavy"
+        ''' <summary>
+        ''' Not a failure: the solver refused the scene with <see cref="UnsupportedSceneException"/>, the plain
+        ''' sentence it gives for what it does not yet follow (docs/links.md: a box or polygon coming to rest on
+        ''' anything but the floor in a scene with links; rods or strings that hold a body in more ways than it
+        ''' can move), and put the world back exactly as it was before the advance, as it promises. A refusal that
+        ''' leaves the world changed is an <see cref="Crash"/>. The run stops there and is reported as unsupported.
+        ''' </summary>
+        Friend Const Unsupported As String = "unsupported"
+
+        ''' <summary>
+        ''' Not a failure: a stepping-solver run that blew up (a thrown exception, or positions or velocities no
+        ''' longer finite) in a scene with a spring beyond the method's stability limit, ω h ≥ 2 (see
+        ''' <see cref="StepStability"/>). No explicit step of that size can follow the spring. The run stops there and
+        ''' is reported as unstable, with the spring's figures; the same outcome with every spring within the limit
+        ''' is still a failure.
+        ''' </summary>
+        Friend Const Unstable As String = "unstable"
+
         ''' <summary>Collisions per wall-clock second a heavy run keeps up at least: a tenth of the gas's rate.</summary>
         Friend Const HeavyCollisionRate As Double = 100000.0
         ''' <summary>Solver events per collision a heavy run makes at most (the gas makes about 1.3).</summary>

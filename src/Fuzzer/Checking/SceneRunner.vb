@@ -37,6 +37,8 @@ Namespace Checking
                     log?.Add(c)
                 End Sub
             Dim energy = If(isEvent, New EnergyBudget(world), Nothing)
+            ' A stepping solver cannot follow a spring beyond its stability limit: blowing up there is the method's, not a fault.
+            Dim unstable = If(Not isEvent AndAlso world.Solver.TimeStep.HasValue, StepStability.BeyondLimit(world, world.Solver.TimeStep.Value), Nothing)
             Dim clock = Stopwatch.StartNew()
             Dim seen As New HashSet(Of String)(StringComparer.Ordinal)
             Dim report =
@@ -47,9 +49,29 @@ Namespace Checking
                 End Function
             Dim stopped = False
             For Each t In SampleClock.Times(total, sample)
+                Dim before = New WorldSnapshot(world)
                 Try
                     world.Advance(t - world.Time)
+                Catch ex As UnsupportedSceneException
+                    ' The engine's documented refusal (a plain sentence, the world put back as it was before the
+                    ' advance): not a failure when the world really is as it was; the run ends there.
+                    Dim changed = before.FirstDifference(world)
+                    If changed Is Nothing Then
+                        report(Invariants.Unsupported, t, "refused between t = " & world.Time.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s and t = " &
+                            t.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s: " & OneLine(ex.Message))
+                    Else
+                        report(Invariants.Crash, t, "UnsupportedSceneException between t = " & before.Time.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s and t = " &
+                            t.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s, but the world was not put back as it was: " & changed & " (" & OneLine(ex.Message) & ")")
+                    End If
+                    stopped = True
+                    Exit For
                 Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException
+                    If unstable IsNot Nothing Then
+                        report(Invariants.Unstable, t, "blew up (" & ex.GetType().Name & ") between t = " & world.Time.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s and t = " &
+                            t.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s: " & unstable)
+                        stopped = True
+                        Exit For
+                    End If
                     report(Invariants.Crash, t, ex.GetType().Name & " between t = " & world.Time.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s and t = " &
                         t.ToString("R", Globalization.CultureInfo.InvariantCulture) & " s: " & OneLine(ex.Message))
                     stopped = True
@@ -57,7 +79,11 @@ Namespace Checking
                 End Try
                 Dim notFinite = StateChecks.NotFinite(world)
                 If notFinite IsNot Nothing Then
-                    report(Invariants.NotFinite, t, notFinite)
+                    If unstable IsNot Nothing Then
+                        report(Invariants.Unstable, t, "blew up (" & notFinite & "): " & unstable)
+                    Else
+                        report(Invariants.NotFinite, t, notFinite)
+                    End If
                     stopped = True
                     Exit For
                 End If

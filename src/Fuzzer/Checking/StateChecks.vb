@@ -13,24 +13,26 @@ Namespace Checking
         ''' </summary>
         Friend Const Tolerance As Double = 0.000000001
 
-        ''' <summary>The first movable circle whose position or velocity is NaN or infinite.</summary>
+        ''' <summary>The first movable body (circle, box or polygon) whose position or velocity is NaN or infinite.</summary>
         Friend Function NotFinite(world As World) As String
-            For Each c In world.Circles
-                If c.IsFixed Then Continue For
+            For Each c In world.Movables
                 If Not c.Position.IsFinite OrElse Not c.Velocity.IsFinite Then Return c.Id & " is at " & c.Position.ToString() & " moving at " & c.Velocity.ToString()
             Next
             Return Nothing
         End Function
 
-        ''' <summary>With walls on: the movable circle furthest outside the container, when one is out by more than <see cref="Tolerance"/>.</summary>
+        ''' <summary>
+        ''' With walls on: the movable body furthest outside the container, when one is out by more than
+        ''' <see cref="Tolerance"/> (a circle by its centre and radius, a box or polygon by its bounds).
+        ''' </summary>
         Friend Function Outside(world As World) As String
             If Not world.Walls Then Return Nothing
             Dim worst = Tolerance
             Dim found As String = Nothing
-            For Each c In world.Circles
-                If c.IsFixed Then Continue For
-                Dim p = c.Position, r = c.Radius
-                Dim beyond = {r - p.X, p.X + r - world.Width, r - p.Y, p.Y + r - world.Height}
+            For Each c In world.Movables
+                Dim p = c.Position
+                Dim lo = c.BoundsMin, hi = c.BoundsMax
+                Dim beyond = {-lo.X, hi.X - world.Width, -lo.Y, hi.Y - world.Height}
                 Dim sides = {"the left wall", "the right wall", "the floor", "the top"}
                 For k = 0 To 3
                     If beyond(k) > worst Then

@@ -32,6 +32,10 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ' Two sharp shapes touching: how many steps (of the speed bound alone) to spend looking for the gap to
     ' open before searching for the overlap to grow instead.
     Private Const SharpOpeningBudget As Integer = 64
+    ' Predictions look to their horizon whatever the advance's end, and are kept from one advance to the
+    ' next: a search that began at an advance's end, or stopped there, would find a contact at a time a few
+    ' ulps off the one a longer advance finds, so a run would depend on how it is cut into advances.
+    Private Const Unbounded As Double = Double.PositiveInfinity
 
     Private ReadOnly _impulse As New LinkedImpulse()
     Private _world As World
@@ -71,7 +75,10 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     ''' <summary>Advances exactly <paramref name="duration"/> s and writes every body's state back.</summary>
     Friend Sub Advance(duration As Double)
-        If _dirty OrElse _now <> _world.Time Then Rebuild()
+        If _dirty OrElse _now <> _world.Time Then
+            Rebuild()
+            PredictAll(Unbounded)
+        End If
         Dim positions = _bodies.Select(Function(b) b.Position).ToArray()
         Dim velocities = _bodies.Select(Function(b) b.Velocity).ToArray()
         Dim tensions = _world.Links.Select(Function(l) l.Tension).ToArray()
@@ -98,7 +105,6 @@ Partial Friend NotInheritable Class LinkedEventSolver
     End Sub
 
     Private Sub AdvanceTo(tEnd As Double)
-        PredictAll(tEnd)
         Dim instant = 0
         Dim lastTime = Double.NaN
         Do
@@ -116,10 +122,10 @@ Partial Friend NotInheritable Class LinkedEventSolver
             End If
             _now = t
             Select Case kind
-                Case 0 : TransitionOf(i, t, tEnd)
-                Case 1 : Collide(i, j, WallSide.None, -1, t, tEnd)
-                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, tEnd)
-                Case Else : Collide(i, -1, WallSide.None, j, t, tEnd)
+                Case 0 : TransitionOf(i, t, Unbounded)
+                Case 1 : Collide(i, j, WallSide.None, -1, t, Unbounded)
+                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded)
+                Case Else : Collide(i, -1, WallSide.None, j, t, Unbounded)
             End Select
         Loop
         _now = tEnd
@@ -396,11 +402,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' is searched with the bound from below alone (<see cref="OneSidedAdvancement"/>) when
     ''' <paramref name="oneSided"/>, else with <see cref="ConservativeAdvancement"/>. +∞ for none; a search that
     ''' ran out of its budget returns where it stopped, to be taken up again from there.
+    ''' An opening searched for step by step counts only before the overlap could have grown by the slop:
+    ''' a body pressed into another (a ball pulled onto a peg it sits on) would otherwise be "opened" on the
+    ''' far side, after passing right through it, and the contact between never looked for.
     ''' </summary>
     Private Shared Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean) As Double
         Dim n As Vector, rate As Double
         Dim d = gap.GapAndNormal(t0, n, rate)
-        Dim tolerance = 0.0
         If d <= Slop Then
             If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
             ' Leaving at rate ḋ, the gap is at least d + ḋ s − ½ A s² (A the bound from below): where that
@@ -411,22 +419,29 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 t0 += opens
             Else
                 ' Too slow to show it opening from the bound below (a body sliding along a face, or resting):
-                ' look for the opening step by step, with the bound from above; two sharp shapes have none,
-                ' so briefly, with the speed alone.
+                ' look for the opening step by step, with the bound from above, until the overlap could have
+                ' grown by the slop; two sharp shapes have no such bound, so briefly, with the speed alone.
+                Dim sinks = Closing(gap, t0, tEnd, Math.Min(d, 0) - Slop, speed, below, above, oneSided)
+                Dim limit = If(sinks.Found, sinks.Time, sinks.ClearUntil)
                 Dim sharp = Double.IsPositiveInfinity(above)
-                Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, tEnd, 0, speed, above, If(sharp, SharpOpeningBudget, 100000))
-                If opened.Found Then
-                    t0 = opened.Time
-                ElseIf opened.ClearUntil < tEnd AndAlso Not sharp Then
-                    Return opened.ClearUntil
-                Else
-                    tolerance = Math.Min(d, 0) - Slop
-                End If
+                Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, limit, 0, speed, above, If(sharp, SharpOpeningBudget, 100000))
+                If Not opened.Found Then Return If(opened.ClearUntil < limit AndAlso Not sharp, opened.ClearUntil, Finding(sinks, tEnd))
+                t0 = opened.Time
             End If
         End If
-        Dim result = If(oneSided,
-                        OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, below),
-                        ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, above))
+        Return Finding(Closing(gap, t0, tEnd, 0, speed, below, above, oneSided), tEnd)
+    End Function
+
+    ''' <summary>The search for the gap closing to −<paramref name="tolerance"/> (m), one- or two-sided (see <see cref="FirstContact"/>).</summary>
+    Private Shared Function Closing(gap As LinkedGap, t0 As Double, tEnd As Double, tolerance As Double, speed As Double,
+                                    below As Double, above As Double, oneSided As Boolean) As AdvancementResult
+        Return If(oneSided,
+                  OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, below),
+                  ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, above))
+    End Function
+
+    ''' <summary>A search's answer as a time: when it found the contact, where it stopped short of <paramref name="tEnd"/> (to be taken up again), or +∞.</summary>
+    Private Shared Function Finding(result As AdvancementResult, tEnd As Double) As Double
         If result.Found Then Return result.Time
         If result.ClearUntil < tEnd Then Return result.ClearUntil
         Return Double.PositiveInfinity
@@ -538,13 +553,16 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' A contact after which neither body rests (<see cref="RestingMotion"/>), yet one would bounce less than
     ''' four slops high across a contact that gravity presses on: it is coming to rest where no rule here holds
     ''' it. The series of ever smaller bounces has a finite sum but endless terms; it is refused, in words that
-    ''' say what was coming to rest on what, rather than followed into a pile-up of events. Balls among balls,
-    ''' walls and fixed bodies (curves they roll off) are followed as they always were.
+    ''' say what was coming to rest on what, rather than followed into a pile-up of events. Balls among balls
+    ''' and against walls are followed as they always were; a ball on a fixed body, see <see cref="RefuseBallRest"/>.
     ''' </summary>
     Private Sub RefuseRest(i As Integer, j As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
         If _restOn(i) IsNot Nothing OrElse (j >= 0 AndAlso _restOn(j) IsNot Nothing) Then Return
         Dim a = _bodies(i)
-        If a.Kind = ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind = ShapeKind.Circle OrElse other.IsFixed) Then Return
+        If a.Kind = ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind = ShapeKind.Circle OrElse other.IsFixed) Then
+            RefuseBallRest(i, other, side, normal, relativeAfter)
+            Return
+        End If
         If other Is Nothing AndAlso side <> WallSide.Bottom Then Return
         ' How hard their motions press them together: two bodies falling freely together do not press at all,
         ' and part after a gentle touch in finitely many events.
@@ -564,6 +582,28 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim flight = TryCast(MotionOf(k), FlightMotion)
         Return If(flight IsNot Nothing, flight.Acceleration, New Vector(0, -_world.Gravity))
     End Function
+
+    ''' <summary>
+    ''' Ball i, after a contact with a fixed body below it (or, as a body with links, with the floor) that left
+    ''' it resting on nothing (a curve, a corner, or with links that do not let it rest), would bounce less
+    ''' than four slops high: it is coming to rest where no rule holds it. The bounces would never end, each
+    ''' pressing a slop further in (a ball on a peg beside a pendulum: 40 000 collisions per simulated second,
+    ''' sinking 40 μm a second). Refused, as for boxes. Balls on movable balls and against walls other than
+    ''' the floor are left as they are.
+    ''' </summary>
+    Private Sub RefuseBallRest(i As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
+        Dim links = _groups(_groupOf(i)).Links
+        If other Is Nothing Then
+            If side <> WallSide.Bottom OrElse links.Count = 0 Then Return
+        ElseIf Not other.IsFixed Then
+            Return
+        End If
+        ' The normal points from the ball to what it hits: gravity presses it in only when that is below it.
+        Dim pressing = -_world.Gravity * normal.Y
+        If pressing <= 0 Then Return
+        If Vector.Dot(relativeAfter, normal) > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
+        Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(i), links, other, Nothing, normal))
+    End Sub
 
     ''' <summary>Predicts again from now the one contact of body i with body j, wall <paramref name="side"/> or fixed body f.</summary>
     Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)

@@ -1,0 +1,127 @@
+Option Strict On
+Imports PhysicsEngine
+Imports Xunit
+
+Namespace EventDriven
+    ''' <summary>
+    ''' Contacts of bodies that start touching, and bodies coming to rest, in a scene with links, in the event
+    ''' solver. A touching pair that does not approach collides when it has pressed 10⁻⁹ m into the other
+    ''' (docs/links.md, section 4). The search for the gap opening first must stop there: further on, a ball
+    ''' that went right through a small peg has the gap open on the far side, and a search that took that as
+    ''' the opening never looked for the contact between. A ball coming to rest on a fixed body is refused
+    ''' (only the floor has a rest rule there), with the world put back as it was.
+    ''' </summary>
+    Public Class LinkedTouchingTests
+        Private Const G As Double = 9.81
+        ''' <summary>How far a touching pair presses in before it collides, m (docs/links.md).</summary>
+        Private Const Press As Double = 0.000000001
+
+        ''' <summary>
+        ''' No gravity; a ball (radius 5 mm, 0.01 kg) at rest touching a fixed peg (radius 1 mm) on its right, on a
+        ''' spring of rest length 0 (k = 1 N/m) to a point 1.006 m to the left, through the peg's centre. The spring
+        ''' pulls the ball straight into the peg: x(t) = x₀ cos ωt about the anchor, ω = √(k/m) = 10 rad/s. Passing
+        ''' right through the peg would take about 16 ms, well within one advance.
+        ''' </summary>
+        <Theory>
+        <InlineData(0.1)>
+        <InlineData(0.01)>
+        Public Sub BallPulledIntoAPegItTouches_FirstHitsItWhenPressed1e9mIn_NotAfterPassingThrough(advance As Double)
+            Dim w As New World(10, 10, 0, 0.5)
+            w.Solver = SolverFactory.Create("event")
+            Dim peg = Circle.CreateFixed(New Vector(3, 5), 0.001, "peg")
+            w.Add(peg)
+            Dim ball As New Circle(New Vector(3 + 0.001 + 0.005, 5), 0.005, 0.01, Vector.Zero, "ball")
+            w.Add(ball)
+            w.Add(Link.CreateSpring(ball, New Vector(2, 5), 1.0, 0))
+            Dim first As CollisionRecord = Nothing
+            Dim seen = False
+            w.CollisionListener = Sub(c)
+                                      If seen Then Return
+                                      first = c
+                                      seen = True
+                                  End Sub
+            w.Advance(advance)
+            Assert.True(seen, "no collision")
+            Assert.Same(ball, first.A)
+            Assert.Same(peg, first.B)
+            ' x₀ − x₀ cos ωt = 1e-9 m, i.e. 2 x₀ sin²(ωt/2) = 1e-9 m: the pull it takes to press 1e-9 m in.
+            Dim x0 = 1.006, omega = 10.0
+            Dim expected = 2 / omega * Math.Asin(Math.Sqrt(Press / (2 * x0)))
+            Assert.True(Math.Abs(first.Time - expected) <= 0.00001 * expected, $"first hit at t = {first.Time} s, the closed form {expected} s")
+            Dim speed = x0 * omega * Math.Sin(omega * expected)
+            Assert.True(Math.Abs(first.AVelocityBefore.X + speed) <= 0.00001 * speed, $"hit at {first.AVelocityBefore} m/s, the closed form {-speed} m/s")
+            ' And it is still on the peg's right, not through it.
+            Assert.True(ball.Position.X > peg.Position.X, $"the ball is at {ball.Position}, beyond the peg at {peg.Position}")
+        End Sub
+
+        ''' <summary>A world 10 m square with a pendulum hanging still at its right, so that it has links.</summary>
+        Private Shared Function WithPendulum(restitution As Double) As World
+            Dim w As New World(10, 10, G, restitution)
+            w.Solver = SolverFactory.Create("event")
+            Dim bob As New Circle(New Vector(8, 8), 0.05, 1, Vector.Zero, "bob")
+            w.Add(bob)
+            w.Add(Link.CreateTie(LinkKind.Rod, bob, New Vector(8, 9), 1))
+            Return w
+        End Function
+
+        <Fact>
+        Public Sub BallBouncingToRestOnAPegTop_BouncesAsTheSeriesSays_ThenIsRefused_WithTheWorldAsItWas()
+            ' Dropped 0.2 m straight onto the top of a fixed peg with e = 0.5: it hits at √(2 g h) and each rebound
+            ' is e times the last (the normal is vertical, so it stays on the vertical through the peg's centre).
+            ' A ball rests only on flat faces in a scene with links (a curve holds it only balanced on its top), so
+            ' it is refused when a rebound would rise less than four slops (v² < 8 g 1e-9 m), not left to bounce
+            ' for ever a nanometre deeper each time.
+            Const E As Double = 0.5, H As Double = 0.2
+            Dim w = WithPendulum(E)
+            w.Add(Circle.CreateFixed(New Vector(3, 2.5), 0.5, "peg"))
+            Dim ball As New Circle(New Vector(3, 3 + 0.1 + H), 0.1, 1, Vector.Zero, "ball")
+            w.Add(ball)
+            Dim speeds As New List(Of Double)
+            w.CollisionListener = Sub(c)
+                                      If c.A Is ball Then speeds.Add(c.AVelocityAfter.Y)
+                                  End Sub
+            Dim refused As UnsupportedSceneException = Nothing
+            Dim before As Vector = Nothing, beforeVelocity As Vector = Nothing, beforeTime = 0.0
+            For k = 1 To 40
+                before = ball.Position
+                beforeVelocity = ball.Velocity
+                beforeTime = w.Time
+                Try
+                    w.Advance(0.1)
+                Catch ex As UnsupportedSceneException
+                    refused = ex
+                    Exit For
+                End Try
+            Next
+            Assert.NotNull(refused)
+            Assert.Contains("a ball 'ball' come to rest on a fixed circle 'peg'", refused.Message, StringComparison.Ordinal)
+            ' The world as it was before the refused advance, to the bit.
+            Assert.Equal(beforeTime, w.Time)
+            Assert.Equal(before, ball.Position)
+            Assert.Equal(beforeVelocity, ball.Velocity)
+            ' Every rebound reported before that was e times the one before, from e √(2 g h).
+            Assert.True(speeds.Count >= 5, $"{speeds.Count} rebounds")
+            ' (The collisions of the refused advance are not reported: it is undone.) None of them was refused
+            ' early: each rose more than four slops.
+            Dim rebound = E * Math.Sqrt(2 * G * H)
+            For Each v In speeds
+                Assert.True(Math.Abs(v - rebound) <= 0.000001 * Math.Sqrt(2 * G * H), $"rebound at {v} m/s, the series {rebound} m/s")
+                Assert.True(v * v >= 8 * G * Press, $"a rebound at {v} m/s was reported, yet rises less than four slops")
+                rebound *= E
+            Next
+        End Sub
+
+        <Fact>
+        Public Sub FreeBallBouncingToRestOnTheFloor_BesideAPendulum_IsNotRefused()
+            ' The floor has its rest rule: the ball ends exactly on it, at rest, and nothing is refused.
+            Dim w = WithPendulum(0.5)
+            Dim ball As New Circle(New Vector(3, 0.1 + 0.2), 0.1, 1, Vector.Zero, "ball")
+            w.Add(ball)
+            For k = 1 To 30
+                w.Advance(0.1)
+            Next
+            Assert.Equal(0.1, ball.Position.Y, 12)
+            Assert.Equal(0.0, ball.Velocity.Y)
+        End Sub
+    End Class
+End Namespace

@@ -1,0 +1,84 @@
+Option Strict On
+Imports PhysicsEngine.Fuzzing.Checking
+Imports Xunit
+
+''' <summary>
+''' The checks on scenes with boxes, polygons and links: the energy budget counts what the energy counts
+''' (every movable body and every spring), the state checks look at boxes as well as balls, and a refusal
+''' is told from a failure by the world being put back exactly as it was.
+''' </summary>
+Public Class ShapeAndLinkChecksTests
+    Private Shared Function Box(Optional walls As Boolean = True) As World
+        Return New World(4.0, 3.0, 9.81, 1.0, walls)
+    End Function
+
+    <Fact>
+    Public Sub EnergyBudget_OfABoxOnASpring_IsABillionthOfItsEnergyPlusItsLift()
+        Dim w = Box()
+        ' A 2 kg box 1 m up (centre of mass at y = 1.1 m) moving at 3 m/s, on a spring stretched 0.5 m (k = 40 N/m).
+        Dim b = Rectangle.CreateMovable(New Vector(1, 1), 0.2, 0.2, 2.0, New Vector(3, 0), "b")
+        w.Add(b)
+        w.Add(Link.CreateSpring(b, New Vector(1.1, 2.6), 40, 1.0))
+        Dim kinetic = 0.5 * 2.0 * 9.0
+        Dim potential = 2.0 * 9.81 * 1.1
+        Dim spring = 0.5 * 40 * 0.5 * 0.5
+        Dim budget As New EnergyBudget(w)
+        Assert.Equal(kinetic + potential + spring, budget.Start, 12)
+        Dim expected = EnergyBudget.RelativeTolerance * (kinetic + potential + spring) + 2.0 * 9.81 * StateChecks.Tolerance
+        Assert.True(Math.Abs(budget.Allowed - expected) <= 0.000000000001 * expected, $"allowed {budget.Allowed} J, expected {expected} J")
+        ' Growth within the allowance passes; twice the allowance fails.
+        b.Velocity = New Vector(Math.Sqrt(3 * 3 + 2 * 0.5 * budget.Allowed / 2.0), 0)
+        Assert.Null(budget.Check(w))
+        b.Velocity = New Vector(Math.Sqrt(3 * 3 + 2 * 2 * budget.Allowed / 2.0), 0)
+        Assert.Contains("energy grew", budget.Check(w), StringComparison.Ordinal)
+    End Sub
+
+    <Fact>
+    Public Sub NotFiniteAndOutside_LookAtBoxesToo()
+        Dim w = Box()
+        Dim b = Rectangle.CreateMovable(New Vector(1, 1), 0.4, 0.2, 1.0, Vector.Zero, "b")
+        w.Add(b)
+        Assert.Null(StateChecks.NotFinite(w))
+        Assert.Null(StateChecks.Outside(w))
+        b.Velocity = New Vector(Double.NaN, 0)
+        Assert.StartsWith("b ", StateChecks.NotFinite(w), StringComparison.Ordinal)
+        b.Velocity = Vector.Zero
+        b.Position = New Vector(4.0 - 0.4 + 0.0000000005, 1) ' half the tolerance past the right wall
+        Assert.Null(StateChecks.Outside(w))
+        b.Position = New Vector(1, -0.001) ' 1 mm through the floor
+        Assert.Contains("floor by 0.001", StateChecks.Outside(w), StringComparison.Ordinal)
+    End Sub
+
+    <Fact>
+    Public Sub WorldSnapshot_SeesAnyChangeToTheBit_AndNoneWhenNothingChanged()
+        Dim w = Box()
+        Dim a As New Circle(New Vector(1, 1), 0.1, 1.0, New Vector(0.5, 0), "a")
+        w.Add(a)
+        Dim snapshot As New WorldSnapshot(w)
+        Assert.Null(snapshot.FirstDifference(w))
+        a.Velocity = New Vector(Math.BitIncrement(0.5), 0)
+        Assert.Contains("a moves at", snapshot.FirstDifference(w), StringComparison.Ordinal)
+        a.Velocity = New Vector(0.5, 0)
+        a.Position = New Vector(1, Math.BitDecrement(1.0))
+        Assert.Contains("a is at", snapshot.FirstDifference(w), StringComparison.Ordinal)
+    End Sub
+
+    <Fact>
+    Public Sub ARefusedScene_IsUnsupported_NotAFailure_AndTheRunStopsThere()
+        ' A ball at rest on a table beside a pendulum: the event solver refuses it (docs/links.md), and puts the
+        ' world back as it was before the advance.
+        Const Scene As String = "{""format"": ""physics-scene/1"", ""world"": {""width"": 10, ""height"": 10, ""gravity"": 9.81, ""restitution"": 0.5, ""walls"": true}," &
+            """bodies"": [{""id"": ""r0"", ""type"": ""rectangle"", ""x"": 2, ""y"": 2, ""width"": 2, ""height"": 1}," &
+            "{""id"": ""c0"", ""type"": ""circle"", ""x"": 3, ""y"": 3.1, ""radius"": 0.1, ""mass"": 1, ""vx"": 0.1, ""vy"": 0}," &
+            "{""id"": ""bob"", ""type"": ""circle"", ""x"": 8, ""y"": 8, ""radius"": 0.05, ""mass"": 1, ""vx"": 0, ""vy"": 0}]," &
+            """links"": [{""id"": ""l1"", ""type"": ""rod"", ""a"": ""bob"", ""at"": [8, 9]}]}"
+        Dim outcome = SceneRunner.Run(Scene, "event", 1.0, 0.05, 60)
+        Dim v = Assert.Single(outcome.Violations)
+        Assert.Equal(Invariants.Unsupported, v.Invariant)
+        Assert.Contains("come to rest", v.Message, StringComparison.Ordinal)
+        Assert.False(outcome.Completed)
+        Assert.DoesNotContain(Invariants.Unsupported, Invariants.All)
+        Assert.Equal("UNSUPPORTED ", Campaign.LinePrefix(Invariants.Unsupported))
+        Assert.Equal("FAIL ", Campaign.LinePrefix(Invariants.Overlap))
+    End Sub
+End Class
