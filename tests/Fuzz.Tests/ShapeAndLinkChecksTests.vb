@@ -65,11 +65,11 @@ Public Class ShapeAndLinkChecksTests
 
     <Fact>
     Public Sub ARefusedScene_IsUnsupported_NotAFailure_AndTheRunStopsThere()
-        ' A ball at rest on a table beside a pendulum: the event solver refuses it (docs/links.md), and puts the
-        ' world back as it was before the advance.
+        ' A ball balanced on top of a fixed peg beside a pendulum: the event solver refuses it (docs/links.md: a
+        ' ball rests only on flat faces there), and puts the world back as it was before the advance.
         Const Scene As String = "{""format"": ""physics-scene/1"", ""world"": {""width"": 10, ""height"": 10, ""gravity"": 9.81, ""restitution"": 0.5, ""walls"": true}," &
-            """bodies"": [{""id"": ""r0"", ""type"": ""rectangle"", ""x"": 2, ""y"": 2, ""width"": 2, ""height"": 1}," &
-            "{""id"": ""c0"", ""type"": ""circle"", ""x"": 3, ""y"": 3.1, ""radius"": 0.1, ""mass"": 1, ""vx"": 0.1, ""vy"": 0}," &
+            """bodies"": [{""id"": ""peg"", ""type"": ""circle"", ""x"": 3, ""y"": 2.5, ""radius"": 0.5, ""fixed"": true}," &
+            "{""id"": ""c0"", ""type"": ""circle"", ""x"": 3, ""y"": 3.1, ""radius"": 0.1, ""mass"": 1, ""vx"": 0, ""vy"": 0}," &
             "{""id"": ""bob"", ""type"": ""circle"", ""x"": 8, ""y"": 8, ""radius"": 0.05, ""mass"": 1, ""vx"": 0, ""vy"": 0}]," &
             """links"": [{""id"": ""l1"", ""type"": ""rod"", ""a"": ""bob"", ""at"": [8, 9]}]}"
         Dim outcome = SceneRunner.Run(Scene, "event", 1.0, 0.05, 60)
