@@ -4,13 +4,11 @@ Option Strict On
 Friend Module GridLayout
     ''' <summary>
     ''' How many bodies a cell should hold on average: bigger cells mean fewer crossings but more
-    ''' pairs to test. Testing a whole cell's lanes at once (vectors) makes pairs cheap, so about 3
-    ''' (fewer events and, at N = 10 000, fewer cache misses than 2 or 2.5; at 4 a cell overflows its
-    ''' four lanes too often); one at a time (.NET Framework, Mono), about 1.2. Measured on the elastic
-    ''' gas (docs/benchmarks.md).
+    ''' pairs to test. Testing a whole cell's lanes at once (vectors) makes pairs cheap, so about 2;
+    ''' one at a time (.NET Framework, Mono), about 1.2. Both measured on the elastic gas.
     ''' </summary>
     Friend Function BodiesPerCell(vectorScan As Boolean) As Double
-        Return If(vectorScan, 3.0, 1.2)
+        Return If(vectorScan, 2.0, 1.2)
     End Function
 
     ''' <summary>
