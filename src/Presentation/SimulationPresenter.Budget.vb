@@ -108,22 +108,39 @@ Partial Public NotInheritable Class SimulationPresenter
     Private _costRate As Double
 
     ''' <summary>
-    ''' Counts a frame that fell short of the simulated time asked, and says so when the scene starts
-    ''' running slow (once: a burst of slow frames does not repeat the message).
+    ''' Counts a frame that fell short of the simulated time asked, and says so once time on screen has
+    ''' fallen <see cref="SlowNoticeSeconds"/> behind in one stretch of slow frames (once per stretch:
+    ''' a burst of slow frames does not repeat the message).
     ''' </summary>
     Private Sub NoteAdvance(asked As Double, done As Double)
         Dim slow = done < asked * (1 - 1.0E-9)
         If slow Then
             _SlowedFrames += 1
             _HeldBackSeconds += asked - done
+            _streakBehind += (asked - done) / Speed
+        Else
+            _streakBehind = 0
+            _streakNoticed = False
         End If
-        If slow = _IsRunningSlow Then Return
+        If slow AndAlso Not _IsRunningSlow Then Trace?.Invoke("running slow")
         _IsRunningSlow = slow
-        If slow Then
-            Trace?.Invoke("running slow")
+        If slow AndAlso Not _streakNoticed AndAlso _streakBehind >= SlowNoticeSeconds Then
+            _streakNoticed = True
             If Message <> SlowMessage Then ShowMessage(SlowMessage)
         End If
     End Sub
+
+    ''' <summary>
+    ''' How far behind the wall clock time on screen may fall in one stretch of slow frames before the
+    ''' message says so, s: a single slow frame (code compiled on its first use, another program busy
+    ''' for a moment) is not worth a message; a tenth of a second behind is about what an eye notices.
+    ''' </summary>
+    Public Const SlowNoticeSeconds As Double = 0.1
+
+    ''' <summary>Real seconds time on screen has fallen behind in the current stretch of slow frames.</summary>
+    Private _streakBehind As Double
+    ''' <summary>Whether the current stretch of slow frames has been told.</summary>
+    Private _streakNoticed As Boolean
 
     ''' <summary>The message while a scene cannot keep up with the Speed slider.</summary>
     Public Const SlowMessage As String = "This scene needs more collisions than the computer can work out in real time: time on screen runs slower than the Speed slider says."
