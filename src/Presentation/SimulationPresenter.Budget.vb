@@ -9,8 +9,11 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' unless a single instant costs more (a cascade of collisions in a pile is not cut).
     ''' </summary>
     Public Const PieceSeconds As Double = 0.0015
-    ''' <summary>The shortest piece, as a fraction of the frame's simulated time: the pieces' own cost stays small.</summary>
-    Public Const MinPieceFraction As Double = 1.0 / 256
+    ''' <summary>
+    ''' The shortest piece, as a fraction of the frame's simulated time: every piece ends with every
+    ''' body's state written back, so much shorter pieces would spend the frame on that.
+    ''' </summary>
+    Public Const MinPieceFraction As Double = 1.0 / 64
     ''' <summary>The first piece a scene is advanced by, as a fraction of the frame's simulated time (its cost is not known yet).</summary>
     Public Const FirstPieceFraction As Double = 1.0 / 8
 
