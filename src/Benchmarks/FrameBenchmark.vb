@@ -172,6 +172,7 @@ Friend Module FrameBenchmark
                 result.TargetMs = number("target_ms")
                 result.OverTargetFrames = WholeOr0(number("over_target_frames"))
                 result.SlowFrames = WholeOr0(number("slow_frames"))
+                result.LagSeconds = number("lag_s")
                 result.Bodies = WholeOr0(number("bodies"))
                 result.Links = WholeOr0(number("links"))
                 result.EnergyJoules = number("energy_j")

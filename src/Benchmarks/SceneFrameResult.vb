@@ -29,6 +29,8 @@ Friend NotInheritable Class SceneFrameResult
     Public Property OverTargetFrames As Integer
     ''' <summary>Frames in which the presenter let time on screen lag (its per-frame budget ran out).</summary>
     Public Property SlowFrames As Integer
+    ''' <summary>Simulated seconds the presenter's budget held back over the run: how far time on screen fell behind (NaN when the app did not say).</summary>
+    Public Property LagSeconds As Double = Double.NaN
     ''' <summary>Bodies, links and the moving bodies' energy (J) of the app's scene at the start, to compare with the report's.</summary>
     Public Property Bodies As Integer
     Public Property Links As Integer

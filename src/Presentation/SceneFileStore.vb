@@ -1,7 +1,6 @@
 Option Strict On
 Imports System.IO
 Imports System.Text
-Imports System.Text.RegularExpressions
 Imports PhysicsEngine.Scenes
 
 ''' <summary>
@@ -64,39 +63,17 @@ Public NotInheritable Class SceneFileStore
     Public Sub Save(world As World, path As String) Implements ISceneStore.Save
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
         If path Is Nothing Then Throw New ArgumentNullException(NameOf(path))
+        Dim text = SceneFile.Save(world)
         Try
-            SceneFile.Load(SceneFile.Save(world))
+            SceneFile.Load(text)
         Catch ex As SceneFormatException
             Throw New InvalidDataException("the scene would not open again (" & ex.Message & "), so nothing was written", ex)
         End Try
-        Dim target As String
-        Try
-            target = IO.Path.GetFullPath(path)
-        Catch ex As Exception When TypeOf ex Is ArgumentException OrElse TypeOf ex Is NotSupportedException OrElse TypeOf ex Is PathTooLongException
-            Throw New IOException("'" & path & "' is not a file name this computer accepts", ex)
-        End Try
-        Dim folder = IO.Path.GetDirectoryName(target)
-        Try
-            SceneFile.SaveFile(world, target)
-        Catch ex As UnauthorizedAccessException
-            If File.Exists(target) AndAlso (File.GetAttributes(target) And FileAttributes.ReadOnly) <> 0 Then
-                Throw New IOException("the file is read-only; nothing was written", ex)
-            End If
-            Throw New IOException("you may not write in the folder " & folder & "; nothing was written", ex)
-        Catch ex As DirectoryNotFoundException
-            Throw New IOException("the folder " & folder & " does not exist", ex)
-        Catch ex As PathTooLongException
-            Throw New IOException("the path is too long for this computer", ex)
-        Catch ex As IOException
-            ' The engine writes to a temporary file beside the target first: name the folder, not that file.
-            Throw New IOException("the folder " & folder & " would not take a new file (the system said: " & WithoutTemporaryName(ex.Message) & "); nothing was written", ex)
-        End Try
+        ' Written whole or not at all, as exports are; a failure names the folder, never the temporary file.
+        WholeFile.Write(path,
+            Sub(stream)
+                Dim bytes = New UTF8Encoding(False).GetBytes(text)
+                stream.Write(bytes, 0, bytes.Length)
+            End Sub)
     End Sub
-
-    Private Shared Function WithoutTemporaryName(message As String) As String
-        Dim text = If(message, "").Replace(vbCr, " ").Replace(vbLf, " ").Trim()
-        ' Drop the temporary file's name, quoted or not, and what is left of its quotes.
-        text = Regex.Replace(text, "\s*[""']?[^\s'""]*\.[0-9a-f]{32}\.tmp[""']?", "")
-        Return text.TrimEnd("."c, " "c, ":"c)
-    End Function
 End Class

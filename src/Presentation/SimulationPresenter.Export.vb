@@ -3,7 +3,7 @@ Imports System.IO
 
 ' The Export menu: the Bodies table, the collision log and the graph's series as CSV a spreadsheet
 ' opens as it is (see Csv), and pictures the window draws (graph, canvas) as PNG. Every file is
-' written whole or not at all (ExportFile); a failure is a message naming the file and the reason.
+' written whole or not at all (WholeFile); a failure is a message naming the file and the reason.
 Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The Export button's caption.</summary>
     Public Const ExportCaption As String = "Export ▾"
@@ -133,7 +133,7 @@ Partial Public NotInheritable Class SimulationPresenter
         If String.IsNullOrEmpty(path) Then Return
         Dim name = IO.Path.GetFileName(path)
         Try
-            ExportFile.Write(path, write)
+            WholeFile.Write(path, write)
             Emit("exported " & kind.ToString() & " " & path & " " & what)
             ShowMessage("Exported " & ExportNames(kind).TrimEnd("…"c) & " to " & name & " (" & what & ").")
         Catch ex As IOException

@@ -145,7 +145,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim target = World.Time + seconds
         Do While World.Time < target
             ' Through the frame's own path, so a scene the event solver cannot move falls back to Verlet here too.
-            AdvanceOrFallBack(ExactClock.DurationTo(World.Time, target))
+            AdvanceOrFallBack(ExactClock.DurationTo(World.Time, target), FrameBudgetSeconds)
         Loop
         Log.EndFrame()
     End Sub

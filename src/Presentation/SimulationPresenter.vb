@@ -118,16 +118,25 @@ Partial Public NotInheritable Class SimulationPresenter
         End Get
     End Property
 
-    ''' <summary>Called once per frame with the real time since the last frame, s.</summary>
+    ''' <summary>
+    ''' Called once per frame with the real time since the last frame, s. The advance keeps to the
+    ''' frame's budget (see <see cref="FrameBudgetSeconds"/>); the rest of this call's time counts as
+    ''' the frame's other work, for the next frames' budget.
+    ''' </summary>
     Public Sub Tick(realSeconds As Double)
         If Not (realSeconds > 0) OrElse Double.IsInfinity(realSeconds) Then Return
+        Dim frameStart = ClockSeconds()
+        Budget.NextFrame()
+        Dim advancing = 0.0 ' wall-clock s
         Dim dt = Math.Min(realSeconds, MaxFrameSeconds)
         If Not IsPaused Then
             Try
                 CarryTowardsCursor(dt)
                 Dim asked = dt * Speed
-                Dim done = AdvanceOrFallBack(asked)
-                NoteSlowFrames(done < asked * (1 - 1.0E-9))
+                Dim advanceStart = ClockSeconds()
+                Dim done = AdvanceWithinBudget(asked)
+                advancing = ClockSeconds() - advanceStart
+                NoteAdvance(asked, done)
             Catch ex As ArgumentException
                 Fail("The simulation stopped: " & ex.Message)
             Catch ex As InvalidOperationException
@@ -142,42 +151,25 @@ Partial Public NotInheritable Class SimulationPresenter
         FollowMomentumViews(realSeconds, Not IsPaused)
         _sinceSnapshot += realSeconds
         If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
+        Budget.AddOtherWork(ClockSeconds() - frameStart - advancing)
     End Sub
 
     ''' <summary>
-    ''' Wall-clock seconds one frame may spend advancing the world. A scene that needs millions of
-    ''' collisions per simulated second then shows slower time, and says so, instead of freezing the window.
+    ''' Advances by up to <paramref name="seconds"/> within <paramref name="wallSeconds"/> of wall-clock
+    ''' time; returns the simulated seconds done. A scene the event solver cannot yet move (a chain of
+    ''' links) is handed to the Verlet solver, with a message, and the frame carries on with it.
     ''' </summary>
-    Public Property FrameBudgetSeconds As Double = 0.04
-
-    ''' <summary>Whether the last frame fell short of the chosen speed (see <see cref="FrameBudgetSeconds"/>).</summary>
-    Public ReadOnly Property IsRunningSlow As Boolean
-
-    ''' <summary>
-    ''' Advances by up to <paramref name="seconds"/> within the frame's budget; returns the simulated
-    ''' seconds done. A scene the event solver cannot yet move (a chain of links) is handed to the
-    ''' Verlet solver, with a message, and the frame carries on with it.
-    ''' </summary>
-    Private Function AdvanceOrFallBack(seconds As Double) As Double
+    Private Function AdvanceOrFallBack(seconds As Double, wallSeconds As Double) As Double
         Try
-            Return AdvanceOnTimeline(seconds, FrameBudgetSeconds)
+            Return AdvanceOnTimeline(seconds, wallSeconds)
         Catch ex As UnsupportedSceneException
             World.Solver = Recording(SolverFactory.Create("verlet"))
             ShowMessage(OneLine(ex.Message) & " This scene now runs with the Verlet solver (fixed time step " &
                         Units.Sig(World.Solver.TimeStep.GetValueOrDefault() * 1000) & " ms), which is not exact.")
             Trace?.Invoke("solver verlet: " & OneLine(ex.Message))
-            Return AdvanceOnTimeline(seconds, FrameBudgetSeconds)
+            Return AdvanceOnTimeline(seconds, wallSeconds)
         End Try
     End Function
-
-    Private Sub NoteSlowFrames(slow As Boolean)
-        If slow = _IsRunningSlow Then Return
-        _IsRunningSlow = slow
-        If slow Then
-            ShowMessage("This scene needs more collisions than the computer can work out in real time: time on screen runs slower than the Speed slider says.")
-            Trace?.Invoke("running slow")
-        End If
-    End Sub
 
     Private Sub Fail(text As String)
         _IsPaused = True
@@ -570,5 +562,8 @@ Partial Public NotInheritable Class SimulationPresenter
         _Snapshot = TableSnapshot.Take(w, 0)
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(w.Width, w.Height))
         RememberStart()
+        ' The run's first checkpoint (the scene written out) now, as part of opening it, rather than in
+        ' its first frame: it costs about a frame's time in a scene of hundreds of bodies.
+        TryCast(w.Solver, TimelineSolver)?.CheckpointIfChanged()
     End Sub
 End Class

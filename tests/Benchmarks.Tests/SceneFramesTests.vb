@@ -14,7 +14,7 @@ Public Class SceneFramesTests
         """step_median_ms"":0.032,""step_p95_ms"":0.081,""step_max_ms"":4.131," &
         """paint_median_ms"":0.401,""paint_p95_ms"":2.251,""paint_max_ms"":6.331," &
         """total_median_ms"":0.436,""total_p95_ms"":3.998,""total_max_ms"":17.366," &
-        """target_ms"":16,""over_target_frames"":2,""slow_frames"":3}"
+        """target_ms"":16,""over_target_frames"":2,""slow_frames"":3,""lag_s"":0.125}"
 
     ' The scenes' energies at the start from their definitions, J: the cradle's first ball 1 − cos 30° m
     ' above the four others at 1.5 m (1 kg each), the rope's ten 0.2 kg balls at 4 m and three 1 kg at 0.15 m.
@@ -39,6 +39,7 @@ Public Class SceneFramesTests
         Assert.Equal(16, r.TargetMs)
         Assert.Equal(2, r.OverTargetFrames)
         Assert.Equal(3, r.SlowFrames)
+        Assert.Equal(0.125, r.LagSeconds)
         Assert.Equal(5, r.Bodies)
         Assert.Equal(5, r.Links)
         Assert.Equal(74.889290788874661, r.EnergyJoules)
@@ -113,8 +114,13 @@ Public Class SceneFramesTests
         Dim section = md.Substring(md.IndexOf("### Lesson scenes in the app", StringComparison.Ordinal))
         Assert.True(section.IndexOf("| galton |", StringComparison.Ordinal) < section.IndexOf("| cradle |", StringComparison.Ordinal))
         Assert.Contains("| galton | — | — | — | — | — | < 16 ms | — | — | not measured: the app did not finish within 5 minutes. |", section)
-        Assert.Contains("| cradle | 300 (4.95) | event | 0.03 / 0.08 / 4.13 | 0.40 / 2.25 / 6.33 | 0.44 / 4.00 / 17.37 | < 16 ms | 2 | 3 | met by 95 % of frames, not by the worst 2. |", section)
+        Assert.Contains("| cradle | 300 (4.95) | event | 0.03 / 0.08 / 4.13 | 0.40 / 2.25 / 6.33 | 0.44 / 4.00 / 17.37 | < 16 ms | 2 | 3 (0.13 s) | met by 95 % of frames, not by the worst 2. |", section)
         Assert.Contains(CradleLine, section)
+        ' A line from before the app reported the time held back has no lag beside its lagging frames.
+        Dim older = FrameBenchmark.InterpretScene(CradleLine.Replace(",""lag_s"":0.125", ""), New SceneFrameResult With {.Scene = "cradle", .ReportScene = "cradle-strings"})
+        Assert.True(Double.IsNaN(older.LagSeconds))
+        Dim olderMd = MarkdownReport.Render(SampleResults.Machine(), "full", 5, SampleResults.Scenes(), SampleResults.Results(), New FrameResult With {.Note = "mono is not installed."}, {older})
+        Assert.Contains("| < 16 ms | 2 | 3 | met by 95 % of frames", olderMd)
         ' Without scene rows (an older caller) the section is left out.
         Assert.DoesNotContain("### Lesson scenes", MarkdownReport.Render(SampleResults.Machine(), "full", 5, SampleResults.Scenes(), SampleResults.Results(), New FrameResult))
     End Sub

@@ -47,16 +47,16 @@ Public Class CsvExportTests
     End Sub
 
     <Fact>
-    Public Sub ExportFile_AFailedWrite_LeavesTheOldFileAndNoTemporary()
+    Public Sub WholeFile_AFailedWrite_LeavesTheOldFileAndNoTemporary()
         Dim folder = Path.Combine(Path.GetTempPath(), "export-" & Guid.NewGuid().ToString("N"))
         Directory.CreateDirectory(folder)
         Try
             Dim target = Path.Combine(folder, "series.csv")
-            ExportFile.Write(target, Sub(s) s.Write({65, 66}, 0, 2))
+            WholeFile.Write(target, Sub(s) s.Write({65, 66}, 0, 2))
             Assert.Equal("AB", File.ReadAllText(target))
             ' A writer that fails half-way: the old file stays as it was, and nothing else is left.
             Assert.ThrowsAny(Of InvalidOperationException)(
-                Sub() ExportFile.Write(target, Sub(s)
+                Sub() WholeFile.Write(target, Sub(s)
                                                    s.Write({67}, 0, 1)
                                                    Throw New InvalidOperationException("disk gone")
                                                End Sub))
@@ -64,7 +64,7 @@ Public Class CsvExportTests
             Assert.Single(Directory.GetFiles(folder))
             ' A folder that does not exist: a message that names it.
             Dim missing = Path.Combine(folder, "nowhere", "x.csv")
-            Dim ex = Assert.Throws(Of IOException)(Sub() ExportFile.Write(missing, Sub(s) s.WriteByte(1)))
+            Dim ex = Assert.Throws(Of IOException)(Sub() WholeFile.Write(missing, Sub(s) s.WriteByte(1)))
             Assert.Contains("nowhere", ex.Message, StringComparison.Ordinal)
             Assert.Contains("nothing was written", ex.Message, StringComparison.Ordinal)
         Finally

@@ -64,6 +64,26 @@ Public NotInheritable Class AppDriver
         If Not _controls.ContainsKey("canvas") OrElse _scale <= 0 Then Throw New InvalidOperationException("the app printed no layout" & vbLf & X.AppOutput())
     End Sub
 
+    ''' <summary>
+    ''' The control lines of the last layout the app printed: those since the "ready" before the last
+    ''' one (each layout ends with "ready"). Other trace lines can come between them (a table row the
+    ''' running scene changes, traced while the layout asks a list where its cells are), so the block is
+    ''' not cut short at the first other line; a control printed twice counts once, as printed last.
+    ''' </summary>
+    Public Function LastLayout() As List(Of String)
+        Dim lines = Me.Lines()
+        Dim lastReady = Array.LastIndexOf(lines, "ready")
+        Dim previousReady = If(lastReady > 0, Array.LastIndexOf(lines, "ready", lastReady - 1), -1)
+        Dim byName As New Dictionary(Of String, String)(StringComparer.Ordinal)
+        For Each l In lines.Skip(previousReady + 1).Take(lastReady - previousReady - 1)
+            If Not l.StartsWith("control ", StringComparison.Ordinal) Then Continue For
+            Dim name = l.Split(" "c)(1)
+            byName.Remove(name)
+            byName(name) = l
+        Next
+        Return byName.Values.ToList()
+    End Function
+
     ''' <summary>The screen rectangle of a named control, where the app last laid it out (a longer message moves the panel down).</summary>
     Public Function Control(name As String) As (X As Integer, Y As Integer, W As Integer, H As Integer)
         ReadLayout()

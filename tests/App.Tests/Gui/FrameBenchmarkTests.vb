@@ -43,6 +43,11 @@ Public Class FrameBenchmarkTests
         Assert.Equal(300, frames)
         ' Every frame advances 1/60 s unless the presenter had to let time lag (its slow frames).
         If Field(line, "slow_frames") = 0 Then Assert.Equal(frames / 60, Field(line, "simulated_s"), 3)
+        ' What the budget held back is what the frames asked for and the world did not do (both printed to 1 ms).
+        Dim lag = Field(line, "lag_s")
+        Assert.InRange(lag, 0, frames / 60)
+        Assert.InRange(frames / 60 - Field(line, "simulated_s") - lag, -0.0011, 0.0011)
+        If Field(line, "slow_frames") = 0 Then Assert.Equal(0, lag)
         For Each part In {"step", "paint", "total"}
             Dim median = Field(line, part & "_median_ms"), p95 = Field(line, part & "_p95_ms"), worst = Field(line, part & "_max_ms")
             Assert.True(median > 0 AndAlso median <= p95 AndAlso p95 <= worst, part & ": median, p95 and worst out of order in " & line)

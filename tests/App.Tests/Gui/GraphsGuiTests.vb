@@ -140,9 +140,8 @@ Public Class GraphsGuiTests
             Dim window = app.LastMatch("^window (-?\d+) (-?\d+) (\d+) (\d+)$")
             Dim right = Int(window.Groups(1).Value) + Int(window.Groups(3).Value)
             Dim side = app.Control("side")
-            Dim lines = app.Lines()
-            Dim last = Array.LastIndexOf(lines, "ready")
-            Dim graphControls = lines.Take(last).Reverse().TakeWhile(Function(l) l.StartsWith("control ", StringComparison.Ordinal) OrElse l.StartsWith("window ", StringComparison.Ordinal) OrElse l.StartsWith("view ", StringComparison.Ordinal)).
+            ' The last layout's control lines, however many other trace lines came between them.
+            Dim graphControls = app.LastLayout().
                 Select(Function(l) Regex.Match(l, "^control (graph-\S+|export) (-?\d+) (-?\d+) (\d+) (\d+) (fits|cut)$")).Where(Function(m) m.Success).ToList()
             Assert.Equal(6, graphControls.Count)
             For Each m In graphControls

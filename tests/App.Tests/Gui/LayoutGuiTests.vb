@@ -25,7 +25,7 @@ Public Class LayoutGuiTests
             Dim side = app.Control("side")
             Dim panel As New List(Of (Name As String, R As (X As Integer, Y As Integer, W As Integer, H As Integer)))
             Dim below As New List(Of String)
-            For Each line In LastLayout(app)
+            For Each line In app.LastLayout()
                 Dim m = Regex.Match(line, "^control (\S+) (-?\d+) (-?\d+) (\d+) (\d+) (fits|cut)$")
                 Dim name = m.Groups(1).Value
                 Dim r = (X:=Int(m.Groups(2).Value), Y:=Int(m.Groups(3).Value), W:=Int(m.Groups(4).Value), H:=Int(m.Groups(5).Value))
@@ -59,7 +59,7 @@ Public Class LayoutGuiTests
                 Dim r = app.ScrollIntoView(name)
                 side = app.Control("side")
                 Assert.True(r.Y >= side.Y AndAlso r.Y + r.H <= side.Y + side.H, $"{name} cannot be scrolled into view ({r.Y}, panel {side.Y} to {side.Y + side.H})")
-                Assert.True(LastLayout(app).Any(Function(l) l.StartsWith("control " & name & " ", StringComparison.Ordinal) AndAlso l.EndsWith(" fits", StringComparison.Ordinal)), $"{name}'s caption is cut off")
+                Assert.True(app.LastLayout().Any(Function(l) l.StartsWith("control " & name & " ", StringComparison.Ordinal) AndAlso l.EndsWith(" fits", StringComparison.Ordinal)), $"{name}'s caption is cut off")
             Next
             If dpi > 0 Then
                 app.WaitFor("^dpi " & dpi & " ")
@@ -114,26 +114,6 @@ Public Class LayoutGuiTests
             app.X.Shoot("scrolled-panel")
         End Using
     End Sub
-
-    ''' <summary>
-    ''' The control lines of the last layout the app printed: those since the "ready" before the last
-    ''' one (each layout ends with "ready"). Other trace lines can come between them (a table row the
-    ''' running scene changes, traced while the layout asks a list where its cells are), so the block is
-    ''' not cut short at the first other line; a control printed twice counts once, as printed last.
-    ''' </summary>
-    Private Shared Function LastLayout(app As AppDriver) As List(Of String)
-        Dim lines = app.Lines()
-        Dim lastReady = Array.LastIndexOf(lines, "ready")
-        Dim previousReady = If(lastReady > 0, Array.LastIndexOf(lines, "ready", lastReady - 1), -1)
-        Dim byName As New Dictionary(Of String, String)(StringComparer.Ordinal)
-        For Each l In lines.Skip(previousReady + 1).Take(lastReady - previousReady - 1)
-            If Not l.StartsWith("control ", StringComparison.Ordinal) Then Continue For
-            Dim name = l.Split(" "c)(1)
-            byName.Remove(name)
-            byName(name) = l
-        Next
-        Return byName.Values.ToList()
-    End Function
 
     Private Shared Function Int(text As String) As Integer
         Return Integer.Parse(text, CultureInfo.InvariantCulture)

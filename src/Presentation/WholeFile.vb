@@ -2,12 +2,12 @@ Option Strict On
 Imports System.IO
 
 ''' <summary>
-''' Writes an exported file whole or not at all: to a temporary file in the same folder, then moved
-''' over the target, so a failure (a full disk, a folder one may not write in) never leaves a
-''' half-written file. A failure is an <see cref="IOException"/> whose message says why in a
-''' teacher's words and never names the temporary file.
+''' Writes a file whole or not at all (a saved scene, an exported table or picture): to a temporary
+''' file in the same folder, then moved over the target, so a failure (a full disk, a folder one may
+''' not write in) never leaves a half-written file. A failure is an <see cref="IOException"/> whose
+''' message says why in a teacher's words, names the folder, and never names the temporary file.
 ''' </summary>
-Public NotInheritable Class ExportFile
+Public NotInheritable Class WholeFile
     Private Sub New()
     End Sub
 
