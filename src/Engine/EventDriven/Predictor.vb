@@ -174,8 +174,9 @@ Friend NotInheritable Class Predictor
             Dim sr = skip \ grid.Nx, sc = skip - sr * grid.Nx
             If sc >= c0 AndAlso sc <= c1 AndAlso sr >= r0 AndAlso sr <= r1 Then _s.CellsSearched -= 1
         End If
-        ' A body asleep, not a circle, or whose acceleration is not vertical (sliding down a slope), takes no hot path.
-        Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0 OrElse Not _s.Bodies.Info(i).IsCircle
+        ' A body asleep, not a circle (R = 0: only a circle has a rounding radius), or whose acceleration is
+        ' not vertical (sliding down a slope), takes no hot path.
+        Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0 OrElse _s.Bodies.Motion(i).R = 0
         _deferredCount = 0
 #If NET Then
         If VectorScan Then

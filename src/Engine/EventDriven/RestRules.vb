@@ -1,5 +1,7 @@
 Option Strict On
 
+Imports System.Runtime.CompilerServices
+
 ''' <summary>
 ''' How bodies come to rest (docs/event-driven.md §5–6): the end of a bounce series on a level
 ''' support, sleeping in a pile, waking, and the guards against inelastic collapse. This owns each
@@ -123,6 +125,7 @@ Friend NotInheritable Class RestRules
     ''' past it (a light body squeezed between heavy ones, a ball wedged in a narrow gap), and its
     ''' cluster of touching bodies should be resolved at once (see <see cref="ClusterResponse"/>).
     ''' </summary>
+    <MethodImpl(MethodImplOptions.AggressiveInlining)>
     Friend Function HitTooOften(i As Integer) As Boolean
         If _hits(i).SameTime = _s.Now Then
             _hits(i).SameCount += 1
