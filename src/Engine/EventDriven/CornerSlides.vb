@@ -244,7 +244,7 @@ Friend NotInheritable Class CornerSlides
     ''' tolerances short and the time a millionth short, so rounding here or in the exact test never
     ''' puts the bound after the exact time. 0 when it is already that close; +∞ when it cannot move.
     ''' </summary>
-    Private Shared Function EarliestEntry(dx As Double, dy As Double, vx As Double, vy As Double, ax As Double, ay As Double,
+    Friend Shared Function EarliestEntry(dx As Double, dy As Double, vx As Double, vy As Double, ax As Double, ay As Double,
                                           reach As Double, slop As Double) As Double
         Dim outside = Math.Sqrt(dx * dx + dy * dy) - reach - 2 * slop
         If Not (outside > 0) Then Return 0
