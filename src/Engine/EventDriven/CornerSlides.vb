@@ -206,15 +206,26 @@ Friend NotInheritable Class CornerSlides
     ''' <see cref="StillApart"/>): a conservative advancement that follows the slide exactly until k
     ''' really comes close. A body asleep counts as one at rest (a slide can run into a pile). +∞ if k
     ''' never gets there, or slides round a corner itself.
+    ''' <para>
+    ''' Also +∞ when k cannot get there before <paramref name="until"/> (s from now): the caller keeps
+    ''' only a time earlier than that, so the answer is the same. A slide round a corner wider than
+    ''' a body's reach roams (it looks at every body each time it is rescheduled), and most of those
+    ''' bodies are far away: a bound from k's speed rules them out without the quartic.
+    ''' </para>
     ''' </summary>
-    Friend Function TimeToReach(j As Integer, k As Integer) As Double
+    Friend Function TimeToReach(j As Integer, k As Integer, Optional until As Double = Double.PositiveInfinity) As Double
         Dim b = _s.Bodies
         Dim mk = b.Slot(k).Mode
         If mk = BodyMode.Rounding Then Return Double.PositiveInfinity
         Dim xk, yk, vxk, vyk As Double
         b.Motion(k).StateAt(_s.Now, xk, yk, vxk, vyk)
-        Dim disc = TimeOfImpact.CircleCircleAccelerated(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay,
-                                                        b.Info(k).Reach + _radius(j) + b.Info(j).Reach, SolverState.SlopAt(xk, yk))
+        Dim reach = b.Info(k).Reach + _radius(j) + b.Info(j).Reach ' m: the disc k enters
+        Dim slop = SolverState.SlopAt(xk, yk)
+        If until < Double.PositiveInfinity AndAlso
+           EarliestEntry(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay, reach, slop) >= until Then
+            Return Double.PositiveInfinity
+        End If
+        Dim disc = TimeOfImpact.CircleCircleAccelerated(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay, reach, slop)
         If Not (disc < Double.PositiveInfinity) Then Return disc
         Dim gap = Me.Gap(j, k)
         If gap <= Near(j, k) Then Return disc
@@ -222,6 +233,24 @@ Friend NotInheritable Class CornerSlides
         Dim accel = Math.Sqrt(b.Motion(k).Ax * b.Motion(k).Ax + b.Motion(k).Ay * b.Motion(k).Ay)
         Dim closing = 2 * gap / (speed + Math.Sqrt(speed * speed + 2 * accel * gap))
         Return Math.Max(disc, closing)
+    End Function
+
+    ''' <summary>
+    ''' A lower bound (s) on when a body at (dx, dy) from a disc's centre (m), moving at (vx, vy) (m/s)
+    ''' with acceleration (ax, ay) (m/s²), can first come within <paramref name="reach"/> m of it, as
+    ''' <see cref="TimeOfImpact.CircleCircleAccelerated"/> counts touching (within the touching
+    ''' tolerance <paramref name="slop"/>, m). Its speed is at most |v| + |a| t, so the distance beyond
+    ''' the disc closes no sooner than the root of ½|a| t² + |v| t = distance. The distance is taken two
+    ''' tolerances short and the time a millionth short, so rounding here or in the exact test never
+    ''' puts the bound after the exact time. 0 when it is already that close; +∞ when it cannot move.
+    ''' </summary>
+    Friend Shared Function EarliestEntry(dx As Double, dy As Double, vx As Double, vy As Double, ax As Double, ay As Double,
+                                          reach As Double, slop As Double) As Double
+        Dim outside = Math.Sqrt(dx * dx + dy * dy) - reach - 2 * slop
+        If Not (outside > 0) Then Return 0
+        Dim speed = Math.Sqrt(vx * vx + vy * vy)
+        Dim accel = Math.Sqrt(ax * ax + ay * ay)
+        Return (1 - 1.0E-6) * 2 * outside / (speed + Math.Sqrt(speed * speed + 2 * accel * outside))
     End Function
 
     ''' <summary>

@@ -59,7 +59,7 @@ Friend NotInheritable Class Predictor
             Dim count = _slides.Neighbours(i)
             For q = 0 To count - 1
                 Dim k = _slides.Neighbour(q)
-                Dim ts = _slides.TimeToReach(i, k)
+                Dim ts = _slides.TimeToReach(i, k, best)
                 If ts < best Then best = ts : kind = EventKind.Body : other = k
             Next
             File(i, best, kind, other, 0, Double.PositiveInfinity, 0)
@@ -518,7 +518,7 @@ Friend NotInheritable Class Predictor
         Dim b = _s.Bodies
         Dim mj = b.Slot(j).Mode
         If mj = BodyMode.Rounding Then
-            Dim ts = _slides.TimeToReach(j, i)
+            Dim ts = _slides.TimeToReach(j, i, best)
             If ts < best Then
                 best = ts
                 kind = EventKind.Body
