@@ -31,7 +31,8 @@ Namespace Checking
             Return Nothing
         End Function
 
-        Private Shared Function Same(a As Vector, b As Vector) As Boolean
+        ''' <summary>Whether two vectors are equal to the bit (the fuzzer's one rule for "the same").</summary>
+        Friend Shared Function Same(a As Vector, b As Vector) As Boolean
             Return BitConverter.DoubleToInt64Bits(a.X) = BitConverter.DoubleToInt64Bits(b.X) AndAlso
                 BitConverter.DoubleToInt64Bits(a.Y) = BitConverter.DoubleToInt64Bits(b.Y)
         End Function

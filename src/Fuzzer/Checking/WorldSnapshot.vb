@@ -32,15 +32,10 @@ Namespace Checking
             For i = 0 To _bodies.Length - 1
                 Dim b = _bodies(i)
                 If Not world.Movables(i) Is b Then Return "body " & b.Id & " is no longer where it was in the list"
-                If Not SameBits(b.Position, _positions(i)) Then Return b.Id & " is at " & b.Position.ToString() & ", not " & _positions(i).ToString()
-                If Not SameBits(b.Velocity, _velocities(i)) Then Return b.Id & " moves at " & b.Velocity.ToString() & ", not " & _velocities(i).ToString()
+                If Not FinalState.Same(b.Position, _positions(i)) Then Return b.Id & " is at " & b.Position.ToString() & ", not " & _positions(i).ToString()
+                If Not FinalState.Same(b.Velocity, _velocities(i)) Then Return b.Id & " moves at " & b.Velocity.ToString() & ", not " & _velocities(i).ToString()
             Next
             Return Nothing
-        End Function
-
-        Private Shared Function SameBits(a As Vector, b As Vector) As Boolean
-            Return BitConverter.DoubleToInt64Bits(a.X) = BitConverter.DoubleToInt64Bits(b.X) AndAlso
-                BitConverter.DoubleToInt64Bits(a.Y) = BitConverter.DoubleToInt64Bits(b.Y)
         End Function
     End Class
 End Namespace
