@@ -138,26 +138,7 @@ Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
         If _s.World Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
-        If _s.World.Links.Count > 0 Then
-            If _s.World.DraggedBody IsNot Nothing Then
-                ' A body carried by hand follows the hand, not a closed form: while it is carried the
-                ' scene is stepped (position Verlet, as the stepping solvers carry bodies), and when it
-                ' is let go the closed forms start again from the state it was left in.
-                If _carried Is Nothing Then _carried = New VerletSolver(VerletSolver.DefaultTimeStep)
-                If _carriedWorld IsNot _s.World Then
-                    _carried.Attach(_s.World)
-                    _carriedWorld = _s.World
-                End If
-                _carried.Advance(duration)
-                _linked.Invalidate()
-                _dirty = True
-                Return _s.World.Time + duration
-            End If
-            _carriedWorld = Nothing
-            _linked.Advance(duration)
-            _dirty = True
-            Return _s.World.Time + duration
-        End If
+        If _s.World.Links.Count > 0 Then Return AdvanceLinked(duration)
         If _dirty OrElse _s.Now <> _s.World.Time Then Rebuild()
         Dim tEnd = _s.World.Time + duration
         StartDrag(duration)
@@ -174,9 +155,7 @@ Public NotInheritable Class EventDrivenSolver
                 WriteBack(_s.Now)
                 Return _s.Now
             End If
-            If processed >= MaxEventsPerAdvance Then
-                Throw New InvalidOperationException($"more than {MaxEventsPerAdvance} events in one advance (t = {_s.Now} s)")
-            End If
+            If processed >= MaxEventsPerAdvance Then TooManyEvents()
             ' Advance the clock to it.
             CountInstant(t)
             _s.Now = t
@@ -196,6 +175,28 @@ Public NotInheritable Class EventDrivenSolver
         Return tEnd
     End Function
 
+    ''' <summary>A scene with links: the linked solver's closed forms, or stepping while a body is carried by hand.</summary>
+    Private Function AdvanceLinked(duration As Double) As Double
+        If _s.World.DraggedBody IsNot Nothing Then
+            ' A body carried by hand follows the hand, not a closed form: while it is carried the
+            ' scene is stepped (position Verlet, as the stepping solvers carry bodies), and when it
+            ' is let go the closed forms start again from the state it was left in.
+            If _carried Is Nothing Then _carried = New VerletSolver(VerletSolver.DefaultTimeStep)
+            If _carriedWorld IsNot _s.World Then
+                _carried.Attach(_s.World)
+                _carriedWorld = _s.World
+            End If
+            _carried.Advance(duration)
+            _linked.Invalidate()
+            _dirty = True
+            Return _s.World.Time + duration
+        End If
+        _carriedWorld = Nothing
+        _linked.Advance(duration)
+        _dirty = True
+        Return _s.World.Time + duration
+    End Function
+
     ''' <summary>
     ''' Counts the events at one instant, across advances. Touching bodies can legitimately collide
     ''' many times at one instant (a chain passing an impulse along, a light ball between heavy ones);
@@ -205,12 +206,20 @@ Public NotInheritable Class EventDrivenSolver
     Private Sub CountInstant(t As Double)
         If t = _s.Now Then
             _instantEvents += 1
-            If _instantEvents > 1_000_000L + 1000L * _s.Bodies.Count Then
-                Throw New InvalidOperationException($"the event solver could not get past t = {t} s ({_instantEvents} events at that instant)")
-            End If
+            If _instantEvents > 1_000_000L + 1000L * _s.Bodies.Count Then StuckAt(t)
         Else
             _instantEvents = 0
         End If
+    End Sub
+
+    ''' <summary>More events in one advance than any scene should need: the run cannot go on.</summary>
+    Private Sub TooManyEvents()
+        Throw New InvalidOperationException($"more than {MaxEventsPerAdvance} events in one advance (t = {_s.Now} s)")
+    End Sub
+
+    ''' <summary>Too many events at one instant: the run cannot go on (thrown apart so CountInstant stays small).</summary>
+    Private Sub StuckAt(t As Double)
+        Throw New InvalidOperationException($"the event solver could not get past t = {t} s ({_instantEvents} events at that instant)")
     End Sub
 
     Private Sub RescheduleTouched()

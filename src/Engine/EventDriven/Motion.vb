@@ -35,7 +35,13 @@ Friend Structure Motion
     ''' <summary>Moves the reference time to t (s) along the path: same motion, new starting point.</summary>
     Friend Sub MoveTo(t As Double)
         If t = T0 Then Return
-        StateAt(t, Px, Py, Vx, Vy)
+        ' Through locals: passing its own fields by reference would keep the whole structure in memory.
+        Dim x, y, vx, vy As Double
+        StateAt(t, x, y, vx, vy)
+        Px = x
+        Py = y
+        Me.Vx = vx
+        Me.Vy = vy
         T0 = t
     End Sub
 End Structure

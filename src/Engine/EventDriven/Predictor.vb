@@ -1,5 +1,7 @@
 Option Strict On
 
+Imports System.Runtime.CompilerServices
+
 #If NET Then
 Imports System.Numerics
 Imports System.Runtime.Intrinsics
@@ -53,16 +55,7 @@ Friend NotInheritable Class Predictor
         Dim feature = 0
         Dim m = b.Slot(i).Mode
         If m = BodyMode.Rounding Then
-            ' Its slide ends, or a neighbour reaches the disc the sliding ball sweeps round the corner.
-            best = _slides.TimeToEnd(i)
-            kind = EventKind.CornerEnd
-            Dim count = _slides.Neighbours(i)
-            For q = 0 To count - 1
-                Dim k = _slides.Neighbour(q)
-                Dim ts = _slides.TimeToReach(i, k, best)
-                If ts < best Then best = ts : kind = EventKind.Body : other = k
-            Next
-            File(i, best, kind, other, 0, Double.PositiveInfinity, 0)
+            RescheduleSlide(i)
             Return
         End If
         Dim ay = b.Motion(i).Ay
@@ -95,19 +88,43 @@ Friend NotInheritable Class Predictor
             Dim c0, c1, r0, r1 As Integer
             ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
             ScanCells(i, c0, c1, r0, r1, -1, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+            If _deferredCount > 0 Then CheckDeferred(i, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
             If _s.OversizedCount > 0 Then CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
         Else
             For j = 0 To b.Count - 1
                 If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
             Next
         End If
-        ' A supported body reaching an end of the face it rests on.
-        If m = BodyMode.Supported AndAlso b.Support(i) >= 0 Then
-            Dim farEnd As Boolean
-            Dim t = ContactRules.TimeToLeaveFace(_s, i, b.Support(i), b.SupportEdge(i), New Vector(px, py), New Vector(vx, vy), New Vector(ax, ay), farEnd)
-            If t < best Then best = Math.Max(0, t) : kind = EventKind.LeaveSupport : other = b.Support(i) : feature = If(farEnd, 1, 0)
-        End If
+        If m = BodyMode.Supported AndAlso b.Support(i) >= 0 Then CheckLeaveFace(i, px, py, vx, vy, ax, ay, best, kind, other, feature)
         File(i, best, kind, other, feature, exitTime, dir)
+    End Sub
+
+    ''' <summary>
+    ''' Body i slides round a corner: its slide ends, or a neighbour reaches the disc the sliding ball
+    ''' sweeps round the corner. Apart from <see cref="Reschedule"/> (which runs at every collision) because it is rare.
+    ''' </summary>
+    <MethodImpl(MethodImplOptions.NoInlining)>
+    Private Sub RescheduleSlide(i As Integer)
+        Dim best = _slides.TimeToEnd(i)
+        Dim kind = EventKind.CornerEnd
+        Dim other = -1
+        Dim count = _slides.Neighbours(i)
+        For q = 0 To count - 1
+            Dim k = _slides.Neighbour(q)
+            Dim ts = _slides.TimeToReach(i, k, best)
+            If ts < best Then best = ts : kind = EventKind.Body : other = k
+        Next
+        File(i, best, kind, other, 0, Double.PositiveInfinity, 0)
+    End Sub
+
+    ''' <summary>Supported body i (at p with velocity v and acceleration a, m, m/s, m/s²) reaching an end of the face it rests on.</summary>
+    <MethodImpl(MethodImplOptions.NoInlining)>
+    Private Sub CheckLeaveFace(i As Integer, px As Double, py As Double, vx As Double, vy As Double, ax As Double, ay As Double,
+                               ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
+        Dim b = _s.Bodies
+        Dim farEnd As Boolean
+        Dim t = ContactRules.TimeToLeaveFace(_s, i, b.Support(i), b.SupportEdge(i), New Vector(px, py), New Vector(vx, vy), New Vector(ax, ay), farEnd)
+        If t < best Then best = Math.Max(0, t) : kind = EventKind.LeaveSupport : other = b.Support(i) : feature = If(farEnd, 1, 0)
     End Sub
 
     ''' <summary>
@@ -155,6 +172,7 @@ Friend NotInheritable Class Predictor
         Dim c0, c1, r0, r1 As Integer
         ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
         ScanCells(i, c0, c1, r0, r1, previous, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+        If _deferredCount > 0 Then CheckDeferred(i, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
         If _s.OversizedCount > 0 Then CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
         File(i, best, kind, other, feature, exitTime, exitDir)
     End Sub
@@ -178,16 +196,15 @@ Friend NotInheritable Class Predictor
         ' not vertical (sliding down a slope), takes no hot path.
         Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0 OrElse _s.Bodies.Motion(i).R = 0
         _deferredCount = 0
+        ' The scan is the last call (a tail call: nothing kept across it); the caller then tests what it
+        ' deferred, with CheckDeferred.
 #If NET Then
         If VectorScan Then
             ScanLanesVector(i, c0, c1, r0, r1, skip, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
-        Else
-            ScanBodies(i, c0, c1, r0, r1, skip, True, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+            Return
         End If
-#Else
-        ScanBodies(i, c0, c1, r0, r1, skip, True, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
 #End If
-        If _deferredCount > 0 Then CheckDeferred(i, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+        ScanBodies(i, c0, c1, r0, r1, skip, True, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
     End Sub
 
     ''' <summary>A pair the scan leaves to <see cref="CheckPair"/>: tested after the scan, nearest first.</summary>

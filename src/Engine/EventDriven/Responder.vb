@@ -1,5 +1,7 @@
 Option Strict On
 
+Imports System.Runtime.CompilerServices
+
 ''' <summary>
 ''' Resolving one event (docs/event-driven.md §3): bring the bodies to the event time, apply the
 ''' impulse along the contact normal (<see cref="Impulse.Resolve"/>), report it, and apply the
@@ -54,22 +56,28 @@ Friend NotInheritable Class Responder
     End Sub
 
     Private Sub CollideWall(i As Integer, side As WallSide)
-        _s.Sync(i)
+        _s.SyncUnpublished(i) ' published by CollideImmovable
         Dim m = _s.Bodies.Motion
-        Dim o = _s.Bodies.Outlines(i)
+        ' The outline's extents; a circle's are its radius (as the wall's time of impact took them).
+        Dim r = m(i).R
+        Dim minX = -r, maxX = r, minY = -r, maxY = r
+        If Not _s.Bodies.Info(i).IsCircle Then
+            Dim o = _s.Bodies.Outlines(i)
+            minX = o.MinX : maxX = o.MaxX : minY = o.MinY : maxY = o.MaxY
+        End If
         Dim n As Vector
         ' Snap onto the wall: the contact is exact, so rounding never accumulates over many bounces.
         Select Case side
-            Case WallSide.Left : n = New Vector(1, 0) : m(i).Px = -o.MinX
-            Case WallSide.Right : n = New Vector(-1, 0) : m(i).Px = _s.Width - o.MaxX
-            Case WallSide.Bottom : n = New Vector(0, 1) : m(i).Py = -o.MinY
-            Case Else : n = New Vector(0, -1) : m(i).Py = _s.Height - o.MaxY
+            Case WallSide.Left : n = New Vector(1, 0) : m(i).Px = -minX
+            Case WallSide.Right : n = New Vector(-1, 0) : m(i).Px = _s.Width - maxX
+            Case WallSide.Bottom : n = New Vector(0, 1) : m(i).Py = -minY
+            Case Else : n = New Vector(0, -1) : m(i).Py = _s.Height - maxY
         End Select
         CollideImmovable(i, n, Nothing, CollisionKinds.AgainstWall(_s.Bodies.Info(i).Kind), side, If(side = WallSide.Bottom, BodyTable.SupportFloor, BodyTable.SupportNone), -1)
     End Sub
 
     Private Sub CollideObstacle(i As Integer, s As Integer, feature As Integer)
-        _s.Sync(i)
+        _s.SyncUnpublished(i) ' published by CollideImmovable
         Dim m = _s.Bodies.Motion
         Dim n = ContactRules.NormalAtObstacle(_s, i, s, feature, m(i).Px, m(i).Py)
         ' What it could rest on: a face of the obstacle (which one, to slide along and to leave at its
@@ -88,6 +96,7 @@ Friend NotInheritable Class Responder
     Private Sub CollideImmovable(i As Integer, n As Vector, other As Shape, kind As CollisionKind, side As WallSide, support As Integer, edge As Integer,
                                  Optional curve As CurvedSupport? = Nothing)
         If _rest.HitTooOften(i) Then
+            _s.Publish(i)
             _clusters.Resolve(i)
             Return
         End If
@@ -113,12 +122,12 @@ Friend NotInheritable Class Responder
     End Sub
 
     Private Sub CollideBodies(i As Integer, j As Integer)
-        _s.Sync(i)
-        _s.Sync(j)
+        ' Published once, by Changed at the end (nothing here scans the lanes before that).
+        _s.SyncUnpublished(i)
+        _s.SyncUnpublished(j)
         Dim b = _s.Bodies
         If _rest.HitTooOften(i) Or _rest.HitTooOften(j) Then
-            ' The cluster grows from a body that can move (the other may be asleep or dragged).
-            _clusters.Resolve(If(_clusters.CanMove(i), i, j))
+            ResolveJam(i, j)
             Return
         End If
         Dim m = b.Motion
@@ -132,43 +141,75 @@ Friend NotInheritable Class Responder
         Dim invI = _rest.InverseMassFor(i, j, gentle)
         Dim invJ = _rest.InverseMassFor(j, i, gentle)
         Dim result = Impulse.Resolve(vi, invI, vj, invJ, n, _rest.EffectiveRestitution(i, j))
-        If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then
-            ' The approach was below what the velocities can resolve in floating point (after an
-            ' e = 0 contact): part them by a few slops instead, so the pair stops being "touching".
-            Dim wi = If(invI > 0 OrElse invJ = 0, 0.5, 0.0), wj = If(invJ > 0 OrElse invI = 0, 0.5, 0.0)
-            Dim sep = 4 * Math.Max(_s.SlopOf(i), _s.SlopOf(j)) / Math.Max(wi + wj, 0.5)
-            m(i).Px += n.X * sep * wi
-            m(i).Py += n.Y * sep * wi
-            m(j).Px -= n.X * sep * wj
-            m(j).Py -= n.Y * sep * wj
-        End If
+        If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then PartTouching(i, j, n, invI, invJ)
         m(i).Vx = result.A.X
         m(i).Vy = result.A.Y
         m(j).Vx = result.B.X
         m(j).Vy = result.B.Y
-        ' Publish the new courses before waking anything above (which predicts against them).
-        _s.Publish(i)
-        _s.Publish(j)
         If approach < 0 AndAlso (invI > 0 OrElse invJ > 0) Then
             _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), b.Shapes(j), WallSide.None, CollisionKinds.Between(b.Info(i).Kind, b.Info(j).Kind, False), vi, result.A, vj, result.B))
             _rest.NoteHit(i)
             _rest.NoteHit(j)
         End If
-        ' Whoever moved leaves rest; a body still asleep stays a support.
-        If result.A <> vi AndAlso b.Mode(i) <> BodyMode.Dragged Then _rest.WakeFrom(i)
-        If result.B <> vj AndAlso b.Mode(j) <> BodyMode.Dragged Then _rest.WakeFrom(j)
-        If b.Mode(i) = BodyMode.Free AndAlso invJ = 0 AndAlso b.Mode(j) <> BodyMode.Dragged Then
-            _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy, before:=vi)
-        ElseIf b.Mode(i) = BodyMode.Free Then
-            _rest.SleepIfSettled(i)
-        End If
-        If b.Mode(j) = BodyMode.Free AndAlso invI = 0 AndAlso b.Mode(i) <> BodyMode.Dragged Then
-            _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy, before:=vj)
-        ElseIf b.Mode(j) = BodyMode.Free Then
-            _rest.SleepIfSettled(j)
+        ' Two free bodies that both moved, without gravity (the elastic gas): no rest rule can apply.
+        If b.Slot(i).Mode <> BodyMode.Free OrElse b.Slot(j).Mode <> BodyMode.Free OrElse invI = 0 OrElse invJ = 0 OrElse _s.G <> 0 Then
+            RestAfterHit(i, j, n, vi, vj, result.A, result.B, invI, invJ)
         End If
         _s.Changed(i)
         _s.Changed(j)
+    End Sub
+
+    ''' <summary>
+    ''' Body i or j has been hit too often at this instant: their cluster of touching bodies is resolved
+    ''' at once (see <see cref="ClusterResponse"/>). Apart from <see cref="CollideBodies"/>, which runs at
+    ''' every collision, because it is rare.
+    ''' </summary>
+    <MethodImpl(MethodImplOptions.NoInlining)>
+    Private Sub ResolveJam(i As Integer, j As Integer)
+        _s.Publish(i)
+        _s.Publish(j)
+        ' The cluster grows from a body that can move (the other may be asleep or dragged).
+        _clusters.Resolve(If(_clusters.CanMove(i), i, j))
+    End Sub
+
+    ''' <summary>
+    ''' The rest rules after bodies i and j collided along n (towards i), their velocities going from
+    ''' vi, vj to ai, aj: whoever moved leaves rest (a body still asleep stays a support); a free body
+    ''' that hit something immovable may come to rest on it; a free body may fall asleep.
+    ''' </summary>
+    <MethodImpl(MethodImplOptions.NoInlining)>
+    Private Sub RestAfterHit(i As Integer, j As Integer, n As Vector, vi As Vector, vj As Vector, ai As Vector, aj As Vector,
+                             invI As Double, invJ As Double)
+        Dim b = _s.Bodies
+        Dim m = b.Motion
+        If ai <> vi AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then _rest.WakeFrom(i)
+        If aj <> vj AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then _rest.WakeFrom(j)
+        If b.Slot(i).Mode = BodyMode.Free AndAlso invJ = 0 AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then
+            _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy, before:=vi)
+        ElseIf b.Slot(i).Mode = BodyMode.Free Then
+            _rest.SleepIfSettled(i)
+        End If
+        If b.Slot(j).Mode = BodyMode.Free AndAlso invI = 0 AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then
+            _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy, before:=vj)
+        ElseIf b.Slot(j).Mode = BodyMode.Free Then
+            _rest.SleepIfSettled(j)
+        End If
+    End Sub
+
+    ''' <summary>
+    ''' Bodies i and j approach along n more slowly than their velocities can resolve in floating point
+    ''' (after an e = 0 contact): they are parted by a few slops instead, so the pair stops being
+    ''' "touching". Kept out of <see cref="CollideBodies"/>, which runs at every collision, because it is rare.
+    ''' </summary>
+    <MethodImpl(MethodImplOptions.NoInlining)>
+    Private Sub PartTouching(i As Integer, j As Integer, n As Vector, invI As Double, invJ As Double)
+        Dim m = _s.Bodies.Motion
+        Dim wi = If(invI > 0 OrElse invJ = 0, 0.5, 0.0), wj = If(invJ > 0 OrElse invI = 0, 0.5, 0.0)
+        Dim sep = 4 * Math.Max(_s.SlopOf(i), _s.SlopOf(j)) / Math.Max(wi + wj, 0.5)
+        m(i).Px += n.X * sep * wi
+        m(i).Py += n.Y * sep * wi
+        m(j).Px -= n.X * sep * wj
+        m(j).Py -= n.Y * sep * wj
     End Sub
 
     ''' <summary>

@@ -85,12 +85,12 @@ Friend NotInheritable Class RestRules
     ''' </summary>
     Friend Function InverseMassFor(i As Integer, partner As Integer, gentle As Boolean) As Double
         Dim b = _s.Bodies
-        Dim mode = b.Mode(i)
+        Dim mode = b.Slot(i).Mode
         Select Case mode
             Case BodyMode.Dragged
                 Return 0
             Case BodyMode.Sleeping, BodyMode.Supported
-                If b.Mode(partner) = BodyMode.Free Then
+                If b.Slot(partner).Mode = BodyMode.Free Then
                     ' Only a sleeper (which never moves) may take a blow from above as the ground does:
                     ' treating a moving body as immovable can trap a ball in a cycle of instantaneous hits.
                     Dim dy = b.Motion(partner).Py - b.Motion(i).Py

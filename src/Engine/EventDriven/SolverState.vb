@@ -80,6 +80,16 @@ Friend NotInheritable Class SolverState
         Publish(i)
     End Sub
 
+    ''' <summary>
+    ''' As <see cref="Sync"/>, without publishing: for a collision that ends in <see cref="Changed"/>
+    ''' (which publishes), so that each body's lane is written once. Its lane lags until then, so
+    ''' nothing may scan the lanes in between.
+    ''' </summary>
+    Friend Sub SyncUnpublished(i As Integer)
+        If Now = Bodies.Motion(i).T0 OrElse Bodies.Slot(i).Mode = BodyMode.Rounding Then Return
+        Bodies.Motion(i).MoveTo(Now)
+    End Sub
+
     ''' <summary>Moves gridded body i to the cell at (col, row), if it is not there already, and publishes it there.</summary>
     Friend Sub MoveToCell(i As Integer, col As Integer, row As Integer)
         Dim cell = row * Grid.Nx + col
