@@ -16,6 +16,9 @@ Imports System.Runtime.Intrinsics
 ''' </summary>
 Friend NotInheritable Class Predictor
     Private ReadOnly _s As SolverState
+    ' The state's body table and grid (each made once with it), held here too: one load fewer on every read.
+    Private ReadOnly _bodies As BodyTable
+    Private ReadOnly _grid As UniformGrid
     Private ReadOnly _slides As CornerSlides
     ''' <summary>Scratch list of the bodies of one cell being tested one by one.</summary>
     Private _scanList As Integer() = Array.Empty(Of Integer)()
@@ -34,6 +37,8 @@ Friend NotInheritable Class Predictor
 
     Friend Sub New(state As SolverState, slides As CornerSlides)
         _s = state
+        _bodies = state.Bodies
+        _grid = state.Grid
         _slides = slides
     End Sub
 
@@ -48,7 +53,7 @@ Friend NotInheritable Class Predictor
 
     ''' <summary>Recomputes body i's next event at the solver's clock and files it in the queue.</summary>
     Friend Sub Reschedule(i As Integer)
-        Dim b = _s.Bodies
+        Dim b = _bodies
         Dim best = Double.PositiveInfinity
         Dim kind = EventKind.None
         Dim other = -1
@@ -74,8 +79,8 @@ Friend NotInheritable Class Predictor
                 ' An obstacle is listed in every cell within half a cell of it, so the body's own cell
                 ' suffices, and only until it leaves the cell: the next cell's obstacles are tested then.
                 Dim c = b.Slot(i).Cell
-                For s = _s.Grid.StaticStart(c) To _s.Grid.StaticStart(c + 1) - 1
-                    CheckObstacle(i, _s.Grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
+                For s = _grid.StaticStart(c) To _grid.StaticStart(c + 1) - 1
+                    CheckObstacle(i, _grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
                 Next
             Else
                 For s = 0 To _s.Obstacles.Count - 1
@@ -121,7 +126,7 @@ Friend NotInheritable Class Predictor
     <MethodImpl(MethodImplOptions.NoInlining)>
     Private Sub CheckLeaveFace(i As Integer, px As Double, py As Double, vx As Double, vy As Double, ax As Double, ay As Double,
                                ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
-        Dim b = _s.Bodies
+        Dim b = _bodies
         Dim farEnd As Boolean
         Dim t = ContactRules.TimeToLeaveFace(_s, i, b.Support(i), b.SupportEdge(i), New Vector(px, py), New Vector(vx, vy), New Vector(ax, ay), farEnd)
         If t < best Then best = Math.Max(0, t) : kind = EventKind.LeaveSupport : other = b.Support(i) : feature = If(farEnd, 1, 0)
@@ -133,7 +138,7 @@ Friend NotInheritable Class Predictor
     ''' its new stretch of path except the one it came from, are searched (docs/event-driven.md §4).
     ''' </summary>
     Friend Sub CrossCell(i As Integer)
-        Dim b = _s.Bodies
+        Dim b = _bodies
         Dim dir = b.Slot(i).CellDir
         Dim col = b.Slot(i).Col, row = b.Slot(i).Row
         Select Case dir
@@ -165,8 +170,8 @@ Friend NotInheritable Class Predictor
         Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, exitDir)
         If m = BodyMode.Free OrElse m = BodyMode.Supported Then
             If _s.Walls AndAlso AlongWall(i) Then CheckWalls(i, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0), px, py, vx, vy, ay, r, best, kind, feature)
-            For s = _s.Grid.StaticStart(target) To _s.Grid.StaticStart(target + 1) - 1
-                CheckObstacle(i, _s.Grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
+            For s = _grid.StaticStart(target) To _grid.StaticStart(target + 1) - 1
+                CheckObstacle(i, _grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
             Next
         End If
         Dim c0, c1, r0, r1 As Integer
@@ -184,7 +189,7 @@ Friend NotInheritable Class Predictor
     Private Sub ScanCells(i As Integer, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, skip As Integer, asleep As Boolean,
                           px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                           ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim grid = _s.Grid
+        Dim grid = _grid
         Dim c0 = Math.Max(0, col0), c1 = Math.Min(grid.Nx - 1, col1)
         Dim r0 = Math.Max(0, row0), r1 = Math.Min(grid.Ny - 1, row1)
         _s.CellsSearched += (c1 - c0 + 1) * (r1 - r0 + 1)
@@ -194,7 +199,7 @@ Friend NotInheritable Class Predictor
         End If
         ' A body asleep, not a circle (R = 0: only a circle has a rounding radius), or whose acceleration is
         ' not vertical (sliding down a slope), takes no hot path.
-        Dim slowOnly = asleep OrElse _s.Bodies.Motion(i).Ax <> 0 OrElse _s.Bodies.Motion(i).R = 0
+        Dim slowOnly = asleep OrElse _bodies.Motion(i).Ax <> 0 OrElse _bodies.Motion(i).R = 0
         _deferredCount = 0
         ' The scan is the last call (a tail call: nothing kept across it); the caller then tests what it
         ' deferred, with CheckDeferred.
@@ -225,7 +230,7 @@ Friend NotInheritable Class Predictor
     Private Sub CheckDeferred(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
                               ay As Double, r As Double, slop As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         If _deferredCount = 0 Then Return
-        Dim b = _s.Bodies
+        Dim b = _bodies
         Dim ax = b.Motion(i).Ax
         Dim reachI = b.Info(i).Reach
         Dim now = _s.Now
@@ -279,11 +284,11 @@ Friend NotInheritable Class Predictor
     Private Sub ScanBodies(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, withLanes As Boolean,
                            slowOnly As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                            ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim grid = _s.Grid
+        Dim grid = _grid
         Dim count = grid.Count, laneBody = grid.LaneBody, nx = grid.Nx, listed = _scanList
-        Dim motion = _s.Bodies.Motion, slot = _s.Bodies.Slot
+        Dim motion = _bodies.Motion, slot = _bodies.Slot
         Dim now = _s.Now
-        Dim asleep = _s.Bodies.Slot(i).Mode = BodyMode.Sleeping
+        Dim asleep = _bodies.Slot(i).Mode = BodyMode.Sleeping
         For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
                 If cell = skip Then Continue For
@@ -352,11 +357,11 @@ Friend NotInheritable Class Predictor
     Private Sub ScanLanesVector(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, slowOnly As Boolean,
                                 px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                                 ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
-        Dim grid = _s.Grid
+        Dim grid = _grid
         Dim blocks = grid.Blocks, count = grid.Count, laneBody = grid.LaneBody, overflow = grid.OverflowHead
         Dim nx = grid.Nx
         Dim now = _s.Now
-        Dim asleep = _s.Bodies.Slot(i).Mode = BodyMode.Sleeping
+        Dim asleep = _bodies.Slot(i).Mode = BodyMode.Sleeping
         Dim vNow = Vector256.Create(now)
         Dim vPx = Vector256.Create(px), vPy = Vector256.Create(py)
         Dim vVx = Vector256.Create(vx), vVy = Vector256.Create(vy)
@@ -433,7 +438,7 @@ Friend NotInheritable Class Predictor
     ''' <summary>Files body i's next collision-type event and its next cell exit (times from now, s).</summary>
     Private Sub File(i As Integer, dt As Double, kind As EventKind, other As Integer, feature As Integer,
                      exitDt As Double, exitDir As Integer)
-        Dim slot = _s.Bodies.Slot
+        Dim slot = _bodies.Slot
         Dim now = _s.Now
         slot(i).Kind = kind
         slot(i).Other = other
@@ -444,7 +449,7 @@ Friend NotInheritable Class Predictor
         slot(i).CellDir = exitDir
         _s.Queue.Update(i, Math.Min(slot(i).ColTime, slot(i).CellTime))
         ' Only the time: its motion was published when it last changed (see SolverState.Changed).
-        _s.Grid.PublishColTime(i, slot(i).ColTime)
+        _grid.PublishColTime(i, slot(i).ColTime)
     End Sub
 
     ''' <summary>
@@ -453,9 +458,9 @@ Friend NotInheritable Class Predictor
     ''' Tested before the call, which most bodies, far from the walls, are spared.
     ''' </summary>
     Private Function AlongWall(i As Integer) As Boolean
-        Dim slot = _s.Bodies.Slot
+        Dim slot = _bodies.Slot
         Dim col = slot(i).Col, row = slot(i).Row
-        Return slot(i).Cell < 0 OrElse col = 0 OrElse row = 0 OrElse col = _s.Grid.Nx - 1 OrElse row = _s.Grid.Ny - 1
+        Return slot(i).Cell < 0 OrElse col = 0 OrElse row = 0 OrElse col = _grid.Nx - 1 OrElse row = _grid.Ny - 1
     End Function
 
     ''' <summary>
@@ -468,13 +473,13 @@ Friend NotInheritable Class Predictor
     ''' </summary>
     Private Sub CheckWalls(i As Integer, vertical As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
                            r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef feature As Integer)
-        Dim b = _s.Bodies
+        Dim b = _bodies
         Dim slot = b.Slot
         Dim ax = b.Motion(i).Ax
         Dim all = slot(i).Cell < 0
         Dim col = slot(i).Col, row = slot(i).Row
-        Dim atLeft = all OrElse col = 0, atRight = all OrElse col = _s.Grid.Nx - 1
-        Dim atBottom = vertical AndAlso (all OrElse row = 0), atTop = vertical AndAlso (all OrElse row = _s.Grid.Ny - 1)
+        Dim atLeft = all OrElse col = 0, atRight = all OrElse col = _grid.Nx - 1
+        Dim atBottom = vertical AndAlso (all OrElse row = 0), atTop = vertical AndAlso (all OrElse row = _grid.Ny - 1)
         If Not (atLeft OrElse atRight OrElse atBottom OrElse atTop) Then Return
         ' The outline's extents; a circle's are its radius (read from the motion, not the outline object).
         Dim minX = -r, maxX = r, minY = -r, maxY = r
@@ -510,7 +515,7 @@ Friend NotInheritable Class Predictor
                               slop As Double, until As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
         ' Sliding on a face of a convex body, it can meet that body again only where the face ends,
         ' which is its own event (LeaveSupport).
-        If _s.Bodies.Support(i) = s AndAlso _s.Bodies.Slot(i).Mode = BodyMode.Supported Then Return
+        If _bodies.Support(i) = s AndAlso _bodies.Slot(i).Mode = BodyMode.Supported Then Return
         Dim f As Integer
         Dim t = ContactRules.TimeToObstacle(_s, i, s, px, py, vx, vy, ax, ay, slop, Math.Min(best, until), f)
         If t < best Then best = t : kind = EventKind.Obstacle : other = s : feature = f
@@ -532,7 +537,7 @@ Friend NotInheritable Class Predictor
     Private Sub CheckPair(i As Integer, j As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
                           ay As Double, r As Double, slop As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer,
                           Optional until As Double = Double.PositiveInfinity)
-        Dim b = _s.Bodies
+        Dim b = _bodies
         Dim mj = b.Slot(j).Mode
         If mj = BodyMode.Rounding Then
             Dim ts = _slides.TimeToReach(j, i, best)
@@ -564,9 +569,9 @@ Friend NotInheritable Class Predictor
     ''' </summary>
     Private Sub ReachOfPath(i As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                             span As Double, ByRef c0 As Integer, ByRef c1 As Integer, ByRef r0 As Integer, ByRef r1 As Integer)
-        Dim slot = _s.Bodies.Slot
-        Dim grid = _s.Grid
-        Dim ax = _s.Bodies.Motion(i).Ax
+        Dim slot = _bodies.Slot
+        Dim grid = _grid
+        Dim ax = _bodies.Motion(i).Ax
         Dim col = slot(i).Col, row = slot(i).Row
         c0 = col - 1 : c1 = col + 1 : r0 = row - 1 : r1 = row + 1
         If vx = 0 AndAlso vy = 0 AndAlso ay = 0 AndAlso ax = 0 Then span = 0 ' at rest: its path is a point
@@ -576,7 +581,7 @@ Friend NotInheritable Class Predictor
         ' A body sliding round a corner is listed where it started the slide but can reach 3 r_max
         ' beyond; the margin covers rounding and the touching tolerance.
         ' A circle's reach is its radius (R > 0 only for a circle), read from the motion already at hand.
-        Dim reach = If(r > 0, r, _s.Bodies.Info(i).Reach) + If(_s.Bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
+        Dim reach = If(r > 0, r, _bodies.Info(i).Reach) + If(_bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
         ' Written so that NaN keeps the neighbour.
         If xlo - reach >= col * grid.CellWidth Then c0 = col
         If xhi + reach <= (col + 1) * grid.CellWidth Then c1 = col
@@ -594,9 +599,9 @@ Friend NotInheritable Class Predictor
     Private Function CellExit(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
                               ByRef dir As Integer) As Double
         Dim best = Double.PositiveInfinity
-        Dim slot = _s.Bodies.Slot
-        Dim grid = _s.Grid
-        Dim ax = _s.Bodies.Motion(i).Ax
+        Dim slot = _bodies.Slot
+        Dim grid = _grid
+        Dim ax = _bodies.Motion(i).Ax
         Dim cell = slot(i).Cell
         If cell < 0 OrElse asleep OrElse (vx = 0 AndAlso vy = 0 AndAlso ay = 0 AndAlso ax = 0) Then Return best
         Dim col = slot(i).Col, row = slot(i).Row

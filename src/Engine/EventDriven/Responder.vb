@@ -10,12 +10,15 @@ Imports System.Runtime.CompilerServices
 ''' </summary>
 Friend NotInheritable Class Responder
     Private ReadOnly _s As SolverState
+    ' The state's body table (made once with it), held here too: one load fewer on every read.
+    Private ReadOnly _bodies As BodyTable
     Private ReadOnly _rest As RestRules
     Private ReadOnly _slides As CornerSlides
     Private ReadOnly _clusters As ClusterResponse
 
     Friend Sub New(state As SolverState, rest As RestRules, slides As CornerSlides)
         _s = state
+        _bodies = state.Bodies
         _rest = rest
         _slides = slides
         _clusters = New ClusterResponse(state, rest)
@@ -23,7 +26,7 @@ Friend NotInheritable Class Responder
 
     ''' <summary>Resolves body i's collision-type event, which is due now.</summary>
     Friend Sub Resolve(i As Integer)
-        Dim slot = _s.Bodies.Slot
+        Dim slot = _bodies.Slot
         Select Case slot(i).Kind
             Case EventKind.Body
                 Dim j = slot(i).Other
@@ -57,12 +60,12 @@ Friend NotInheritable Class Responder
 
     Private Sub CollideWall(i As Integer, side As WallSide)
         _s.SyncUnpublished(i) ' published by CollideImmovable
-        Dim m = _s.Bodies.Motion
+        Dim m = _bodies.Motion
         ' The outline's extents; a circle's are its radius (as the wall's time of impact took them).
         Dim r = m(i).R
         Dim minX = -r, maxX = r, minY = -r, maxY = r
-        If Not _s.Bodies.Info(i).IsCircle Then
-            Dim o = _s.Bodies.Outlines(i)
+        If Not _bodies.Info(i).IsCircle Then
+            Dim o = _bodies.Outlines(i)
             minX = o.MinX : maxX = o.MaxX : minY = o.MinY : maxY = o.MaxY
         End If
         Dim n As Vector
@@ -73,19 +76,19 @@ Friend NotInheritable Class Responder
             Case WallSide.Bottom : n = New Vector(0, 1) : m(i).Py = -minY
             Case Else : n = New Vector(0, -1) : m(i).Py = _s.Height - maxY
         End Select
-        CollideImmovable(i, n, Nothing, CollisionKinds.AgainstWall(_s.Bodies.Info(i).Kind), side, If(side = WallSide.Bottom, BodyTable.SupportFloor, BodyTable.SupportNone), -1)
+        CollideImmovable(i, n, Nothing, CollisionKinds.AgainstWall(_bodies.Info(i).Kind), side, If(side = WallSide.Bottom, BodyTable.SupportFloor, BodyTable.SupportNone), -1)
     End Sub
 
     Private Sub CollideObstacle(i As Integer, s As Integer, feature As Integer)
         _s.SyncUnpublished(i) ' published by CollideImmovable
-        Dim m = _s.Bodies.Motion
+        Dim m = _bodies.Motion
         Dim n = ContactRules.NormalAtObstacle(_s, i, s, feature, m(i).Px, m(i).Py)
         ' What it could rest on: a face of the obstacle (which one, to slide along and to leave at its
         ' ends), or a rounded corner (a fixed circle, a rectangle's corner), which holds only from right above.
         Dim edge = ContactRules.FaceOf(_s, i, s, feature)
         Dim curve = ContactRules.CurveAt(_s, i, s, feature)
         Dim support = If(edge >= 0, s, If(curve.HasValue, BodyTable.SupportBody, BodyTable.SupportNone))
-        CollideImmovable(i, n, _s.Obstacles.Shapes(s), CollisionKinds.Between(_s.Bodies.Info(i).Kind, _s.Obstacles.Kind(s), True), WallSide.None, support, edge, curve)
+        CollideImmovable(i, n, _s.Obstacles.Shapes(s), CollisionKinds.Between(_bodies.Info(i).Kind, _s.Obstacles.Kind(s), True), WallSide.None, support, edge, curve)
     End Sub
 
     ''' <summary>
@@ -100,7 +103,7 @@ Friend NotInheritable Class Responder
             _clusters.Resolve(i)
             Return
         End If
-        Dim b = _s.Bodies
+        Dim b = _bodies
         Dim before = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
         Dim approach = Vector.Dot(before, n)
         Dim after = Impulse.Resolve(before, 1.0, Vector.Zero, 0.0, n, _s.E).A
@@ -125,7 +128,7 @@ Friend NotInheritable Class Responder
         ' Published once, by Changed at the end (nothing here scans the lanes before that).
         _s.SyncUnpublished(i)
         _s.SyncUnpublished(j)
-        Dim b = _s.Bodies
+        Dim b = _bodies
         If _rest.HitTooOften(i) Or _rest.HitTooOften(j) Then
             ResolveJam(i, j)
             Return
@@ -180,7 +183,7 @@ Friend NotInheritable Class Responder
     <MethodImpl(MethodImplOptions.NoInlining)>
     Private Sub RestAfterHit(i As Integer, j As Integer, n As Vector, vi As Vector, vj As Vector, ai As Vector, aj As Vector,
                              invI As Double, invJ As Double)
-        Dim b = _s.Bodies
+        Dim b = _bodies
         Dim m = b.Motion
         If ai <> vi AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then _rest.WakeFrom(i)
         If aj <> vj AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then _rest.WakeFrom(j)
@@ -203,7 +206,7 @@ Friend NotInheritable Class Responder
     ''' </summary>
     <MethodImpl(MethodImplOptions.NoInlining)>
     Private Sub PartTouching(i As Integer, j As Integer, n As Vector, invI As Double, invJ As Double)
-        Dim m = _s.Bodies.Motion
+        Dim m = _bodies.Motion
         Dim wi = If(invI > 0 OrElse invJ = 0, 0.5, 0.0), wj = If(invJ > 0 OrElse invI = 0, 0.5, 0.0)
         Dim sep = 4 * Math.Max(_s.SlopOf(i), _s.SlopOf(j)) / Math.Max(wi + wj, 0.5)
         m(i).Px += n.X * sep * wi
@@ -220,7 +223,7 @@ Friend NotInheritable Class Responder
     ''' </summary>
     Private Sub LeaveSupport(i As Integer, s As Integer, farEnd As Boolean)
         _s.Sync(i)
-        Dim b = _s.Bodies
+        Dim b = _bodies
         Dim k = _s.Shapes.Difference(_s.Obstacles.Outlines(s), b.Outlines(i))
         Dim e = b.SupportEdge(i)
         Dim c = If(farEnd, (e + 1) Mod k.VertexCount, e)
