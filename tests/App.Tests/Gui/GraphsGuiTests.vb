@@ -49,7 +49,7 @@ Public Class GraphsGuiTests
                 app.WaitFor("^ready$", skip:=from)
                 Thread.Sleep(1500) ' a second and a half of the gas on the energy graph
                 app.X.Shoot("graphs-energy")
-                app.ClickAndWait("graph-speeds", "^graph SpeedHistogram$")
+                app.ClickAndWaitRepeatable("graph-speeds", "^graph SpeedHistogram$", attempts:=3)
                 Dim shown = app.WaitFor("^graph: SpeedHistogram \|.* \| total (\d+) \|", timeout:=TimeSpan.FromSeconds(10))
                 Assert.Equal(1000, Int(shown.Groups(1).Value))
                 Thread.Sleep(500)
@@ -83,7 +83,7 @@ Public Class GraphsGuiTests
 
                 ' The pressure after some seconds of gas, and large fonts for the back of the room.
                 app.ClickAndWait("pause", "^resumed")
-                app.ClickAndWait("graph-pressure", "^graph Pressure$")
+                app.ClickAndWaitRepeatable("graph-pressure", "^graph Pressure$", attempts:=3)
                 app.WaitFor("^graph: Pressure \|.*measured over ", timeout:=TimeSpan.FromSeconds(20))
                 Thread.Sleep(3000)
                 app.X.Shoot("graphs-pressure")
@@ -98,7 +98,7 @@ Public Class GraphsGuiTests
                 app.WaitFor("^large fonts on$", skip:=from)
                 app.WaitFor("^ready$", skip:=from)
                 app.ReadLayout()
-                app.ClickAndWait("graph-speeds", "^graph SpeedHistogram$")
+                app.ClickAndWaitRepeatable("graph-speeds", "^graph SpeedHistogram$", attempts:=3)
                 Thread.Sleep(800)
                 app.X.Shoot("graphs-speeds-large")
                 ' Its own window, for the projector.

@@ -36,6 +36,34 @@ Public Class KeyboardGuiTests
         TypeEverywhere(CrashProne(throughLauncher:=False), rounds:=3)
     End Sub
 
+    ''' <summary>
+    ''' Types the accented text and keys into box i, and returns what the box then shows. The app must
+    ''' survive every key. xdotool types a character the keyboard map lacks by remapping a spare key
+    ''' for a moment, which a heavily loaded machine can race (a character lost or doubled), so the
+    ''' box is given up to 5 s to show the text, and is typed into again (up to three times in all)
+    ''' when it does not.
+    ''' </summary>
+    Private Shared Function TypeAccents(app As AppDriver, i As Integer) As String
+        Dim shown = ""
+        For attempt = 1 To 3
+            app.Click(Boxes(i))
+            app.X.XDo("key", "ctrl+a")
+            app.X.XDo("key", "BackSpace")
+            app.X.XDo("type", "--delay", "20", "--", "é€ß²µ§àçù")
+            For Each k In FrenchKeys
+                app.X.XDo("key", k)
+            Next
+            Dim clock = Diagnostics.Stopwatch.StartNew()
+            Do
+                Thread.Sleep(150)
+                Assert.True(app.X.AppIsRunning, "the app died typing in " & Boxes(i) & vbLf & app.X.AppOutput())
+                shown = app.Inputs()(Fields(i))
+                If shown.StartsWith("é€ß²µ§àçù", StringComparison.Ordinal) AndAlso shown.Contains("éèàçù", StringComparison.Ordinal) Then Return shown
+            Loop While clock.Elapsed < TimeSpan.FromSeconds(5)
+        Next
+        Return shown
+    End Function
+
     Private Shared Sub TypeEverywhere(options As XSessionOptions, rounds As Integer)
         Dim folder = IO.Path.Combine(IO.Path.GetTempPath(), "gui-kbd-" & Guid.NewGuid().ToString("N"))
         IO.Directory.CreateDirectory(folder)
@@ -44,16 +72,7 @@ Public Class KeyboardGuiTests
                 app.WaitFor("^keyboard xim disabled, locale C.UTF-8$")
                 For round = 1 To rounds
                     For i = 0 To Boxes.Length - 1
-                        app.Click(Boxes(i))
-                        app.X.XDo("key", "ctrl+a")
-                        app.X.XDo("key", "BackSpace")
-                        app.X.XDo("type", "--delay", "20", "--", "é€ß²µ§àçù")
-                        For Each k In FrenchKeys
-                            app.X.XDo("key", k)
-                        Next
-                        Thread.Sleep(150)
-                        Assert.True(app.X.AppIsRunning, "the app died typing in " & Boxes(i) & vbLf & app.X.AppOutput())
-                        Dim shown = app.Inputs()(Fields(i))
+                        Dim shown = TypeAccents(app, i)
                         Assert.StartsWith("é€ß²µ§àçù", shown, StringComparison.Ordinal)
                         Assert.Contains("éèàçù", shown, StringComparison.Ordinal)
                     Next
