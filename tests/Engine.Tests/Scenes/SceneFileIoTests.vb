@@ -39,7 +39,9 @@ Public Class SceneFileIoTests
     <Fact>
     Public Sub SaveFile_IntoAMissingFolder_Throws_AndWritesNothing()
         Dim target = Path.Combine(_folder, "no-such-folder", "scene.json")
-        Assert.ThrowsAny(Of IOException)(Sub() SceneFile.SaveFile(Scenarios.Demo(), target))
+        Dim ex = Assert.Throws(Of IOException)(Sub() SceneFile.SaveFile(Scenarios.Demo(), target))
+        Assert.Contains(Path.Combine(_folder, "no-such-folder"), ex.Message, StringComparison.Ordinal)
+        Assert.Contains("nothing was written", ex.Message, StringComparison.Ordinal)
         Assert.Empty(Directory.GetFileSystemEntries(_folder))
     End Sub
 
