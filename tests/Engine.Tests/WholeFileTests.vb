@@ -9,22 +9,15 @@ Imports Xunit
 ''' temporary file.
 ''' </summary>
 Public Class WholeFileTests
-    Implements IDisposable
-
-    Private ReadOnly _folder As String = Path.Combine(Path.GetTempPath(), "whole-file-" & Guid.NewGuid().ToString("N"))
+    Inherits TempFolderTests
 
     Public Sub New()
-        Directory.CreateDirectory(_folder)
-    End Sub
-
-    Public Sub Dispose() Implements IDisposable.Dispose
-        Directory.Delete(_folder, True)
-        GC.SuppressFinalize(Me)
+        MyBase.New("whole-file-")
     End Sub
 
     <Fact>
     Public Sub AFailedWrite_LeavesTheOldFileAndNoTemporary()
-        Dim target = Path.Combine(_folder, "series.csv")
+        Dim target = Path.Combine(Folder, "series.csv")
         WholeFile.Write(target, Sub(s) s.Write({65, 66}, 0, 2))
         Assert.Equal("AB", File.ReadAllText(target))
         ' A writer that fails half-way: the old file stays as it was, and nothing else is left.
@@ -34,56 +27,56 @@ Public Class WholeFileTests
                                                Throw New InvalidOperationException("disk gone")
                                            End Sub))
         Assert.Equal("AB", File.ReadAllText(target))
-        Assert.Single(Directory.GetFiles(_folder))
+        Assert.Single(Directory.GetFiles(Folder))
     End Sub
 
     <Fact>
     Public Sub AFailedWrite_OfANewFile_LeavesNothing()
-        Dim target = Path.Combine(_folder, "picture.png")
+        Dim target = Path.Combine(Folder, "picture.png")
         Assert.ThrowsAny(Of InvalidOperationException)(
             Sub() WholeFile.Write(target, Sub(s)
                                                s.WriteByte(1)
                                                Throw New InvalidOperationException("encoder gone")
                                            End Sub))
-        Assert.Empty(Directory.GetFileSystemEntries(_folder))
+        Assert.Empty(Directory.GetFileSystemEntries(Folder))
     End Sub
 
     <Fact>
     Public Sub ASecondWrite_ReplacesTheFirst_Whole()
-        Dim target = Path.Combine(_folder, "scene.json")
+        Dim target = Path.Combine(Folder, "scene.json")
         WholeFile.Write(target, Sub(s) s.Write({65, 66, 67, 68, 69, 70}, 0, 6))
         WholeFile.Write(target, Sub(s) s.Write({71, 72}, 0, 2))
         Assert.Equal("GH", File.ReadAllText(target))
-        Assert.Single(Directory.GetFiles(_folder))
+        Assert.Single(Directory.GetFiles(Folder))
     End Sub
 
     <Fact>
     Public Sub IntoAMissingFolder_TheMessageNamesIt_AndNothingIsWritten()
-        Dim missing = Path.Combine(_folder, "nowhere", "x.csv")
+        Dim missing = Path.Combine(Folder, "nowhere", "x.csv")
         Dim ex = Assert.Throws(Of IOException)(Sub() WholeFile.Write(missing, Sub(s) s.WriteByte(1)))
         Assert.Contains("nowhere", ex.Message, StringComparison.Ordinal)
         Assert.Contains("nothing was written", ex.Message, StringComparison.Ordinal)
-        Assert.Empty(Directory.GetFileSystemEntries(_folder))
+        Assert.Empty(Directory.GetFileSystemEntries(Folder))
     End Sub
 
     <Fact>
     Public Sub OverAFolderOfTheSameName_TheMessageNamesTheFolder_NotTheTemporaryFile_AndTheFolderIsKept()
-        Dim target = Path.Combine(_folder, "taken")
+        Dim target = Path.Combine(Folder, "taken")
         Directory.CreateDirectory(target)
         File.WriteAllText(Path.Combine(target, "inside.txt"), "kept")
         Dim ex = Assert.Throws(Of IOException)(Sub() WholeFile.Write(target, Sub(s) s.WriteByte(1)))
-        Assert.Contains(_folder, ex.Message, StringComparison.Ordinal)
+        Assert.Contains(Folder, ex.Message, StringComparison.Ordinal)
         Assert.Contains("nothing was written", ex.Message, StringComparison.Ordinal)
         Assert.DoesNotContain(".tmp", ex.Message, StringComparison.Ordinal)
         Assert.Equal("kept", File.ReadAllText(Path.Combine(target, "inside.txt")))
-        Assert.Equal({target}, Directory.GetFileSystemEntries(_folder))
+        Assert.Equal({target}, Directory.GetFileSystemEntries(Folder))
     End Sub
 
     <Fact>
     Public Sub ANameNoFileCanHave_IsRefusedInPlainWords()
-        Dim bad = _folder & Path.DirectorySeparatorChar & "a" & ChrW(0) & "b.csv"
+        Dim bad = Folder & Path.DirectorySeparatorChar & "a" & ChrW(0) & "b.csv"
         Dim ex = Assert.Throws(Of IOException)(Sub() WholeFile.Write(bad, Sub(s) s.WriteByte(1)))
         Assert.Contains("is not a file name this computer accepts", ex.Message, StringComparison.Ordinal)
-        Assert.Empty(Directory.GetFileSystemEntries(_folder))
+        Assert.Empty(Directory.GetFileSystemEntries(Folder))
     End Sub
 End Class
