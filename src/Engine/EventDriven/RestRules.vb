@@ -161,7 +161,7 @@ Friend NotInheritable Class RestRules
         ' is left is shorter than RestWindow, so the state shown is at rest no more than that before the
         ' series really ends (or once the hops are far below rounding).
         Dim restSpeed = Math.Sqrt(2 * _s.G * RestHeight(r))
-        Dim level = n.Y >= 1 - 1.0E-12 AndAlso support <> BodyTable.SupportNone
+        Dim level = n.Y >= RestingFaces.LevelCosine AndAlso support <> BodyTable.SupportNone
         Dim seriesLeft = If(_s.E < 1, 2 * vn / (_s.G * n.Y * (1 - _s.E)), Double.PositiveInfinity)
         Dim ended = seriesLeft <= RestWindow OrElse vn < 1.0E-6 * restSpeed
         If level AndAlso ended AndAlso (support <> BodyTable.SupportBody OrElse Math.Abs(rx) < 0.02 * speedScale) Then
@@ -236,8 +236,10 @@ Friend NotInheritable Class RestRules
         Dim along = v - n * Vector.Dot(v, n)
         b.Motion(i).Vx = along.X
         b.Motion(i).Vy = along.Y
-        b.Motion(i).Ax = _s.G * n.Y * n.X
-        b.Motion(i).Ay = -_s.G + _s.G * n.Y * n.Y
+        ' Reached only for a face that is not level (AfterSupportContact rests the body on a level one).
+        Dim a = RestingFaces.SlideAcceleration(n, _s.G)
+        b.Motion(i).Ax = a.X
+        b.Motion(i).Ay = a.Y
         b.Support(i) = support
         b.SupportEdge(i) = edge
         b.SetMode(i, BodyMode.Supported)
@@ -330,13 +332,13 @@ Friend NotInheritable Class RestRules
             Next
         Next
         Dim target As Vector
-        If count = 1 AndAlso n1.Y >= 1 - 1.0E-12 Then
+        If count = 1 AndAlso n1.Y >= RestingFaces.LevelCosine Then
             ' One level face holds it: exactly on it.
             target = New Vector(p.X, h1)
         ElseIf count = 2 Then
-            Dim det = n1.X * n2.Y - n1.Y * n2.X
-            If Math.Abs(det) < 1.0E-6 Then Return ' parallel faces: no single point
-            target = New Vector((h1 * n2.Y - h2 * n1.Y) / det, (n1.X * h2 - n2.X * h1) / det)
+            Dim crossing = RestingFaces.Crossing(n1, h1, n2, h2)
+            If Not crossing.HasValue Then Return ' parallel faces: no single point
+            target = crossing.Value
         Else
             Return
         End If
@@ -549,12 +551,13 @@ Friend NotInheritable Class RestRules
         ' be level to rounding: on a frictionless slope of any angle, however small, a body slides (g sin θ
         ' along it), and off a peg's top it rolls. Another body within 2.6° of level also holds it: the
         ' top of a ball is where a pile's balls sit, and rolling off from there is left to the pile's own settling.
-        ' Otherwise up = (0, 1) must lie between normals a (a.x ≥ 0) and b (b.x ≤ 0) turning anticlockwise by at most π.
+        ' Otherwise up = (0, 1) must lie between two of the normals (RestingFaces.HoldsUp, which is symmetric in
+        ' its two normals and never holds for a normal paired with itself, so each pair is asked once).
         For a = 0 To _nNormals - 1
-            If _normalY(a) > If(_normalExact(a), 1 - 1.0E-12, 0.999) Then Return True
-            For k = 0 To _nNormals - 1
-                If _normalX(a) >= 0 AndAlso _normalX(k) <= 0 AndAlso
-                   _normalX(a) * _normalY(k) - _normalY(a) * _normalX(k) > 0 Then Return True
+            If _normalY(a) > If(_normalExact(a), RestingFaces.LevelCosine, 0.999) Then Return True
+            Dim na = New Vector(_normalX(a), _normalY(a))
+            For k = a + 1 To _nNormals - 1
+                If RestingFaces.HoldsUp(na, New Vector(_normalX(k), _normalY(k))) Then Return True
             Next
         Next
         Return False

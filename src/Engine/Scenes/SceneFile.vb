@@ -49,29 +49,14 @@ Namespace Scenes
         End Function
 
         ''' <summary>
-        ''' Writes the scene to <paramref name="path"/> atomically: to a temporary file in the same folder,
-        ''' then moved over the target, so the file is never half-written. IO errors are thrown as they come.
+        ''' Writes the scene to <paramref name="path"/> whole or not at all (<see cref="WholeFile.Write"/>): an
+        ''' existing file is replaced only by a complete one and is left as it was on failure. A failure is an
+        ''' <see cref="IOException"/> whose message names the folder, never the temporary file.
         ''' </summary>
         Public Sub SaveFile(world As World, path As String)
             If path Is Nothing Then Throw New ArgumentNullException(NameOf(path))
-            Dim text = Save(world)
-            Dim target = IO.Path.GetFullPath(path)
-            Dim folder = IO.Path.GetDirectoryName(target)
-            Dim temp = IO.Path.Combine(folder, "." & IO.Path.GetFileName(target) & "." & Guid.NewGuid().ToString("N") & ".tmp")
-            Try
-                Using stream As New FileStream(temp, FileMode.CreateNew, FileAccess.Write, FileShare.None)
-                    Dim bytes = New UTF8Encoding(False).GetBytes(text)
-                    stream.Write(bytes, 0, bytes.Length)
-                    stream.Flush(True)
-                End Using
-                If File.Exists(target) Then
-                    File.Replace(temp, target, Nothing)
-                Else
-                    File.Move(temp, target)
-                End If
-            Finally
-                If File.Exists(temp) Then File.Delete(temp)
-            End Try
+            Dim bytes = New UTF8Encoding(False).GetBytes(Save(world))
+            WholeFile.Write(path, Sub(stream) stream.Write(bytes, 0, bytes.Length))
         End Sub
     End Module
 End Namespace

@@ -1,11 +1,10 @@
 Option Strict On
 Imports System.Globalization
-Imports System.IO
 Imports System.Threading
 Imports PhysicsEngine.Presentation
 Imports Xunit
 
-''' <summary>CSV as a spreadsheet reads it, and export files written whole or not at all.</summary>
+''' <summary>CSV as a spreadsheet reads it (files written whole or not at all are the engine's WholeFile, tested there).</summary>
 Public Class CsvExportTests
     Private Shared ReadOnly Headers As String() = {"h1", "h2", "h3", "h4", "h5", "h6"}
 
@@ -44,31 +43,5 @@ Public Class CsvExportTests
         Dim b = Csv.Bytes("Σp (kg·m/s)")
         Assert.Equal({CByte(&HEF), CByte(&HBB), CByte(&HBF)}, b.Take(3).ToArray())
         Assert.Equal("Σp (kg·m/s)", New Text.UTF8Encoding(False).GetString(b, 3, b.Length - 3))
-    End Sub
-
-    <Fact>
-    Public Sub WholeFile_AFailedWrite_LeavesTheOldFileAndNoTemporary()
-        Dim folder = Path.Combine(Path.GetTempPath(), "export-" & Guid.NewGuid().ToString("N"))
-        Directory.CreateDirectory(folder)
-        Try
-            Dim target = Path.Combine(folder, "series.csv")
-            WholeFile.Write(target, Sub(s) s.Write({65, 66}, 0, 2))
-            Assert.Equal("AB", File.ReadAllText(target))
-            ' A writer that fails half-way: the old file stays as it was, and nothing else is left.
-            Assert.ThrowsAny(Of InvalidOperationException)(
-                Sub() WholeFile.Write(target, Sub(s)
-                                                   s.Write({67}, 0, 1)
-                                                   Throw New InvalidOperationException("disk gone")
-                                               End Sub))
-            Assert.Equal("AB", File.ReadAllText(target))
-            Assert.Single(Directory.GetFiles(folder))
-            ' A folder that does not exist: a message that names it.
-            Dim missing = Path.Combine(folder, "nowhere", "x.csv")
-            Dim ex = Assert.Throws(Of IOException)(Sub() WholeFile.Write(missing, Sub(s) s.WriteByte(1)))
-            Assert.Contains("nowhere", ex.Message, StringComparison.Ordinal)
-            Assert.Contains("nothing was written", ex.Message, StringComparison.Ordinal)
-        Finally
-            Directory.Delete(folder, True)
-        End Try
     End Sub
 End Class

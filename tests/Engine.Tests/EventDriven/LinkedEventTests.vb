@@ -1,5 +1,6 @@
 Option Strict On
 Imports PhysicsEngine
+Imports PhysicsEngine.Tests.Links
 Imports Xunit
 Imports Xunit.Abstractions
 
@@ -22,10 +23,6 @@ Namespace EventDriven
             Dim w As New World(10, 10, gravity, restitution)
             w.Solver = SolverFactory.Create("event")
             Return w
-        End Function
-
-        Private Shared Function OnCircle(anchor As Vector, length As Double, theta As Double) As Vector
-            Return New Vector(anchor.X + length * Math.Sin(theta), anchor.Y - length * Math.Cos(theta))
         End Function
 
         <Theory>
@@ -81,17 +78,6 @@ Namespace EventDriven
             w.Advance(4 * exact.Period - w.Time)
             Assert.Equal(0.5 * 0.5 * G, tie.Tension, 0.000001)
         End Sub
-
-        ''' <summary>K(k) by the arithmetic–geometric mean.</summary>
-        Private Shared Function CompleteK(k As Double) As Double
-            Dim a = 1.0, b = Math.Sqrt(1 - k * k)
-            For i = 1 To 30
-                Dim mean = (a + b) / 2
-                b = Math.Sqrt(a * b)
-                a = mean
-            Next
-            Return Math.PI / (2 * a)
-        End Function
 
         <Fact>
         Public Sub StringInAVerticalCircle_GoesSlack_FliesItsParabola_AndSnapsTaut()

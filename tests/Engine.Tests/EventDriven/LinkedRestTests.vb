@@ -14,27 +14,11 @@ Namespace EventDriven
     ''' exact in binary.
     ''' </summary>
     Public Class LinkedRestTests
-        Private Const G As Double = 9.81
         Private ReadOnly _output As ITestOutputHelper
 
         Public Sub New(output As ITestOutputHelper)
             _output = output
         End Sub
-
-        Private Shared Function NewWorld(solver As String, restitution As Double, Optional dt As Double = 0.001) As World
-            Dim w As New World(10, 10, G, restitution)
-            w.Solver = If(solver = "event", SolverFactory.Create("event"), SolverFactory.Create(solver, dt))
-            Return w
-        End Function
-
-        ''' <summary>A pendulum swinging in a far corner, so that the scene has links and the linked solver runs it.</summary>
-        Private Shared Function AddPendulum(w As World) As Circle
-            Dim anchor As New Vector(9, 9.5)
-            Dim bob As New Circle(New Vector(anchor.X + 0.5, anchor.Y), 0.05, 0.5, Vector.Zero, "bob")
-            w.Add(bob)
-            w.Add(Link.CreateTie(LinkKind.Rod, bob, anchor, 0.5))
-            Return bob
-        End Function
 
         ''' <summary>The time of the n-th bounce (n ≥ 1) of a body dropped from rest t₀ before the first: each flight after bounce k is 2eᵏv₀/g.</summary>
         Private Shared Function BounceTime(n As Integer, t0 As Double, v0 As Double, e As Double) As Double
@@ -89,7 +73,7 @@ Namespace EventDriven
         Public Sub ABallDroppedOntoAFixedTable_InASceneWithLinks_ComesToRestOnItsTop_InFewEvents()
             Const E As Double = 0.5
             Dim w = NewWorld("event", E)
-            AddPendulum(w)
+            AddFarPendulum(w)
             w.Add(New Rectangle(New Vector(1, 0), 2, 1, "table"))
             Dim ball As New Circle(New Vector(1.5, 1.5), 0.125, 1, Vector.Zero, "ball")
             w.Add(ball)
@@ -117,7 +101,7 @@ Namespace EventDriven
         <InlineData("box on a fixed triangle's level top")>
         Public Sub ABodyDroppedOnALevelFace_ComesToRestOnIt_NeverBelowIt(scene As String)
             Dim w = NewWorld("event", 0.5)
-            AddPendulum(w)
+            AddFarPendulum(w)
             Dim body As Shape
             Select Case scene
                 Case "box on a level segment"
@@ -153,7 +137,7 @@ Namespace EventDriven
         <Fact>
         Public Sub ABoxSlidingAlongATable_LeavesItsEdge_AndLandsAtTheFreeFallTime()
             Dim w = NewWorld("event", 0.5)
-            AddPendulum(w)
+            AddFarPendulum(w)
             Dim table As New Rectangle(New Vector(1, 0), 2, 1, "table")
             w.Add(table)
             Dim box = Rectangle.CreateMovable(New Vector(2, 1), 0.25, 0.25, 1, New Vector(1, 0), "box")
@@ -244,7 +228,7 @@ Namespace EventDriven
         ''' </summary>
         Private Shared Function Ramp(solver As String, along As Double, ByRef body As Shape, ByRef top As Vector, Optional dt As Double = 0.001, Optional shape As String = "box") As World
             Dim w = NewWorld(solver, 0.5, dt)
-            AddPendulum(w)
+            AddFarPendulum(w)
             top = New Vector(1, 2 + 3 * Math.Tan(Theta))
             w.Add(Polygon.CreateFixed({New Vector(1, 2), New Vector(4, 2), top}, "ramp"))
             Dim p = top + New Vector(Math.Cos(Theta), -Math.Sin(Theta)) * along
@@ -328,7 +312,7 @@ Namespace EventDriven
         <InlineData(4.8)>
         Public Sub BoxDroppedIntoAV_ComesToRestStillWhereItTouchesBothSlopes(x As Double)
             Dim w = NewWorld("event", 0.5)
-            AddPendulum(w)
+            AddFarPendulum(w)
             Dim rise = 3 * Math.Tan(Theta)
             w.Add(Polygon.CreateFixed({New Vector(2, 2), New Vector(5, 2), New Vector(2, 2 + rise)}, "left"))
             w.Add(Polygon.CreateFixed({New Vector(5, 2), New Vector(8, 2), New Vector(8, 2 + rise)}, "right"))
@@ -362,7 +346,7 @@ Namespace EventDriven
         Public Sub BoxDroppedOnABoxOnTheFloor_ReboundsAtEToTheN_TheFloorTakingTheBlows_AndRestsOnItsTop()
             Const E As Double = 0.5, H0 As Double = 0.5
             Dim w = NewWorld("event", E)
-            AddPendulum(w)
+            AddFarPendulum(w)
             Dim lower = Rectangle.CreateMovable(New Vector(4, 0), 0.5, 0.25, 2, Vector.Zero, "lower")
             w.Add(lower)
             Dim upper = Rectangle.CreateMovable(New Vector(4.125, 0.25 + H0), 0.25, 0.25, 1, Vector.Zero, "upper")
@@ -398,7 +382,7 @@ Namespace EventDriven
             ' Falling together they touch and part without pressing (free fall presses nothing); landing, the
             ' floor takes each blow through the boxes resting on the one it strikes; the stack comes to rest.
             Dim w = NewWorld("event", 0.3)
-            AddPendulum(w)
+            AddFarPendulum(w)
             Dim boxes = {Rectangle.CreateMovable(New Vector(4, 0.5), 0.5, 0.25, 1, Vector.Zero, "bottom"),
                          Rectangle.CreateMovable(New Vector(4.0625, 1.25), 0.5, 0.25, 2, Vector.Zero, "middle"),
                          Rectangle.CreateMovable(New Vector(4.125, 2), 0.5, 0.25, 1, Vector.Zero, "top")}
@@ -423,7 +407,7 @@ Namespace EventDriven
         Public Sub BoxResting_OnABoxKnockedAway_StaysWhereItWas_ThenFallsFromItsEdge_AtTheFreeFallTime()
             Const E As Double = 0.5
             Dim w = NewWorld("event", E)
-            AddPendulum(w)
+            AddFarPendulum(w)
             Dim lower = Rectangle.CreateMovable(New Vector(4, 0), 0.5, 0.25, 2, Vector.Zero, "lower")
             w.Add(lower)
             Dim upper = Rectangle.CreateMovable(New Vector(4.125, 0.25), 0.25, 0.25, 1, Vector.Zero, "upper")

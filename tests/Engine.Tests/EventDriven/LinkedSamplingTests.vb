@@ -30,7 +30,8 @@ Namespace EventDriven
         Private Shared Function Run(sample As Double) As List(Of String)
             Dim w = Scene()
             Dim lines As New List(Of String)
-            w.CollisionListener = Sub(c) lines.Add(Bits(c.Time) & " " & c.A.Id & " " & c.BName & " " & Bits(c.AVelocityBefore) & Bits(c.AVelocityAfter) & Bits(c.BVelocityAfter))
+            w.CollisionListener = Sub(c) lines.Add(String.Join(" ", Bits(c.Time), c.A.Id, c.BName, Bits(c.AVelocityBefore.X), Bits(c.AVelocityBefore.Y),
+                                                               Bits(c.AVelocityAfter.X), Bits(c.AVelocityAfter.Y), Bits(c.BVelocityAfter.X), Bits(c.BVelocityAfter.Y)))
             Const Total As Double = 2.0
             Dim k = 0
             Do While w.Time < Total
@@ -38,17 +39,9 @@ Namespace EventDriven
                 w.Advance(Math.Min(k * sample, Total) - w.Time)
             Loop
             For Each b In w.Movables
-                lines.Add(b.Id & " " & Bits(b.Position) & Bits(b.Velocity))
+                lines.Add(String.Join(" ", b.Id, Bits(b.Position.X), Bits(b.Position.Y), Bits(b.Velocity.X), Bits(b.Velocity.Y)))
             Next
             Return lines
-        End Function
-
-        Private Shared Function Bits(x As Double) As String
-            Return BitConverter.DoubleToInt64Bits(x).ToString("X16", Globalization.CultureInfo.InvariantCulture) & " "
-        End Function
-
-        Private Shared Function Bits(v As Vector) As String
-            Return Bits(v.X) & Bits(v.Y)
         End Function
 
         <Fact>

@@ -12,7 +12,6 @@ Namespace EventDriven
     ''' (only the floor has a rest rule there), with the world put back as it was.
     ''' </summary>
     Public Class LinkedTouchingTests
-        Private Const G As Double = 9.81
         ''' <summary>How far a touching pair presses in before it collides, m (docs/links.md).</summary>
         Private Const Press As Double = 0.000000001
 
@@ -56,11 +55,8 @@ Namespace EventDriven
 
         ''' <summary>A world 10 m square with a pendulum hanging still at its right, so that it has links.</summary>
         Private Shared Function WithPendulum(restitution As Double) As World
-            Dim w As New World(10, 10, G, restitution)
-            w.Solver = SolverFactory.Create("event")
-            Dim bob As New Circle(New Vector(8, 8), 0.05, 1, Vector.Zero, "bob")
-            w.Add(bob)
-            w.Add(Link.CreateTie(LinkKind.Rod, bob, New Vector(8, 9), 1))
+            Dim w = NewWorld("event", restitution)
+            AddPendulum(w, LinkKind.Rod, New Vector(8, 9), 1, 0, 1)
             Return w
         End Function
 

@@ -81,6 +81,17 @@ Namespace Links
             Return New Vector(length * rate * Math.Cos(theta), length * rate * Math.Sin(theta))
         End Function
 
+        ''' <summary>The complete elliptic integral K(k) by the arithmetic–geometric mean: π / (2 AGM(1, √(1 − k²))).</summary>
+        Public Function CompleteK(k As Double) As Double
+            Dim a = 1.0, b = Math.Sqrt(1 - k * k)
+            For i = 1 To 30
+                Dim mean = (a + b) / 2
+                b = Math.Sqrt(a * b)
+                a = mean
+            Next
+            Return Math.PI / (2 * a)
+        End Function
+
         ''' <summary>|a − b|, m.</summary>
         Public Function Distance(a As Vector, b As Vector) As Double
             Return (a - b).Length

@@ -5,47 +5,42 @@ Imports Xunit
 
 ''' <summary>Files on disk: atomic saving, clear errors for missing files, the example scenes.</summary>
 Public Class SceneFileIoTests
-    Implements IDisposable
-
-    Private ReadOnly _folder As String = Path.Combine(Path.GetTempPath(), "scene-tests-" & Guid.NewGuid().ToString("N"))
+    Inherits TempFolderTests
 
     Public Sub New()
-        Directory.CreateDirectory(_folder)
-    End Sub
-
-    Public Sub Dispose() Implements IDisposable.Dispose
-        Directory.Delete(_folder, True)
-        GC.SuppressFinalize(Me)
+        MyBase.New("scene-tests-")
     End Sub
 
     <Fact>
     Public Sub SaveFile_ThenLoadFile_GivesTheSameScene_AndLeavesNoTemporaryFile()
-        Dim target = Path.Combine(_folder, "demo.json")
+        Dim target = Path.Combine(Folder, "demo.json")
         SceneFile.SaveFile(Scenarios.Demo(), target)
         SceneRoundTripTests.AssertSameScene(Scenarios.Demo(), SceneFile.LoadFile(target), "demo")
-        Assert.Equal("demo.json", Path.GetFileName(Assert.Single(Directory.GetFiles(_folder))))
+        Assert.Equal("demo.json", Path.GetFileName(Assert.Single(Directory.GetFiles(Folder))))
         Assert.Equal(SceneFile.Save(Scenarios.Demo()), File.ReadAllText(target))
     End Sub
 
     <Fact>
     Public Sub SaveFile_ReplacesAnExistingFile()
-        Dim target = Path.Combine(_folder, "scene.json")
+        Dim target = Path.Combine(Folder, "scene.json")
         File.WriteAllText(target, "old and much longer text than the new scene could ever be ......................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................................")
         SceneFile.SaveFile(Scenarios.BouncingBall(), target)
         SceneRoundTripTests.AssertSameScene(Scenarios.BouncingBall(), SceneFile.LoadFile(target), "ball")
-        Assert.Single(Directory.GetFiles(_folder))
+        Assert.Single(Directory.GetFiles(Folder))
     End Sub
 
     <Fact>
     Public Sub SaveFile_IntoAMissingFolder_Throws_AndWritesNothing()
-        Dim target = Path.Combine(_folder, "no-such-folder", "scene.json")
-        Assert.ThrowsAny(Of IOException)(Sub() SceneFile.SaveFile(Scenarios.Demo(), target))
-        Assert.Empty(Directory.GetFileSystemEntries(_folder))
+        Dim target = Path.Combine(Folder, "no-such-folder", "scene.json")
+        Dim ex = Assert.Throws(Of IOException)(Sub() SceneFile.SaveFile(Scenarios.Demo(), target))
+        Assert.Contains(Path.Combine(Folder, "no-such-folder"), ex.Message, StringComparison.Ordinal)
+        Assert.Contains("nothing was written", ex.Message, StringComparison.Ordinal)
+        Assert.Empty(Directory.GetFileSystemEntries(Folder))
     End Sub
 
     <Fact>
     Public Sub LoadFile_OfAMissingFile_NamesThePath()
-        Dim missing = Path.Combine(_folder, "nope.json")
+        Dim missing = Path.Combine(Folder, "nope.json")
         Dim ex = Assert.Throws(Of SceneFormatException)(Function() SceneFile.LoadFile(missing))
         Assert.Equal(missing & ": file not found", ex.Message)
         Assert.Equal(missing, ex.Place)
@@ -53,7 +48,7 @@ Public Class SceneFileIoTests
 
     <Fact>
     Public Sub LoadFile_OfABadFile_SaysPlaceAndProblem()
-        Dim target = Path.Combine(_folder, "bad.json")
+        Dim target = Path.Combine(Folder, "bad.json")
         File.WriteAllText(target, "{""format"":""physics-scene/1"",""world"":{""width"":8,""height"":5},""bodies"":[{""type"":""circle"",""x"":1,""y"":1,""radius"":-1,""mass"":1}]}")
         Dim ex = Assert.Throws(Of SceneFormatException)(Function() SceneFile.LoadFile(target))
         Assert.Equal("bodies[0].radius: must be greater than 0", ex.Message)

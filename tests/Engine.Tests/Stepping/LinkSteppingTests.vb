@@ -1,5 +1,6 @@
 Option Strict On
 Imports PhysicsEngine
+Imports PhysicsEngine.Tests.Links
 Imports Xunit
 Imports Xunit.Abstractions
 
@@ -89,17 +90,6 @@ Namespace Stepping
             Assert.True(errors(0) < 0.005 * expected, $"period off by {errors(0)} s")
             Assert.True(errors(1) < 0.6 * errors(0) OrElse errors(1) < 0.000001, $"{errors(1)} s at 0.5 ms against {errors(0)} s at 1 ms")
         End Sub
-
-        ''' <summary>K(k) by the arithmetic–geometric mean: π / (2 AGM(1, √(1 − k²))).</summary>
-        Private Shared Function CompleteK(k As Double) As Double
-            Dim a = 1.0, b = Math.Sqrt(1 - k * k)
-            For i = 1 To 30
-                Dim mean = (a + b) / 2
-                b = Math.Sqrt(a * b)
-                a = mean
-            Next
-            Return Math.PI / (2 * a)
-        End Function
 
         ''' <summary>Largest |y − y(t)| (m) over 3 s for a mass released at rest with the spring at its natural length.</summary>
         Private Shared Function SpringError(solver As String, dt As Double) As Double

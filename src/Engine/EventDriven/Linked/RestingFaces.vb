@@ -4,7 +4,8 @@ Option Strict On
 ''' The maths of a body resting on flat faces with no friction (docs/links.md, section 6), as pure functions.
 ''' A face is an edge of the pair shape K (the Minkowski difference of the support's outline and the body's):
 ''' the body touches it while d = p_body − p_support lies on that edge, and its outward normal n points from
-''' the support to the body. Times in s, distances in m, speeds in m/s, accelerations in m/s².
+''' the support to the body. Times in s, distances in m, speeds in m/s, accelerations in m/s². The event
+''' solver's rest rules (<see cref="RestRules"/>) use the same level, slide, holding and crossing maths.
 ''' </summary>
 Friend Module RestingFaces
     ''' <summary>A face whose normal is this close to straight up (its cosine from vertical) is level: it takes the whole weight.</summary>

@@ -28,6 +28,8 @@ Public NotInheritable Class WholeFile
                 write(stream)
                 stream.Flush(True)
             End Using
+            ' netstandard2.0 has no File.Move that overwrites: File.Replace swaps over an existing file in one
+            ' step, and File.Move (which refuses an existing target) puts down a new one.
             If File.Exists(target) Then
                 File.Replace(temp, target, Nothing)
             Else
