@@ -12,6 +12,16 @@ Public Module CornerSlide
     Private ReadOnly Nodes As Double() = {-0.906179845938664, -0.5384693101056831, 0.0, 0.5384693101056831, 0.906179845938664}
     Private ReadOnly Weights As Double() = {0.23692688505618908, 0.47862867049936647, 0.5688888888888889, 0.47862867049936647, 0.23692688505618908}
     Private Const Panels As Integer = 32
+    ''' <summary>Panels of the rough quadrature that brings <see cref="AngleAfter"/> near its root before the full one finishes it.</summary>
+    Private Const RoughPanels As Integer = 4
+    ''' <summary>At most this many rough Newton steps (they stop sooner, see <see cref="RoughEnough"/>).</summary>
+    Private Const MaxRoughSteps As Integer = 20
+    ''' <summary>How close (a fraction of the time) the rough phase gets before the full quadrature takes over.</summary>
+    Private Const RoughEnough As Double = 0.00001
+    ''' <summary>The fraction of the time a last Newton step may leave undone.</summary>
+    Private Const Undone As Double = 1.0E-17
+    ''' <summary>2⁻⁵², the spacing of doubles at 1 (Double.Epsilon is the smallest denormal, not this).</summary>
+    Private Const MachineEpsilon As Double = 2.2204460492503131E-16
 
     ''' <summary>The angle θ* (rad, from the upward vertical) at which the ball leaves the surface.</summary>
     ''' <param name="speed">tangential speed at θ0, m/s</param>
@@ -26,8 +36,16 @@ Public Module CornerSlide
 
     ''' <summary>Speed (m/s) at angle θ after starting at θ0 with speed v0, by energy conservation.</summary>
     Public Function SpeedAt(speed As Double, gravity As Double, radius As Double, startAngle As Double, angle As Double) As Double
-        ' cos θ0 − cos θ = 2 sin((θ + θ0)/2) sin((θ − θ0)/2): no cancellation for θ near θ0.
-        Dim drop = 2 * Math.Sin(0.5 * (angle + startAngle)) * Math.Sin(0.5 * (angle - startAngle))
+        Return SpeedAfterTurning(speed, gravity, radius, startAngle, angle - startAngle)
+    End Function
+
+    ''' <summary>
+    ''' Speed (m/s) after turning through φ = θ − θ0 (rad). Taking φ itself, not θ, keeps its digits when
+    ''' φ is far smaller than θ0: θ0 + φ would round φ to the ulp of θ0.
+    ''' </summary>
+    Private Function SpeedAfterTurning(speed As Double, gravity As Double, radius As Double, startAngle As Double, turn As Double) As Double
+        ' cos θ0 − cos θ = 2 sin(θ0 + φ/2) sin(φ/2): no cancellation for θ near θ0.
+        Dim drop = 2 * Math.Sin(startAngle + 0.5 * turn) * Math.Sin(0.5 * turn)
         Return Math.Sqrt(Math.Max(0.0, speed * speed + 2 * gravity * radius * drop))
     End Function
 
@@ -39,14 +57,23 @@ Public Module CornerSlide
     Public Function Duration(speed As Double, gravity As Double, radius As Double, startAngle As Double, angle As Double) As Double
         If angle <= startAngle Then Return 0
         If speed = 0 AndAlso startAngle = 0 Then Return Double.PositiveInfinity
-        Dim sEnd = Math.Sqrt(angle - startAngle)
-        Dim h = sEnd / Panels
+        Return TimeToTurn(speed, gravity, radius, startAngle, angle - startAngle, Panels)
+    End Function
+
+    ''' <summary>
+    ''' Time (s) to turn through φ = <paramref name="turn"/> (rad, &gt; 0) from θ0, by Gauss–Legendre on
+    ''' <paramref name="panelCount"/> panels in s = √φ. The nodes' speeds are taken at s² itself, never
+    ''' at θ0 + s², whose rounding would cost the nodes near the start most of their digits.
+    ''' </summary>
+    Private Function TimeToTurn(speed As Double, gravity As Double, radius As Double, startAngle As Double, turn As Double,
+                                panelCount As Integer) As Double
+        Dim h = Math.Sqrt(turn) / panelCount
         Dim sum = 0.0
-        For p = 0 To Panels - 1
+        For p = 0 To panelCount - 1
             Dim mid = (p + 0.5) * h
             For k = 0 To Nodes.Length - 1
                 Dim s = mid + 0.5 * h * Nodes(k)
-                Dim v = SpeedAt(speed, gravity, radius, startAngle, startAngle + s * s)
+                Dim v = SpeedAfterTurning(speed, gravity, radius, startAngle, s * s)
                 If v > 0 Then sum += Weights(k) * 0.5 * h * 2 * s * radius / v
             Next
         Next
@@ -55,25 +82,66 @@ Public Module CornerSlide
 
     ''' <summary>
     ''' The angle reached after sliding for <paramref name="time"/> seconds: the root of
-    ''' Duration(θ) = time, by Newton's method (dDuration/dθ = R / v(θ)) kept inside a bracket that
-    ''' bisection shrinks whenever a Newton step would leave it or the speed there is zero.
+    ''' Duration(θ) = time, by Newton's method (dDuration/dθ = R / v(θ)). It starts from the Taylor
+    ''' series of the motion and runs first on a rough quadrature (<see cref="RoughPanels"/> panels), which
+    ''' brings it within <see cref="RoughEnough"/> of the time for an eighth of the work each step; then on
+    ''' <see cref="Duration"/> itself, kept inside a bracket that bisection shrinks whenever a Newton step
+    ''' would leave it or the speed there is zero. A step ends it when what it leaves undone, ½|D''|δ²
+    ''' (D'' = −R²g sin θ / v³), is below <see cref="Undone"/> of the time: one or two full quadratures.
     ''' </summary>
     Public Function AngleAfter(speed As Double, gravity As Double, radius As Double, startAngle As Double,
                                leaveAngle As Double, time As Double) As Double
+        If Not (time > 0) OrElse Not (leaveAngle > startAngle) Then Return startAngle
+        If speed = 0 AndAlso startAngle = 0 Then Return startAngle ' at rest on top: it never moves
+        ' θ'' = (g/R) sin θ and θ''' = (g/R) cos θ · θ', from θ' = v0/R at the start.
+        Dim omega = speed / radius, alpha = gravity / radius
+        Dim theta = startAngle + time * (omega + time * (0.5 * alpha * Math.Sin(startAngle) + time * alpha * Math.Cos(startAngle) * omega / 6))
+        If Not (theta > startAngle AndAlso theta < leaveAngle) Then theta = 0.5 * (startAngle + leaveAngle)
+        For iteration = 1 To MaxRoughSteps
+            Dim f = TimeToTurn(speed, gravity, radius, startAngle, theta - startAngle, RoughPanels) - time
+            Dim nextTheta = NewtonStep(speed, gravity, radius, startAngle, theta, f)
+            If Not (nextTheta > startAngle AndAlso nextTheta < leaveAngle) Then nextTheta = 0.5 * (theta + If(f > 0, startAngle, leaveAngle))
+            theta = nextTheta
+            If Math.Abs(f) <= RoughEnough * time Then Exit For
+        Next
+        ' The bracket, and how far from the time each end is (s; +∞ at the far end until it is looked at).
         Dim lo = startAngle, hi = leaveAngle
-        Dim theta = 0.5 * (lo + hi)
+        Dim missLo = time, missHi = Double.PositiveInfinity
         For iteration = 1 To 100
             Dim f = Duration(speed, gravity, radius, startAngle, theta) - time
-            If f < 0 Then lo = theta Else hi = theta
-            If f = 0 OrElse hi - lo <= 4 * Double.Epsilon Then Return theta
-            Dim v = SpeedAt(speed, gravity, radius, startAngle, theta)
-            Dim nextTheta = If(v > 0, theta - f * v / radius, Double.NaN)
-            ' Outside the bracket (or no slope): bisect instead.
-            If Not (nextTheta > lo AndAlso nextTheta < hi) Then nextTheta = 0.5 * (lo + hi)
-            If nextTheta = theta Then Return theta
-            If Math.Abs(nextTheta - theta) <= 1.0E-15 * Math.Max(1.0, Math.Abs(theta)) Then Return nextTheta
+            If f < 0 Then
+                lo = theta
+                missLo = -f
+            ElseIf f > 0 Then
+                hi = theta
+                missHi = f
+            Else
+                Return theta
+            End If
+            Dim nextTheta = NewtonStep(speed, gravity, radius, startAngle, theta, f)
+            Dim stepSize = nextTheta - theta
+            If Not (nextTheta > lo AndAlso nextTheta < hi) Then
+                Dim middle = 0.5 * (lo + hi)
+                ' The bracket is two neighbouring doubles (the root lies between them): the nearer in time.
+                If Not (middle > lo AndAlso middle < hi) Then Return If(missLo <= missHi, lo, hi)
+                ' A step below rounding lands on the bracket's end: θ is the root to rounding.
+                If Math.Abs(stepSize) <= 2 * MachineEpsilon * Math.Abs(theta) Then Return theta
+                ' Outside the bracket (or no slope): bisect instead.
+                nextTheta = middle
+            Else
+                ' What the step leaves: the quadratic term, and the cubic one bounded by the |δ| added to sin θ.
+                Dim v = SpeedAt(speed, gravity, radius, startAngle, theta)
+                If 0.5 * gravity * (Math.Abs(Math.Sin(theta)) + Math.Abs(stepSize)) * (radius * stepSize) * (radius * stepSize) <=
+                   Undone * time * v * v * v Then Return nextTheta
+            End If
             theta = nextTheta
         Next
         Return theta
+    End Function
+
+    ''' <summary>Newton's step for Duration(θ) − time = f: θ − f v(θ) / R; NaN where the ball is at rest (no slope).</summary>
+    Private Function NewtonStep(speed As Double, gravity As Double, radius As Double, startAngle As Double, theta As Double, f As Double) As Double
+        Dim v = SpeedAt(speed, gravity, radius, startAngle, theta)
+        Return If(v > 0, theta - f * v / radius, Double.NaN)
     End Function
 End Module
