@@ -78,6 +78,9 @@ Friend Module SceneRunner
         End If
         result.Runs = times.Count
         result.MsPerSimulatedSecond = Statistics.Median(times)
+        If TypeOf scene Is IRealTimeScene AndAlso result.MsPerSimulatedSecond > 0 Then
+            result.Note = Join(result.Note, (1000 / result.MsPerSimulatedSecond).ToString("0.#", CultureInfo.InvariantCulture) & "× real time")
+        End If
         Dim wallPerRun = result.MsPerSimulatedSecond * simulated / 1000
         If wallPerRun > 0 Then result.CollisionsPerSecond = collisions / wallPerRun
         If collisions > 0 Then result.MicrosecondsPerCollision = wallPerRun * 1000000.0 / collisions

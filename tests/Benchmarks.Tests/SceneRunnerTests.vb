@@ -30,6 +30,52 @@ Public Class SceneRunnerTests
     End Sub
 
     <Fact>
+    Public Sub Run_ARealTimeScene_NotesTheMedianRunsFactorOverRealTime_AndOtherScenesDoNot()
+        Dim plain = SceneRunner.Run(New ProjectileScene(), "euler", 1 / 250.0, 3, 30)
+        Dim timed = SceneRunner.Run(New RealTimeProjectile(), "euler", 1 / 250.0, 3, 30)
+        Assert.DoesNotContain("real time", plain.Note, StringComparison.Ordinal)
+        Dim expected = (1000 / timed.MsPerSimulatedSecond).ToString("0.#", Globalization.CultureInfo.InvariantCulture) & "× real time"
+        Assert.EndsWith(expected, timed.Note, StringComparison.Ordinal)
+    End Sub
+
+    ''' <summary>The projectile, reported with its speed over real time.</summary>
+    Private NotInheritable Class RealTimeProjectile
+        Implements IBenchScene, IRealTimeScene
+        Private ReadOnly _scene As New ProjectileScene()
+        Public ReadOnly Property Name As String Implements IBenchScene.Name
+            Get
+                Return _scene.Name
+            End Get
+        End Property
+        Public ReadOnly Property Title As String Implements IBenchScene.Title
+            Get
+                Return _scene.Title
+            End Get
+        End Property
+        Public ReadOnly Property Description As String Implements IBenchScene.Description
+            Get
+                Return _scene.Description
+            End Get
+        End Property
+        Public ReadOnly Property ErrorMetric As String Implements IBenchScene.ErrorMetric
+            Get
+                Return _scene.ErrorMetric
+            End Get
+        End Property
+        Public ReadOnly Property SimulatedSeconds As Double Implements IBenchScene.SimulatedSeconds
+            Get
+                Return _scene.SimulatedSeconds
+            End Get
+        End Property
+        Public Function Build() As World Implements IBenchScene.Build
+            Return _scene.Build()
+        End Function
+        Public Function Measure(world As World, sampleStep As Double, budget As RunBudget) As SceneMeasurement Implements IBenchScene.Measure
+            Return _scene.Measure(world, sampleStep, budget)
+        End Function
+    End Class
+
+    <Fact>
     Public Sub BouncingApex_WithASmallStep_FindsFiveApexesCloseToTheClosedForm()
         Dim scene As New BouncingApexScene()
         Dim world = scene.Build()
