@@ -26,6 +26,8 @@ Friend NotInheritable Class Predictor
     Private _deferred As Integer() = Array.Empty(Of Integer)()
     Private _deferredBound As Double() = Array.Empty(Of Double)()
     Private _deferredCount As Integer
+    ' The cells of one lane scan whose overflow is still to be tested (see ScanLanesVector).
+    Private _crowdedCells As Integer() = Array.Empty(Of Integer)()
 
 #If NET Then
     ''' <summary>Whether pair tests run four lanes at a time (256-bit vectors, when the processor has them).</summary>
@@ -45,6 +47,8 @@ Friend NotInheritable Class Predictor
     ''' <summary>Room for n bodies in the scratch lists.</summary>
     Friend Sub Reset(n As Integer)
         If _scanList.Length < n Then _scanList = New Integer(n - 1) {}
+        ' A cell overflows only when it holds more bodies than it has lanes: fewer such cells than bodies.
+        If _crowdedCells.Length < n Then _crowdedCells = New Integer(n - 1) {}
         If _deferred.Length < n Then
             _deferred = New Integer(n - 1) {}
             _deferredBound = New Double(n - 1) {}
@@ -277,8 +281,9 @@ Friend NotInheritable Class Predictor
     End Sub
 
     ''' <summary>
-    ''' Cells c0 … c1 × r0 … r1, one body at a time, from the bodies' own state: each cell's overflow
-    ''' and then (when <paramref name="withLanes"/>) its lanes are listed, then tested in one loop.
+    ''' Cells c0 … c1 × r0 … r1, one body at a time, from the bodies' own state. With
+    ''' <paramref name="withLanes"/>, each cell's lanes, then the overflow lists of the cells that have
+    ''' one (the order of the vector scan); without, only the cells' overflow lists.
     ''' <paramref name="slowOnly"/>: the scanning body takes no hot path (asleep, or not falling freely).
     ''' </summary>
     Private Sub ScanBodies(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, withLanes As Boolean,
@@ -289,21 +294,27 @@ Friend NotInheritable Class Predictor
         Dim motion = _bodies.Motion, slot = _bodies.Slot
         Dim now = _s.Now
         Dim asleep = _bodies.Slot(i).Mode = BodyMode.Sleeping
+        Dim crowded = _crowdedCells, crowdedCount = 0
         For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
                 If cell = skip Then Continue For
                 Dim n = 0
-                Dim o = grid.OverflowHead(cell)
-                While o >= 0
-                    listed(n) = o
-                    n += 1
-                    o = grid.OverflowNext(o)
-                End While
                 If withLanes Then
+                    If grid.OverflowHead(cell) >= 0 Then
+                        crowded(crowdedCount) = cell
+                        crowdedCount += 1
+                    End If
                     For lane = cell * UniformGrid.Lanes To cell * UniformGrid.Lanes + count(cell) - 1
                         listed(n) = laneBody(lane)
                         n += 1
                     Next
+                Else
+                    Dim o = grid.OverflowHead(cell)
+                    While o >= 0
+                        listed(n) = o
+                        n += 1
+                        o = grid.OverflowNext(o)
+                    End While
                 End If
                 For q = 0 To n - 1
                     Dim j = listed(q)
@@ -344,11 +355,15 @@ Friend NotInheritable Class Predictor
                 Next
             Next
         Next
+        For k = 0 To crowdedCount - 1
+            Dim row = crowded(k) \ nx, col = crowded(k) - row * nx
+            ScanBodies(i, col, col, row, row, -1, False, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+        Next
     End Sub
 
 #If NET Then
     ''' <summary>
-    ''' Cells c0 … c1 × r0 … r1, four lanes at a time, from the published copies (any overflow first,
+    ''' Cells c0 … c1 × r0 … r1, four lanes at a time, from the published copies (then any overflow,
     ''' one by one, as in <see cref="ScanBodies"/>): the pair test of <see cref="ScanBodies"/> with
     ''' the same arithmetic, lane by lane. Lanes whose body does not share the scanning body's
     ''' acceleration, and touching pairs, go to <see cref="CheckPair"/>; a hit earlier than the best
@@ -374,12 +389,15 @@ Friend NotInheritable Class Predictor
         Dim laneIndex = Vector256.Create(0.0, 1.0, 2.0, 3.0)
         Dim vMargin = Vector256.Create(1 + 1.0E-6)
         Dim bestSeen = best, vInvBest = Vector256.Create(1 / best)
+        ' Cells with an overflow are listed and their overflow tested after the lanes: the loop then
+        ' calls nothing, so its constants stay in registers.
+        Dim crowded = _crowdedCells, crowdedCount = 0
         For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
                 If cell = skip Then Continue For
                 If overflow(cell) >= 0 Then
-                    Dim col = cell - rr * nx
-                    ScanBodies(i, col, col, rr, rr, -1, False, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+                    crowded(crowdedCount) = cell
+                    crowdedCount += 1
                 End If
                 Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
                 Dim hot = valid And Vector256.Equals(blocks(cell).Ay, vMatch)
@@ -431,6 +449,10 @@ Friend NotInheritable Class Predictor
                     End If
                 End While
             Next
+        Next
+        For k = 0 To crowdedCount - 1
+            Dim rr = crowded(k) \ nx, col = crowded(k) - rr * nx
+            ScanBodies(i, col, col, rr, rr, -1, False, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
         Next
     End Sub
 #End If

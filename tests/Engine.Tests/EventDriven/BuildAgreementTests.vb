@@ -79,12 +79,12 @@ Public Class BuildAgreementTests
         Return String.Join(" ", line.Split(" "c).Select(Function(f) If(f.Length = 16, CollisionLog.FromBits(f).ToString("R", CultureInfo.InvariantCulture), f)))
     End Function
 
-    ''' <summary>Field by field, how many units in the last place two record lines are apart.</summary>
+    ''' <summary>Field by field, how many units in the last place two record lines are apart (in decimal: two bit patterns of opposite sign overflow a Long).</summary>
     Private Shared Function Ulps(a As String, b As String) As String
         Dim fa = a.Split(" "c), fb = b.Split(" "c)
         If fa.Length <> fb.Length Then Return "(different kinds of line)"
         Return "ulps apart: " & String.Join(" ", fa.Zip(fb, Function(x, y) If(x.Length = 16 AndAlso y.Length = 16,
-            Math.Abs(Long.Parse(x, NumberStyles.HexNumber, CultureInfo.InvariantCulture) - Long.Parse(y, NumberStyles.HexNumber, CultureInfo.InvariantCulture)).ToString(CultureInfo.InvariantCulture),
+            Math.Abs(CDec(Long.Parse(x, NumberStyles.HexNumber, CultureInfo.InvariantCulture)) - CDec(Long.Parse(y, NumberStyles.HexNumber, CultureInfo.InvariantCulture))).ToString(CultureInfo.InvariantCulture),
             If(x = y, "=", "≠"))))
     End Function
 
