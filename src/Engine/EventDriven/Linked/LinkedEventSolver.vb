@@ -125,9 +125,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _now = t
             Select Case kind
                 Case 0 : TransitionOf(i, t, Unbounded)
-                Case 1 : Collide(i, j, WallSide.None, -1, t, Unbounded)
-                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded)
-                Case Else : Collide(i, -1, WallSide.None, j, t, Unbounded)
+                Case 1 : Collide(i, j, WallSide.None, -1, t, Unbounded, instant > WedgedAfter)
+                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded, instant > WedgedAfter)
+                Case Else : Collide(i, -1, WallSide.None, j, t, Unbounded, instant > WedgedAfter)
             End Select
         Loop
         _now = tEnd
@@ -493,8 +493,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Repredict(RestartResting(New List(Of Integer) From {g}, t), tEnd)
     End Sub
 
-    ''' <summary>Body i hits body j (i &lt; j), a wall or fixed body f at t: resolve it with the links of both, and report it.</summary>
-    Private Sub Collide(i As Integer, j As Integer, side As WallSide, f As Integer, t As Double, tEnd As Double)
+    ''' <summary>
+    ''' Body i hits body j (i &lt; j), a wall or fixed body f at t: resolve it with the links of both, and report
+    ''' it; when <paramref name="wedged"/>, with every contact touching the bodies it moves too (LinkedEventSolver.Wedge.vb).
+    ''' </summary>
+    Private Sub Collide(i As Integer, j As Integer, side As WallSide, f As Integer, t As Double, tEnd As Double, wedged As Boolean)
         Dim gi = _groupOf(i)
         Dim gj = If(j >= 0, _groupOf(j), -1)
         Sync(gi, t)
@@ -535,14 +538,15 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 _impulse.AddLink(l)
             Next
         End If
-        _impulse.Resolve()
+        Dim gathered = If(wedged, AddTouchingContacts(i, j, side, f, t, held), New List(Of Integer))
+        If wedged Then _impulse.ResolveWedged(_world.Restitution) Else _impulse.Resolve()
         Dim other = If(b, If(f >= 0, _fixed(f), Nothing))
         Dim aAfter = a.Velocity
         Dim bAfter = If(b Is Nothing, Vector.Zero, b.Velocity)
         ' Every group the blow moved, the lowest first: a body that comes to rest on another finds its new motion.
         held.Add(i)
         If j >= 0 Then held.Add(j)
-        Dim changed = held.Select(Function(k) _groupOf(k)).Distinct().OrderBy(Function(g) _groups(g).Bodies.Min(Function(c) Lowest(Array.IndexOf(_bodies, c)))).ToList()
+        Dim changed = held.Select(Function(k) _groupOf(k)).Concat(gathered).Distinct().OrderBy(Function(g) _groups(g).Bodies.Min(Function(c) Lowest(Array.IndexOf(_bodies, c)))).ToList()
         For Each g In changed
             Restart(g, t, False)
         Next
