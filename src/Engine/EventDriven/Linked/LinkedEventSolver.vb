@@ -583,10 +583,22 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Throw New UnsupportedSceneException(RestRefusal.Message(a, _groups(_groupOf(i)).Links, other, If(j >= 0, _groups(_groupOf(j)).Links, Nothing), normal))
     End Sub
 
-    ''' <summary>Body k's acceleration now (m/s²): a body on a parabola or sliding has its own; any other is taken to fall at g (the links' pull aside).</summary>
+    ''' <summary>
+    ''' Body k's acceleration now (m/s²): a body on a parabola or sliding has its own; any other falls at g and
+    ''' is pulled by its springs (written to it now), the pull of rods and strings aside.
+    ''' </summary>
     Private Function AccelerationOf(k As Integer) As Vector
         Dim flight = TryCast(MotionOf(k), FlightMotion)
-        Return If(flight IsNot Nothing, flight.Acceleration, New Vector(0, -_world.Gravity))
+        If flight IsNot Nothing Then Return flight.Acceleration
+        Dim body = _bodies(k)
+        Dim a = New Vector(0, -_world.Gravity)
+        For Each l In _groups(_groupOf(k)).Links
+            If l.Kind <> LinkKind.Spring Then Continue For
+            Dim along = (l.EndB - l.EndA).Normalized(Vector.Zero)
+            If l.A Is body Then a += along * (l.Tension / body.Mass)
+            If l.B Is body Then a -= along * (l.Tension / body.Mass)
+        Next
+        Return a
     End Function
 
     ''' <summary>
@@ -600,12 +612,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Sub RefuseBallRest(i As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
         Dim links = _groups(_groupOf(i)).Links
         If other Is Nothing Then
-            If side <> WallSide.Bottom OrElse links.Count = 0 Then Return
+            If links.Count = 0 Then Return
         ElseIf Not other.IsFixed Then
             Return
         End If
-        ' The normal points from the ball to what it hits: gravity presses it in only when that is below it.
-        Dim pressing = -_world.Gravity * normal.Y
+        ' The normal points from the ball to what it hits: gravity presses it in only when that is below it,
+        ' a spring when it pulls the ball towards it (a ball pulled sideways onto a wall or a peg).
+        Dim pressing = Vector.Dot(AccelerationOf(i), normal)
         If pressing <= 0 Then Return
         If Vector.Dot(relativeAfter, normal) > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
         Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(i), links, other, Nothing, normal))
