@@ -10,6 +10,7 @@ Imports Xunit
 <Collection(FuzzRuns.Name)>
 Public Class LinkedPressRegressionTests
     Private Const PressedOntoRectangle As String = "event-linked-spring-pressed-onto-rectangle.json"
+    Private Const ChainOnWall As String = "event-linked-chain-pressed-onto-wall.json"
     ''' <summary>These runs are known to end quickly; the cap only stops a runaway, s.</summary>
     Private Const GenerousCap As Double = 300
 
@@ -35,5 +36,31 @@ Public Class LinkedPressRegressionTests
         Dim broken = result.Violations.Where(Function(v) v.Invariant <> Invariants.Unsupported).ToList()
         Assert.True(broken.Count = 0, String.Join("; ", broken))
         Assert.True(result.Broke(Invariants.Unsupported))
+    End Sub
+
+    <Fact>
+    Public Sub ChainOnWall_BallC2NeverSinksIntoTheLeftWall_ItIsRefusedWithTheWorldAsItWas()
+        ' c2 hangs on a rod from c0, which hangs on a rod (and a string) from fixed points: the chain swings c2
+        ' into the left wall, and the rods' pull, not gravity, presses it there. Its bounces (e = 0.2) came
+        ' every 53 μs at the same speed, each a slop deeper: 3.7e-7 m out of the container by t = 0.75 s.
+        Dim world = SceneFile.LoadFile(TestPaths.Case_(ChainOnWall))
+        world.Solver = SolverFactory.Create("event")
+        Dim ball = DirectCast(world.Find("c2"), Circle)
+        Dim refused As UnsupportedSceneException = Nothing
+        Do While world.Time < 0.75 - 0.000000001
+            Dim before = ball.Position
+            Dim beforeTime = world.Time
+            Try
+                world.Advance(0.05)
+            Catch ex As UnsupportedSceneException
+                refused = ex
+                Assert.Equal(beforeTime, world.Time)
+                Assert.Equal(before, ball.Position)
+                Exit Do
+            End Try
+            Assert.True(ball.Position.X - ball.Radius >= -0.000000001, $"c2 is {-(ball.Position.X - ball.Radius)} m out of the left wall at t = {world.Time} s")
+        Loop
+        Assert.NotNull(refused)
+        Assert.Contains("'c2' on links come to rest on the left wall", refused.Message, StringComparison.Ordinal)
     End Sub
 End Class

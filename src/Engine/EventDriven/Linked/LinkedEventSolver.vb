@@ -550,7 +550,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
         For Each g In changed
             Restart(g, t, False)
         Next
-        RefuseRest(i, j, other, side, normal, bAfter - aAfter)
+        ' The gap as the new motions close it, for how hard they press the two together.
+        Dim after = If(j >= 0, PairGap(i, j), If(f >= 0, FixedGap(i, f), WallGap(i, side)))
+        RefuseRest(i, j, other, side, normal, bAfter - aAfter, after)
         _reports.Add(New CollisionRecord(t, a, other, side, CollisionKinds.Between(a, other), aBefore, aAfter, bBefore, bAfter))
         Repredict(RestartResting(changed, t), tEnd)
     End Sub
@@ -562,11 +564,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' say what was coming to rest on what, rather than followed into a pile-up of events. Balls among balls
     ''' and against walls are followed as they always were; a ball on a fixed body, see <see cref="RefuseBallRest"/>.
     ''' </summary>
-    Private Sub RefuseRest(i As Integer, j As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
+    Private Sub RefuseRest(i As Integer, j As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector, after As LinkedGap)
         If _restOn(i) IsNot Nothing OrElse (j >= 0 AndAlso _restOn(j) IsNot Nothing) Then Return
         Dim a = _bodies(i)
         If a.Kind = ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind = ShapeKind.Circle OrElse other.IsFixed) Then
-            RefuseBallRest(i, other, side, normal, relativeAfter)
+            RefuseBallRest(i, other, side, normal, relativeAfter, after)
             Return
         End If
         If other Is Nothing AndAlso side <> WallSide.Bottom Then Return
@@ -606,10 +608,12 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' it resting on nothing (a curve, a corner, or with links that do not let it rest), would bounce less
     ''' than four slops high: it is coming to rest where no rule holds it. The bounces would never end, each
     ''' pressing a slop further in (a ball on a peg beside a pendulum: 40 000 collisions per simulated second,
-    ''' sinking 40 μm a second). Refused, as for boxes. Balls on movable balls and against walls other than
-    ''' the floor are left as they are.
+    ''' sinking 40 μm a second). Refused, as for boxes. Balls on movable balls are left as they are. What
+    ''' presses is gravity and the ball's springs, or, when more, what the motion after the blow does to
+    ''' <paramref name="after"/>, the gap: a ball at the end of a chain of rods is swung into a side wall by
+    ''' the rods' pull, which no sum of forces here knows.
     ''' </summary>
-    Private Sub RefuseBallRest(i As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
+    Private Sub RefuseBallRest(i As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector, after As LinkedGap)
         Dim links = _groups(_groupOf(i)).Links
         If other Is Nothing Then
             If links.Count = 0 Then Return
@@ -618,11 +622,21 @@ Partial Friend NotInheritable Class LinkedEventSolver
         End If
         ' The normal points from the ball to what it hits: gravity presses it in only when that is below it,
         ' a spring when it pulls the ball towards it (a ball pulled sideways onto a wall or a peg).
-        Dim pressing = Vector.Dot(AccelerationOf(i), normal)
+        Dim pressing = Math.Max(Vector.Dot(AccelerationOf(i), normal), Squeeze(after, _now))
         If pressing <= 0 Then Return
         If Vector.Dot(relativeAfter, normal) > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
-        Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(i), links, other, Nothing, normal))
+        Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(i), links, other, Nothing, normal, side))
     End Sub
+
+    ''' <summary>
+    ''' How fast a gap's closing speeds up at <paramref name="t"/> (m/s²): minus its second derivative, from its
+    ''' rate a tenth of a microsecond on (far shorter than a bounce that could matter, far longer than the
+    ''' rounding of the rate).
+    ''' </summary>
+    Private Shared Function Squeeze(gap As LinkedGap, t As Double) As Double
+        Const H As Double = 0.0000001
+        Return -(gap.Rate(t + H) - gap.Rate(t)) / H
+    End Function
 
     ''' <summary>Predicts again from now the one contact of body i with body j, wall <paramref name="side"/> or fixed body f.</summary>
     Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)
