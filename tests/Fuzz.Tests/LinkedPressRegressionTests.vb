@@ -11,6 +11,7 @@ Imports Xunit
 Public Class LinkedPressRegressionTests
     Private Const PressedOntoRectangle As String = "event-linked-spring-pressed-onto-rectangle.json"
     Private Const ChainOnWall As String = "event-linked-chain-pressed-onto-wall.json"
+    Private Const PileOnFloor As String = "event-linked-ball-pile-on-floor.json"
     ''' <summary>These runs are known to end quickly; the cap only stops a runaway, s.</summary>
     Private Const GenerousCap As Double = 300
 
@@ -62,5 +63,23 @@ Public Class LinkedPressRegressionTests
         Loop
         Assert.NotNull(refused)
         Assert.Contains("'c2' on links come to rest on the left wall", refused.Message, StringComparison.Ordinal)
+    End Sub
+
+    <Fact>
+    Public Sub PileOnFloor_NoBallSinksIntoAnother_ItIsRefusedWithTheWorldAsItWas()
+        ' A pyramid of six equal balls at rest on the floor (g = 100, e = 0.24) beside a ball on a string: the
+        ' three on the floor rest there, the three above them bounced on them for ever, each bounce a slop
+        ' deeper: c1 and c5 2.9e-6 m into each other by t = 0.05 s.
+        Dim world = SceneFile.LoadFile(TestPaths.Case_(PileOnFloor))
+        world.Solver = SolverFactory.Create("event")
+        Dim start = world.Movables.Select(Function(b) b.Position).ToArray()
+        Dim ex = Assert.Throws(Of UnsupportedSceneException)(Sub() world.Advance(0.05))
+        Assert.Contains("come to rest on a ball", ex.Message, StringComparison.Ordinal)
+        Assert.Equal(0.0, world.Time)
+        Assert.Equal(start, world.Movables.Select(Function(b) b.Position).ToArray())
+        Dim text = IO.File.ReadAllText(TestPaths.Case_(PileOnFloor))
+        Dim result = SceneCheck.Check(text, "event", New RunPlan(0.05, 0.05, 0.013, GenerousCap))
+        Dim broken = result.Violations.Where(Function(v) v.Invariant <> Invariants.Unsupported).ToList()
+        Assert.True(broken.Count = 0, String.Join("; ", broken))
     End Sub
 End Class

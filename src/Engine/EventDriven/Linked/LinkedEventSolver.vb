@@ -565,6 +565,10 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' and against walls are followed as they always were; a ball on a fixed body, see <see cref="RefuseBallRest"/>.
     ''' </summary>
     Private Sub RefuseRest(i As Integer, j As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector, after As LinkedGap)
+        If j >= 0 AndAlso (_restOn(i) Is Nothing) <> (_restOn(j) Is Nothing) Then
+            RefuseRestOnResting(i, j, normal, relativeAfter, after)
+            Return
+        End If
         If _restOn(i) IsNot Nothing OrElse (j >= 0 AndAlso _restOn(j) IsNot Nothing) Then Return
         Dim a = _bodies(i)
         If a.Kind = ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind = ShapeKind.Circle OrElse other.IsFixed) Then
@@ -626,6 +630,22 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If pressing <= 0 Then Return
         If Vector.Dot(relativeAfter, normal) > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
         Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(i), links, other, Nothing, normal, side))
+    End Sub
+
+    ''' <summary>
+    ''' Bodies i and j, of which one rests and the other does not (a ball on a ball resting in a V, or on a
+    ''' box's corner): the one that does not rest is coming to rest on it where no rule holds it if it would
+    ''' bounce less than four slops high, pressed as the motions after the blow press the gap
+    ''' <paramref name="after"/> closed. Left to bounce, each bounce began a slop deeper (2.3 μm by t = 0.7 s
+    ''' for a ball on a ball at the bottom of a V). Refused, as on a fixed body.
+    ''' </summary>
+    Private Sub RefuseRestOnResting(i As Integer, j As Integer, normal As Vector, relativeAfter As Vector, after As LinkedGap)
+        Dim pressing = Squeeze(after, _now)
+        If pressing <= 0 OrElse Vector.Dot(relativeAfter, normal) > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
+        Dim body = If(_restOn(i) Is Nothing, i, j)
+        Dim support = If(body = i, j, i)
+        Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(body), _groups(_groupOf(body)).Links, _bodies(support),
+                                                                _groups(_groupOf(support)).Links, If(body = i, normal, -normal)))
     End Sub
 
     ''' <summary>
