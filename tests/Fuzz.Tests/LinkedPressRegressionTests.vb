@@ -12,6 +12,7 @@ Public Class LinkedPressRegressionTests
     Private Const PressedOntoRectangle As String = "event-linked-spring-pressed-onto-rectangle.json"
     Private Const ChainOnWall As String = "event-linked-chain-pressed-onto-wall.json"
     Private Const PileOnFloor As String = "event-linked-ball-pile-on-floor.json"
+    Private Const SlidesIntoBall As String = "event-linked-ball-slides-into-ball.json"
     ''' <summary>These runs are known to end quickly; the cap only stops a runaway, s.</summary>
     Private Const GenerousCap As Double = 300
 
@@ -81,5 +82,31 @@ Public Class LinkedPressRegressionTests
         Dim result = SceneCheck.Check(text, "event", New RunPlan(0.05, 0.05, 0.013, GenerousCap))
         Dim broken = result.Violations.Where(Function(v) v.Invariant <> Invariants.Unsupported).ToList()
         Assert.True(broken.Count = 0, String.Join("; ", broken))
+    End Sub
+
+    <Fact>
+    Public Sub SlidesIntoBall_BallC2NeverSinksIntoC5_ItIsRefusedWithTheWorldAsItWas()
+        ' c5 rests at the bottom of the V of segments s0 and s1; c2 slides down s0 into it (e = 0, g = 16.8),
+        ' stops dead, slides on and hits it again 12 μs later, each time a slop deeper: 2.3e-6 m by t = 0.7 s.
+        Dim world = SceneFile.LoadFile(TestPaths.Case_(SlidesIntoBall))
+        world.Solver = SolverFactory.Create("event")
+        Dim c2 = DirectCast(world.Find("c2"), Circle), c5 = DirectCast(world.Find("c5"), Circle)
+        Dim refused As UnsupportedSceneException = Nothing
+        Do While world.Time < 0.7 - 0.000000001
+            Dim before = c2.Position
+            Dim beforeTime = world.Time
+            Try
+                world.Advance(0.05)
+            Catch ex As UnsupportedSceneException
+                refused = ex
+                Assert.Equal(beforeTime, world.Time)
+                Assert.Equal(before, c2.Position)
+                Exit Do
+            End Try
+            Dim depth = c2.Radius + c5.Radius - (c2.Position - c5.Position).Length
+            Assert.True(depth <= 0.000000001, $"c2 is {depth} m into c5 at t = {world.Time} s")
+        Loop
+        Assert.NotNull(refused)
+        Assert.Contains("'c2' come to rest on a ball 'c5'", refused.Message, StringComparison.Ordinal)
     End Sub
 End Class

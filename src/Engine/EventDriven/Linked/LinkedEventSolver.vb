@@ -565,8 +565,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' and against walls are followed as they always were; a ball on a fixed body, see <see cref="RefuseBallRest"/>.
     ''' </summary>
     Private Sub RefuseRest(i As Integer, j As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector, after As LinkedGap)
-        If j >= 0 AndAlso (_restOn(i) Is Nothing) <> (_restOn(j) Is Nothing) Then
-            RefuseRestOnResting(i, j, normal, relativeAfter, after)
+        If j >= 0 AndAlso (_restOn(i) IsNot Nothing OrElse _restOn(j) IsNot Nothing) Then
+            ' One now resting on the other is held there by the rest rules.
+            If Not (RestsOn(i, RestSupportKind.Body, j) OrElse RestsOn(j, RestSupportKind.Body, i)) Then RefuseRestOnResting(i, j, normal, relativeAfter, after)
             Return
         End If
         If _restOn(i) IsNot Nothing OrElse (j >= 0 AndAlso _restOn(j) IsNot Nothing) Then Return
@@ -633,16 +634,22 @@ Partial Friend NotInheritable Class LinkedEventSolver
     End Sub
 
     ''' <summary>
-    ''' Bodies i and j, of which one rests and the other does not (a ball on a ball resting in a V, or on a
-    ''' box's corner): the one that does not rest is coming to rest on it where no rule holds it if it would
-    ''' bounce less than four slops high, pressed as the motions after the blow press the gap
-    ''' <paramref name="after"/> closed. Left to bounce, each bounce began a slop deeper (2.3 μm by t = 0.7 s
-    ''' for a ball on a ball at the bottom of a V). Refused, as on a fixed body.
+    ''' Bodies i and j, of which one rests or both do, and collide (a ball on balls resting on the floor, a ball
+    ''' sliding down a slope into one resting at its foot): the one that does not rest (or, both resting, the
+    ''' higher) is coming to rest on the other where no rule holds it if it would bounce less than four slops
+    ''' high, pressed as the motions after the blow press the gap <paramref name="after"/> closed. Left to
+    ''' bounce, each bounce began a slop deeper (2.3 μm by t = 0.7 s for a ball sliding into one at the bottom
+    ''' of a V). Refused, as on a fixed body. Bodies that slide into each other on a level face do not press.
     ''' </summary>
     Private Sub RefuseRestOnResting(i As Integer, j As Integer, normal As Vector, relativeAfter As Vector, after As LinkedGap)
         Dim pressing = Squeeze(after, _now)
         If pressing <= 0 OrElse Vector.Dot(relativeAfter, normal) > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
-        Dim body = If(_restOn(i) Is Nothing, i, j)
+        Dim body As Integer
+        If (_restOn(i) Is Nothing) <> (_restOn(j) Is Nothing) Then
+            body = If(_restOn(i) Is Nothing, i, j)
+        Else
+            body = If(_bodies(i).Position.Y >= _bodies(j).Position.Y, i, j)
+        End If
         Dim support = If(body = i, j, i)
         Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(body), _groups(_groupOf(body)).Links, _bodies(support),
                                                                 _groups(_groupOf(support)).Links, If(body = i, normal, -normal)))
