@@ -125,9 +125,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _now = t
             Select Case kind
                 Case 0 : TransitionOf(i, t, Unbounded)
-                Case 1 : Collide(i, j, WallSide.None, -1, t, Unbounded)
-                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded)
-                Case Else : Collide(i, -1, WallSide.None, j, t, Unbounded)
+                Case 1 : Collide(i, j, WallSide.None, -1, t, Unbounded, instant > WedgedAfter)
+                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded, instant > WedgedAfter)
+                Case Else : Collide(i, -1, WallSide.None, j, t, Unbounded, instant > WedgedAfter)
             End Select
         Loop
         _now = tEnd
@@ -493,8 +493,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Repredict(RestartResting(New List(Of Integer) From {g}, t), tEnd)
     End Sub
 
-    ''' <summary>Body i hits body j (i &lt; j), a wall or fixed body f at t: resolve it with the links of both, and report it.</summary>
-    Private Sub Collide(i As Integer, j As Integer, side As WallSide, f As Integer, t As Double, tEnd As Double)
+    ''' <summary>
+    ''' Body i hits body j (i &lt; j), a wall or fixed body f at t: resolve it with the links of both, and report
+    ''' it; when <paramref name="wedged"/>, with every contact touching the bodies it moves too (LinkedEventSolver.Wedge.vb).
+    ''' </summary>
+    Private Sub Collide(i As Integer, j As Integer, side As WallSide, f As Integer, t As Double, tEnd As Double, wedged As Boolean)
         Dim gi = _groupOf(i)
         Dim gj = If(j >= 0, _groupOf(j), -1)
         Sync(gi, t)
@@ -535,18 +538,21 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 _impulse.AddLink(l)
             Next
         End If
-        _impulse.Resolve()
+        Dim gathered = If(wedged, AddTouchingContacts(i, j, side, f, t, held), New List(Of Integer))
+        If wedged Then _impulse.ResolveWedged(_world.Restitution) Else _impulse.Resolve()
         Dim other = If(b, If(f >= 0, _fixed(f), Nothing))
         Dim aAfter = a.Velocity
         Dim bAfter = If(b Is Nothing, Vector.Zero, b.Velocity)
         ' Every group the blow moved, the lowest first: a body that comes to rest on another finds its new motion.
         held.Add(i)
         If j >= 0 Then held.Add(j)
-        Dim changed = held.Select(Function(k) _groupOf(k)).Distinct().OrderBy(Function(g) _groups(g).Bodies.Min(Function(c) Lowest(Array.IndexOf(_bodies, c)))).ToList()
+        Dim changed = held.Select(Function(k) _groupOf(k)).Concat(gathered).Distinct().OrderBy(Function(g) _groups(g).Bodies.Min(Function(c) Lowest(Array.IndexOf(_bodies, c)))).ToList()
         For Each g In changed
             Restart(g, t, False)
         Next
-        RefuseRest(i, j, other, side, normal, bAfter - aAfter)
+        ' The gap as the new motions close it, for how hard they press the two together.
+        Dim after = If(j >= 0, PairGap(i, j), If(f >= 0, FixedGap(i, f), WallGap(i, side)))
+        RefuseRest(i, j, other, side, normal, bAfter - aAfter, after)
         _reports.Add(New CollisionRecord(t, a, other, side, CollisionKinds.Between(a, other), aBefore, aAfter, bBefore, bAfter))
         Repredict(RestartResting(changed, t), tEnd)
     End Sub
@@ -558,11 +564,16 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' say what was coming to rest on what, rather than followed into a pile-up of events. Balls among balls
     ''' and against walls are followed as they always were; a ball on a fixed body, see <see cref="RefuseBallRest"/>.
     ''' </summary>
-    Private Sub RefuseRest(i As Integer, j As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
+    Private Sub RefuseRest(i As Integer, j As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector, after As LinkedGap)
+        If j >= 0 AndAlso (_restOn(i) IsNot Nothing OrElse _restOn(j) IsNot Nothing) Then
+            ' One now resting on the other is held there by the rest rules.
+            If Not (RestsOn(i, RestSupportKind.Body, j) OrElse RestsOn(j, RestSupportKind.Body, i)) Then RefuseRestOnResting(i, j, normal, relativeAfter, after)
+            Return
+        End If
         If _restOn(i) IsNot Nothing OrElse (j >= 0 AndAlso _restOn(j) IsNot Nothing) Then Return
         Dim a = _bodies(i)
         If a.Kind = ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind = ShapeKind.Circle OrElse other.IsFixed) Then
-            RefuseBallRest(i, other, side, normal, relativeAfter)
+            RefuseBallRest(i, other, side, normal, relativeAfter, after)
             Return
         End If
         If other Is Nothing AndAlso side <> WallSide.Bottom Then Return
@@ -579,10 +590,22 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Throw New UnsupportedSceneException(RestRefusal.Message(a, _groups(_groupOf(i)).Links, other, If(j >= 0, _groups(_groupOf(j)).Links, Nothing), normal))
     End Sub
 
-    ''' <summary>Body k's acceleration now (m/s²): a body on a parabola or sliding has its own; any other is taken to fall at g (the links' pull aside).</summary>
+    ''' <summary>
+    ''' Body k's acceleration now (m/s²): a body on a parabola or sliding has its own; any other falls at g and
+    ''' is pulled by its springs (written to it now), the pull of rods and strings aside.
+    ''' </summary>
     Private Function AccelerationOf(k As Integer) As Vector
         Dim flight = TryCast(MotionOf(k), FlightMotion)
-        Return If(flight IsNot Nothing, flight.Acceleration, New Vector(0, -_world.Gravity))
+        If flight IsNot Nothing Then Return flight.Acceleration
+        Dim body = _bodies(k)
+        Dim a = New Vector(0, -_world.Gravity)
+        For Each l In _groups(_groupOf(k)).Links
+            If l.Kind <> LinkKind.Spring Then Continue For
+            Dim along = (l.EndB - l.EndA).Normalized(Vector.Zero)
+            If l.A Is body Then a += along * (l.Tension / body.Mass)
+            If l.B Is body Then a -= along * (l.Tension / body.Mass)
+        Next
+        Return a
     End Function
 
     ''' <summary>
@@ -590,22 +613,57 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' it resting on nothing (a curve, a corner, or with links that do not let it rest), would bounce less
     ''' than four slops high: it is coming to rest where no rule holds it. The bounces would never end, each
     ''' pressing a slop further in (a ball on a peg beside a pendulum: 40 000 collisions per simulated second,
-    ''' sinking 40 μm a second). Refused, as for boxes. Balls on movable balls and against walls other than
-    ''' the floor are left as they are.
+    ''' sinking 40 μm a second). Refused, as for boxes. Balls on movable balls are left as they are. What
+    ''' presses is gravity and the ball's springs, or, when more, what the motion after the blow does to
+    ''' <paramref name="after"/>, the gap: a ball at the end of a chain of rods is swung into a side wall by
+    ''' the rods' pull, which no sum of forces here knows.
     ''' </summary>
-    Private Sub RefuseBallRest(i As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector)
+    Private Sub RefuseBallRest(i As Integer, other As Shape, side As WallSide, normal As Vector, relativeAfter As Vector, after As LinkedGap)
         Dim links = _groups(_groupOf(i)).Links
         If other Is Nothing Then
-            If side <> WallSide.Bottom OrElse links.Count = 0 Then Return
+            If links.Count = 0 Then Return
         ElseIf Not other.IsFixed Then
             Return
         End If
-        ' The normal points from the ball to what it hits: gravity presses it in only when that is below it.
-        Dim pressing = -_world.Gravity * normal.Y
+        ' The normal points from the ball to what it hits: gravity presses it in only when that is below it,
+        ' a spring when it pulls the ball towards it (a ball pulled sideways onto a wall or a peg).
+        Dim pressing = Math.Max(Vector.Dot(AccelerationOf(i), normal), Squeeze(after, _now))
         If pressing <= 0 Then Return
         If Vector.Dot(relativeAfter, normal) > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
-        Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(i), links, other, Nothing, normal))
+        Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(i), links, other, Nothing, normal, side))
     End Sub
+
+    ''' <summary>
+    ''' Bodies i and j, of which one rests or both do, and collide (a ball on balls resting on the floor, a ball
+    ''' sliding down a slope into one resting at its foot): the one that does not rest (or, both resting, the
+    ''' higher) is coming to rest on the other where no rule holds it if it would bounce less than four slops
+    ''' high, pressed as the motions after the blow press the gap <paramref name="after"/> closed. Left to
+    ''' bounce, each bounce began a slop deeper (2.3 μm by t = 0.7 s for a ball sliding into one at the bottom
+    ''' of a V). Refused, as on a fixed body. Bodies that slide into each other on a level face do not press.
+    ''' </summary>
+    Private Sub RefuseRestOnResting(i As Integer, j As Integer, normal As Vector, relativeAfter As Vector, after As LinkedGap)
+        Dim pressing = Squeeze(after, _now)
+        If pressing <= 0 OrElse Vector.Dot(relativeAfter, normal) > LinkedMotions.RestingSpeed(pressing, Slop) Then Return
+        Dim body As Integer
+        If (_restOn(i) Is Nothing) <> (_restOn(j) Is Nothing) Then
+            body = If(_restOn(i) Is Nothing, i, j)
+        Else
+            body = If(_bodies(i).Position.Y >= _bodies(j).Position.Y, i, j)
+        End If
+        Dim support = If(body = i, j, i)
+        Throw New UnsupportedSceneException(RestRefusal.Message(_bodies(body), _groups(_groupOf(body)).Links, _bodies(support),
+                                                                _groups(_groupOf(support)).Links, If(body = i, normal, -normal)))
+    End Sub
+
+    ''' <summary>
+    ''' How fast a gap's closing speeds up at <paramref name="t"/> (m/s²): minus its second derivative, from its
+    ''' rate a tenth of a microsecond on (far shorter than a bounce that could matter, far longer than the
+    ''' rounding of the rate).
+    ''' </summary>
+    Private Shared Function Squeeze(gap As LinkedGap, t As Double) As Double
+        Const H As Double = 0.0000001
+        Return -(gap.Rate(t + H) - gap.Rate(t)) / H
+    End Function
 
     ''' <summary>Predicts again from now the one contact of body i with body j, wall <paramref name="side"/> or fixed body f.</summary>
     Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)

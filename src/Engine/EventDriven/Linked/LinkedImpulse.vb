@@ -26,6 +26,8 @@ Friend NotInheritable Class LinkedImpulse
         Public Lower As Double
         Public Upper As Double
         Public Impulse As Double
+        ''' <summary>A contact (it pushes only), not a link.</summary>
+        Public IsContact As Boolean
     End Structure
 
     ''' <summary>Forgets the rows of the previous collision.</summary>
@@ -46,7 +48,7 @@ Friend NotInheritable Class LinkedImpulse
 
     ''' <summary>The contact: <paramref name="a"/> touches <paramref name="b"/> (Nothing: a wall or a fixed body) with <paramref name="normal"/> from a towards b.</summary>
     Friend Sub AddContact(a As Shape, b As Shape, normal As Vector, restitution As Double)
-        Dim row As New Row With {.A = IndexOf(a), .B = If(b Is Nothing, -1, IndexOf(b)), .U = normal, .Lower = 0, .Upper = Double.PositiveInfinity}
+        Dim row As New Row With {.A = IndexOf(a), .B = If(b Is Nothing, -1, IndexOf(b)), .U = normal, .Lower = 0, .Upper = Double.PositiveInfinity, .IsContact = True}
         row.Target = -restitution * Math.Min(SeparationSpeed(row), 0)
         _rows.Add(row)
     End Sub
@@ -72,11 +74,47 @@ Friend NotInheritable Class LinkedImpulse
 
     ''' <summary>Solves the rows and writes the new velocities to the bodies.</summary>
     Friend Sub Resolve()
+        Sweep()
+        WriteVelocities()
+    End Sub
+
+    ''' <summary>
+    ''' Solves the rows as one blow in two phases (Poisson's hypothesis), for bodies wedged among contacts that
+    ''' pairwise blows pass back and forth for ever (a ball caged with no room between the ends of a rod): first
+    ''' every contact only stops its approach (target 0), which projects the velocities onto those that approach
+    ''' nowhere; then each contact gives back <paramref name="restitution"/> times the impulse it took, and what
+    ''' that sends into another contact is stopped again. The projection is orthogonal in the kinetic-energy
+    ''' metric, so the energy after the first phase is the energy before less that of the change; giving back
+    ''' at most all of the change (e ≤ 1) gains nothing, and stopping again only loses.
+    ''' </summary>
+    Friend Sub ResolveWedged(restitution As Double)
+        For i = 0 To _rows.Count - 1
+            Dim row = _rows(i)
+            If row.IsContact Then row.Target = 0
+            _rows(i) = row
+        Next
+        Sweep()
+        For i = 0 To _rows.Count - 1
+            Dim row = _rows(i)
+            If row.IsContact AndAlso row.Impulse > 0 Then
+                Dim give = restitution * row.Impulse
+                If row.A >= 0 Then _velocities(row.A) -= row.U * (give * InverseMass(row.A))
+                If row.B >= 0 Then _velocities(row.B) += row.U * (give * InverseMass(row.B))
+            End If
+            row.Impulse = 0
+            _rows(i) = row
+        Next
+        Sweep()
+        WriteVelocities()
+    End Sub
+
+    ''' <summary>Projected Gauss–Seidel sweeps over the rows, from the impulses they hold, until nothing changes.</summary>
+    Private Sub Sweep()
         Dim scale = 0.0
         For Each v In _velocities
             scale = Math.Max(scale, v.Length)
         Next
-        For sweep = 1 To MaxSweeps
+        For pass = 1 To MaxSweeps
             Dim change = 0.0
             For i = 0 To _rows.Count - 1
                 Dim row = _rows(i)
@@ -94,6 +132,9 @@ Friend NotInheritable Class LinkedImpulse
             Next
             If change <= 0.000000000000001 * scale Then Exit For
         Next
+    End Sub
+
+    Private Sub WriteVelocities()
         For i = 0 To _bodies.Count - 1
             _bodies(i).Velocity = _velocities(i)
         Next

@@ -8,11 +8,13 @@ Friend Module RestRefusal
     ''' <summary>
     ''' The message for <paramref name="body"/> (held by <paramref name="links"/>) coming to rest on
     ''' <paramref name="support"/> (Nothing: the floor; held by <paramref name="supportLinks"/> when it moves)
-    ''' across a contact with unit <paramref name="normal"/>.
+    ''' across a contact with unit <paramref name="normal"/>; with no support, the wall <paramref name="side"/>
+    ''' (the floor unless said).
     ''' </summary>
-    Friend Function Message(body As Shape, links As IReadOnlyCollection(Of Link), support As Shape, supportLinks As IReadOnlyCollection(Of Link), normal As Vector) As String
+    Friend Function Message(body As Shape, links As IReadOnlyCollection(Of Link), support As Shape, supportLinks As IReadOnlyCollection(Of Link), normal As Vector,
+                            Optional side As WallSide = WallSide.Bottom) As String
         Dim what = Name(body) & If(links.Count > 0, " on " & If(links.Count = 1, "a " & KindName(links.First()), "links"), "")
-        Dim where = If(support Is Nothing, "the floor", Name(support))
+        Dim where = If(support IsNot Nothing, Name(support), WallName(side))
         Return $"the event solver does not yet let {what} come to rest on {where} in a scene with links ({Reason(links, support, supportLinks, normal)}); use --solver verlet"
     End Function
 
@@ -35,6 +37,15 @@ Friend Module RestRefusal
             Case ShapeKind.Rectangle : Return If(s.IsFixed, "a fixed rectangle", "a box") & id
             Case ShapeKind.Segment : Return "a segment" & id
             Case Else : Return If(s.IsFixed, "a fixed polygon", "a polygon") & id
+        End Select
+    End Function
+
+    Private Function WallName(side As WallSide) As String
+        Select Case side
+            Case WallSide.Left : Return "the left wall"
+            Case WallSide.Right : Return "the right wall"
+            Case WallSide.Top : Return "the ceiling"
+            Case Else : Return "the floor"
         End Select
     End Function
 
