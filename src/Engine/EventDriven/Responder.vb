@@ -154,7 +154,7 @@ Friend NotInheritable Class Responder
             _rest.NoteHit(i)
             _rest.NoteHit(j)
         End If
-        ' Two free bodies that both moved, without gravity (the elastic gas): no rest rule can apply.
+        ' Two free bodies, both movable, with no gravity (the elastic gas): no rest rule can apply.
         If b.Slot(i).Mode <> BodyMode.Free OrElse b.Slot(j).Mode <> BodyMode.Free OrElse invI = 0 OrElse invJ = 0 OrElse _s.G <> 0 Then
             RestAfterHit(i, j, n, vi, vj, result.A, result.B, invI, invJ)
         End If
