@@ -48,20 +48,8 @@ Public Class LinkedPressRegressionTests
         Dim world = SceneFile.LoadFile(TestPaths.Case_(ChainOnWall))
         world.Solver = SolverFactory.Create("event")
         Dim ball = DirectCast(world.Find("c2"), Circle)
-        Dim refused As UnsupportedSceneException = Nothing
-        Do While world.Time < 0.75 - 0.000000001
-            Dim before = ball.Position
-            Dim beforeTime = world.Time
-            Try
-                world.Advance(0.05)
-            Catch ex As UnsupportedSceneException
-                refused = ex
-                Assert.Equal(beforeTime, world.Time)
-                Assert.Equal(before, ball.Position)
-                Exit Do
-            End Try
-            Assert.True(ball.Position.X - ball.Radius >= -0.000000001, $"c2 is {-(ball.Position.X - ball.Radius)} m out of the left wall at t = {world.Time} s")
-        Loop
+        Dim refused = AdvanceUntilRefused(world, ball, 0.75,
+            Sub() Assert.True(ball.Position.X - ball.Radius >= -0.000000001, $"c2 is {-(ball.Position.X - ball.Radius)} m out of the left wall at t = {world.Time} s"))
         Assert.NotNull(refused)
         Assert.Contains("'c2' on links come to rest on the left wall", refused.Message, StringComparison.Ordinal)
     End Sub
@@ -91,22 +79,33 @@ Public Class LinkedPressRegressionTests
         Dim world = SceneFile.LoadFile(TestPaths.Case_(SlidesIntoBall))
         world.Solver = SolverFactory.Create("event")
         Dim c2 = DirectCast(world.Find("c2"), Circle), c5 = DirectCast(world.Find("c5"), Circle)
-        Dim refused As UnsupportedSceneException = Nothing
-        Do While world.Time < 0.7 - 0.000000001
-            Dim before = c2.Position
+        Dim refused = AdvanceUntilRefused(world, c2, 0.7,
+            Sub()
+                Dim depth = c2.Radius + c5.Radius - (c2.Position - c5.Position).Length
+                Assert.True(depth <= 0.000000001, $"c2 is {depth} m into c5 at t = {world.Time} s")
+            End Sub)
+        Assert.NotNull(refused)
+        Assert.Contains("'c2' come to rest on a ball 'c5'", refused.Message, StringComparison.Ordinal)
+    End Sub
+
+    ''' <summary>
+    ''' Advances <paramref name="world"/> 0.05 s at a time up to <paramref name="endTime"/> (s), running
+    ''' <paramref name="check"/> after each step, until the event solver refuses; a refusal must leave the
+    ''' world as it was (its clock, and <paramref name="body"/> where it was). Returns the refusal, or Nothing.
+    ''' </summary>
+    Private Shared Function AdvanceUntilRefused(world As World, body As Shape, endTime As Double, check As Action) As UnsupportedSceneException
+        Do While world.Time < endTime - 0.000000001
+            Dim before = body.Position
             Dim beforeTime = world.Time
             Try
                 world.Advance(0.05)
             Catch ex As UnsupportedSceneException
-                refused = ex
                 Assert.Equal(beforeTime, world.Time)
-                Assert.Equal(before, c2.Position)
-                Exit Do
+                Assert.Equal(before, body.Position)
+                Return ex
             End Try
-            Dim depth = c2.Radius + c5.Radius - (c2.Position - c5.Position).Length
-            Assert.True(depth <= 0.000000001, $"c2 is {depth} m into c5 at t = {world.Time} s")
+            check()
         Loop
-        Assert.NotNull(refused)
-        Assert.Contains("'c2' come to rest on a ball 'c5'", refused.Message, StringComparison.Ordinal)
-    End Sub
+        Return Nothing
+    End Function
 End Class
