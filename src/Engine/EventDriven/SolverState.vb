@@ -75,20 +75,19 @@ Friend NotInheritable Class SolverState
 
     ''' <summary>Moves body i's reference point to the clock, exactly along its path (not while it slides round a corner).</summary>
     Friend Sub Sync(i As Integer)
-        If Now = Bodies.Motion(i).T0 OrElse Bodies.Slot(i).Mode = BodyMode.Rounding Then Return
-        Bodies.Motion(i).MoveTo(Now)
-        Publish(i)
+        If SyncUnpublished(i) Then Publish(i)
     End Sub
 
     ''' <summary>
     ''' As <see cref="Sync"/>, without publishing: for a collision that ends in <see cref="Changed"/>
     ''' (which publishes), so that each body's lane is written once. Its lane lags until then, so
-    ''' nothing may scan the lanes in between.
+    ''' nothing may scan the lanes in between. Whether the body moved.
     ''' </summary>
-    Friend Sub SyncUnpublished(i As Integer)
-        If Now = Bodies.Motion(i).T0 OrElse Bodies.Slot(i).Mode = BodyMode.Rounding Then Return
+    Friend Function SyncUnpublished(i As Integer) As Boolean
+        If Now = Bodies.Motion(i).T0 OrElse Bodies.Slot(i).Mode = BodyMode.Rounding Then Return False
         Bodies.Motion(i).MoveTo(Now)
-    End Sub
+        Return True
+    End Function
 
     ''' <summary>Moves gridded body i to the cell at (col, row), if it is not there already, and publishes it there.</summary>
     Friend Sub MoveToCell(i As Integer, col As Integer, row As Integer)

@@ -35,9 +35,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
                     If m = k OrElse Not pairs.Add(PairKey(k, m)) OrElse _rodPair.Contains(PairKey(k, m)) Then Continue For
                     Dim lo = Math.Min(k, m), hi = Math.Max(k, m)
                     If RestsOn(lo, RestSupportKind.Body, hi) OrElse RestsOn(hi, RestSupportKind.Body, lo) Then Continue For
-                    Dim gap = PairGap(lo, hi)
-                    Dim normal As Vector, rate As Double
-                    If gap.GapAndNormal(t, normal, rate) > Slop Then Continue For
+                    Dim normal As Vector
+                    If Not Touches(PairGap(lo, hi), t, normal) Then Continue For
                     Dim gm = _groupOf(m)
                     If Not groups.Contains(gm) Then
                         If gathered + _groups(gm).Bodies.Count > MaxWedgedBodies Then Continue For
@@ -48,7 +47,6 @@ Partial Friend NotInheritable Class LinkedEventSolver
                             _impulse.AddLink(l)
                         Next
                     End If
-                    If gap.Difference IsNot Nothing Then normal = gap.ContactNormal(t)
                     _impulse.AddContact(_bodies(lo), _bodies(hi), normal, _world.Restitution)
                 Next
                 If _world.Walls Then
@@ -68,9 +66,15 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     ''' <summary>Body k's contact with a wall or fixed body, if it touches at <paramref name="t"/>.</summary>
     Private Sub AddTouching(k As Integer, gap As LinkedGap, t As Double)
-        Dim normal As Vector, rate As Double
-        If gap.GapAndNormal(t, normal, rate) > Slop Then Return
-        If gap.Difference IsNot Nothing Then normal = gap.ContactNormal(t)
-        _impulse.AddContact(_bodies(k), Nothing, normal, _world.Restitution)
+        Dim normal As Vector
+        If Touches(gap, t, normal) Then _impulse.AddContact(_bodies(k), Nothing, normal, _world.Restitution)
     End Sub
+
+    ''' <summary>Whether the gap is within the slop at <paramref name="t"/>, and then the contact's <paramref name="normal"/>.</summary>
+    Private Shared Function Touches(gap As LinkedGap, t As Double, ByRef normal As Vector) As Boolean
+        Dim rate As Double
+        If gap.GapAndNormal(t, normal, rate) > Slop Then Return False
+        If gap.Difference IsNot Nothing Then normal = gap.ContactNormal(t)
+        Return True
+    End Function
 End Class
