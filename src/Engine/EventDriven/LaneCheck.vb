@@ -1,5 +1,9 @@
 Option Strict On
 
+#If NET Then
+Imports System.Runtime.CompilerServices
+#End If
+
 ''' <summary>
 ''' The grid's lanes copy each body's motion for the vectorised pair test (see UniformGrid). A copy
 ''' that lags its body would feed wrong predictions without any other sign, so tests can have every
@@ -27,7 +31,7 @@ Friend Module LaneCheck
                 Throw New InvalidOperationException($"body {i} has lane {lane}, which is not its own in cell {cell}")
             End If
 #If NET Then
-            If Not grid.Blocks(cell).LaneIs(lane Mod UniformGrid.Lanes, b.Motion(i), b.Slot(i).ColTime) Then
+            If Not Unsafe.AddByteOffset(grid.Blocks(cell), grid.BlockShift).LaneIs(lane Mod UniformGrid.Lanes, b.Motion(i), b.Slot(i).ColTime) Then
                 Throw New InvalidOperationException($"the lane of body {i} lags its motion at t = {s.Now} s")
             End If
 #End If

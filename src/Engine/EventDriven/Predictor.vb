@@ -373,7 +373,7 @@ Friend NotInheritable Class Predictor
                                 px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
                                 ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
         Dim grid = _grid
-        Dim blocks = grid.Blocks, count = grid.Count, laneBody = grid.LaneBody, overflow = grid.OverflowHead
+        Dim blocks = grid.Blocks, shift = grid.BlockShift, count = grid.Count, laneBody = grid.LaneBody, overflow = grid.OverflowHead
         Dim nx = grid.Nx
         Dim now = _s.Now
         Dim asleep = _bodies.Slot(i).Mode = BodyMode.Sleeping
@@ -400,16 +400,16 @@ Friend NotInheritable Class Predictor
                     crowdedCount += 1
                 End If
                 Dim valid = Vector256.LessThan(laneIndex, Vector256.Create(CDbl(count(cell))))
-                Dim hot = valid And Vector256.Equals(blocks(cell).Ay, vMatch)
-                Dim tj = vNow - blocks(cell).T0
-                Dim jvx = blocks(cell).Vx
-                Dim jvy = blocks(cell).Vy
-                Dim dx = vPx - (blocks(cell).Px + jvx * tj)
-                Dim dy = vPy - (blocks(cell).Py + (jvy + vHalfAy * tj) * tj)
+                Dim hot = valid And Vector256.Equals(Unsafe.AddByteOffset(blocks(cell), shift).Ay, vMatch)
+                Dim tj = vNow - Unsafe.AddByteOffset(blocks(cell), shift).T0
+                Dim jvx = Unsafe.AddByteOffset(blocks(cell), shift).Vx
+                Dim jvy = Unsafe.AddByteOffset(blocks(cell), shift).Vy
+                Dim dx = vPx - (Unsafe.AddByteOffset(blocks(cell), shift).Px + jvx * tj)
+                Dim dy = vPy - (Unsafe.AddByteOffset(blocks(cell), shift).Py + (jvy + vHalfAy * tj) * tj)
                 Dim dvx = vVx - jvx
                 Dim dvy = vVy - (jvy + vAy * tj)
                 Dim b = dx * dvx + dy * dvy
-                Dim sumR = vR + blocks(cell).R
+                Dim sumR = vR + Unsafe.AddByteOffset(blocks(cell), shift).R
                 Dim c = dx * dx + dy * dy - sumR * sumR
                 Dim touching = Vector256.LessThanOrEqual(c, vTwo * sumR * vSlop)
                 Dim approaching = Vector256.LessThan(b, vZero)
@@ -432,7 +432,7 @@ Friend NotInheritable Class Predictor
                 Dim maybe = Vector256.ExtractMostSignificantBits(candidate)
                 If (maybe Or special) = 0 Then Continue For
                 Dim t = c / (Vector256.Sqrt(disc) - b)
-                Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, blocks(cell).ColTime) And
+                Dim hit = candidate And Vector256.LessThanOrEqual(vNow + t, Unsafe.AddByteOffset(blocks(cell), shift).ColTime) And
                           Vector256.LessThan(t, Vector256.Create(best))
                 ' Only the lanes that need a look, in lane order (as the one-at-a-time loop takes them).
                 Dim look = special Or Vector256.ExtractMostSignificantBits(hit)

@@ -1,5 +1,10 @@
 Option Strict On
 
+#If NET Then
+Imports System.Runtime.CompilerServices
+Imports System.Runtime.InteropServices
+#End If
+
 ''' <summary>
 ''' A uniform grid over the container for the event-driven solver. Each cell is at least as wide as
 ''' the largest gridded circle's diameter, so two gridded circles can touch only when their cells are
@@ -29,8 +34,17 @@ Friend NotInheritable Class UniformGrid
     ''' <summary>Body in lane k of cell c: LaneBody(c · Lanes + k).</summary>
     Friend LaneBody As Integer() = Array.Empty(Of Integer)()
 #If NET Then
-    ''' <summary>Published motion of each cell's lanes (only where the vectorised pair test exists).</summary>
+    ''' <summary>
+    ''' Published motion of each cell's lanes (only where the vectorised pair test exists): cell c's
+    ''' block starts <see cref="BlockShift"/> bytes into Blocks(c), read and written through
+    ''' Unsafe.AddByteOffset(Blocks(c), BlockShift). The array is pinned and one block longer, and the
+    ''' shift puts every block on a 64-byte cache-line boundary: a block then spans exactly four lines
+    ''' (not five) and no 32-byte field load straddles two lines, which a heap array's 8-byte
+    ''' alignment gives only by chance.
+    ''' </summary>
     Friend Blocks As LaneBlock() = Array.Empty(Of LaneBlock)()
+    ''' <summary>Bytes from the start of Blocks(c) to cell c's block (0 … 56).</summary>
+    Friend BlockShift As IntPtr
 #End If
     ''' <summary>Lane of each body (c · Lanes + k), or −1 when it is in an overflow list or not gridded.</summary>
     Friend LaneOf As Integer() = Array.Empty(Of Integer)()
@@ -57,7 +71,9 @@ Friend NotInheritable Class UniformGrid
             OverflowHead = New Integer(cells - 1) {}
             LaneBody = New Integer(cells * Lanes - 1) {}
 #If NET Then
-            Blocks = New LaneBlock(cells - 1) {}
+            Blocks = GC.AllocateArray(Of LaneBlock)(cells + 1, pinned:=True)
+            Dim address = Marshal.UnsafeAddrOfPinnedArrayElement(Blocks, 0).ToInt64()
+            BlockShift = New IntPtr((64 - address Mod 64) Mod 64)
 #End If
         End If
         Array.Clear(Count, 0, cells)
@@ -123,7 +139,7 @@ Friend NotInheritable Class UniformGrid
             LaneBody(lane) = moved
             LaneOf(moved) = lane
 #If NET Then
-            Blocks(cell).CopyLane(last - cell * Lanes, lane - cell * Lanes)
+            Unsafe.AddByteOffset(Blocks(cell), BlockShift).CopyLane(last - cell * Lanes, lane - cell * Lanes)
 #End If
         End If
         Count(cell) -= 1
@@ -146,7 +162,7 @@ Friend NotInheritable Class UniformGrid
         Dim lane = LaneOf(i)
         If lane < 0 Then Return
 #If NET Then
-        Blocks(lane \ Lanes).SetLane(lane Mod Lanes, state, colTime)
+        Unsafe.AddByteOffset(Blocks(lane \ Lanes), BlockShift).SetLane(lane Mod Lanes, state, colTime)
 #End If
     End Sub
 
@@ -155,7 +171,7 @@ Friend NotInheritable Class UniformGrid
         Dim lane = LaneOf(i)
         If lane < 0 Then Return
 #If NET Then
-        Blocks(lane \ Lanes).SetColTime(lane Mod Lanes, colTime)
+        Unsafe.AddByteOffset(Blocks(lane \ Lanes), BlockShift).SetColTime(lane Mod Lanes, colTime)
 #End If
     End Sub
 
