@@ -12,8 +12,10 @@ Friend NotInheritable Class BodyTable
     Friend Shapes As Shape() = Array.Empty(Of Shape)()
     Friend Motion As Motion() = Array.Empty(Of Motion)()
     Friend Slot As EventSlot() = Array.Empty(Of EventSlot)()
-    ''' <summary>Each body's inverse mass, reach, size and kind (see <see cref="BodyInfo"/>).</summary>
+    ''' <summary>Each body's inverse mass, kind and last hits (see <see cref="BodyInfo"/>).</summary>
     Friend Info As BodyInfo() = Array.Empty(Of BodyInfo)()
+    ''' <summary>Each body's reach and size (see <see cref="BodySize"/>).</summary>
+    Friend Size As BodySize() = Array.Empty(Of BodySize)()
     ''' <summary>The body's outline (offsets from its reference point); its rounding radius is also Motion.R.</summary>
     Friend Outlines As Outline() = Array.Empty(Of Outline)()
     ''' <summary>True while a body is out of the grid for a long slide (see SolverState.Roam).</summary>
@@ -53,7 +55,8 @@ Friend NotInheritable Class BodyTable
             For Each v In o.Vertices
                 farthest = Math.Max(farthest, v.Length)
             Next
-            Info(i) = New BodyInfo() With {.Kind = body.Kind, .IsCircle = isCircle, .Reach = farthest + o.Radius,
+            Info(i) = BodyInfo.Fresh(body.Kind)
+            Size(i) = New BodySize() With {.Reach = farthest + o.Radius,
                                            .Scale = If(isCircle, o.Radius, Math.Sqrt(body.Area / Math.PI))}
             Slot(i) = New EventSlot() With {.ColTime = Double.PositiveInfinity, .CellTime = Double.PositiveInfinity}
             Roaming(i) = False
@@ -108,6 +111,7 @@ Friend NotInheritable Class BodyTable
         ReDim Motion(capacity - 1)
         ReDim Slot(capacity - 1)
         ReDim Info(capacity - 1)
+        ReDim Size(capacity - 1)
         ReDim Outlines(capacity - 1)
         ReDim Roaming(capacity - 1)
         ReDim Support(capacity - 1)

@@ -1,23 +1,16 @@
 Option Strict On
 
 ''' <summary>
-''' One body's recent collisions, as the resting rules read them (<see cref="RestRules"/>): when it last
-''' collided, its current burst, and its hits at one instant. Kept together, 32 bytes, because every
-''' collision reads and writes all of them for both bodies: one cache line instead of one per array.
+''' One body's current burst of collisions, as the sleeping rule counts it (<see cref="RestRules"/>):
+''' read only when gravity can hold a body, so apart from the hits every collision counts
+''' (<see cref="BodyInfo"/>).
 ''' </summary>
-Friend Structure HitHistory
-    ''' <summary>Time of the body's last collision, s (for the inelastic-collapse guard).</summary>
-    Friend LastHit As Double
-    ''' <summary>Start of the body's current burst of collisions, s (for the sleeping rule).</summary>
-    Friend BurstStart As Double
-    ''' <summary>Instant of the body's last collision, s (jam detection).</summary>
-    Friend SameTime As Double
+Friend Structure BurstHistory
+    ''' <summary>Start of the body's current burst of collisions, s.</summary>
+    Friend Start As Double
     ''' <summary>Collisions in the current burst.</summary>
-    Friend BurstCount As Integer
-    ''' <summary>Collisions at <see cref="SameTime"/> after the first.</summary>
-    Friend SameCount As Integer
+    Friend Count As Integer
 
     ''' <summary>No collisions yet.</summary>
-    Friend Shared ReadOnly Property Fresh As New HitHistory() With {
-        .LastHit = Double.NegativeInfinity, .BurstStart = Double.NegativeInfinity, .SameTime = Double.NaN}
+    Friend Shared ReadOnly Property Fresh As New BurstHistory() With {.Start = Double.NegativeInfinity}
 End Structure

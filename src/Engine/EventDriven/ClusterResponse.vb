@@ -84,7 +84,7 @@ Friend NotInheritable Class ClusterResponse
     Private Function ClusteredJustNow(i As Integer, alone As Boolean) As Boolean
         Dim last = _clusteredAt(i)
         If last = _s.Now Then Return True
-        Dim soon = alone AndAlso _s.G > 0 AndAlso _s.Now - last <= 1.0E-4 * Math.Sqrt(_s.Bodies.Info(i).Scale / _s.G) ' False for NaN
+        Dim soon = alone AndAlso _s.G > 0 AndAlso _s.Now - last <= 1.0E-4 * Math.Sqrt(_s.Bodies.Size(i).Scale / _s.G) ' False for NaN
         _clusterRun(i) = If(soon, _clusterRun(i) + 1, 0)
         Return _clusterRun(i) >= 3
     End Function

@@ -56,7 +56,7 @@ Friend Module ContactRules
         ' a box test spares the root finding (quartics, for corners under gravity).
         Dim xmin, ymin, xmax, ymax As Double
         o.Bounds(k, xmin, ymin, xmax, ymax)
-        If Not PathBox.MayReach(px, py, vx, vy, ax, ay, horizon, xmin, ymin, xmax, ymax, s.Bodies.Info(i).Reach + slop) Then Return Double.PositiveInfinity
+        If Not PathBox.MayReach(px, py, vx, vy, ax, ay, horizon, xmin, ymin, xmax, ymax, s.Bodies.Size(i).Reach + slop) Then Return Double.PositiveInfinity
         Dim q = ObstacleQuery(s, i, k, px, py, vx, vy, ax, ay, slop, horizon)
         Return RuleFor(s.Bodies.Info(i).IsCircle, o.Kind(k)).TimeOfImpact(q, feature)
     End Function

@@ -219,7 +219,7 @@ Friend NotInheritable Class CornerSlides
         If mk = BodyMode.Rounding Then Return Double.PositiveInfinity
         Dim xk, yk, vxk, vyk As Double
         b.Motion(k).StateAt(_s.Now, xk, yk, vxk, vyk)
-        Dim reach = b.Info(k).Reach + _radius(j) + b.Info(j).Reach ' m: the disc k enters
+        Dim reach = b.Size(k).Reach + _radius(j) + b.Size(j).Reach ' m: the disc k enters
         Dim slop = SolverState.SlopAt(xk, yk)
         If until < Double.PositiveInfinity AndAlso
            EarliestEntry(xk - _cx(j), yk - _cy(j), vxk, vyk, b.Motion(k).Ax, b.Motion(k).Ay, reach, slop) >= until Then
@@ -272,7 +272,7 @@ Friend NotInheritable Class CornerSlides
             _seenX(j) = pj.X
             _seenY(j) = pj.Y
         End If
-        Return (b.PositionAt(k, _s.Now) - New Vector(_seenX(j), _seenY(j))).Length - b.Info(j).Reach - b.Info(k).Reach
+        Return (b.PositionAt(k, _s.Now) - New Vector(_seenX(j), _seenY(j))).Length - b.Size(j).Reach - b.Size(k).Reach
     End Function
 
     ''' <summary>How close (m) sliding body j and body k count as about to touch (see <see cref="NearGap"/>).</summary>
@@ -283,7 +283,7 @@ Friend NotInheritable Class CornerSlides
     ''' <summary>How close (m) bodies i and k count as about to touch near (x, y): 10⁻⁶ of the smaller reach, and the touching tolerance there.</summary>
     Private Function NearGap(i As Integer, k As Integer, x As Double, y As Double) As Double
         Dim b = _s.Bodies
-        Return 1.0E-6 * Math.Min(b.Info(i).Reach, b.Info(k).Reach) + 16 * SolverState.SlopAt(x, y)
+        Return 1.0E-6 * Math.Min(b.Size(i).Reach, b.Size(k).Reach) + 16 * SolverState.SlopAt(x, y)
     End Function
 
     ''' <summary>
@@ -302,10 +302,10 @@ Friend NotInheritable Class CornerSlides
             Dim mk = b.Slot(k).Mode
             If mk = BodyMode.Rounding Then Continue For
             Dim pk = b.PositionAt(k, _s.Now)
-            Dim gap = (pk - p).Length - b.Info(i).Reach - b.Info(k).Reach
-            If gap <= Math.Max(NearGap(i, k, p.X, p.Y), 0.001 * Math.Min(b.Info(i).Reach, b.Info(k).Reach)) Then Return True
+            Dim gap = (pk - p).Length - b.Size(i).Reach - b.Size(k).Reach
+            If gap <= Math.Max(NearGap(i, k, p.X, p.Y), 0.001 * Math.Min(b.Size(i).Reach, b.Size(k).Reach)) Then Return True
             ' Already where the slide could reach it: the slide's look-ahead only sees bodies coming in.
-            If (pk - corner).Length < b.Info(k).Reach + radius + b.Info(i).Reach Then Return True
+            If (pk - corner).Length < b.Size(k).Reach + radius + b.Size(i).Reach Then Return True
         Next
         Return False
     End Function

@@ -32,7 +32,7 @@ Friend Module GridLayout
         If n > 0 Then
             Dim radii = New Double(n - 1) {}
             For k = 0 To n - 1
-                radii(k) = b.Info(k).Reach
+                radii(k) = b.Size(k).Reach
             Next
             Array.Sort(radii)
             limit = 4 * radii(n \ 2)
@@ -41,11 +41,11 @@ Friend Module GridLayout
         Dim rMax = 0.0
         s.OversizedCount = 0
         For i = 0 To n - 1
-            If b.Info(i).Reach > limit Then
+            If b.Size(i).Reach > limit Then
                 s.Oversized(s.OversizedCount) = i
                 s.OversizedCount += 1
             Else
-                rMax = Math.Max(rMax, b.Info(i).Reach)
+                rMax = Math.Max(rMax, b.Size(i).Reach)
             End If
         Next
         s.RMax = rMax
@@ -57,7 +57,7 @@ Friend Module GridLayout
         cell = Math.Max(2 * rMax * (1 + 1.0E-9), cell)
         s.Grid.Layout(s.Width, s.Height, cell, n, 4 * n + 64)
         For i = 0 To n - 1
-            If b.Info(i).Reach > limit Then
+            If b.Size(i).Reach > limit Then
                 b.Slot(i).Cell = -1
             Else
                 b.Slot(i).Col = s.Grid.ColumnOf(b.Motion(i).Px)

@@ -236,7 +236,7 @@ Friend NotInheritable Class Predictor
         If _deferredCount = 0 Then Return
         Dim b = _bodies
         Dim ax = b.Motion(i).Ax
-        Dim reachI = b.Info(i).Reach
+        Dim reachI = b.Size(i).Reach
         Dim now = _s.Now
         Dim n = 0
         For q = 0 To _deferredCount - 1
@@ -248,7 +248,7 @@ Friend NotInheritable Class Predictor
                 Dim xj, yj, vxj, vyj As Double
                 b.Motion(j).StateAt(now, xj, yj, vxj, vyj)
                 Dim dx = px - xj, dy = py - yj
-                Dim gap = Math.Sqrt(dx * dx + dy * dy) - reachI - b.Info(j).Reach - 4 * slop
+                Dim gap = Math.Sqrt(dx * dx + dy * dy) - reachI - b.Size(j).Reach - 4 * slop
                 If gap > 0 Then
                     Dim dvx = vx - vxj, dvy = vy - vyj
                     Dim daX = ax - b.Motion(j).Ax, daY = ay - b.Motion(j).Ay
@@ -603,7 +603,7 @@ Friend NotInheritable Class Predictor
         ' A body sliding round a corner is listed where it started the slide but can reach 3 r_max
         ' beyond; the margin covers rounding and the touching tolerance.
         ' A circle's reach is its radius (R > 0 only for a circle), read from the motion already at hand.
-        Dim reach = If(r > 0, r, _bodies.Info(i).Reach) + If(_bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
+        Dim reach = If(r > 0, r, _bodies.Size(i).Reach) + If(_bodies.Rounding > 0, 3, 1) * _s.RMax + 16 * slop + 1.0E-9 * (grid.CellWidth + grid.CellHeight)
         ' Written so that NaN keeps the neighbour.
         If xlo - reach >= col * grid.CellWidth Then c0 = col
         If xhi + reach <= (col + 1) * grid.CellWidth Then c1 = col

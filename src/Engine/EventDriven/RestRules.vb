@@ -10,8 +10,9 @@ Imports System.Runtime.CompilerServices
 Friend NotInheritable Class RestRules
     Private ReadOnly _s As SolverState
     Private ReadOnly _slides As CornerSlides
-    ''' <summary>Each body's recent collisions (last hit, bursts, hits at one instant).</summary>
-    Private _hits As HitHistory() = Array.Empty(Of HitHistory)()
+    Private ReadOnly _bodies As BodyTable
+    ''' <summary>Each body's current burst of collisions (its last hits are in BodyTable.Info).</summary>
+    Private _bursts As BurstHistory() = Array.Empty(Of BurstHistory)()
     ''' <summary>When each supported body's series of ever smaller bounces ends, s.</summary>
     Private ReadOnly _restTimes As New Dictionary(Of Shape, Double)()
     ''' <summary>Contact normals gathered by IsHeld (scratch, fixed size).</summary>
@@ -33,22 +34,26 @@ Friend NotInheritable Class RestRules
 
     Friend Sub New(state As SolverState, slides As CornerSlides)
         _s = state
+        _bodies = state.Bodies
         _slides = slides
     End Sub
 
     ''' <summary>Forgets every body's history (after a rebuild); rest times survive while the body still sits still.</summary>
     Friend Sub Reset()
         Dim n = _s.Bodies.Count
-        If _hits.Length < n Then
-            Dim capacity = Math.Max(n, 2 * _hits.Length)
-            _hits = New HitHistory(capacity - 1) {}
+        If _bursts.Length < n Then
+            Dim capacity = Math.Max(n, 2 * _bursts.Length)
+            _bursts = New BurstHistory(capacity - 1) {}
             _wake = New Integer(capacity - 1) {}
             _settle = New Integer(capacity - 1) {}
             _neighbours = New Integer(capacity - 1) {}
         End If
         Dim stillResting As New HashSet(Of Shape)()
         For i = 0 To n - 1
-            _hits(i) = HitHistory.Fresh
+            _bursts(i) = BurstHistory.Fresh
+            _bodies.Info(i).LastHit = Double.NegativeInfinity
+            _bodies.Info(i).SameTime = Double.NaN
+            _bodies.Info(i).SameCount = 0
             Dim body = _s.Bodies.Shapes(i)
             If _restTimes.ContainsKey(body) AndAlso _s.Bodies.Mode(i) = BodyMode.Free AndAlso _s.Bodies.Motion(i).Vy = 0 Then stillResting.Add(body)
         Next
@@ -75,7 +80,7 @@ Friend NotInheritable Class RestRules
 
     ''' <summary>Records that body i collided now (for the inelastic-collapse guard).</summary>
     Friend Sub NoteHit(i As Integer)
-        _hits(i).LastHit = _s.Now
+        _bodies.Info(i).LastHit = _s.Now
     End Sub
 
     ''' <summary>
@@ -94,7 +99,7 @@ Friend NotInheritable Class RestRules
                     ' Only a sleeper (which never moves) may take a blow from above as the ground does:
                     ' treating a moving body as immovable can trap a ball in a cycle of instantaneous hits.
                     Dim dy = b.Motion(partner).Py - b.Motion(i).Py
-                    Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (b.Info(i).Scale + b.Info(partner).Scale)
+                    Dim above = mode = BodyMode.Sleeping AndAlso dy > 0.3 * (b.Size(i).Scale + b.Size(partner).Scale)
                     If above OrElse gentle Then Return 0
                 End If
                 Return b.Info(i).InverseMass
@@ -109,14 +114,15 @@ Friend NotInheritable Class RestRules
     ''' </summary>
     Friend Function EffectiveRestitution(i As Integer, j As Integer) As Double
         If _s.E >= 1 OrElse _s.G = 0 Then Return _s.E
-        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_s.Bodies.Info(i).Scale, _s.Bodies.Info(j).Scale) / _s.G)
-        If _s.Now - _hits(i).LastHit < tc AndAlso _s.Now - _hits(j).LastHit < tc Then Return 1.0
+        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_s.Bodies.Size(i).Scale, _s.Bodies.Size(j).Scale) / _s.G)
+        If _s.Now - _bodies.Info(i).LastHit < tc AndAlso _s.Now - _bodies.Info(j).LastHit < tc Then Return 1.0
         Return _s.E
     End Function
 
     ''' <summary>Normal speed (m/s) below which a touch on a resting body does not wake it: 10 % of √(g r).</summary>
     Friend Function GentleSpeed(i As Integer, j As Integer) As Double
-        Return 0.1 * Math.Sqrt(_s.G * Math.Min(_s.Bodies.Info(i).Scale, _s.Bodies.Info(j).Scale))
+        If _s.G = 0 Then Return 0 ' without reading the sizes, which no collision of a gas needs otherwise
+        Return 0.1 * Math.Sqrt(_s.G * Math.Min(_s.Bodies.Size(i).Scale, _s.Bodies.Size(j).Scale))
     End Function
 
     ''' <summary>
@@ -127,18 +133,18 @@ Friend NotInheritable Class RestRules
     ''' </summary>
     <MethodImpl(MethodImplOptions.AggressiveInlining)>
     Friend Function HitTooOften(i As Integer) As Boolean
-        If _hits(i).SameTime = _s.Now Then
-            _hits(i).SameCount += 1
+        If _bodies.Info(i).SameTime = _s.Now Then
+            _bodies.Info(i).SameCount += 1
         Else
-            _hits(i).SameTime = _s.Now
-            _hits(i).SameCount = 0
+            _bodies.Info(i).SameTime = _s.Now
+            _bodies.Info(i).SameCount = 0
         End If
-        Return _hits(i).SameCount >= JamHits
+        Return _bodies.Info(i).SameCount >= JamHits
     End Function
 
     ''' <summary>Starts body i's count of hits at this instant afresh (its cluster was just resolved).</summary>
     Friend Sub ForgetHits(i As Integer)
-        _hits(i).SameCount = 0
+        _bodies.Info(i).SameCount = 0
     End Sub
 
     ''' <summary>
@@ -151,7 +157,7 @@ Friend NotInheritable Class RestRules
                                    Optional curve As CurvedSupport? = Nothing, Optional before As Vector? = Nothing)
         If _s.G = 0 OrElse n.Y <= 0 Then Return
         Dim b = _s.Bodies
-        Dim r = b.Info(i).Scale
+        Dim r = b.Size(i).Scale
         Dim rx = b.Motion(i).Vx - sx, ry = b.Motion(i).Vy - sy
         Dim vn = rx * n.X + ry * n.Y
         Dim speedScale = Math.Sqrt(_s.G * r)
@@ -215,7 +221,7 @@ Friend NotInheritable Class RestRules
         Dim after = New Vector(m(i).Vx, m(i).Vy)
         Dim p = New Vector(m(i).Px, m(i).Py)
         Dim shift As Vector
-        Dim v = SlopeHop.Depart(before, after, n, minimum, _s.G, MaxSlopeShift * _s.Bodies.Info(i).Scale, shift)
+        Dim v = SlopeHop.Depart(before, after, n, minimum, _s.G, MaxSlopeShift * _s.Bodies.Size(i).Scale, shift)
         If shift <> Vector.Zero AndAlso Not IsClear(i, p + shift) Then v = SlopeHop.Depart(before, after, n, minimum, _s.G, 0, shift)
         m(i).Vx = v.X
         m(i).Vy = v.Y
@@ -254,16 +260,16 @@ Friend NotInheritable Class RestRules
     Friend Sub SleepIfSettled(i As Integer)
         If _s.G = 0 Then Return
         Dim m = _s.Bodies.Motion(i)
-        Dim size = _s.Bodies.Info(i).Scale
+        Dim size = _s.Bodies.Size(i).Scale
         Dim speed2 = m.Vx * m.Vx + m.Vy * m.Vy
         Dim scale2 = _s.G * size
         Dim window = 0.1 * Math.Sqrt(size / _s.G)
-        If _s.Now - _hits(i).BurstStart > window Then
-            _hits(i).BurstStart = _s.Now
-            _hits(i).BurstCount = 0
+        If _s.Now - _bursts(i).Start > window Then
+            _bursts(i).Start = _s.Now
+            _bursts(i).Count = 0
         End If
-        _hits(i).BurstCount += 1
-        Dim limit2 = If(_hits(i).BurstCount > BurstCollisions, scale2, 0.0004 * scale2)
+        _bursts(i).Count += 1
+        Dim limit2 = If(_bursts(i).Count > BurstCollisions, scale2, 0.0004 * scale2)
         If speed2 < limit2 AndAlso IsHeld(i) Then Sleep(i)
     End Sub
 
@@ -276,7 +282,7 @@ Friend NotInheritable Class RestRules
     Private Sub Settle(i As Integer)
         Dim b = _s.Bodies
         Dim p = New Vector(b.Motion(i).Px, b.Motion(i).Py)
-        Dim gap = 1.0E-3 * b.Info(i).Scale + SolverState.SlopAt(p.X, p.Y)
+        Dim gap = 1.0E-3 * b.Size(i).Scale + SolverState.SlopAt(p.X, p.Y)
         Dim o = b.Outlines(i)
         ' Faces touched: normal n and level h, so that touching means n·p = h.
         Dim count = 0
@@ -398,7 +404,7 @@ Friend NotInheritable Class RestRules
         b.SupportEdge(i) = edge
         b.SetMode(i, BodyMode.Supported)
         ' Slow enough along a level support: asleep (a pile's floor layer must settle to hold the rest).
-        If Math.Abs(b.Motion(i).Vx) < 0.05 * Math.Sqrt(_s.G * b.Info(i).Scale) AndAlso support <> BodyTable.SupportNone Then Sleep(i)
+        If Math.Abs(b.Motion(i).Vx) < 0.05 * Math.Sqrt(_s.G * b.Size(i).Scale) AndAlso support <> BodyTable.SupportNone Then Sleep(i)
     End Sub
 
     ''' <summary>Body i (at the clock) goes to sleep where it is, put exactly on what holds it when that is flat (see <see cref="Settle"/>).</summary>
@@ -434,7 +440,7 @@ Friend NotInheritable Class RestRules
                 If b.Mode(j) <> BodyMode.Sleeping OrElse b.Motion(j).Py <= b.Motion(k).Py Then Continue For
                 ' Resting on k, or near enough above it to have fallen asleep on it while k still moved.
                 Dim c = ContactRules.OverlapWithBody(_s, j, k, New Vector(b.Motion(j).Px, b.Motion(j).Py), New Vector(b.Motion(k).Px, b.Motion(k).Py))
-                If c.Depth < -0.1 * Math.Min(b.Info(j).Scale, b.Info(k).Scale) OrElse c.Normal.Y <= 0 Then Continue For
+                If c.Depth < -0.1 * Math.Min(b.Size(j).Scale, b.Size(k).Scale) OrElse c.Normal.Y <= 0 Then Continue For
                 _above.Add(j)
             Next
             For Each j In _above
@@ -498,7 +504,7 @@ Friend NotInheritable Class RestRules
                 Dim dx = b.Motion(j).Px - kx, dy = b.Motion(j).Py - ky
                 If dy <= 0 Then Continue For
                 Dim c = ContactRules.OverlapWithBody(_s, j, k, New Vector(b.Motion(j).Px, b.Motion(j).Py), here)
-                If c.Depth < -1.0E-3 * Math.Min(b.Info(j).Scale, b.Info(k).Scale) OrElse c.Normal.Y <= 0 Then Continue For
+                If c.Depth < -1.0E-3 * Math.Min(b.Size(j).Scale, b.Size(k).Scale) OrElse c.Normal.Y <= 0 Then Continue For
                 _s.Sync(j)
                 MakeFree(j)
                 _s.Changed(j)
@@ -521,7 +527,7 @@ Friend NotInheritable Class RestRules
         Dim p = b.PositionAt(i, _s.Now)
         Dim px = p.X, py = p.Y
         Dim o = b.Outlines(i)
-        Dim gap = 1.0E-3 * b.Info(i).Scale + SolverState.SlopAt(px, py)
+        Dim gap = 1.0E-3 * b.Size(i).Scale + SolverState.SlopAt(px, py)
         _nNormals = 0
         If _s.Walls Then
             If py + o.MinY <= gap Then Return True
