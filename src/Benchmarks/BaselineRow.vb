@@ -19,6 +19,13 @@ Friend NotInheritable Class BaselineRow
     ''' </summary>
     Public ReadOnly Property PairRatios As New List(Of Double)
 
+    ''' <summary>The median of <see cref="PairRatios"/>: the paired comparison's own figure; NaN when there are none.</summary>
+    Public ReadOnly Property MedianPairRatio As Double
+        Get
+            Return If(PairRatios.Count = 0, Double.NaN, Statistics.Median(PairRatios))
+        End Get
+    End Property
+
     ''' <summary>Collisions per wall-clock second now ÷ before: above 1 the engine is faster now; NaN when either side has no figure.</summary>
     Public ReadOnly Property Ratio As Double
         Get

@@ -33,6 +33,7 @@ Friend NotInheritable Class BenchmarkOptions
         "  --baseline-dll PATH  the Benchmarks.dll of the baseline commit: the full run times its gas beside this one's" & vbLf &
         "  --baseline-commit HASH  which commit that is, for the report" & vbLf &
         "  --baseline-note TEXT    why there is no baseline build (the report says so instead)" & vbLf &
+        "  --baseline-rounds K     pairs of runs (baseline, then this engine, or the other way round) per size (default 7)" & vbLf &
         "  --gas-rounds K  run every gas size K times, in rounds that take the sizes in turn and every solver" & vbLf &
         "               at a size one after the other; report the median run with the range (default 3; 1 with --quick)" & vbLf &
         "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, ramp-slide, box-drop, pendulum," & vbLf &
@@ -62,6 +63,7 @@ Friend NotInheritable Class BenchmarkOptions
     Private _timeSteps As IReadOnlyList(Of Double)
     Private _gasSizes As IReadOnlyList(Of Integer)
     Private _gasRounds As Integer
+    Private _baselineRounds As Integer
     Private _repeats As Integer
 
     ''' <summary>Hidden: run this one scene in this process and print its results (child mode).</summary>
@@ -93,6 +95,17 @@ Friend NotInheritable Class BenchmarkOptions
     Public ReadOnly Property GasRounds As Integer
         Get
             Return If(_gasRounds > 0, _gasRounds, If(Quick, 1, 3))
+        End Get
+    End Property
+
+    ''' <summary>
+    ''' How many pairs of runs compare the baseline commit's gas with this one's at each size. A run's
+    ''' speed also depends on where its arrays happen to lie in memory, which differs from process to
+    ''' process by a few per cent, so the comparison takes more pairs than the scaling takes rounds.
+    ''' </summary>
+    Public ReadOnly Property BaselineRounds As Integer
+        Get
+            Return If(_baselineRounds > 0, _baselineRounds, 7)
         End Get
     End Property
 
@@ -191,6 +204,7 @@ Friend NotInheritable Class BenchmarkOptions
                 Case "--dts" : o._timeSteps = ParseList(a, value(a)).Select(Function(t) ParseTimeStep(a, t)).ToList()
                 Case "--gas-sizes" : o._gasSizes = ParseList(a, value(a)).Select(Function(t) ParsePositive(a, t)).ToList()
                 Case "--gas-rounds" : o._gasRounds = ParsePositive(a, value(a))
+                Case "--baseline-rounds" : o._baselineRounds = ParsePositive(a, value(a))
                 Case "--repeats" : o._repeats = ParsePositive(a, value(a))
                 Case "--child-scene" : o.ChildScene = ParseNames(a, value(a), AllScenes)(0)
                 Case "--child-gas" : o.ChildGas = ParsePositive(a, value(a))

@@ -95,17 +95,20 @@ Friend Module MarkdownReport
            Append("with the same settings, the order alternating by round; each figure is the median round, its note the range. ").
            Append("**now ÷ before** is collisions per second now over before, of the median rounds: above 1 the engine is faster now. ").
            Append("A shared machine's speed can change by tens of per cent between rounds (the note gives each side's range), but the two runs of a pair ").
-           Append("meet much the same spell, so each round's own ratio (*pairs*) shows how far the figure can be trusted: when they agree, so does the machine.").
+           Append("meet much the same spell, so each round's own ratio (*pairs*) shows how far the figure can be trusted: when they agree, so does the machine. ").
+           Append("A run's speed also depends on where its arrays happen to lie in memory, which differs from process to process by a few per cent, ").
+           Append("so the comparison takes more rounds than the scaling (--baseline-rounds), and *median pair* is the median of the pairs' ratios, the paired comparison's own figure.").
            Append(ControlChars.Lf).Append(ControlChars.Lf)
         If baseline.Rows.Count = 0 Then
             sb.Append("*Not measured in this run:* ").Append(If(baseline.Note.Length > 0, baseline.Note, "no result.")).Append(ControlChars.Lf).Append(ControlChars.Lf)
             Return
         End If
-        sb.Append("| N | collisions/s before (").Append(before).Append(") | collisions/s now | now ÷ before | pairs, round by round | ms per simulated s before | ms per simulated s now | note |").Append(ControlChars.Lf)
-        sb.Append("|---|---|---|---|---|---|---|---|").Append(ControlChars.Lf)
+        sb.Append("| N | collisions/s before (").Append(before).Append(") | collisions/s now | now ÷ before | median pair | pairs, round by round | ms per simulated s before | ms per simulated s now | note |").Append(ControlChars.Lf)
+        sb.Append("|---|---|---|---|---|---|---|---|---|").Append(ControlChars.Lf)
         For Each row In baseline.Rows
             sb.Append("| ").Append(Whole(row.BodyCount)).Append(" | ").Append(Rate(row.Before)).Append(" | ").Append(Rate(row.Now)).Append(" | **").
                Append(BaselineComparison.RatioText(row.Ratio)).Append("** | ").
+               Append(BaselineComparison.RatioText(row.MedianPairRatio)).Append(" | ").
                Append(If(row.PairRatios.Count = 0, "—", String.Join(", ", row.PairRatios.Select(AddressOf BaselineComparison.RatioText)))).Append(" | ").
                Append(MsOf(row.Before)).Append(" | ").Append(MsOf(row.Now)).Append(" | ").
                Append(Cell(String.Join("; ", {If(row.Before Is Nothing, "", "before: " & row.Before.Note), If(row.Now Is Nothing, "", "now: " & row.Now.Note)}.Where(Function(t) t.Length > 0)))).

@@ -189,7 +189,7 @@ Public NotInheritable Class Program
 
     ''' <summary>
     ''' The gas at the compared sizes with the engine at the baseline commit (its own Benchmarks.dll,
-    ''' built by scripts/bench.sh) and with this one, <see cref="BenchmarkOptions.GasRounds"/> times;
+    ''' built by scripts/bench.sh) and with this one, <see cref="BenchmarkOptions.BaselineRounds"/> times;
     ''' or why not. Both run the same measurement (GasScaling.Measure is the same at that commit) in
     ''' child processes with the same settings.
     ''' </summary>
@@ -207,9 +207,9 @@ Public NotInheritable Class Program
         Dim label = If(commit.Length > 0, commit.Substring(0, Math.Min(7, commit.Length)), "the baseline")
         Dim nowRounds As New List(Of IReadOnlyList(Of BenchResult))
         Dim beforeRounds As New List(Of IReadOnlyList(Of BenchResult))
-        For round = 1 To options.GasRounds
+        For round = 1 To options.BaselineRounds
             Console.Out.WriteLine("elastic gas, the engine at " & label & " and now, round " & round.ToString(CultureInfo.InvariantCulture) & " of " &
-                                  options.GasRounds.ToString(CultureInfo.InvariantCulture))
+                                  options.BaselineRounds.ToString(CultureInfo.InvariantCulture))
             Dim nowRound As New List(Of BenchResult), beforeRound As New List(Of BenchResult)
             For Each n In sizes
                 ' Which engine goes first alternates by round, so a machine speeding up or slowing down

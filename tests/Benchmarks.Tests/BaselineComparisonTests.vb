@@ -53,6 +53,9 @@ Public Class BaselineComparisonTests
         ' Each round's pair, in round order: now over before of that round's two runs.
         Assert.Equal(Values(1.2, 1000000 / 900000.0, 1100000 / 950000.0), c.Rows(0).PairRatios, New RatioComparer())
         Assert.Equal(Values(0.8, 1.5, 700000 / 800000.0), c.Rows(1).PairRatios, New RatioComparer())
+        ' The median pair is the middle of the pairs' ratios, not the ratio of the medians.
+        Assert.Equal(1100000 / 950000.0, c.Rows(0).MedianPairRatio, 12)
+        Assert.Equal(700000 / 800000.0, c.Rows(1).MedianPairRatio, 12)
     End Sub
 
     Private NotInheritable Class RatioComparer
@@ -77,6 +80,7 @@ Public Class BaselineComparisonTests
         Assert.Equal(0.5, c.Rows(0).Ratio, 12)
         Assert.True(Double.IsNaN(c.Rows(1).Ratio))
         Assert.Empty(c.Rows(1).PairRatios)
+        Assert.True(Double.IsNaN(c.Rows(1).MedianPairRatio))
         Assert.Equal("—", BaselineComparison.RatioText(c.Rows(1).Ratio))
         Assert.Equal("0.50×", BaselineComparison.RatioText(c.Rows(0).Ratio))
         ' A size only one side has is a row with nothing on the other.
@@ -98,9 +102,9 @@ Public Class BaselineComparisonTests
             Rounds({Run(1000, 1100000), Run(10000, 600000)}), Rounds({Run(1000, 1000000), Run(10000, 800000)}))
         Dim md = Render(c)
         Dim section = md.Substring(md.IndexOf("## Elastic gas: the engine before the event solver's restructure, and now", StringComparison.Ordinal))
-        Assert.Contains("| N | collisions/s before (`4f483ee`) | collisions/s now | now ÷ before | pairs, round by round | ms per simulated s before | ms per simulated s now | note |", section)
-        Assert.Contains("| 1,000 | 1,000,000 | 1,100,000 | **1.10×** | 1.10× | 1.0 | 0.909 |", section)
-        Assert.Contains("| 10,000 | 800,000 | 600,000 | **0.75×** | 0.75× | 1.3 | 1.7 |", section)
+        Assert.Contains("| N | collisions/s before (`4f483ee`) | collisions/s now | now ÷ before | median pair | pairs, round by round | ms per simulated s before | ms per simulated s now | note |", section)
+        Assert.Contains("| 1,000 | 1,000,000 | 1,100,000 | **1.10×** | 1.10× | 1.10× | 1.0 | 0.909 |", section)
+        Assert.Contains("| 10,000 | 800,000 | 600,000 | **0.75×** | 0.75× | 0.75× | 1.3 | 1.7 |", section)
         ' It comes after the scaling table and before the app's frame budget.
         Assert.True(md.IndexOf("## Scaling", StringComparison.Ordinal) < md.IndexOf("## Elastic gas: the engine before", StringComparison.Ordinal))
         Assert.True(md.IndexOf("## Elastic gas: the engine before", StringComparison.Ordinal) < md.IndexOf("## Frame budget", StringComparison.Ordinal))

@@ -33,6 +33,15 @@ Public Class BenchmarkOptionsTests
     End Sub
 
     <Fact>
+    Public Sub BaselineRounds_AreRead_AndOutnumberTheScalingsRounds()
+        Dim plain = BenchmarkOptions.Parse(Array.Empty(Of String)())
+        Assert.Equal(7, plain.BaselineRounds)
+        Assert.True(plain.BaselineRounds > plain.GasRounds)
+        Assert.Equal(4, BenchmarkOptions.Parse(Values("--baseline-rounds", "4")).BaselineRounds)
+        Assert.Equal(7, BenchmarkOptions.Parse(Values("--gas-rounds", "2")).BaselineRounds)
+    End Sub
+
+    <Fact>
     Public Sub Lists_AreRead()
         Dim o = BenchmarkOptions.Parse(Values("--dts", "1/60,0.001", "--gas-sizes", "50", "--scenes", "projectile,cradle", "--json", "r.json", "--out", "x"))
         Assert.Equal(Values(1 / 60.0, 0.001), o.TimeSteps)
@@ -47,6 +56,7 @@ Public Class BenchmarkOptionsTests
     <InlineData("--scenes|nope", "--scenes: unknown scene 'nope'")>
     <InlineData("--repeats|0", "--repeats: '0' is not a whole number greater than 0")>
     <InlineData("--gas-rounds|three", "--gas-rounds: 'three' is not a whole number greater than 0")>
+    <InlineData("--baseline-rounds|0", "--baseline-rounds: '0' is not a whole number greater than 0")>
     <InlineData("--json", "--json: needs a value")>
     <InlineData("--frobnicate", "unknown option '--frobnicate' (see --help)")>
     Public Sub BadInput_GivesAOneLineMessageNamingTheOption(args As String, message As String)
