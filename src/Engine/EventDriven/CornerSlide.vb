@@ -14,6 +14,17 @@ Public Module CornerSlide
     Private Const Panels As Integer = 32
     ''' <summary>Panels of the rough quadrature that brings <see cref="AngleAfter"/> near its root before the full one finishes it.</summary>
     Private Const RoughPanels As Integer = 4
+    ''' <summary>
+    ''' When the integrand bends (<see cref="BendOf"/>) within this many panel widths of the start,
+    ''' those first panels are replaced by panels shrinking geometrically towards the start.
+    ''' </summary>
+    Private Const GradedWidths As Integer = 5
+    ''' <summary>Each graded panel is this much narrower than the one after it (full quadrature; 1.25 keeps 10⁻¹³).</summary>
+    Private Const GradedRatio As Double = 1.25
+    ''' <summary>The same for the rough quadrature, which needs only 10⁻⁵.</summary>
+    Private Const RoughGradedRatio As Double = 2.0
+    ''' <summary>The graded panels go down to the bend's scale divided by this; one last panel reaches the start.</summary>
+    Private Const GradedDepth As Double = 32
     ''' <summary>At most this many rough Newton steps (they stop sooner, see <see cref="RoughEnough"/>).</summary>
     Private Const MaxRoughSteps As Integer = 20
     ''' <summary>How close (a fraction of the time) the rough phase gets before the full quadrature takes over.</summary>
@@ -57,19 +68,35 @@ Public Module CornerSlide
     Public Function Duration(speed As Double, gravity As Double, radius As Double, startAngle As Double, angle As Double) As Double
         If angle <= startAngle Then Return 0
         If speed = 0 AndAlso startAngle = 0 Then Return Double.PositiveInfinity
-        Return TimeToTurn(speed, gravity, radius, startAngle, angle - startAngle, Panels)
+        Return TimeToTurn(speed, gravity, radius, startAngle, angle - startAngle, Panels, GradedRatio)
     End Function
 
     ''' <summary>
     ''' Time (s) to turn through φ = <paramref name="turn"/> (rad, &gt; 0) from θ0, by Gauss–Legendre on
     ''' <paramref name="panelCount"/> panels in s = √φ. The nodes' speeds are taken at s² itself, never
-    ''' at θ0 + s², whose rounding would cost the nodes near the start most of their digits.
+    ''' at θ0 + s², whose rounding would cost the nodes near the start most of their digits. When the
+    ''' integrand bends near the start (a slow start, or one near the top: <see cref="BendOf"/>), the
+    ''' first <see cref="GradedWidths"/> panels are replaced by panels shrinking by
+    ''' <paramref name="ratio"/> towards it: evenly spaced panels would miss the bend (a ball starting
+    ''' at 10⁻⁵ m/s on the top of a corner took a time 1 % wrong).
     ''' </summary>
     Private Function TimeToTurn(speed As Double, gravity As Double, radius As Double, startAngle As Double, turn As Double,
-                                panelCount As Integer) As Double
+                                panelCount As Integer, ratio As Double) As Double
         Dim h = Math.Sqrt(turn) / panelCount
         Dim sum = 0.0
-        For p = 0 To panelCount - 1
+        Dim first = 0
+        Dim bend = BendOf(speed, gravity, radius, startAngle)
+        If bend < GradedWidths * h Then
+            first = Math.Min(GradedWidths, panelCount)
+            Dim upper = first * h
+            Do While upper > bend / GradedDepth
+                Dim lower = upper / ratio
+                sum += Panel(speed, gravity, radius, startAngle, lower, upper)
+                upper = lower
+            Loop
+            sum += Panel(speed, gravity, radius, startAngle, 0, upper)
+        End If
+        For p = first To panelCount - 1
             Dim mid = (p + 0.5) * h
             For k = 0 To Nodes.Length - 1
                 Dim s = mid + 0.5 * h * Nodes(k)
@@ -78,6 +105,35 @@ Public Module CornerSlide
             Next
         Next
         Return sum
+    End Function
+
+    ''' <summary>The integrand 2sR / v(s²) over one panel, s from <paramref name="lower"/> to <paramref name="upper"/>, by 5-point Gauss–Legendre.</summary>
+    Private Function Panel(speed As Double, gravity As Double, radius As Double, startAngle As Double, lower As Double, upper As Double) As Double
+        Dim mid = 0.5 * (lower + upper), half = 0.5 * (upper - lower)
+        Dim sum = 0.0
+        For k = 0 To Nodes.Length - 1
+            Dim s = mid + half * Nodes(k)
+            Dim v = SpeedAfterTurning(speed, gravity, radius, startAngle, s * s)
+            If v > 0 Then sum += Weights(k) * half * 2 * s * radius / v
+        Next
+        Return sum
+    End Function
+
+    ''' <summary>
+    ''' The value of s (√rad) near which the integrand 2sR / v(s²) bends, or +∞ when it does not. For
+    ''' small s, v² = v0² + 2gR sin θ0 · s² + gR cos θ0 · s⁴ + …, and the integrand changes shape where
+    ''' one term takes over from another: v0² from the s² term at v0 / √(2gR sin θ0), v0² from the s⁴
+    ''' term at √(v0 / √(gR cos θ0)), the s² term from the s⁴ term at √(2 tan θ0). The smallest of these
+    ''' is where the panels must be fine.
+    ''' </summary>
+    Private Function BendOf(speed As Double, gravity As Double, radius As Double, startAngle As Double) As Double
+        Dim square = 2 * gravity * radius * Math.Sin(startAngle) ' m²/s² per rad: the s² term
+        Dim quartic = gravity * radius * Math.Cos(startAngle) ' the s⁴ term
+        Dim bend = Double.PositiveInfinity
+        If square > 0 AndAlso quartic > 0 Then bend = Math.Sqrt(square / quartic)
+        If speed > 0 AndAlso square > 0 Then bend = Math.Min(bend, speed / Math.Sqrt(square))
+        If speed > 0 AndAlso quartic > 0 Then bend = Math.Min(bend, Math.Sqrt(speed / Math.Sqrt(quartic)))
+        Return bend
     End Function
 
     ''' <summary>
@@ -98,7 +154,7 @@ Public Module CornerSlide
         Dim theta = startAngle + time * (omega + time * (0.5 * alpha * Math.Sin(startAngle) + time * alpha * Math.Cos(startAngle) * omega / 6))
         If Not (theta > startAngle AndAlso theta < leaveAngle) Then theta = 0.5 * (startAngle + leaveAngle)
         For iteration = 1 To MaxRoughSteps
-            Dim f = TimeToTurn(speed, gravity, radius, startAngle, theta - startAngle, RoughPanels) - time
+            Dim f = TimeToTurn(speed, gravity, radius, startAngle, theta - startAngle, RoughPanels, RoughGradedRatio) - time
             Dim nextTheta = NewtonStep(speed, gravity, radius, startAngle, theta, f)
             If Not (nextTheta > startAngle AndAlso nextTheta < leaveAngle) Then nextTheta = 0.5 * (theta + If(f > 0, startAngle, leaveAngle))
             theta = nextTheta
