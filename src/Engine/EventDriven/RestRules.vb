@@ -4,8 +4,9 @@ Imports System.Runtime.CompilerServices
 
 ''' <summary>
 ''' How bodies come to rest (docs/event-driven.md §5–6): the end of a bounce series on a level
-''' support, sleeping in a pile, waking, and the guards against inelastic collapse. This owns each
-''' body's recent contact history (last collision, bursts, hits at one instant) and the rest times.
+''' support, sleeping in a pile, waking, and the guards against inelastic collapse. This keeps each
+''' body's recent contact history (its bursts here; its last collision and its hits at one instant in
+''' <see cref="BodyInfo"/>, beside what every collision reads, and written only from here) and the rest times.
 ''' </summary>
 Friend NotInheritable Class RestRules
     Private ReadOnly _s As SolverState
