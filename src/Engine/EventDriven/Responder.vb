@@ -115,8 +115,12 @@ Friend NotInheritable Class Responder
         b.Motion(i).Vx = after.X
         b.Motion(i).Vy = after.Y
         If approach < 0 Then
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), other, side, kind,
-                                                         before, after, Vector.Zero, Vector.Zero))
+            If _s.World.ListensForCollisions Then
+                _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), other, side, kind,
+                                                             before, after, Vector.Zero, Vector.Zero))
+            Else
+                _s.World.CountCollision()
+            End If
             _rest.NoteHit(i)
         End If
         If b.Mode(i) = BodyMode.Supported AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then _rest.MakeFree(i)
@@ -150,7 +154,11 @@ Friend NotInheritable Class Responder
         m(j).Vx = result.B.X
         m(j).Vy = result.B.Y
         If approach < 0 AndAlso (invI > 0 OrElse invJ > 0) Then
-            _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), b.Shapes(j), WallSide.None, CollisionKinds.Between(b.Info(i).Kind, b.Info(j).Kind, False), vi, result.A, vj, result.B))
+            If _s.World.ListensForCollisions Then
+                _s.World.ReportCollision(New CollisionRecord(_s.Now, b.Shapes(i), b.Shapes(j), WallSide.None, CollisionKinds.Between(b.Info(i).Kind, b.Info(j).Kind, False), vi, result.A, vj, result.B))
+            Else
+                _s.World.CountCollision()
+            End If
             _rest.NoteHit(i)
             _rest.NoteHit(j)
         End If

@@ -57,6 +57,25 @@ Public Class RunIntegrityTests
         End Get
     End Property
 
+    <Theory>
+    <MemberData(NameOf(Scenes))>
+    Public Sub Listening_ChangesNothing_AndHearsEveryCollisionCounted(name As String)
+        ' Without a listener the solver only counts collisions (it builds no records); with one it
+        ' builds a record for each. Neither may change the run, and the count must be the same.
+        Dim heard = Make(name)
+        UseEventSolver(heard)
+        Dim records = 0L
+        heard.CollisionListener = Sub(r) records += 1
+        heard.Advance(1.0)
+        Dim silent = Make(name)
+        UseEventSolver(silent)
+        silent.Advance(1.0)
+        Assert.True(records > 50, $"{records} collisions")
+        Assert.Equal(records, heard.CollisionCount)
+        Assert.Equal(heard.CollisionCount, silent.CollisionCount)
+        Assert.Equal(Fingerprint(heard, New List(Of Long)), Fingerprint(silent, New List(Of Long)))
+    End Sub
+
     Private Shared Function Make(name As String) As World
         Select Case name
             Case "pile" : Return Scenarios.Pile(120, 0.3, seed:=2)
