@@ -376,7 +376,6 @@ Friend NotInheritable Class Predictor
         Dim blocks = grid.Blocks, shift = grid.BlockShift, count = grid.Count, laneBody = grid.LaneBody, overflow = grid.OverflowHead
         Dim nx = grid.Nx
         Dim now = _s.Now
-        Dim asleep = _bodies.Slot(i).Mode = BodyMode.Sleeping
         Dim vNow = Vector256.Create(now)
         Dim vPx = Vector256.Create(px), vPy = Vector256.Create(py)
         Dim vVx = Vector256.Create(vx), vVy = Vector256.Create(vy)
