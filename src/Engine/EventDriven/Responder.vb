@@ -147,7 +147,8 @@ Friend NotInheritable Class Responder
         ' A gentle touch on a body at rest treats it as a support (infinite mass); a real hit wakes it.
         Dim invI = _rest.InverseMassFor(i, j, gentle)
         Dim invJ = _rest.InverseMassFor(j, i, gentle)
-        Dim result = Impulse.Resolve(vi, invI, vj, invJ, n, _rest.EffectiveRestitution(i, j))
+        Dim result = If(invI = 0 OrElse invJ = 0, ResolveWithResting(i, j, n, vi, vj, gentle, invI, invJ),
+                        Impulse.Resolve(vi, invI, vj, invJ, n, _rest.EffectiveRestitution(i, j)))
         If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then PartTouching(i, j, n, invI, invJ)
         m(i).Vx = result.A.X
         m(i).Vy = result.A.Y
@@ -169,6 +170,31 @@ Friend NotInheritable Class Responder
         _s.Changed(i)
         _s.Changed(j)
     End Sub
+
+    ''' <summary>
+    ''' The impulse when the rest rules make body i or j immovable (<see cref="RestRules.InverseMassFor"/>).
+    ''' A sleeper alone on level ground, struck from above, is not: the ground takes the vertical part of
+    ''' the blow and the body the horizontal part (<see cref="Impulse.ResolveOnLevelGround"/>), so a ball
+    ''' dropped on a resting one knocks it sideways and momentum along the ground is kept. Its inverse
+    ''' mass becomes the one the blow meets, n_x²/m, for the rest rules that follow. Apart from
+    ''' <see cref="CollideBodies"/>, which runs at every collision, because it is rare.
+    ''' </summary>
+    <MethodImpl(MethodImplOptions.NoInlining)>
+    Private Function ResolveWithResting(i As Integer, j As Integer, n As Vector, vi As Vector, vj As Vector, gentle As Boolean,
+                                        ByRef invI As Double, ByRef invJ As Double) As (A As Vector, B As Vector)
+        Dim b = _bodies
+        Dim e = _rest.EffectiveRestitution(i, j)
+        If Not gentle AndAlso invJ = 0 AndAlso invI > 0 AndAlso n.Y > 0 AndAlso b.Info(j).InverseMass > 0 AndAlso _rest.AloneOnLevelGround(j, i) Then
+            invJ = b.Info(j).InverseMass * n.X * n.X
+            Return Impulse.ResolveOnLevelGround(vi, invI, vj, b.Info(j).InverseMass, n, e)
+        End If
+        If Not gentle AndAlso invI = 0 AndAlso invJ > 0 AndAlso n.Y < 0 AndAlso b.Info(i).InverseMass > 0 AndAlso _rest.AloneOnLevelGround(i, j) Then
+            invI = b.Info(i).InverseMass * n.X * n.X
+            Dim swapped = Impulse.ResolveOnLevelGround(vj, invJ, vi, b.Info(i).InverseMass, -n, e)
+            Return (swapped.B, swapped.A)
+        End If
+        Return Impulse.Resolve(vi, invI, vj, invJ, n, e)
+    End Function
 
     ''' <summary>
     ''' Body i or j has been hit too often at this instant: their cluster of touching bodies is resolved

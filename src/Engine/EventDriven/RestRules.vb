@@ -110,6 +110,44 @@ Friend NotInheritable Class RestRules
     End Function
 
     ''' <summary>
+    ''' Whether sleeping body k lies on level fixed ground (the floor, or the level top of a fixed body)
+    ''' touching nothing else but <paramref name="partner"/> (within 10⁻³ of its size): a blow from above
+    ''' is then shared exactly, the ground taking its vertical part and k its horizontal part (see
+    ''' Responder), rather than k taking the whole blow as the ground would, the rule that keeps a
+    ''' settled pile still (<see cref="InverseMassFor"/>).
+    ''' </summary>
+    Friend Function AloneOnLevelGround(k As Integer, partner As Integer) As Boolean
+        Dim b = _s.Bodies
+        If b.Mode(k) <> BodyMode.Sleeping Then Return False
+        Dim p = b.PositionAt(k, _s.Now)
+        Dim o = b.Outlines(k)
+        Dim gap = 1.0E-3 * b.Size(k).Scale + SolverState.SlopAt(p.X, p.Y)
+        Dim grounds = 0
+        If _s.Walls Then
+            If p.Y + o.MinY <= gap Then grounds += 1
+            If p.X + o.MinX <= gap OrElse _s.Width - o.MaxX - p.X <= gap OrElse _s.Height - o.MaxY - p.Y <= gap Then Return False
+        End If
+        Dim firstNear, lastNear As Integer
+        Dim near = _s.ObstaclesNear(k, firstNear, lastNear)
+        For q = firstNear To lastNear
+            Dim c = ContactRules.OverlapWithObstacle(_s, k, near(q), p)
+            If c.Depth < -gap Then Continue For
+            ' Anything it touches but level ground beneath it would take part of the blow.
+            If c.Normal.X <> 0 OrElse Not (c.Normal.Y > 0) Then Return False
+            grounds += 1
+        Next
+        If grounds = 0 Then Return False
+        Dim count = GridNeighbours.Collect(_s, k, _neighbours)
+        For q = 0 To count - 1
+            Dim j = _neighbours(q)
+            If j = partner Then Continue For
+            If b.Mode(j) = BodyMode.Rounding Then Return False ' near, on a path PositionAt does not follow
+            If ContactRules.OverlapWithBody(_s, k, j, p, b.PositionAt(j, _s.Now)).Depth >= -gap Then Return False
+        Next
+        Return True
+    End Function
+
+    ''' <summary>
     ''' Inelastic-collapse guard (the "TC model" of Luding and McNamara): two bodies that both collided
     ''' within the last 10⁻⁴ √(r/g) collide elastically, so an infinite cascade cannot form in finite time.
     ''' </summary>
