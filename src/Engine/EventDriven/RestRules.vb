@@ -111,7 +111,8 @@ Friend NotInheritable Class RestRules
 
     ''' <summary>
     ''' Whether sleeping body k lies on level fixed ground (the floor, or the level top of a fixed body)
-    ''' touching nothing else but <paramref name="partner"/> (within 10⁻³ of its size): a blow from above
+    ''' touching nothing else (within 10⁻³ of its size) and with no movable body but
+    ''' <paramref name="partner"/> within its size: a blow from above
     ''' is then shared exactly, the ground taking its vertical part and k its horizontal part (see
     ''' Responder), rather than k taking the whole blow as the ground would, the rule that keeps a
     ''' settled pile still (<see cref="InverseMassFor"/>).
@@ -137,12 +138,15 @@ Friend NotInheritable Class RestRules
             grounds += 1
         Next
         If grounds = 0 Then Return False
+        ' Alone: no other movable body within its own size, so that the sideways kick does not at once
+        ' drive it into a pile (where the pile's rule, and its stillness, should hold).
+        Dim clear = b.Size(k).Scale
         Dim count = GridNeighbours.Collect(_s, k, _neighbours)
         For q = 0 To count - 1
             Dim j = _neighbours(q)
             If j = partner Then Continue For
             If b.Mode(j) = BodyMode.Rounding Then Return False ' near, on a path PositionAt does not follow
-            If ContactRules.OverlapWithBody(_s, k, j, p, b.PositionAt(j, _s.Now)).Depth >= -gap Then Return False
+            If ContactRules.OverlapWithBody(_s, k, j, p, b.PositionAt(j, _s.Now)).Depth >= -clear Then Return False
         Next
         Return True
     End Function
