@@ -456,7 +456,7 @@ Partial Public NotInheritable Class World
 
     ''' <summary>Called by solvers for each collision, in time order.</summary>
     Friend Sub ReportCollision(record As CollisionRecord)
-        _CollisionCount += 1
+        CountCollision()
         _CollisionListener?.Invoke(record)
     End Sub
 

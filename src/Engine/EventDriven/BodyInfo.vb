@@ -23,8 +23,17 @@ Friend Structure BodyInfo
 
     ''' <summary>A body of this kind that has not collided yet.</summary>
     Friend Shared Function Fresh(kind As ShapeKind) As BodyInfo
-        Return New BodyInfo() With {.Kind = kind, .LastHit = Double.NegativeInfinity, .SameTime = Double.NaN}
+        Dim info = New BodyInfo() With {.Kind = kind}
+        info.ResetHits()
+        Return info
     End Function
+
+    ''' <summary>Forgets the body's hits: as if it had not collided yet.</summary>
+    Friend Sub ResetHits()
+        LastHit = Double.NegativeInfinity
+        SameTime = Double.NaN
+        SameCount = 0
+    End Sub
 
     ''' <summary>True for a circle: the pair tests of two circles have a fast path of their own.</summary>
     Friend ReadOnly Property IsCircle As Boolean

@@ -52,9 +52,7 @@ Friend NotInheritable Class RestRules
         Dim stillResting As New HashSet(Of Shape)()
         For i = 0 To n - 1
             _bursts(i) = BurstHistory.Fresh
-            _bodies.Info(i).LastHit = Double.NegativeInfinity
-            _bodies.Info(i).SameTime = Double.NaN
-            _bodies.Info(i).SameCount = 0
+            _bodies.Info(i).ResetHits()
             Dim body = _s.Bodies.Shapes(i)
             If _restTimes.ContainsKey(body) AndAlso _s.Bodies.Mode(i) = BodyMode.Free AndAlso _s.Bodies.Motion(i).Vy = 0 Then stillResting.Add(body)
         Next
