@@ -12,4 +12,6 @@ Public Enum CollisionKind
     CircleWall
     ''' <summary>Any other pair (a box, a polygon or a segment is involved): see <see cref="CollisionRecord.KindName"/>.</summary>
     Other
+    ''' <summary>A string snapping taut: the jerk along it (<see cref="CollisionRecord.Link"/> names it).</summary>
+    StringTaut
 End Enum

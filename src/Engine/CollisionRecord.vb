@@ -20,6 +20,18 @@ Public Structure CollisionRecord
     ''' <summary>m/s; zero for a fixed body or a wall.</summary>
     Public ReadOnly Property BVelocityAfter As Vector
 
+    ''' <summary>The string that snapped taut, for a <see cref="CollisionKind.StringTaut"/> record; Nothing otherwise.</summary>
+    Public ReadOnly Property Link As Link
+
+    ''' <summary>
+    ''' A string <paramref name="link"/> snapping taut: its body A, and its body B (Nothing for a string to a fixed
+    ''' point or a fixed body), with their velocities (m/s) just before and after the jerk.
+    ''' </summary>
+    Public Sub New(time As Double, link As Link, aBefore As Vector, aAfter As Vector, bBefore As Vector, bAfter As Vector)
+        Me.New(time, link.A, If(link.B Is Nothing OrElse link.B.IsFixed, Nothing, link.B), WallSide.None, CollisionKind.StringTaut, aBefore, aAfter, bBefore, bAfter)
+        Me.Link = link
+    End Sub
+
     Public Sub New(time As Double, a As Shape, b As Shape, wall As WallSide, kind As CollisionKind,
                    aBefore As Vector, aAfter As Vector, bBefore As Vector, bAfter As Vector)
         Me.Time = time
@@ -36,6 +48,7 @@ Public Structure CollisionRecord
     ''' <summary>The other body's name in outputs: its id, or wall:left, wall:right, wall:bottom, wall:top.</summary>
     Public ReadOnly Property BName As String
         Get
+            If Link IsNot Nothing Then Return Link.Id
             If B IsNot Nothing Then Return B.Id
             Return "wall:" & Wall.ToString().ToLowerInvariant()
         End Get
@@ -48,6 +61,7 @@ Public Structure CollisionRecord
     ''' </summary>
     Public ReadOnly Property KindName As String
         Get
+            If Kind = CollisionKind.StringTaut Then Return "string-taut"
             Return If(A Is Nothing, "circle", A.KindName) & "-" & If(B Is Nothing, "wall", B.KindName)
         End Get
     End Property

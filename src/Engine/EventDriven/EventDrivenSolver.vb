@@ -138,7 +138,7 @@ Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
         If _s.World Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
-        If _s.World.Links.Count > 0 Then Return AdvanceLinked(duration)
+        If _s.World.Links.Count > 0 Then Return AdvanceLinked(duration, deadline)
         If _dirty OrElse _s.Now <> _s.World.Time Then Rebuild()
         Dim tEnd = _s.World.Time + duration
         StartDrag(duration)
@@ -176,7 +176,7 @@ Public NotInheritable Class EventDrivenSolver
     End Function
 
     ''' <summary>A scene with links: the linked solver's closed forms, or stepping while a body is carried by hand.</summary>
-    Private Function AdvanceLinked(duration As Double) As Double
+    Private Function AdvanceLinked(duration As Double, deadline As Long) As Double
         If _s.World.DraggedBody IsNot Nothing Then
             ' A body carried by hand follows the hand, not a closed form: while it is carried the
             ' scene is stepped (position Verlet, as the stepping solvers carry bodies), and when it
@@ -192,9 +192,9 @@ Public NotInheritable Class EventDrivenSolver
             Return _s.World.Time + duration
         End If
         _carriedWorld = Nothing
-        _linked.Advance(duration)
+        Dim reached = _linked.AdvanceWithin(duration, deadline)
         _dirty = True
-        Return _s.World.Time + duration
+        Return reached
     End Function
 
     ''' <summary>

@@ -52,6 +52,8 @@ Friend NotInheritable Class ContactProjection
     Private _ny As Double() = Array.Empty(Of Double)()
     Private _offset As Double() = Array.Empty(Of Double)()          ' c_k, m/s
     Private _columnNorm As Double() = Array.Empty(Of Double)()      ' ‖C_k‖, 1/√kg; 0 when nothing in it moves
+    Private _holds As Boolean() = Array.Empty(Of Boolean)()        ' per contact: a two-sided row (g = 0, impulse of either sign)
+    Private _anyHolds As Boolean
     Private _matrix As Double() = Array.Empty(Of Double)()          ' C, rows × contacts, column-major
 
     ' The solve.
@@ -90,6 +92,16 @@ Friend NotInheritable Class ContactProjection
     ''' <summary>Sets up C, c and the slots for a validated cluster.</summary>
     Friend Sub Load(inverseMasses As IReadOnlyList(Of Double), velocities As IReadOnlyList(Of Vector),
                     contacts As IReadOnlyList(Of ClusterContact))
+        Load(inverseMasses, velocities, contacts, Nothing, Nothing)
+    End Sub
+
+    ''' <summary>
+    ''' Sets up C, c and the slots, with <paramref name="offsets"/> (m/s, or Nothing) added to each contact's c, and
+    ''' <paramref name="holds"/> (or Nothing) marking two-sided rows: those are kept at g = 0 with an impulse of
+    ''' either sign (a rod), and enter the passive set first, in order, unless they depend on those before them.
+    ''' </summary>
+    Friend Sub Load(inverseMasses As IReadOnlyList(Of Double), velocities As IReadOnlyList(Of Vector),
+                    contacts As IReadOnlyList(Of ClusterContact), offsets As IReadOnlyList(Of Double), holds As IReadOnlyList(Of Boolean))
         Dim n = inverseMasses.Count
         _contacts = contacts.Count
         If _slotOfBody.Length < n Then _slotOfBody = New Integer(n - 1) {}
@@ -109,6 +121,7 @@ Friend NotInheritable Class ContactProjection
             _sqrtInverseMass(s) = Math.Sqrt(inverseMasses(_bodyOfSlot(s)))
         Next
         GrowPerContact()
+        _anyHolds = False
         HouseholderQr.Grow(_matrix, _rows * _contacts)
         Array.Clear(_matrix, 0, _rows * _contacts)
         For k = 0 To _contacts - 1
@@ -124,7 +137,10 @@ Friend NotInheritable Class ContactProjection
             Dim offset = 0.0
             If _slotA(k) < 0 Then offset += Vector.Dot(nrm, velocities(a))
             If b <> ClusterContact.World AndAlso _slotB(k) < 0 Then offset -= Vector.Dot(nrm, velocities(b))
+            If offsets IsNot Nothing Then offset += offsets(k)
             _offset(k) = offset
+            _holds(k) = holds IsNot Nothing AndAlso holds(k)
+            If _holds(k) Then _anyHolds = True
             Dim col = k * _rows
             If _slotA(k) >= 0 Then
                 Dim s = _slotA(k)
@@ -194,6 +210,7 @@ Friend NotInheritable Class ContactProjection
         Next
         _passiveCount = 0
         _qr.Factor(_matrix, _rows, _passive, 0)
+        If _anyHolds Then SeedHolds()
         UpdateApproaches()
 
         ' Lawson–Hanson terminates after finitely many solves, typically about one per contact that ends
@@ -284,7 +301,7 @@ Friend NotInheritable Class ContactProjection
         Dim limiting = -1
         For p = 0 To _passiveCount - 1
             Dim k = _passive(p)
-            If _z(k) <= 0 Then
+            If _z(k) <= 0 AndAlso Not _holds(k) Then
                 Dim a = _x(k) / (_x(k) - _z(k))
                 If limiting < 0 OrElse a < alpha Then
                     alpha = a
@@ -300,7 +317,7 @@ Friend NotInheritable Class ContactProjection
         Dim kept = 0
         For p = 0 To _passiveCount - 1
             Dim k = _passive(p)
-            If _x(k) > 0 Then
+            If _x(k) > 0 OrElse _holds(k) Then
                 _passive(kept) = k
                 kept += 1
             Else
@@ -313,10 +330,29 @@ Friend NotInheritable Class ContactProjection
 
     Private Function AllPassivePush() As Boolean
         For p = 0 To _passiveCount - 1
-            If _z(_passive(p)) <= 0 Then Return False
+            If _z(_passive(p)) <= 0 AndAlso Not _holds(_passive(p)) Then Return False
         Next
         Return True
     End Function
+
+    ' The two-sided rows first, each unless it depends on those before it (a second rod between the same two
+    ' balls): the least-squares point on them alone is where Lawson–Hanson starts, their impulses of any sign.
+    Private Sub SeedHolds()
+        For k = 0 To _contacts - 1
+            If Not _holds(k) OrElse _columnNorm(k) = 0 Then Continue For
+            If _passiveCount > 0 AndAlso _qr.IndependentPart(_matrix, k) <= DependenceTolerance * _columnNorm(k) Then Continue For
+            AddPassive(k)
+            _qr.Factor(_matrix, _rows, _passive, _passiveCount)
+        Next
+        If _passiveCount = 0 Then Return
+        SolvePassive()
+        For p = 0 To _passiveCount - 1
+            Dim k = _passive(p)
+            _x(k) = _z(k)
+        Next
+        Array.Copy(_x, _lambda, _contacts)
+        Array.Copy(_trial, _r, _rows)
+    End Sub
 
     ' The contact outside the passive set that approaches fastest (beyond the tolerance), or −1.
     ' Ties go to the lower index, so the path depends only on the input.
@@ -393,6 +429,7 @@ Friend NotInheritable Class ContactProjection
             _passive = New Integer(m - 1) {}
             _inPassive = New Boolean(m - 1) {}
             _rejected = New Boolean(m - 1) {}
+            _holds = New Boolean(m - 1) {}
         End If
         HouseholderQr.Grow(_nx, m)
         HouseholderQr.Grow(_ny, m)

@@ -100,10 +100,24 @@ Friend NotInheritable Class FlightMotion
         Dim outwards = Vector.Dot(body.Velocity, n)
         If outwards <= 0 Then Return False
         Dim after = world.Restitution * outwards
-        If after < SettleFraction * Math.Sqrt(Math.Max(world.Gravity, 0.000001) * _string.Length) Then after = 0
+        ' What presses the body out along the string: gravity, or the turning of the string's line as it swings round.
+        Dim across = body.Velocity - n * outwards
+        Dim pressing = Math.Max(Math.Max(world.Gravity, 0.000001), across.LengthSquared / _string.Length)
+        If after < SettleFraction * Math.Sqrt(pressing * _string.Length) Then after = 0
         body.Velocity -= n * (outwards + after)
+        Snapped = _string
+        If after > 0 Then _released = _string
         Return after > 0
     End Function
+
+    Private _released As Link
+
+    ''' <summary>After the transition: the string, when it snapped taut and the body bounced back off it (slack again).</summary>
+    Friend Overrides ReadOnly Property Released As Object
+        Get
+            Return _released
+        End Get
+    End Property
 
     Friend Overrides Sub UpdateTensions(time As Double)
         _string?.SetTension(0)

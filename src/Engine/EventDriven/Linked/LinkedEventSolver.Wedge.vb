@@ -4,7 +4,8 @@ Option Strict On
 ' links of its two bodies, can pass a blow back and forth at one instant for ever: a ball caged with no room
 ' between the two ends of a rod is hit by one end, hits the other, is hit back, and so on, with e = 1 not
 ' even losing speed. After many events at one instant the contact is resolved instead with every contact
-' touching the bodies it moves, all in one blow (LinkedImpulse.ResolveWedged).
+' touching the bodies it moves, all in one blow (LinkedImpulse.ResolveWedged): the same complementarity
+' solve, for impulses.
 Partial Friend NotInheritable Class LinkedEventSolver
     ' Events within a nanosecond after which a contact is resolved with every contact around it at once.
     Private Const WedgedAfter As Integer = 1000
@@ -14,14 +15,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' <summary>
     ''' Adds to the blow under way (the contact of body i with body j, wall <paramref name="side"/> or fixed
     ''' body f at <paramref name="t"/>) every other contact that touches a body of the groups it moves, and in
-    ''' turn of the groups those touch, with the links those groups hold. The bodies are written to their
-    ''' states at t before they join. Returns the groups gathered (i's and j's among them).
+    ''' turn of the groups those touch, with the links and lasting contacts those groups hold. The bodies are
+    ''' written to their states at t before they join. Returns the groups gathered (those given among them).
     ''' </summary>
     Private Function AddTouchingContacts(i As Integer, j As Integer, side As WallSide, f As Integer, t As Double,
-                                         held As HashSet(Of Integer)) As List(Of Integer)
-        Dim groups As New List(Of Integer) From {_groupOf(i)}
-        If j >= 0 AndAlso _groupOf(j) <> _groupOf(i) Then groups.Add(_groupOf(j))
-        Dim gathered = _groups(groups(0)).Bodies.Count + If(groups.Count > 1, _groups(groups(1)).Bodies.Count, 0)
+                                         groups As List(Of Integer)) As List(Of Integer)
+        groups = New List(Of Integer)(groups)
+        Dim gathered = groups.Sum(Function(g) _groups(g).Bodies.Count)
         Dim pairs As New HashSet(Of Long)
         If j >= 0 Then pairs.Add(PairKey(i, j))
         Dim head = 0
@@ -30,33 +30,33 @@ Partial Friend NotInheritable Class LinkedEventSolver
             head += 1
             For Each c In _groups(g).Bodies
                 Dim k = Array.IndexOf(_bodies, c)
-                AddSupportRows(k, held)
                 For m = 0 To _bodies.Length - 1
-                    If m = k OrElse Not pairs.Add(PairKey(k, m)) OrElse _rodPair.Contains(PairKey(k, m)) Then Continue For
+                    If m = k OrElse Not pairs.Add(PairKey(k, m)) OrElse _neverMeet.Contains(PairKey(k, m)) Then Continue For
                     Dim lo = Math.Min(k, m), hi = Math.Max(k, m)
-                    If RestsOn(lo, RestSupportKind.Body, hi) OrElse RestsOn(hi, RestSupportKind.Body, lo) Then Continue For
+                    If IsHeld(ContactKey.Pair(lo, hi)) Then Continue For
+                    Dim gm = _groupOf(m)
+                    If Not groups.Contains(gm) Then
+                        If Not MayTouch(k, m) Then Continue For
+                        Sync(gm, t)
+                    End If
                     Dim normal As Vector
                     If Not Touches(PairGap(lo, hi), t, normal) Then Continue For
-                    Dim gm = _groupOf(m)
                     If Not groups.Contains(gm) Then
                         If gathered + _groups(gm).Bodies.Count > MaxWedgedBodies Then Continue For
                         gathered += _groups(gm).Bodies.Count
                         groups.Add(gm)
-                        Sync(gm, t)
-                        For Each l In _groups(gm).Motion.HeldLinks
-                            _impulse.AddLink(l)
-                        Next
+                        AddHeldRows(gm)
                     End If
                     _impulse.AddContact(_bodies(lo), _bodies(hi), normal, _world.Restitution)
                 Next
                 If _world.Walls Then
                     For s = 1 To 4
-                        If (k = i AndAlso j < 0 AndAlso f < 0 AndAlso s = side) OrElse RestsOn(k, RestSupportKind.Wall, s) Then Continue For
+                        If (k = i AndAlso j < 0 AndAlso f < 0 AndAlso s = side) OrElse IsHeld(ContactKey.Wall(k, CType(s, WallSide))) Then Continue For
                         AddTouching(k, WallGap(k, CType(s, WallSide)), t)
                     Next
                 End If
                 For o = 0 To _fixed.Length - 1
-                    If (k = i AndAlso o = f) OrElse RestsOn(k, RestSupportKind.Fixed, o) Then Continue For
+                    If (k = i AndAlso o = f) OrElse IsHeld(ContactKey.Fixed(k, o)) Then Continue For
                     AddTouching(k, FixedGap(k, o), t)
                 Next
             Next

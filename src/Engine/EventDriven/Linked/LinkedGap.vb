@@ -107,6 +107,22 @@ Friend NotInheritable Class LinkedGap
         Return If(k >= 0, -_obstacle.CornerBisector(k), normal)
     End Function
 
+    ''' <summary>
+    ''' Whether d is on a sharp corner of K at <paramref name="time"/> (a corner of one box or polygon on a corner of
+    ''' another), and then the unit normals, from the body towards what it hits, of K's two faces that meet there.
+    ''' </summary>
+    Friend Function SharpCorner(time As Double, ByRef first As Vector, ByRef second As Vector) As Boolean
+        If _obstacle Is Nothing Then Return False
+        Dim normal As Vector, rate As Double, d As Vector
+        GapAt(time, normal, rate, d)
+        Dim k = SharpCornerAt(d)
+        If k < 0 Then Return False
+        Dim m = _obstacle.VertexCount
+        first = -_obstacle.Normals((k + m - 1) Mod m)
+        second = -_obstacle.Normals(k)
+        Return True
+    End Function
+
     ''' <summary>The sharp corner of K within <see cref="CornerReach"/> of d (a box's or polygon's corner on another's), or −1.</summary>
     Private Function SharpCornerAt(d As Vector) As Integer
         If _obstacle.Radius > 0 OrElse _obstacle.VertexCount < 3 Then Return -1

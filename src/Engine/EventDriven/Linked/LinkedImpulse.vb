@@ -1,33 +1,34 @@
 Option Strict On
 
 ''' <summary>
-''' A collision of linked bodies, resolved with the links' own impulses in the same solve. Each row is one
-''' condition on the speed at which two points separate along a unit vector u (from end A to end B), after
-''' the blow: the contact's row asks for −e times the speed it arrived at (Newton's experimental law), each
-''' rod and taut string touching these bodies for 0 (it keeps its length). Row i's impulse λᵢ acts on its
-''' ends equally and oppositely (v_A −= λ u/m_A, v_B += λ u/m_B), so momentum is conserved between bodies
-''' (a fixed point takes what acts on it); a contact can only push (λ ≥ 0), a string only pull (λ ≤ 0),
-''' a rod both. The rows are solved by projected Gauss–Seidel sweeps, which converge for these small,
-''' well-conditioned systems. With e = 1 no energy is lost: every link's impulse does no work (its ends'
-''' separation speed is 0 before and after), and the contact's does none either (the speed is reversed).
+''' A collision of linked bodies, resolved with the links' own impulses and the lasting contacts in the same
+''' solve. Each row is one condition on the speed at which two points separate along a unit vector u (from end
+''' A to end B), after the blow: the contact's row asks for −e times the speed it arrived at (Newton's
+''' experimental law), each rod and taut string touching these bodies for 0 (it keeps its length), each lasting
+''' contact for at least 0 (they may part, never press into each other). Row i's impulse λᵢ acts on its ends
+''' equally and oppositely (v_A −= λ u/m_A, v_B += λ u/m_B), so momentum is conserved between bodies (a fixed
+''' point takes what acts on it); a contact can only push (λ ≥ 0), a string only pull (λ ≤ 0), a rod both.
+''' That is a complementarity problem, solved exactly by <see cref="ContactSolve"/> (the velocities closest to
+''' those before, in the kinetic-energy metric, that meet every row). With e = 1 no energy is lost: every link's
+''' impulse does no work (its ends' separation speed is 0 before and after), and the contact's does none either
+''' (the speed is reversed).
 ''' </summary>
 Friend NotInheritable Class LinkedImpulse
-    Private Const MaxSweeps As Integer = 10000
-
     Private ReadOnly _bodies As New List(Of Shape)
     Private ReadOnly _velocities As New List(Of Vector)
     Private ReadOnly _rows As New List(Of Row)
+    Private ReadOnly _solve As New ContactSolve()
 
     Private Structure Row
         Public A As Integer
         Public B As Integer
         Public U As Vector
         Public Target As Double
-        Public Lower As Double
-        Public Upper As Double
-        Public Impulse As Double
-        ''' <summary>A contact (it pushes only), not a link.</summary>
+        ''' <summary>−1 a string (pulls only), 0 a rod (both ways), +1 a contact (pushes only).</summary>
+        Public Sign As Integer
+        ''' <summary>The contact being resolved or a lasting one (Poisson's rule gives back e times its impulse), not a link.</summary>
         Public IsContact As Boolean
+        Public Impulse As Double
     End Structure
 
     ''' <summary>Forgets the rows of the previous collision.</summary>
@@ -48,18 +49,22 @@ Friend NotInheritable Class LinkedImpulse
 
     ''' <summary>The contact: <paramref name="a"/> touches <paramref name="b"/> (Nothing: a wall or a fixed body) with <paramref name="normal"/> from a towards b.</summary>
     Friend Sub AddContact(a As Shape, b As Shape, normal As Vector, restitution As Double)
-        Dim row As New Row With {.A = IndexOf(a), .B = If(b Is Nothing, -1, IndexOf(b)), .U = normal, .Lower = 0, .Upper = Double.PositiveInfinity, .IsContact = True}
+        Dim row As New Row With {.A = IndexOf(a), .B = If(b Is Nothing, -1, IndexOf(b)), .U = normal, .Sign = 1, .IsContact = True}
         row.Target = -restitution * Math.Min(SeparationSpeed(row), 0)
         _rows.Add(row)
+    End Sub
+
+    ''' <summary>A lasting contact <paramref name="c"/> of a group whose bodies are <paramref name="bodies"/>: they may part, never press in.</summary>
+    Friend Sub AddHeld(bodies As Shape(), c As Constraint)
+        ' The constraint's u points from B to A; a row's from A to B.
+        AddContact(bodies(c.A), If(c.B >= 0, bodies(c.B), Nothing), -c.UnitAt(bodies), 0)
     End Sub
 
     ''' <summary>A rod or a taut string that holds its length through the blow.</summary>
     Friend Sub AddLink(link As Link)
         Dim r = link.EndB - link.EndA
-        Dim row As New Row With {.A = IndexOf(link.A), .B = IndexOf(link.B), .U = r.Normalized(Vector.Zero), .Target = 0,
-                                 .Lower = Double.NegativeInfinity,
-                                 .Upper = If(link.Kind = LinkKind.String, 0, Double.PositiveInfinity)}
-        _rows.Add(row)
+        _rows.Add(New Row With {.A = IndexOf(link.A), .B = IndexOf(link.B), .U = r.Normalized(Vector.Zero), .Target = 0,
+                                .Sign = If(link.Kind = LinkKind.String, -1, 0)})
     End Sub
 
     Private Function SeparationSpeed(row As Row) As Double
@@ -68,13 +73,9 @@ Friend NotInheritable Class LinkedImpulse
         Return Vector.Dot(vb - va, row.U)
     End Function
 
-    Private Function InverseMass(i As Integer) As Double
-        Return If(i >= 0, _bodies(i).InverseMass, 0)
-    End Function
-
     ''' <summary>Solves the rows and writes the new velocities to the bodies.</summary>
     Friend Sub Resolve()
-        Sweep()
+        Solve()
         WriteVelocities()
     End Sub
 
@@ -93,7 +94,7 @@ Friend NotInheritable Class LinkedImpulse
             If row.IsContact Then row.Target = 0
             _rows(i) = row
         Next
-        Sweep()
+        Solve()
         For i = 0 To _rows.Count - 1
             Dim row = _rows(i)
             If row.IsContact AndAlso row.Impulse > 0 Then
@@ -101,36 +102,45 @@ Friend NotInheritable Class LinkedImpulse
                 If row.A >= 0 Then _velocities(row.A) -= row.U * (give * InverseMass(row.A))
                 If row.B >= 0 Then _velocities(row.B) += row.U * (give * InverseMass(row.B))
             End If
-            row.Impulse = 0
-            _rows(i) = row
         Next
-        Sweep()
+        Solve()
         WriteVelocities()
     End Sub
 
-    ''' <summary>Projected Gauss–Seidel sweeps over the rows, from the impulses they hold, until nothing changes.</summary>
-    Private Sub Sweep()
+    Private Function InverseMass(i As Integer) As Double
+        Return If(i >= 0, _bodies(i).InverseMass, 0)
+    End Function
+
+    ''' <summary>
+    ''' The velocities closest to those now (kinetic-energy metric) at which every row is met, and each row's
+    ''' impulse (N·s, in the row's own sign). A row separating at s along u with target T is the solve's row
+    ''' with value sign × (s − T) ≥ 0 (= 0 for a rod): the row's B end is the solve's A.
+    ''' </summary>
+    Private Sub Solve()
+        If _rows.Count = 0 Then Return
+        Dim inverse = _bodies.Select(Function(b) b.InverseMass).ToArray()
+        Dim rows(_rows.Count - 1) As ContactRow
         Dim scale = 0.0
         For Each v In _velocities
             scale = Math.Max(scale, v.Length)
         Next
-        For pass = 1 To MaxSweeps
-            Dim change = 0.0
-            For i = 0 To _rows.Count - 1
-                Dim row = _rows(i)
-                Dim w = InverseMass(row.A) + InverseMass(row.B)
-                If w = 0 OrElse row.U = Vector.Zero Then Continue For
-                Dim wanted = row.Impulse + (row.Target - SeparationSpeed(row)) / w
-                wanted = Math.Min(Math.Max(wanted, row.Lower), row.Upper)
-                Dim delta = wanted - row.Impulse
-                If delta = 0 Then Continue For
-                row.Impulse = wanted
-                _rows(i) = row
-                If row.A >= 0 Then _velocities(row.A) -= row.U * (delta * InverseMass(row.A))
-                If row.B >= 0 Then _velocities(row.B) += row.U * (delta * InverseMass(row.B))
-                change = Math.Max(change, Math.Abs(delta) * w)
-            Next
-            If change <= 0.000000000000001 * scale Then Exit For
+        For i = 0 To _rows.Count - 1
+            Dim r = _rows(i)
+            Dim s = If(r.Sign = 0, 1, r.Sign)
+            ' Value s·(u·(v_B − v_A) − T): with the solve's A = this row's B and direction s·u.
+            rows(i) = New ContactRow(If(r.B >= 0, r.B, ContactRow.None), If(r.A >= 0, r.A, ContactRow.None), r.U * s, -s * r.Target, r.Sign = 0)
+            scale = Math.Max(scale, Math.Abs(r.Target))
+        Next
+        Dim result(_bodies.Count - 1) As Vector
+        Dim forces(_rows.Count - 1) As Double
+        _solve.Solve(inverse, _velocities, rows, ContactSolve.ApproachTolerance * scale, result, forces)
+        For i = 0 To _bodies.Count - 1
+            _velocities(i) = result(i)
+        Next
+        For i = 0 To _rows.Count - 1
+            Dim r = _rows(i)
+            r.Impulse = If(r.Sign = 0, 1, r.Sign) * forces(i)
+            _rows(i) = r
         Next
     End Sub
 

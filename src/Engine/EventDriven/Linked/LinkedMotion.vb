@@ -49,6 +49,23 @@ Friend MustInherit Class LinkedMotion
         End Get
     End Property
 
+    ''' <summary>The lasting contacts this motion holds (constraints on its bodies' slots): their pairs are not searched.</summary>
+    Friend Overridable ReadOnly Property HeldContacts As Constraint()
+        Get
+            Return Array.Empty(Of Constraint)()
+        End Get
+    End Property
+
+    ''' <summary>After <see cref="Transition"/>: the string or contact whose force has just fallen to zero, not to be held at this instant; or Nothing.</summary>
+    Friend Overridable ReadOnly Property Released As Object
+        Get
+            Return Nothing
+        End Get
+    End Property
+
+    ''' <summary>After <see cref="Transition"/>: the string that snapped taut there (a collision to report), or Nothing.</summary>
+    Friend Property Snapped As Link
+
     ''' <summary>Sets the tension of rods and strings at <paramref name="time"/> (s), for the tables.</summary>
     Friend Overridable Sub UpdateTensions(time As Double)
     End Sub

@@ -1,31 +1,21 @@
 Option Strict On
 
 ''' <summary>
-''' Which closed form moves a group of linked bodies, chosen from their state now; and, before anything
-''' moves, whether the event solver can move a world's links at all. What it cannot yet move it says in a
-''' plain sentence (<see cref="UnsupportedSceneException"/>) rather than letting the bodies fly free.
+''' Which closed form moves a group of linked bodies that holds no lasting contact, chosen from their state now;
+''' a group no closed form fits is integrated.
 ''' </summary>
 Friend Module LinkedMotions
     ''' <summary>A string within this fraction of its length counts as at full length.</summary>
     Friend Const FullFraction As Double = 0.000000001
 
-    Private Const UseVerlet As String = "; use --solver verlet"
-
-    ''' <summary>Throws <see cref="UnsupportedSceneException"/> when the world has links the event solver cannot move.</summary>
-    Friend Sub CheckSupported(world As World, groups As List(Of LinkedGroup))
-        ' Groups that no closed form fits are integrated: springs alone by IntegratedMotion, chains with rods or strings by ChainMotion.
-        For Each g In groups
-            If OnlySprings(g) OrElse Not IsChain(g) Then Continue For
-            If Not ChainMotion.CanHoldAll(g.Bodies.ToArray(), g.Links) Then Throw New UnsupportedSceneException("the event solver does not yet move rods or strings that hold a body in more ways than it can move (two rods between the same two balls, or a ball on rods to two points in line with it)" & UseVerlet)
-        Next
-    End Sub
-
     ''' <summary>
     ''' The closed form for <paramref name="group"/> from its bodies' states at <paramref name="time"/> (s).
-    ''' <paramref name="slack"/>: a string has just gone slack (its tension fell to zero), whatever the rounding says.
+    ''' <paramref name="released"/>: a string that has just gone slack (its tension fell to zero) or snapped back is
+    ''' slack, whatever the rounding says.
     ''' </summary>
-    Friend Function Create(group As LinkedGroup, world As World, time As Double, slack As Boolean, slop As Double) As LinkedMotion
+    Friend Function Create(group As LinkedGroup, world As World, time As Double, released As Object, slop As Double) As LinkedMotion
         Dim g = world.Gravity
+        Dim slack = released IsNot Nothing AndAlso group.Links.Contains(TryCast(released, Link))
         Dim a = group.Bodies(0)
         ' A free body that rests has had its motion chosen already (LinkedEventSolver.Rest.vb): this one flies.
         If group.Links.Count = 0 Then Return New FlightMotion(a, time, g)
@@ -35,9 +25,8 @@ Friend Module LinkedMotions
             Return New IntegratedMotion(group.Bodies.ToArray(), group.Links, time, g)
         End If
         If IsChain(group) Then
-            ' A string whose tension has just fallen to zero is slack in the next motion, whatever the rounding says.
-            Dim previous = TryCast(group.Motion, ChainMotion)
-            Return New ChainMotion(group.Bodies.ToArray(), group.Links, time, g, If(slack AndAlso previous IsNot Nothing, previous.Slackened, Nothing))
+            Dim size = group.Bodies.Min(Function(body) Math.Min(body.Outline.MaxX - body.Outline.MinX, body.Outline.MaxY - body.Outline.MinY))
+            Return New ConstrainedMotion(group.Bodies.ToArray(), group.Links, Array.Empty(Of Constraint)(), time, g, released, size)
         End If
         If group.Bodies.Count = 1 Then
             Select Case l.Kind

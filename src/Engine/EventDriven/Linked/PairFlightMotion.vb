@@ -49,8 +49,19 @@ Friend NotInheritable Class PairFlightMotion
         Dim impulse = (apart + after) / (a.InverseMass + b.InverseMass)
         a.Velocity += n * (impulse * a.InverseMass)
         b.Velocity -= n * (impulse * b.InverseMass)
+        Snapped = _link
+        If after > 0 Then _released = _link
         Return after > 0
     End Function
+
+    Private _released As Link
+
+    ''' <summary>After the transition: the string, when it snapped taut and its ends bounced back (slack again).</summary>
+    Friend Overrides ReadOnly Property Released As Object
+        Get
+            Return _released
+        End Get
+    End Property
 
     Friend Overrides Sub UpdateTensions(time As Double)
         _link.SetTension(0)

@@ -55,8 +55,18 @@ Friend NotInheritable Class PendulumMotion
 
     ''' <summary>The string's tension has fallen to zero: it goes slack.</summary>
     Friend Overrides Function Transition(world As World) As Boolean
+        _released = _link
         Return True
     End Function
+
+    Private _released As Link
+
+    ''' <summary>After the transition: the string, gone slack.</summary>
+    Friend Overrides ReadOnly Property Released As Object
+        Get
+            Return _released
+        End Get
+    End Property
 
     Friend Overrides ReadOnly Property HeldLinks As Link()
         Get

@@ -1,20 +1,22 @@
 Option Strict On
 
 ''' <summary>
-''' A group of bodies joined by rods or strings that no closed form fits (a double pendulum, a rope of
-''' balls joined by rods, a chain hanging from a point; springs may be among its links): integrated by the
-''' Dormand–Prince 5(4) pair with error control (docs/links.md, "Chains"). Rods and taut strings are exact
-''' distance constraints whose tensions come from one small linear solve per evaluation
-''' (<see cref="ChainConstraints"/>); after each step the state is put back on the lengths if rounding has
-''' moved it off. Between steps the motion is the quintic that matches position, velocity and acceleration
-''' at both ends, and that quintic is the motion: contacts are found on it by conservative advancement with
-''' the speed and acceleration bounds read from its coefficients, as for springs (<see cref="IntegratedMotion"/>).
-''' A taut string goes slack where its tension would turn negative (a root of the tension along the quintic,
-''' by Brent's method), and a slack one snaps taut where its ends reach its length (conservative advancement
-''' on L² − d²); both end this motion, and the next starts from the state there.
-''' Steps are taken lazily, as far as anything asks.
+''' A group of bodies held together by constraints that no closed form fits (a double pendulum, a rope of
+''' balls joined by rods, a chain hanging from a point, a ball sliding on a ball or round a peg, a bob on a
+''' string pressed against a wall, a box on a table pushed by a spring; springs may be among its links):
+''' integrated by the Dormand–Prince 5(4) pair with error control (docs/links.md, "Chains"; docs/contact.md).
+''' Rods, taut strings and lasting contacts are exact constraints ψ = 0 whose forces come from one small linear
+''' solve per evaluation (<see cref="ConstraintSet"/>); after each step the state is put back on them if
+''' rounding has moved it off. Between steps the motion is the quintic that matches position, velocity and
+''' acceleration at both ends, and that quintic is the motion: contacts are found on it by conservative
+''' advancement with the speed and acceleration bounds read from its coefficients, as for springs
+''' (<see cref="IntegratedMotion"/>). A taut string goes slack, and a contact lifts off, where its force would
+''' turn negative (a root of the force along the quintic, by Brent's method); a contact also ends where it
+''' leaves its face or corner (a root of its margin); a slack string snaps taut where its ends reach its
+''' length (conservative advancement on L² − d²). Each ends this motion, and the next starts from the state
+''' there. Steps are taken lazily, as far as anything asks.
 ''' </summary>
-Friend NotInheritable Class ChainMotion
+Friend NotInheritable Class ConstrainedMotion
     Inherits LinkedMotion
 
     Private Const RelativeTolerance As Double = 0.00000000001
@@ -39,15 +41,19 @@ Friend NotInheritable Class ChainMotion
     Private ReadOnly _n As Integer
     Private ReadOnly _inverseMass As Double()
     Private ReadOnly _springs As Link()
-    ' The rods and taut strings, and their ties.
+    ' The rods and taut strings held.
     Private ReadOnly _held As Link()
-    Private ReadOnly _ties As ChainTie()
-    Private ReadOnly _constraints As ChainConstraints
+    ' The lasting contacts held (their constraints follow the links' in _rows).
+    Private ReadOnly _contacts As Constraint()
+    ' Every constraint held: the links' ties, then the contacts.
+    Private ReadOnly _rows As Constraint()
+    Private ReadOnly _constraints As ConstraintSet
     ' The slack strings, their ties, and how little spare length counts as reaching full length, m.
     Private ReadOnly _slack As Link()
-    Private ReadOnly _slackTies As ChainTie()
+    Private ReadOnly _slackTies As Constraint()
     Private ReadOnly _snapAt As Double()
-    Private ReadOnly _hasStrings As Boolean
+    ' Whether anything can end this motion by itself (a string, a contact), so that it must be looked ahead at.
+    Private ReadOnly _hasEvents As Boolean
     ' Per step start: the state (per body x, y, vx, vy), its derivative, and the ties' tensions.
     Private ReadOnly _times As New List(Of Double)
     Private ReadOnly _states As New List(Of Double())
@@ -60,25 +66,27 @@ Friend NotInheritable Class ChainMotion
     Private _step As Double
     ' The tensions (N) at the last evaluation.
     Private _lastTensions As Double()
-    ' The first string event found on the steps scanned so far.
-    Private _scanned As Integer
+    ' The first event found on the steps scanned so far: the constraint (a string's tie, a contact) and what happens.
     Private _eventTime As Double = Double.PositiveInfinity
-    Private _eventLink As Link
-    Private _eventSnaps As Boolean
+    Private _eventRow As Constraint
+    Private _eventKind As ConstraintEvent
 
     ''' <summary>
-    ''' The chain of <paramref name="bodies"/> and <paramref name="links"/> from their states now. A string
-    ''' counts as taut when it is at full length, its ends not moving apart or together, and its tension,
-    ''' worked out with the others, is not negative; <paramref name="slackened"/> (a string whose tension has
-    ''' just fallen to zero) is slack whatever the rounding says.
+    ''' The group of <paramref name="bodies"/>, <paramref name="links"/> and lasting <paramref name="contacts"/>
+    ''' (constraints on the bodies' slots, chosen pressing by the complementarity solve) from their states now. A
+    ''' string counts as taut when it is at full length, its ends not moving apart or together, and its tension,
+    ''' worked out with the others, is not negative; <paramref name="released"/> (a string or contact whose force
+    ''' has just fallen to zero) is not held whatever the rounding says. A rod that depends on the others here (a
+    ''' second rod between the same two balls) is watched as a slack string is, and held again once it is not.
+    ''' <paramref name="size"/> (m) is a length of the group's size, for its first step.
     ''' </summary>
-    Friend Sub New(bodies As Shape(), links As List(Of Link), startTime As Double, gravity As Double, slackened As Link)
+    Friend Sub New(bodies As Shape(), links As List(Of Link), contacts As IEnumerable(Of Constraint), startTime As Double, gravity As Double,
+                   released As Object, size As Double)
         MyBase.New(bodies, startTime)
         _gravity = gravity
         _n = bodies.Length
         _inverseMass = bodies.Select(Function(b) b.InverseMass).ToArray()
         _springs = links.Where(Function(l) l.Kind = LinkKind.Spring).ToArray()
-        _hasStrings = links.Any(Function(l) l.Kind = LinkKind.String)
         Dim y(4 * _n - 1) As Double
         For k = 0 To _n - 1
             y(4 * k) = bodies(k).CentreOfMass.X
@@ -86,44 +94,56 @@ Friend NotInheritable Class ChainMotion
             y(4 * k + 2) = bodies(k).Velocity.X
             y(4 * k + 3) = bodies(k).Velocity.Y
         Next
-        Dim held As New List(Of Link), slack As New List(Of Link)
-        Dim snapNow As Link = Nothing
+        Dim held As New List(Of Constraint), slack As New List(Of Constraint)
+        Dim snapNow As Constraint = Nothing
         For Each l In links
             If l.Kind = LinkKind.Rod Then
-                held.Add(l)
+                held.Add(TieOf(l))
             ElseIf l.Kind = LinkKind.String Then
-                Dim state = StringState(l, slackened)
-                If state > 0 Then snapNow = l
-                If state = 0 Then held.Add(l) Else slack.Add(l)
+                Dim state = StringState(l, released)
+                If state > 0 Then snapNow = TieOf(l)
+                If state = 0 Then held.Add(TieOf(l)) Else slack.Add(TieOf(l))
             End If
         Next
-        ' A string whose tension would be negative with the others holding is slack: let the most negative go, and look again.
+        For Each c In contacts
+            If Not Equals(c.Tag, released) Then held.Add(c)
+        Next
+        ' A constraint the others already imply is not held (its row would make the solve singular): a rod is
+        ' watched as a slack string is, a contact left to the contact search.
+        Dim independent = IndependentRows(held, y)
+        For Each c In held.Except(independent).ToList()
+            held.Remove(c)
+            If c.Shape = ConstraintShape.Tie Then slack.Add(c)
+        Next
+        ' A string or contact whose force would be negative with the others holding lets go: the most negative
+        ' first, then look again.
         Do
-            Dim ties = held.Select(Function(l) TieOf(l)).ToArray()
             Dim d = FreeDerivative(y)
-            Dim lambda = New ChainConstraints(ties, _inverseMass).Tensions(y, d)
+            Dim lambda = New ConstraintSet(held.ToArray(), _inverseMass).Tensions(y, d)
             Dim worst = -1, least = 0.0
             For i = 0 To held.Count - 1
-                If held(i).Kind <> LinkKind.String Then Continue For
-                Dim w = _inverseMass(ties(i).A) + If(ties(i).B >= 0, _inverseMass(ties(i).B), 0)
-                ' λw is the pull's share of the ends' relative acceleration, m/s²; rounding of g's size is not a push.
+                If held(i).Holds Then Continue For
+                Dim w = _inverseMass(held(i).A) + If(held(i).B >= 0, _inverseMass(held(i).B), 0)
+                ' λw is the force's share of the ends' relative acceleration, m/s²; rounding of g's size is not a push.
                 Dim pull = lambda(i) * w
                 If pull < least AndAlso pull < -0.000000001 * (gravity + 1) Then least = pull : worst = i
             Next
             If worst < 0 Then Exit Do
-            slack.Add(held(worst))
+            If held(worst).Shape = ConstraintShape.Tie Then slack.Add(held(worst))
             held.RemoveAt(worst)
         Loop
-        _held = held.ToArray()
-        _ties = _held.Select(Function(l) TieOf(l)).ToArray()
-        _constraints = New ChainConstraints(_ties, _inverseMass)
-        _slack = slack.ToArray()
-        _slackTies = _slack.Select(Function(l) TieOf(l)).ToArray()
+        _rows = held.ToArray()
+        _held = held.Where(Function(c) c.Shape = ConstraintShape.Tie).Select(Function(c) DirectCast(c.Tag, Link)).ToArray()
+        _contacts = held.Where(Function(c) c.Shape <> ConstraintShape.Tie).ToArray()
+        _constraints = New ConstraintSet(_rows, _inverseMass)
+        _slackTies = slack.ToArray()
+        _slack = slack.Select(Function(c) DirectCast(c.Tag, Link)).ToArray()
         _snapAt = New Double(_slack.Length - 1) {}
         For i = 0 To _slack.Length - 1
             Dim spare = SpareLength(y, _slackTies(i))
             _snapAt(i) = If(spare > OverLength * _slack(i).Length, 0, Math.Min(spare, 0) - OverLength * _slack(i).Length)
         Next
+        _hasEvents = _slack.Length > 0 OrElse _rows.Any(Function(c) Not c.Holds)
         Dim tensions As Double() = Nothing
         _times.Add(startTime)
         _states.Add(y)
@@ -131,40 +151,34 @@ Friend NotInheritable Class ChainMotion
         _tensions.Add(tensions)
         If snapNow IsNot Nothing Then
             _eventTime = startTime
-            _eventLink = snapNow
-            _eventSnaps = True
+            _eventRow = snapNow
+            _eventKind = ConstraintEvent.Snaps
         End If
-        ' A first step of a hundredth of the shortest link's pendulum period; the error control corrects it at once.
-        Dim shortest = links.Where(Function(l) l.Kind <> LinkKind.Spring).Min(Function(l) l.Length)
+        ' A first step of a hundredth of the shortest link's pendulum period (or of a fall through the group's
+        ' size); the error control corrects it at once.
+        Dim lengths = links.Where(Function(l) l.Kind <> LinkKind.Spring).Select(Function(l) l.Length).ToList()
+        Dim shortest = If(lengths.Count > 0, lengths.Min(), size)
         _step = 0.06 * Math.Sqrt(shortest / Math.Max(gravity, 1))
     End Sub
 
-    ''' <summary>
-    ''' Whether every rod and every string at full length could hold at once where its bodies are now: false when
-    ''' some are redundant (two rods between the same two balls, a ball held by rods to two points in line
-    ''' with it), which the tension solve cannot take.
-    ''' </summary>
-    Friend Shared Function CanHoldAll(bodies As Shape(), links As List(Of Link)) As Boolean
-        Dim inverseMass = bodies.Select(Function(b) b.InverseMass).ToArray()
-        Dim ties = links.Where(Function(l) l.Kind = LinkKind.Rod OrElse (l.Kind = LinkKind.String AndAlso l.Distance >= l.Length * (1 - LinkedMotions.FullFraction))).
-                         Select(Function(l) New ChainTie(Array.IndexOf(bodies, l.A), If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B)), If(l.IsAnchored, l.EndB, Vector.Zero), l.Length)).ToArray()
-        Dim y(4 * bodies.Length - 1) As Double
-        For k = 0 To bodies.Length - 1
-            y(4 * k) = bodies(k).CentreOfMass.X
-            y(4 * k + 1) = bodies(k).CentreOfMass.Y
+    ''' <summary>The constraints of <paramref name="rows"/>, in order, that do not depend on those kept before them at <paramref name="y"/>.</summary>
+    Private Function IndependentRows(rows As List(Of Constraint), y As Double()) As List(Of Constraint)
+        Dim kept As New List(Of Constraint)
+        For Each c In rows
+            kept.Add(c)
+            Dim d = FreeDerivative(y)
+            Try
+                Call New ConstraintSet(kept.ToArray(), _inverseMass).Tensions(y, d)
+            Catch ex As InvalidOperationException
+                kept.RemoveAt(kept.Count - 1)
+            End Try
         Next
-        Dim accelerations(y.Length - 1) As Double
-        Try
-            Call New ChainConstraints(ties, inverseMass).Tensions(y, accelerations)
-            Return True
-        Catch ex As InvalidOperationException
-            Return False
-        End Try
+        Return kept
     End Function
 
     ''' <summary>−1 slack, 0 taut (at full length, not moving along itself), +1 over-long and stretching (it must snap now).</summary>
-    Private Function StringState(l As Link, slackened As Link) As Integer
-        If l Is slackened Then Return -1
+    Private Function StringState(l As Link, released As Object) As Integer
+        If l Is released Then Return -1
         Dim d = l.Distance
         If d < l.Length * (1 - LinkedMotions.FullFraction) Then Return -1
         Dim rate = l.StretchRate
@@ -174,10 +188,12 @@ Friend NotInheritable Class ChainMotion
         Return If(rate > 0 AndAlso d >= l.Length, 1, -1)
     End Function
 
-    Private Function TieOf(l As Link) As ChainTie
+    Private Function TieOf(l As Link) As Constraint
         Dim a = Array.IndexOf(Bodies, l.A)
         Dim b = If(l.IsAnchored, -1, Array.IndexOf(Bodies, l.B))
-        Return New ChainTie(a, b, If(l.IsAnchored, l.EndB, Vector.Zero), l.Length)
+        Dim c = Constraint.Tie(a, b, If(l.IsAnchored, l.EndB, Vector.Zero), l.Length, l.Kind = LinkKind.Rod)
+        c.Tag = l
+        Return c
     End Function
 
     ''' <summary>dy/dt without the ties: velocities, and gravity plus every spring's pull ÷ mass.</summary>
@@ -252,7 +268,7 @@ Friend NotInheritable Class ChainMotion
                 End If
                 If Not (_step > 0.000000000000001 * Math.Max(1, Math.Abs(t))) Then Throw New InvalidOperationException($"the chain integrator could not keep its error down at t = {t} s")
             Loop
-            If _hasStrings AndAlso Double.IsPositiveInfinity(_eventTime) Then ScanStep(_times.Count - 2)
+            If _hasEvents AndAlso Double.IsPositiveInfinity(_eventTime) Then ScanStep(_times.Count - 2)
         Loop
     End Sub
 
@@ -265,16 +281,29 @@ Friend NotInheritable Class ChainMotion
         Return s
     End Function
 
-    ''' <summary>Looks on step j for a taut string whose tension turns negative and a slack one that reaches its length; keeps the first.</summary>
+    ''' <summary>
+    ''' Looks on step j for a taut string or contact whose force turns negative, a contact that leaves its face or
+    ''' corner, and a slack string (or watched rod) that reaches its length; keeps the first.
+    ''' </summary>
     Private Sub ScanStep(j As Integer)
         Dim t0 = _times(j), t1 = _times(j + 1)
-        For i = 0 To _held.Length - 1
-            If _held(i).Kind <> LinkKind.String Then Continue For
-            Dim before = _tensions(j)(i), after = _tensions(j + 1)(i)
-            If after >= 0 Then Continue For
-            Dim index = i
-            Dim root = If(before <= 0, t0, ScalarRoot.Brent(Function(t) TensionAt(t, index), t0, t1, before, after))
-            Keep(root, _held(i), False)
+        For i = 0 To _rows.Length - 1
+            Dim row = _rows(i)
+            If Not row.Holds Then
+                Dim before = _tensions(j)(i), after = _tensions(j + 1)(i)
+                If after < 0 Then
+                    Dim index = i
+                    Dim root = If(before <= 0, t0, ScalarRoot.Brent(Function(t) TensionAt(t, index), t0, t1, before, after))
+                    Keep(root, row, ConstraintEvent.Slackens)
+                End If
+            End If
+            If row.Bounded Then
+                Dim m0 = row.Margin(_states(j)), m1 = row.Margin(_states(j + 1))
+                If m1 < 0 Then
+                    Dim root = If(m0 <= 0, t0, ScalarRoot.Brent(Function(t) row.Margin(StateArray(t)), t0, t1, m0, m1))
+                    Keep(root, row, ConstraintEvent.Leaves)
+                End If
+            End If
         Next
         For i = 0 To _slack.Length - 1
             Dim tie = _slackTies(i)
@@ -291,24 +320,24 @@ Friend NotInheritable Class ChainMotion
             Dim found = ConservativeAdvancement.FirstContact(New SquaredSpareGap(Me, tie), t0, t1, tie.Length * tie.Length - reached * reached,
                                                              2 * reach * speed, 2 * (speed * speed + reach * accel))
             If found.Found Then
-                Keep(found.Time, _slack(i), True)
+                Keep(found.Time, tie, ConstraintEvent.Snaps)
             ElseIf found.ClearUntil < t1 Then
                 Throw New InvalidOperationException($"the chain integrator could not tell whether a string snaps taut between t = {found.ClearUntil} s and {t1} s")
             End If
         Next
     End Sub
 
-    Private Sub Keep(time As Double, link As Link, snaps As Boolean)
+    Private Sub Keep(time As Double, row As Constraint, kind As ConstraintEvent)
         If time >= _eventTime Then Return
         _eventTime = time
-        _eventLink = link
-        _eventSnaps = snaps
+        _eventRow = row
+        _eventKind = kind
     End Sub
 
     ''' <summary>L − d for a tie, m: how much length a slack string has to spare.</summary>
-    Private Shared Function SpareLength(y As Double(), t As ChainTie) As Double
+    Private Shared Function SpareLength(y As Double(), t As Constraint) As Double
         Dim pa As New Vector(y(4 * t.A), y(4 * t.A + 1))
-        Dim pb = If(t.B >= 0, New Vector(y(4 * t.B), y(4 * t.B + 1)), t.Anchor)
+        Dim pb = If(t.B >= 0, New Vector(y(4 * t.B), y(4 * t.B + 1)), t.Point)
         Return t.Length - (pb - pa).Length
     End Function
 
@@ -435,12 +464,12 @@ Friend NotInheritable Class ChainMotion
     End Function
 
     ''' <summary>
-    ''' The first string change on the steps looked at; a chain with strings looks <see cref="Lookahead"/>
-    ''' ahead and, finding none, hands over to a new motion at the end of what it looked at. +∞ with no strings.
+    ''' The first event on the steps looked at; a group that can have one looks <see cref="Lookahead"/> ahead and,
+    ''' finding none, hands over to a new motion at the end of what it looked at. +∞ when nothing can end it.
     ''' </summary>
     Friend Overrides ReadOnly Property TransitionTime As Double
         Get
-            If Not _hasStrings Then Return Double.PositiveInfinity
+            If Not _hasEvents Then Return Double.PositiveInfinity
             If Double.IsPositiveInfinity(_eventTime) Then ExtendTo(StartTime + Lookahead)
             If Not Double.IsPositiveInfinity(_eventTime) Then Return _eventTime
             ' The end of the first step at or after the look-ahead: a node, so the next motion starts from an integrated state.
@@ -448,39 +477,96 @@ Friend NotInheritable Class ChainMotion
         End Get
     End Property
 
-    ''' <summary>The string that has just gone slack (for the next motion), or Nothing.</summary>
-    Friend Property Slackened As Link
+    ''' <summary>The string or contact whose force has just fallen to zero (not held in the next motion), or Nothing.</summary>
+    Friend Overrides ReadOnly Property Released As Object
+        Get
+            Return If(_eventKind = ConstraintEvent.Slackens AndAlso _eventRow IsNot Nothing, _eventRow.Tag, Nothing)
+        End Get
+    End Property
 
     ''' <summary>
-    ''' A string goes slack (its tension fell to zero), or snaps taut: like a collision along the string,
-    ''' its ends' speed apart becomes e times as much together, solved with the rods and taut strings of
-    ''' the chain so that they keep their lengths through the jerk (<see cref="LinkedImpulse"/>). Returns
-    ''' true when a string has gone slack.
+    ''' A string goes slack or a contact lifts off (its force fell to zero), or a contact leaves its face or corner:
+    ''' nothing changes at that instant. Or a string snaps taut: like a collision along the string, its ends' speed
+    ''' apart becomes e times as much together (a rod the others implied: 0), solved with the rods, taut strings and
+    ''' lasting contacts of the group so that they hold through the jerk (<see cref="LinkedImpulse"/>). Returns true
+    ''' when a string has gone slack or a contact lifted off.
     ''' </summary>
     Friend Overrides Function Transition(world As World) As Boolean
-        If _eventLink Is Nothing Then Return False
-        If Not _eventSnaps Then
-            Slackened = _eventLink
-            Return True
-        End If
-        Dim l = _eventLink
+        If _eventRow Is Nothing Then Return False
+        If _eventKind <> ConstraintEvent.Snaps Then Return _eventKind = ConstraintEvent.Slackens
+        Dim l = DirectCast(_eventRow.Tag, Link)
         Dim apart = l.StretchRate
         If apart <= 0 Then Return False
-        Dim restitution = world.Restitution
-        If restitution * apart < Math.Sqrt(2 * Math.Max(world.Gravity, 0.000001) * SettleFraction * l.Length) Then restitution = 0
+        Dim restitution = If(l.Kind = LinkKind.Rod, 0, world.Restitution)
+        If restitution * apart < Math.Sqrt(2 * Stretching(_eventRow, world.Gravity) * SettleFraction * l.Length) Then restitution = 0
         Dim impulse As New LinkedImpulse()
         ' A contact whose normal points from B to A: "approaching" along it is the ends moving apart, and its push pulls them together.
         impulse.AddContact(l.A, If(l.IsAnchored, Nothing, l.B), -(l.EndB - l.EndA).Normalized(Vector.Zero), restitution)
         For Each other In _held
             impulse.AddLink(other)
         Next
+        For Each c In _contacts
+            impulse.AddHeld(Bodies, c)
+        Next
         impulse.Resolve()
+        If l.Kind = LinkKind.String Then Snapped = l
         Return False
     End Function
+
+    ''' <summary>
+    ''' How hard (m/s²) the motion would stretch <paramref name="tie"/> now, held by nothing: gravity's size at least, or
+    ''' what the free forces and the turning of the string's line (a body swinging round on it) add up to along it.
+    ''' </summary>
+    Private Function Stretching(tie As Constraint, gravity As Double) As Double
+        Dim y = Constraint.StateOf(Bodies)
+        Dim d = FreeDerivative(y)
+        Dim u As Vector, value As Double, rate As Double, curvature As Double
+        tie.Measure(y, u, value, rate, curvature)
+        Dim relative = New Vector(d(4 * tie.A + 2), d(4 * tie.A + 3)) - If(tie.B >= 0, New Vector(d(4 * tie.B + 2), d(4 * tie.B + 3)), Vector.Zero)
+        Return Math.Max(Math.Max(gravity, 0.000001), -(Vector.Dot(u, relative) + curvature))
+    End Function
+
+    ''' <summary>
+    ''' Whether the group is at rest at its start: every body still, and every acceleration within
+    ''' <paramref name="fraction"/> of the forces' own size of zero (rounding of their balance).
+    ''' </summary>
+    Friend Function IsStill(fraction As Double) As Boolean
+        Dim y = _states(0), d = _derivatives(0)
+        Dim free = FreeDerivative(y)
+        Dim scale = _gravity
+        For k = 0 To _n - 1
+            If y(4 * k + 2) <> 0 OrElse y(4 * k + 3) <> 0 Then Return False
+            scale = Math.Max(scale, Math.Abs(free(4 * k + 2)) + Math.Abs(free(4 * k + 3)))
+        Next
+        For k = 0 To _n - 1
+            If Math.Abs(d(4 * k + 2)) > fraction * scale OrElse Math.Abs(d(4 * k + 3)) > fraction * scale Then Return False
+        Next
+        Return True
+    End Function
+
+    ''' <summary>The held rods' and taut strings' tensions at the start (N), in the order of <see cref="HeldLinks"/>.</summary>
+    Friend ReadOnly Property StartTensions As Double()
+        Get
+            Return _tensions(0).Take(_held.Length).ToArray()
+        End Get
+    End Property
+
+    ''' <summary>The links this motion does not hold: springs and slack strings.</summary>
+    Friend ReadOnly Property SlackLinks As Link()
+        Get
+            Return _slack.Concat(_springs).ToArray()
+        End Get
+    End Property
 
     Friend Overrides ReadOnly Property HeldLinks As Link()
         Get
             Return _held
+        End Get
+    End Property
+
+    Friend Overrides ReadOnly Property HeldContacts As Constraint()
+        Get
+            Return _contacts
         End Get
     End Property
 
@@ -504,16 +590,16 @@ Friend NotInheritable Class ChainMotion
     Private NotInheritable Class SquaredSpareGap
         Implements IDistanceFunction
 
-        Private ReadOnly _motion As ChainMotion
-        Private ReadOnly _tie As ChainTie
+        Private ReadOnly _motion As ConstrainedMotion
+        Private ReadOnly _tie As Constraint
 
-        Public Sub New(motion As ChainMotion, tie As ChainTie)
+        Public Sub New(motion As ConstrainedMotion, tie As Constraint)
             _motion = motion
             _tie = tie
         End Sub
 
         Private Sub Ends(time As Double, ByRef r As Vector, ByRef w As Vector)
-            Dim pa As Vector, va As Vector, pb = _tie.Anchor, vb = Vector.Zero
+            Dim pa As Vector, va As Vector, pb = _tie.Point, vb = Vector.Zero
             _motion.StateAt(time, _tie.A, pa, va)
             If _tie.B >= 0 Then _motion.StateAt(time, _tie.B, pb, vb)
             r = pb - pa

@@ -1,0 +1,13 @@
+Option Strict On
+
+''' <summary>What ends a constrained group's motion at one of its constraints.</summary>
+Friend Enum ConstraintEvent
+    ''' <summary>Nothing yet.</summary>
+    None
+    ''' <summary>A taut string goes slack or a contact lifts off: its force falls to zero.</summary>
+    Slackens
+    ''' <summary>A contact leaves the face or corner it was on (a box slides off a table's edge).</summary>
+    Leaves
+    ''' <summary>A slack string (or a rod the others implied) reaches its length.</summary>
+    Snaps
+End Enum

@@ -1,0 +1,205 @@
+Option Strict On
+
+''' <summary>
+''' The forces with which a group's held constraints (rods, taut strings, lasting contacts: <see cref="Constraint"/>)
+''' keep ψ = 0, and the projection that puts a drifted state back on them (docs/links.md, "Chains", and
+''' docs/contact.md). A state array holds per body x, y, vx, vy (m, m/s); an accelerations array has the same
+''' layout, with the accelerations in the velocity places. Constraint i's force λ (N) acts on A as +λu and on B
+''' as −λu. Holding ψ = 0 means ψ̈ = 0, where ψ̈ = u·(a_A − a_B) + κ; writing the accelerations as the free ones
+''' plus the forces ÷ mass gives one linear equation per constraint, M λ = u·(a_B − a_A)_free − κ, with
+''' M_ij = (u_i·u_j) Σ σ_i σ_j w_p over the bodies p the two share (w_p the inverse mass, σ = −1 at end A and
+''' +1 at end B). M is J W Jᵀ, symmetric and positive definite while no constraint is redundant (the group's
+''' contacts are chosen by the complementarity solve, which keeps only independent ones), so it is solved by
+''' Cholesky's method. Which constraints share which bodies never changes, so those sums are worked out once;
+''' the buffers are reused, so one instance serves one motion at a time.
+''' </summary>
+Friend NotInheritable Class ConstraintSet
+    Private ReadOnly _rows As Constraint()
+    Private ReadOnly _inverseMass As Double()
+    ' Σ σ_i σ_j w_p over the shared bodies, for i ≥ j; zero where constraints i and j share none.
+    Private ReadOnly _shared As Double()()
+    Private ReadOnly _nx As Double(), _ny As Double(), _factor As Double()()
+
+    ''' <summary>The constraints of a group whose bodies have the given inverse masses (1/kg, 0 for a body that cannot move).</summary>
+    Friend Sub New(rows As Constraint(), inverseMass As Double())
+        _rows = rows
+        _inverseMass = inverseMass
+        Dim m = rows.Length
+        _nx = New Double(m - 1) {}
+        _ny = New Double(m - 1) {}
+        _shared = New Double(m - 1)() {}
+        _factor = New Double(m - 1)() {}
+        For i = 0 To m - 1
+            _shared(i) = New Double(i) {}
+            _factor(i) = New Double(i) {}
+            For j = 0 To i
+                _shared(i)(j) = SharedInverseMass(rows(i), rows(j))
+            Next
+        Next
+    End Sub
+
+    ''' <summary>The constraints, in the order of the forces.</summary>
+    Friend ReadOnly Property Rows As Constraint()
+        Get
+            Return _rows
+        End Get
+    End Property
+
+    ''' <summary>
+    ''' The constraints' forces (N) for <paramref name="state"/>, with <paramref name="accelerations"/> holding the
+    ''' free accelerations (gravity, springs) on entry and, on return, those plus the forces ÷ mass.
+    ''' </summary>
+    Friend Function Tensions(state As Double(), accelerations As Double()) As Double()
+        Dim m = _rows.Length
+        Dim lambda(m - 1) As Double
+        If m = 0 Then Return lambda
+        For i = 0 To m - 1
+            Dim c = _rows(i)
+            Dim u As Vector, value As Double, rate As Double, curvature As Double
+            c.Measure(state, u, value, rate, curvature)
+            _nx(i) = u.X
+            _ny(i) = u.Y
+            Dim relative = AccelerationB(accelerations, c) - Acceleration(accelerations, c.A)
+            lambda(i) = Vector.Dot(u, relative) - curvature
+        Next
+        Factor()
+        Solve(lambda)
+        Apply(accelerations, lambda, 2)
+        Return lambda
+    End Function
+
+    ''' <summary>
+    ''' Moves the bodies back onto ψ = 0 and takes away their ψ̇, each by the least mass-weighted change (a
+    ''' Gauss–Newton step on ψ, repeated until within a few roundings; then one linear solve for the rates). The
+    ''' centre of mass is not moved by constraints between bodies.
+    ''' </summary>
+    Friend Sub Project(state As Double())
+        Dim m = _rows.Length
+        If m = 0 Then Return
+        Dim c(m - 1) As Double
+        For iteration = 1 To 4
+            Dim worst = 0.0
+            For i = 0 To m - 1
+                Dim u As Vector, value As Double, rate As Double, curvature As Double
+                _rows(i).Measure(state, u, value, rate, curvature)
+                _nx(i) = u.X
+                _ny(i) = u.Y
+                ' Moving the ends by μ along u (A along it, B against it, each by its inverse mass) raises ψ by
+                ' M μ: so M μ = −ψ (for a tie, d − L).
+                c(i) = -value
+                worst = Math.Max(worst, Math.Abs(c(i)) / _rows(i).Scale)
+            Next
+            ' Gauss–Newton converges quadratically: from the integrator's drift one step reaches rounding.
+            If worst <= 0.000000000000001 Then Exit For
+            Factor()
+            Solve(c)
+            Apply(state, c, 0)
+        Next
+        ProjectRates(state)
+    End Sub
+
+    ''' <summary>Takes away the constraints' ψ̇ by the least mass-weighted change of the velocities, positions as they are.</summary>
+    Friend Sub ProjectRates(state As Double())
+        Dim m = _rows.Length
+        If m = 0 Then Return
+        Dim c(m - 1) As Double
+        For i = 0 To m - 1
+            Dim u As Vector, value As Double, rate As Double, curvature As Double
+            _rows(i).Measure(state, u, value, rate, curvature)
+            _nx(i) = u.X
+            _ny(i) = u.Y
+            c(i) = -rate
+        Next
+        Factor()
+        Solve(c)
+        Apply(state, c, 2)
+    End Sub
+
+    ''' <summary>The largest |ψ| ÷ scale over the constraints, and the largest |ψ̇| (m/s).</summary>
+    Friend Sub Drift(state As Double(), ByRef lengthError As Double, ByRef rateError As Double)
+        lengthError = 0
+        rateError = 0
+        For Each row In _rows
+            Dim u As Vector, value As Double, rate As Double, curvature As Double
+            row.Measure(state, u, value, rate, curvature)
+            lengthError = Math.Max(lengthError, Math.Abs(value) / row.Scale)
+            rateError = Math.Max(rateError, Math.Abs(rate))
+        Next
+    End Sub
+
+    Private Function SharedInverseMass(p As Constraint, q As Constraint) As Double
+        Dim s = 0.0
+        If p.A = q.A Then s += _inverseMass(p.A)
+        If p.B >= 0 AndAlso p.B = q.B Then s += _inverseMass(p.B)
+        If p.A = q.B Then s -= _inverseMass(p.A)
+        If p.B >= 0 AndAlso p.B = q.A Then s -= _inverseMass(p.B)
+        Return s
+    End Function
+
+    ''' <summary>Adds Σ_j λ_j × (constraint j's direction at each end) × w to the values at <paramref name="offset"/> (0 positions, 2 velocities or accelerations).</summary>
+    Private Sub Apply(values As Double(), lambda As Double(), offset As Integer)
+        For j = 0 To _rows.Length - 1
+            Dim t = _rows(j)
+            Dim wa = _inverseMass(t.A) * lambda(j)
+            values(4 * t.A + offset) += wa * _nx(j)
+            values(4 * t.A + offset + 1) += wa * _ny(j)
+            If t.B >= 0 Then
+                Dim wb = _inverseMass(t.B) * lambda(j)
+                values(4 * t.B + offset) -= wb * _nx(j)
+                values(4 * t.B + offset + 1) -= wb * _ny(j)
+            End If
+        Next
+    End Sub
+
+    ''' <summary>Cholesky's factor L (M = L Lᵀ, lower triangle) of M for the directions in _nx, _ny.</summary>
+    Private Sub Factor()
+        Dim m = _rows.Length
+        For j = 0 To m - 1
+            Dim lj = _factor(j)
+            Dim diagonal = _shared(j)(j)
+            For p = 0 To j - 1
+                diagonal -= lj(p) * lj(p)
+            Next
+            If Not (diagonal > 0.000000000001 * _shared(j)(j)) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
+            Dim root = Math.Sqrt(diagonal)
+            lj(j) = root
+            For i = j + 1 To m - 1
+                Dim li = _factor(i)
+                Dim s = _shared(i)(j)
+                If s <> 0 Then s *= _nx(i) * _nx(j) + _ny(i) * _ny(j)
+                For p = 0 To j - 1
+                    s -= li(p) * lj(p)
+                Next
+                li(j) = s / root
+            Next
+        Next
+    End Sub
+
+    ''' <summary>Solves M x = b in place with the factor.</summary>
+    Private Sub Solve(b As Double())
+        Dim m = b.Length
+        For i = 0 To m - 1
+            Dim li = _factor(i)
+            Dim s = b(i)
+            For p = 0 To i - 1
+                s -= li(p) * b(p)
+            Next
+            b(i) = s / li(i)
+        Next
+        For i = m - 1 To 0 Step -1
+            Dim s = b(i)
+            For p = i + 1 To m - 1
+                s -= _factor(p)(i) * b(p)
+            Next
+            b(i) = s / _factor(i)(i)
+        Next
+    End Sub
+
+    Private Shared Function Acceleration(accelerations As Double(), k As Integer) As Vector
+        Return New Vector(accelerations(4 * k + 2), accelerations(4 * k + 3))
+    End Function
+
+    Private Shared Function AccelerationB(accelerations As Double(), t As Constraint) As Vector
+        Return If(t.B >= 0, Acceleration(accelerations, t.B), Vector.Zero)
+    End Function
+End Class

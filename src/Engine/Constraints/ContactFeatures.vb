@@ -1,0 +1,57 @@
+Option Strict On
+
+''' <summary>
+''' Which feature of a pair shape a touching contact lies on, as the <see cref="Constraint"/> that keeps it
+''' (docs/contact.md, "Features"). Pure functions. Body A touches B (or a fixed body) where d = c_A − c_B − shift,
+''' the difference of their reference points, lies on the boundary of their pair shape K (the Minkowski
+''' difference of the outlines, rounded by R): on an edge (a flat face: <see cref="ConstraintShape.Plane"/>) or
+''' on a rounded corner (<see cref="ConstraintShape.Round"/>); two balls touch on the corner of a point. Where d
+''' is at the end of an edge, the feature is the one it is moving onto.
+''' </summary>
+Friend Module ContactFeatures
+    ''' <summary>
+    ''' The contact of slot <paramref name="a"/> with slot <paramref name="b"/> (−1: a fixed body) on pair shape
+    ''' <paramref name="k"/>, for d = c_A − c_B − <paramref name="shift"/> (m) moving at <paramref name="w"/> = ḋ
+    ''' (m/s) with <paramref name="q"/> = d̈ (m/s², or zero when not known); within <paramref name="slop"/> (m) of
+    ''' the boundary. Nothing where d is on a sharp corner (R = 0) and not on an edge it stays on: a corner of one
+    ''' box on a corner of another holds nothing.
+    ''' </summary>
+    Friend Function OnOutline(a As Integer, b As Integer, shift As Vector, k As Outline, d As Vector, w As Vector, q As Vector, slop As Double) As Constraint
+        Dim corners = k.Corners, normals = k.EdgeNormals, lengths = k.EdgeLengths
+        Dim r = k.Radius
+        Dim m = corners.Length
+        If m = 1 Then Return Constraint.Round(a, b, shift, corners(0), r, Vector.Zero, Vector.Zero)
+        ' An edge d lies on and is not leaving by one of its ends.
+        For i = 0 To normals.Length - 1
+            Dim n = normals(i)
+            Dim rel = d - corners(i)
+            If Math.Abs(Vector.Dot(n, rel) - r) > slop Then Continue For
+            Dim t = RestingFaces.Along(n)
+            Dim s = Vector.Dot(t, rel)
+            If s < -slop OrElse s > lengths(i) + slop Then Continue For
+            If RestingFaces.IsLeaving(s, Vector.Dot(t, w), Vector.Dot(t, q), lengths(i), slop) Then Continue For
+            Return Constraint.Plane(a, b, shift, n, Vector.Dot(n, corners(i)) + r, corners(i), t, lengths(i))
+        Next
+        If r <= 0 Then Return Nothing
+        ' The rounded corner whose region d is in (or nearest to).
+        Dim best = -1, bestMargin = Double.NegativeInfinity
+        For c = 0 To m - 1
+            Dim before = RestingFaces.Along(normals((c + m - 1) Mod m)), after = RestingFaces.Along(normals(c))
+            Dim rel = d - corners(c)
+            Dim margin = Math.Min(Vector.Dot(rel, before), -Vector.Dot(rel, after))
+            If margin > bestMargin Then bestMargin = margin : best = c
+        Next
+        Dim prev = RestingFaces.Along(normals((best + m - 1) Mod m)), nxt = RestingFaces.Along(normals(best))
+        Return Constraint.Round(a, b, shift, corners(best), r, prev, nxt)
+    End Function
+
+    ''' <summary>A body's contact with a wall of the container: slot <paramref name="a"/>, its extents <paramref name="low"/> and <paramref name="high"/> from its centre (m).</summary>
+    Friend Function OnWall(a As Integer, side As WallSide, low As Vector, high As Vector, width As Double, height As Double) As Constraint
+        Select Case side
+            Case WallSide.Left : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(1, 0), -low.X, Vector.Zero, Vector.Zero, Double.PositiveInfinity)
+            Case WallSide.Right : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(-1, 0), high.X - width, Vector.Zero, Vector.Zero, Double.PositiveInfinity)
+            Case WallSide.Bottom : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(0, 1), -low.Y, Vector.Zero, Vector.Zero, Double.PositiveInfinity)
+            Case Else : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(0, -1), high.Y - height, Vector.Zero, Vector.Zero, Double.PositiveInfinity)
+        End Select
+    End Function
+End Module

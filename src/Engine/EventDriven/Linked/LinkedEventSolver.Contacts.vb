@@ -1,0 +1,408 @@
+Option Strict On
+
+' The one rule for bodies in lasting contact (docs/contact.md). After every event, the bodies it changed, and any
+' body touching them that could stay touching, are grouped anew: which touching contacts press is not guessed
+' arrangement by arrangement but found from the complementarity conditions of the contact forces (each pushes
+' and never pulls, and a contact that pushes does not open), with rods and taut strings in the same solve. The
+' contacts that press are held by their group's motion, which keeps them exactly until its own events (a force
+' falling to zero, a contact leaving its face, a string changing); the others are left free, for the contact
+' search.
+Partial Friend NotInheritable Class LinkedEventSolver
+    ' A touching contact whose bodies part at less than this many slops' worth of bounce (v² < 2 a × 4 slop, a
+    ' the acceleration pressing them) may be held: a bounce that small is the end of a series of ever smaller
+    ' bounces, which has a finite sum but endless terms.
+    Private Const BounceSlops As Double = 4
+    ' A speed within this fraction of the group's own speeds is rounding: after its contacts' rates are taken away,
+    ' a body at rest keeps none of it.
+    Private Const RoundingFraction As Double = 0.000000000000001
+
+    Private ReadOnly _solve As New ContactSolve()
+
+    ''' <summary>A touching contact that may last: which one, on what feature (global slots), and its key.</summary>
+    Private NotInheritable Class Touch
+        Friend Key As ContactKey
+        Friend Body As Integer
+        Friend Other As Integer
+        Friend Side As WallSide
+        Friend Fixed As Integer
+    End Class
+
+    ''' <summary>Whether a group's motion holds contact <paramref name="key"/> now.</summary>
+    Private Function IsHeld(key As ContactKey) As Boolean
+        Dim v = key.Value
+        Dim i = CInt((v >> 30) And &H3FFFFFFFL)
+        Dim m = MotionOf(i)
+        For Each c In m.HeldContacts
+            If key.Equals(c.Tag) Then Return True
+        Next
+        Return False
+    End Function
+
+    ''' <summary>
+    ''' Groups anew, at <paramref name="t"/>, the bodies of <paramref name="seeds"/> (as written to them: their states at
+    ''' t, after whatever the event did) and of every group they touch where
+    ''' the touch may last, by the one rule; <paramref name="released"/> (a string or contact whose force has just
+    ''' fallen to zero) is not held. Returns the bodies whose motion it made anew, for their contacts to be predicted.
+    ''' </summary>
+    Private Function Regroup(seeds As List(Of Integer), t As Double, released As Object) As List(Of Integer)
+        ' 1. The groups concerned: the seeds (their bodies hold their states at t), and any group one of their
+        '    bodies touches where it may last.
+        Dim inSet As New HashSet(Of Integer)(seeds)
+        Dim order As New List(Of Integer)(seeds)
+        ' What the gaps read while this works: the seeds' states now, not their old motions'.
+        For Each g In seeds
+            _groups(g).Motion = New SnapshotMotion(_groups(g).Motion.Bodies, t)
+        Next
+        Dim touches As New List(Of Touch)
+        Dim seen As New HashSet(Of Long)
+        Dim head = 0
+        Do While head < order.Count
+            Dim g = order(head)
+            head += 1
+            For Each body In _groups(g).Bodies
+                Dim i = Array.IndexOf(_bodies, body)
+                If _world.Walls Then
+                    For s = 1 To 4
+                        AddIfLasting(touches, i, -1, CType(s, WallSide), -1, t, released)
+                    Next
+                End If
+                For f = 0 To _fixed.Length - 1
+                    AddIfLasting(touches, i, -1, WallSide.None, f, t, released)
+                Next
+                For j = 0 To _bodies.Length - 1
+                    If j = i OrElse Not seen.Add(PairKey(i, j)) OrElse _neverMeet.Contains(PairKey(i, j)) Then Continue For
+                    Dim gj = _groupOf(j)
+                    If Not inSet.Contains(gj) Then
+                        If Not MayTouch(i, j) Then Continue For
+                        Sync(gj, t)
+                    End If
+                    If AddIfLasting(touches, Math.Min(i, j), Math.Max(i, j), WallSide.None, -1, t, released) AndAlso inSet.Add(gj) Then order.Add(gj)
+                Next
+            Next
+        Loop
+
+        ' 2. Their bodies, numbered from 0, and the state now.
+        Dim members As New List(Of Integer)
+        For Each g In order
+            For Each body In _groups(g).Bodies
+                members.Add(Array.IndexOf(_bodies, body))
+            Next
+        Next
+        Dim local As New Dictionary(Of Integer, Integer)
+        For k = 0 To members.Count - 1
+            local(members(k)) = k
+        Next
+        Dim shapes = members.Select(Function(i) _bodies(i)).ToArray()
+        Dim links = order.SelectMany(Function(g) _groups(g).Links).Distinct().ToList()
+
+        ' 3. The constraints that may hold: rods, taut strings, and the touching contacts.
+        Dim rows As New List(Of Constraint)
+        For Each l In links
+            Dim a = local(Array.IndexOf(_bodies, l.A))
+            Dim b = If(l.IsAnchored, -1, local(Array.IndexOf(_bodies, l.B)))
+            If l.Kind = LinkKind.Rod OrElse (l.Kind = LinkKind.String AndAlso l IsNot released AndAlso IsTaut(l)) Then
+                Dim c = Constraint.Tie(a, b, If(l.IsAnchored, l.EndB, Vector.Zero), l.Length, l.Kind = LinkKind.Rod)
+                c.Tag = l
+                rows.Add(c)
+            End If
+        Next
+        Dim y = Constraint.StateOf(shapes)
+        For Each touch In touches
+            Dim c = FeatureOf(touch, local, y, Nothing)
+            If c IsNot Nothing Then rows.Add(c)
+        Next
+
+        ' 4. No contact approaches and no rod stretches: the least change of the velocities (in the kinetic-energy
+        '    metric) that makes it so, which rounding alone has made necessary.
+        StopApproaches(shapes, rows, y)
+
+        ' 5. The forces: the complementarity solve for the accelerations. A contact that pushes is held; one moving
+        '    off the end of its face is moved onto the feature it goes onto, and the forces found again.
+        Dim pressing = PressingRows(shapes, links, rows, y, touches, local)
+        HoldRates(shapes, pressing, rows, y)
+
+        ' 6. The groups: bodies joined by links or by a contact that presses.
+        Dim parent = Enumerable.Range(0, members.Count).ToArray()
+        For Each l In links
+            If l.IsAnchored Then Continue For
+            parent(Root(parent, local(Array.IndexOf(_bodies, l.A)))) = Root(parent, local(Array.IndexOf(_bodies, l.B)))
+        Next
+        For Each c In pressing
+            If c.Shape <> ConstraintShape.Tie AndAlso c.B >= 0 Then parent(Root(parent, c.A)) = Root(parent, c.B)
+        Next
+
+        ' 7. Each group's motion.
+        Dim made As New List(Of LinkedGroup)
+        Dim byRoot As New Dictionary(Of Integer, Integer)
+        Dim slots(members.Count - 1) As Integer
+        For k = 0 To members.Count - 1
+            Dim r = Root(parent, k)
+            Dim g As Integer
+            If Not byRoot.TryGetValue(r, g) Then
+                g = made.Count
+                byRoot(r) = g
+                made.Add(New LinkedGroup(New List(Of Shape), New List(Of Link)))
+            End If
+            slots(k) = made(g).Bodies.Count
+            made(g).Bodies.Add(shapes(k))
+        Next
+        For Each l In links
+            made(byRoot(Root(parent, local(Array.IndexOf(_bodies, l.A))))).Links.Add(l)
+        Next
+        Dim contactsOf = made.Select(Function(x) New List(Of Constraint)).ToList()
+        For Each c In pressing
+            If c.Shape = ConstraintShape.Tie Then Continue For
+            contactsOf(byRoot(Root(parent, c.A))).Add(c.WithSlots(slots(c.A), If(c.B >= 0, slots(c.B), -1)))
+        Next
+        For g = 0 To made.Count - 1
+            made(g).Motion = MotionFor(made(g), contactsOf(g), t, released)
+        Next
+
+        ' 8. In place of the groups they came from.
+        Dim kept = Enumerable.Range(0, _groups.Count).Where(Function(g) Not inSet.Contains(g)).Select(Function(g) _groups(g)).ToList()
+        kept.AddRange(made)
+        _groups = kept
+        For g = 0 To _groups.Count - 1
+            Dim m = _groups(g).Motion
+            For k = 0 To m.Bodies.Length - 1
+                Dim i = Array.IndexOf(_bodies, m.Bodies(k))
+                _groupOf(i) = g
+                _slotOf(i) = k
+            Next
+        Next
+        Return members
+    End Function
+
+    ''' <summary>Whether bodies i and j are near enough (their boxes, as last written, within a slop) to be touching; a cheap test before syncing j.</summary>
+    Private Function MayTouch(i As Integer, j As Integer) As Boolean
+        Dim m = MotionOf(j)
+        Dim p As Vector, v As Vector
+        m.StateAt(_now, _slotOf(j), p, v)
+        Dim ci = _bodies(i).CentreOfMass
+        Return ci.X + _low(i).X <= p.X + _high(j).X + Slop AndAlso p.X + _low(j).X <= ci.X + _high(i).X + Slop AndAlso
+               ci.Y + _low(i).Y <= p.Y + _high(j).Y + Slop AndAlso p.Y + _low(j).Y <= ci.Y + _high(i).Y + Slop
+    End Function
+
+    ''' <summary>A string is taut when its ends are at its full length and not moving apart or together.</summary>
+    Private Function IsTaut(l As Link) As Boolean
+        If l.Distance < l.Length * (1 - LinkedMotions.FullFraction) Then Return False
+        Dim vb = If(l.IsAnchored, Vector.Zero, l.B.Velocity)
+        Dim scale = l.A.Velocity.Length + vb.Length + Math.Sqrt(Math.Max(_world.Gravity, 1) * l.Length)
+        Return Math.Abs(l.StretchRate) <= LinkedMotions.FullFraction * scale
+    End Function
+
+    ''' <summary>
+    ''' Adds the contact of body i with body j (i &lt; j), wall <paramref name="side"/> or fixed body f when they touch
+    ''' at <paramref name="t"/> (within a slop), do not approach, and part no faster than a bounce of
+    ''' <see cref="BounceSlops"/> slops: a contact that may last. Returns whether it was added.
+    ''' </summary>
+    Private Function AddIfLasting(touches As List(Of Touch), i As Integer, j As Integer, side As WallSide, f As Integer, t As Double, released As Object) As Boolean
+        Dim key = If(j >= 0, ContactKey.Pair(i, j), If(f >= 0, ContactKey.Fixed(i, f), ContactKey.Wall(i, side)))
+        If key.Equals(released) Then Return False
+        Dim gap = If(j >= 0, PairGap(i, j), If(f >= 0, FixedGap(i, f), WallGap(i, side)))
+        Dim normal As Vector, rate As Double
+        If gap.GapAndNormal(t, normal, rate) > Slop Then Return False
+        Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
+        If rate < -(CreepSpeed + 0.000000001 * speeds) Then Return False
+        Dim press = Math.Max(_world.Gravity, MotionOf(i).AccelerationBound(_slotOf(i), t, t) + If(j >= 0, MotionOf(j).AccelerationBound(_slotOf(j), t, t), 0))
+        If rate > Math.Sqrt(2 * press * BounceSlops * Slop) Then Return False
+        touches.Add(New Touch With {.Key = key, .Body = i, .Other = j, .Side = side, .Fixed = f})
+        Return True
+    End Function
+
+    ''' <summary>
+    ''' The constraint that keeps <paramref name="touch"/> on the feature of its pair shape it is on or moving onto,
+    ''' in the local numbering, at state <paramref name="y"/>; <paramref name="accelerations"/> (or Nothing) break a
+    ''' tie at the end of a face. Nothing for a sharp corner on a sharp corner.
+    ''' </summary>
+    Private Function FeatureOf(touch As Touch, local As Dictionary(Of Integer, Integer), y As Double(), accelerations As Vector()) As Constraint
+        Dim i = touch.Body, a = local(i)
+        Dim c As Constraint
+        Dim size = (_high(i) - _low(i)).Length
+        If touch.Other < 0 AndAlso touch.Fixed < 0 Then
+            c = ContactFeatures.OnWall(a, touch.Side, _low(i), _high(i), _world.Width, _world.Height)
+        Else
+            Dim b = If(touch.Other >= 0, local(touch.Other), -1)
+            Dim pa = New Vector(y(4 * a), y(4 * a + 1)), va = New Vector(y(4 * a + 2), y(4 * a + 3))
+            Dim qa = If(accelerations Is Nothing, Vector.Zero, accelerations(a))
+            Dim shift As Vector, k As Outline
+            Dim pb = Vector.Zero, vb = Vector.Zero, qb = Vector.Zero
+            If touch.Other >= 0 Then
+                Dim j = touch.Other
+                shift = _offset(i) - _offset(j)
+                k = If(BothBalls(i, j), Outline.MinkowskiDifference(_bodies(j).Outline, _bodies(i).Outline), _pairDifferences(i, j))
+                pb = New Vector(y(4 * b), y(4 * b + 1))
+                vb = New Vector(y(4 * b + 2), y(4 * b + 3))
+                If accelerations IsNot Nothing Then qb = accelerations(b)
+                size = Math.Max(size, (_high(j) - _low(j)).Length)
+            Else
+                shift = _fixed(touch.Fixed).Position + _offset(i)
+                k = _differences(i, touch.Fixed)
+            End If
+            c = ContactFeatures.OnOutline(a, b, shift, k, pa - pb - shift, va - vb, qa - qb, Slop)
+        End If
+        If c Is Nothing Then Return Nothing
+        c.Tag = touch.Key
+        c.Scale = size
+        Return c
+    End Function
+
+    ''' <summary>
+    ''' Takes away, by the least change of the velocities in the kinetic-energy metric, any approach of the touching
+    ''' contacts and any stretching of the rods and taut strings in <paramref name="rows"/> (rounding's, or a bounce's
+    ''' last crumb), writing the velocities to the bodies and to <paramref name="y"/>. Nothing when none is beyond rounding.
+    ''' </summary>
+    Private Sub StopApproaches(shapes As Shape(), rows As List(Of Constraint), y As Double())
+        If rows.Count = 0 Then Return
+        Dim speed = 0.0
+        For Each s In shapes
+            speed = Math.Max(speed, s.Velocity.Length)
+        Next
+        Dim tolerance = ContactSolve.ApproachTolerance * speed
+        Dim solveRows(rows.Count - 1) As ContactRow
+        Dim needed = False
+        For k = 0 To rows.Count - 1
+            Dim u As Vector, value As Double, rate As Double, curvature As Double
+            rows(k).Measure(y, u, value, rate, curvature)
+            solveRows(k) = New ContactRow(rows(k).A, rows(k).B, u, 0, rows(k).Holds)
+            If rate < -tolerance OrElse (rows(k).Holds AndAlso rate > tolerance) Then needed = True
+        Next
+        If Not needed Then Return
+        Dim result(shapes.Length - 1) As Vector, forces(rows.Count - 1) As Double
+        _solve.Solve(shapes.Select(Function(s) s.InverseMass).ToArray(), shapes.Select(Function(s) s.Velocity).ToArray(), solveRows, tolerance, result, forces)
+        For k = 0 To shapes.Length - 1
+            shapes(k).Velocity = result(k)
+            y(4 * k + 2) = result(k).X
+            y(4 * k + 3) = result(k).Y
+        Next
+    End Sub
+
+    ''' <summary>
+    ''' The rows that hold in the motion to come: the rods, and the strings and contacts whose force the
+    ''' complementarity solve of the accelerations finds pushing (pulling, for a string). A contact at the end of
+    ''' its face that these accelerations take off it is put on the feature it goes onto, and the forces found again.
+    ''' </summary>
+    Private Function PressingRows(shapes As Shape(), links As List(Of Link), rows As List(Of Constraint), y As Double(),
+                                  touches As List(Of Touch), local As Dictionary(Of Integer, Integer)) As List(Of Constraint)
+        Dim n = shapes.Length
+        Dim inverse = shapes.Select(Function(s) s.InverseMass).ToArray()
+        Dim free = FreeAccelerations(shapes, links, y)
+        Dim result(n - 1) As Vector
+        Dim forces(rows.Count - 1) As Double
+        For attempt = 1 To 5
+            Dim scale = _world.Gravity
+            For Each a In free
+                scale = Math.Max(scale, a.Length)
+            Next
+            Dim solveRows(rows.Count - 1) As ContactRow
+            For k = 0 To rows.Count - 1
+                Dim u As Vector, value As Double, rate As Double, curvature As Double
+                rows(k).Measure(y, u, value, rate, curvature)
+                solveRows(k) = New ContactRow(rows(k).A, rows(k).B, u, curvature, rows(k).Holds)
+                scale = Math.Max(scale, Math.Abs(curvature))
+            Next
+            If forces.Length < rows.Count Then forces = New Double(rows.Count - 1) {}
+            _solve.Solve(inverse, free, solveRows, ContactSolve.ApproachTolerance * scale, result, forces)
+            ' A contact on a face's end that these accelerations take off it goes onto its next feature.
+            If attempt = 5 Then Exit For
+            Dim changed = False
+            For Each touch In touches
+                Dim k = rows.FindIndex(Function(c) touch.Key.Equals(c.Tag))
+                If k < 0 OrElse Not rows(k).Bounded OrElse rows(k).Margin(y) > Slop Then Continue For
+                Dim moved = FeatureOf(touch, local, y, result)
+                If moved IsNot Nothing AndAlso SameFeature(moved, rows(k)) Then Continue For
+                If moved Is Nothing Then rows.RemoveAt(k) Else rows(k) = moved
+                changed = True
+            Next
+            If Not changed Then Exit For
+        Next
+        Dim pressing As New List(Of Constraint)
+        For k = 0 To rows.Count - 1
+            If rows(k).Holds OrElse forces(k) > 0 Then pressing.Add(rows(k))
+        Next
+        Return pressing
+    End Function
+
+    ''' <summary>Whether two contact constraints are on the same feature.</summary>
+    Private Shared Function SameFeature(a As Constraint, b As Constraint) As Boolean
+        Return a.Shape = b.Shape AndAlso a.Normal = b.Normal AndAlso a.Length = b.Length
+    End Function
+
+    ''' <summary>Each body's acceleration (m/s²) from gravity and the springs alone, at state <paramref name="y"/>.</summary>
+    Private Function FreeAccelerations(shapes As Shape(), links As List(Of Link), y As Double()) As Vector()
+        Dim a(shapes.Length - 1) As Vector
+        For k = 0 To shapes.Length - 1
+            a(k) = New Vector(0, -_world.Gravity)
+        Next
+        For Each l In links
+            If l.Kind <> LinkKind.Spring Then Continue For
+            Dim ka = Array.IndexOf(shapes, l.A)
+            Dim kb = If(l.IsAnchored, -1, Array.IndexOf(shapes, l.B))
+            Dim pa = New Vector(y(4 * ka), y(4 * ka + 1)), va = New Vector(y(4 * ka + 2), y(4 * ka + 3))
+            Dim pb = If(kb >= 0, New Vector(y(4 * kb), y(4 * kb + 1)), l.EndB)
+            Dim vb = If(kb >= 0, New Vector(y(4 * kb + 2), y(4 * kb + 3)), Vector.Zero)
+            Dim r = pb - pa
+            Dim dist = r.Length
+            If dist = 0 Then Continue For
+            ' (k(d − L) + c ḋ)/d along r pulls A towards B.
+            Dim force = r * ((l.Stiffness * (dist - l.Length) + l.Damping * Vector.Dot(vb - va, r) / dist) / dist)
+            a(ka) += force * shapes(ka).InverseMass
+            If kb >= 0 Then a(kb) -= force * shapes(kb).InverseMass
+        Next
+        Return a
+    End Function
+
+    ''' <summary>
+    ''' The motion of a group newly formed: its closed form when it holds no contact (<see cref="LinkedMotions"/>),
+    ''' exact uniform acceleration when it holds only flat ones and has no links, else integrated.
+    ''' </summary>
+    Private Function MotionFor(group As LinkedGroup, contacts As List(Of Constraint), t As Double, released As Object) As LinkedMotion
+        Dim bodies = group.Bodies.ToArray()
+        If contacts.Count = 0 Then Return LinkedMotions.Create(group, _world, t, released, Slop)
+        If group.Links.Count = 0 AndAlso contacts.All(Function(c) c.Shape = ConstraintShape.Plane) Then
+            Return New UniformMotion(bodies, contacts.ToArray(), t, _world.Gravity)
+        End If
+        Dim size = bodies.Min(Function(b) Math.Min(b.Outline.MaxX - b.Outline.MinX, b.Outline.MaxY - b.Outline.MinY))
+        Dim m = New ConstrainedMotion(bodies, group.Links, contacts, t, _world.Gravity, released, size)
+        ' At rest, every force balanced: nothing changes until something reaches it, so nothing is integrated.
+        If m.IsStill(UniformMotion.RestFraction) Then Return New UniformMotion(bodies, m.HeldContacts, m.HeldLinks, m.StartTensions, m.SlackLinks, t)
+        Return m
+    End Function
+
+    ''' <summary>
+    ''' Makes the rates of the constraints that will hold (<paramref name="pressing"/>: rods, taut strings, contacts
+    ''' that press) exactly zero, and keeps every other touching contact in <paramref name="rows"/> from approaching,
+    ''' by the least change of the velocities in the kinetic-energy metric: what is taken away is a bounce of under
+    ''' <see cref="BounceSlops"/> slops, or rounding. Then a velocity component within rounding of zero (of the
+    ''' group's speeds, or √(g × size) for a group at rest) is zero, so that a body at rest is exactly still. The
+    ''' velocities go to the bodies and to <paramref name="y"/>.
+    ''' </summary>
+    Private Sub HoldRates(shapes As Shape(), pressing As List(Of Constraint), rows As List(Of Constraint), y As Double())
+        Dim scale = 0.0
+        For Each b In shapes
+            scale = Math.Max(scale, Math.Max(b.Velocity.Length, Math.Sqrt(_world.Gravity * (b.Outline.MaxX - b.Outline.MinX + b.Outline.MaxY - b.Outline.MinY))))
+        Next
+        If rows.Count > 0 Then
+            Dim solveRows(rows.Count - 1) As ContactRow
+            For k = 0 To rows.Count - 1
+                Dim u As Vector, value As Double, rate As Double, curvature As Double
+                rows(k).Measure(y, u, value, rate, curvature)
+                solveRows(k) = New ContactRow(rows(k).A, rows(k).B, u, 0, pressing.Contains(rows(k)))
+            Next
+            Dim result(shapes.Length - 1) As Vector, forces(rows.Count - 1) As Double
+            _solve.Solve(shapes.Select(Function(s) s.InverseMass).ToArray(), shapes.Select(Function(s) s.Velocity).ToArray(), solveRows,
+                         ContactSolve.ApproachTolerance * scale, result, forces)
+            For k = 0 To shapes.Length - 1
+                shapes(k).Velocity = result(k)
+            Next
+        End If
+        Dim zero = RoundingFraction * scale
+        For k = 0 To shapes.Length - 1
+            Dim v = shapes(k).Velocity
+            v = New Vector(If(Math.Abs(v.X) <= zero, 0, v.X), If(Math.Abs(v.Y) <= zero, 0, v.Y))
+            shapes(k).Velocity = v
+            y(4 * k + 2) = v.X
+            y(4 * k + 3) = v.Y
+        Next
+    End Sub
+End Class

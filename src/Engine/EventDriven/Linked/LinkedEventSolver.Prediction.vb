@@ -1,0 +1,210 @@
+Option Strict On
+
+' When each body next touches something (docs/links.md, "Links in the event solver"): every pair, wall and fixed
+' body is searched by conservative advancement on the motions, up to a horizon, except the contacts a group's
+' motion holds (they end by that motion's own events) and pairs that can never meet.
+Partial Friend NotInheritable Class LinkedEventSolver
+    Private Sub PredictAll(tEnd As Double)
+        For i = 0 To _bodies.Length - 1
+            PredictBody(i, tEnd, -1)
+        Next
+    End Sub
+
+    ''' <summary>Predicts every contact of body i (with bodies after it, or all of them when <paramref name="everyPair"/> ≥ 0).</summary>
+    Private Sub PredictBody(i As Integer, tEnd As Double, everyPair As Integer)
+        Dim n = _bodies.Length
+        For j = 0 To n - 1
+            If j = i OrElse (everyPair < 0 AndAlso j < i) Then Continue For
+            Dim a = Math.Min(i, j), b = Math.Max(i, j)
+            ' A contact held by a group's motion is kept by it exactly (it ends by that motion's own events), and
+            ' two balls on a rod can never meet: neither is searched.
+            Dim skip = IsHeld(ContactKey.Pair(a, b)) OrElse _neverMeet.Contains(PairKey(a, b))
+            _pairTime(a, b) = If(skip, Double.PositiveInfinity, PredictPair(a, b, tEnd))
+        Next
+        For s = 1 To 4
+            _wallTime(i, s) = If(_world.Walls AndAlso Not IsHeld(ContactKey.Wall(i, CType(s, WallSide))), PredictGap(i, WallGap(i, CType(s, WallSide)), tEnd), Double.PositiveInfinity)
+        Next
+        For f = 0 To _fixed.Length - 1
+            _fixedTime(i, f) = If(IsHeld(ContactKey.Fixed(i, f)), Double.PositiveInfinity, PredictGap(i, FixedGap(i, f), tEnd))
+        Next
+    End Sub
+
+
+    Private Function WallGap(i As Integer, side As WallSide) As LinkedGap
+        Return LinkedGap.Wall(MotionOf(i), _slotOf(i), _low(i), _high(i), side, _world.Width, _world.Height)
+    End Function
+
+    Private Function FixedGap(i As Integer, f As Integer) As LinkedGap
+        Return LinkedGap.Obstacle(MotionOf(i), _slotOf(i), _differences(i, f), _fixed(f).Position + _offset(i))
+    End Function
+
+    ''' <summary>The gap between bodies a &lt; b: centre distance less the radii for two balls, else the distance to their Minkowski difference.</summary>
+    Private Function PairGap(a As Integer, b As Integer) As LinkedGap
+        If BothBalls(a, b) Then
+            Return LinkedGap.Pair(MotionOf(a), _slotOf(a), MotionOf(b), _slotOf(b), DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
+        End If
+        Return LinkedGap.Shapes(MotionOf(a), _slotOf(a), MotionOf(b), _slotOf(b), _pairDifferences(a, b), _offset(a) - _offset(b))
+    End Function
+
+    ''' <summary>
+    ''' Bodies a &lt; b. The gap is a 1-Lipschitz function of their relative position, so it closes no faster
+    ''' than V, the sum of their speed bounds (or, for two bodies each on its parabola, the bound on their
+    ''' relative speed). Two balls: its second derivative is at most the relative acceleration plus V²/(r₁ + r₂)
+    ''' for the turning of the line of centres. A box or polygon in the pair: the gap is also convex in the
+    ''' relative position, which bounds it from below with the relative acceleration alone
+    ''' (<see cref="OneSidedAdvancement"/>); from above, the turning of the normal is at most V²/R about a pair
+    ''' shape rounded by R (a ball is involved) and unbounded about a sharp one (boxes and polygons).
+    ''' </summary>
+    Private Function PredictPair(a As Integer, b As Integer, tEnd As Double) As Double
+        Dim gap = PairGap(a, b)
+        Dim t0 = _now
+        Dim until = Math.Min(tEnd, t0 + Horizon)
+        Dim ma = MotionOf(a), mb = MotionOf(b)
+        Dim speed As Double, accel As Double
+        Dim flightA = TryCast(ma, FlightMotion), flightB = TryCast(mb, FlightMotion)
+        If Not BothBalls(a, b) AndAlso flightA IsNot Nothing AndAlso flightB IsNot Nothing Then
+            FlightMotion.RelativeBounds(flightA, flightB, t0, until, speed, accel)
+        Else
+            speed = ma.SpeedBound(_slotOf(a), t0, until) + mb.SpeedBound(_slotOf(b), t0, until)
+            accel = ma.AccelerationBound(_slotOf(a), t0, until) + mb.AccelerationBound(_slotOf(b), t0, until)
+        End If
+        If BothBalls(a, b) Then
+            Dim curved = accel + speed * speed / (DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
+            Return Recheck(FirstContact(gap, t0, until, speed, curved, curved, False), until, tEnd)
+        End If
+        Return Recheck(FirstContact(gap, t0, until, speed, accel, UpperCurvature(accel, speed, _pairDifferences(a, b).Radius), True), until, tEnd)
+    End Function
+
+    ''' <summary>A bound on the gap's second derivative (m/s²) from above: the acceleration's, plus V²/R for the turning of the normal about a pair shape rounded by R; +∞ (none) for a sharp one.</summary>
+    Private Shared Function UpperCurvature(accel As Double, speed As Double, radius As Double) As Double
+        If radius > 0 Then Return accel + speed * speed / radius
+        Return If(speed > 0, Double.PositiveInfinity, accel)
+    End Function
+
+    Private Function PredictGap(i As Integer, gap As LinkedGap, tEnd As Double) As Double
+        Dim m = MotionOf(i)
+        Dim until = Math.Min(tEnd, _now + Horizon)
+        Dim speed = m.SpeedBound(_slotOf(i), _now, until)
+        Dim accel = m.AccelerationBound(_slotOf(i), _now, until)
+        ' A wall is flat: its gap's second derivative is the acceleration across it.
+        If gap.Difference Is Nothing Then Return Recheck(FirstContact(gap, _now, until, speed, accel, accel, False), until, tEnd)
+        Dim curved = UpperCurvature(accel, speed, gap.Difference.Radius)
+        If _bodies(i).Kind = ShapeKind.Circle Then Return Recheck(FirstContact(gap, _now, until, speed, curved, curved, False), until, tEnd)
+        Return Recheck(FirstContact(gap, _now, until, speed, accel, curved, True), until, tEnd)
+    End Function
+
+    ''' <summary>A search that found nothing before the horizon is taken up again there (an event that is not a contact).</summary>
+    Private Shared Function Recheck(found As Double, until As Double, tEnd As Double) As Double
+        If Double.IsPositiveInfinity(found) AndAlso until < tEnd Then Return until
+        Return found
+    End Function
+
+    ''' <summary>
+    ''' The first contact of a gap in [t0, tEnd] (s): now when touching and closing. When touching and not
+    ''' closing (just after a bounce), first the time the gap has opened to twice the slop, and from there
+    ''' when it closes; if it cannot be shown to open that far, when the overlap grows by the slop. Otherwise
+    ''' when the gap closes. <paramref name="below"/> (m/s²) bounds the gap's second derivative from below
+    ''' (its fall): the relative acceleration for a box or polygon, whose gap is convex, else the same as
+    ''' <paramref name="above"/>, the two-sided bound (+∞ for two sharp shapes, where none exists). The closing
+    ''' is searched with the bound from below alone (<see cref="OneSidedAdvancement"/>) when
+    ''' <paramref name="oneSided"/>, else with <see cref="ConservativeAdvancement"/>. +∞ for none; a search that
+    ''' ran out of its budget returns where it stopped, to be taken up again from there.
+    ''' An opening searched for step by step counts only before the overlap could have grown by the slop:
+    ''' a body pressed into another (a ball pulled onto a peg it sits on) would otherwise be "opened" on the
+    ''' far side, after passing right through it, and the contact between never looked for.
+    ''' </summary>
+    Private Shared Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean) As Double
+        Dim n As Vector, rate As Double
+        Dim d = gap.GapAndNormal(t0, n, rate)
+        If d <= Slop Then
+            If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
+            ' Leaving at rate ḋ, the gap is at least d + ḋ s − ½ A s² (A the bound from below): where that
+            ' parabola first reaches twice the slop, the gap has opened that far, and it did not close before.
+            Dim opens = OpeningTime(d, rate, below, 2 * Slop)
+            If opens < Double.PositiveInfinity Then
+                If t0 + opens > tEnd Then Return Double.PositiveInfinity
+                t0 += opens
+            Else
+                ' Too slow to show it opening from the bound below (a body sliding along a face, or resting):
+                ' look for the opening step by step, with the bound from above, until the overlap could have
+                ' grown by the slop; two sharp shapes have no such bound, so briefly, with the speed alone.
+                Dim sinks = Closing(gap, t0, tEnd, Math.Min(d, 0) - Slop, speed, below, above, oneSided)
+                Dim limit = If(sinks.Found, sinks.Time, sinks.ClearUntil)
+                Dim sharp = Double.IsPositiveInfinity(above)
+                Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, limit, 0, speed, above, If(sharp, SharpOpeningBudget, 100000))
+                If Not opened.Found Then Return If(opened.ClearUntil < limit AndAlso Not sharp, opened.ClearUntil, Finding(sinks, tEnd))
+                t0 = opened.Time
+            End If
+        End If
+        Return Finding(Closing(gap, t0, tEnd, 0, speed, below, above, oneSided), tEnd)
+    End Function
+
+    ''' <summary>The search for the gap closing to −<paramref name="tolerance"/> (m), one- or two-sided (see <see cref="FirstContact"/>).</summary>
+    Private Shared Function Closing(gap As LinkedGap, t0 As Double, tEnd As Double, tolerance As Double, speed As Double,
+                                    below As Double, above As Double, oneSided As Boolean) As AdvancementResult
+        Return If(oneSided,
+                  OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, below),
+                  ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, above))
+    End Function
+
+    ''' <summary>A search's answer as a time: when it found the contact, where it stopped short of <paramref name="tEnd"/> (to be taken up again), or +∞.</summary>
+    Private Shared Function Finding(result As AdvancementResult, tEnd As Double) As Double
+        If result.Found Then Return result.Time
+        If result.ClearUntil < tEnd Then Return result.ClearUntil
+        Return Double.PositiveInfinity
+    End Function
+
+    ''' <summary>
+    ''' The first s &gt; 0 (s) at which d + ḋ s − ½ A s² reaches <paramref name="target"/> (m), for a gap d (m)
+    ''' opening at ḋ (m/s) with its second derivative at least −A (m/s²); +∞ when that parabola never does.
+    ''' </summary>
+    Private Shared Function OpeningTime(d As Double, rate As Double, accel As Double, target As Double) As Double
+        If rate <= 0 OrElse Double.IsInfinity(accel) OrElse Double.IsNaN(accel) Then Return Double.PositiveInfinity
+        Dim rise = target - d
+        If rise <= 0 Then Return 0
+        If accel <= 0 Then Return rise / rate
+        Dim disc = rate * rate - 2 * accel * rise
+        If disc < 0 Then Return Double.PositiveInfinity
+        ' The smaller root of ½ A s² − ḋ s + rise = 0, written without cancellation.
+        Return 2 * rise / (rate + Math.Sqrt(disc))
+    End Function
+
+    ''' <summary>How far a gap is from opening to <c>target</c> (m): target − gap, zero once it has opened that far.</summary>
+    Private NotInheritable Class Opening
+        Implements IDistanceFunction
+
+        Private ReadOnly _gap As LinkedGap
+        Private ReadOnly _target As Double
+
+        Public Sub New(gap As LinkedGap, target As Double)
+            _gap = gap
+            _target = target
+        End Sub
+
+        Public Function Distance(time As Double) As Double Implements IDistanceFunction.Distance
+            Return _target - _gap.Distance(time)
+        End Function
+
+        Public Function Rate(time As Double) As Double Implements IDistanceFunction.Rate
+            Return -_gap.Rate(time)
+        End Function
+    End Class
+
+    ''' <summary>Predicts again from now the one contact of body i with body j, wall <paramref name="side"/> or fixed body f.</summary>
+    Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)
+        If j >= 0 Then
+            _pairTime(Math.Min(i, j), Math.Max(i, j)) = PredictPair(Math.Min(i, j), Math.Max(i, j), tEnd)
+        ElseIf f >= 0 Then
+            _fixedTime(i, f) = PredictGap(i, FixedGap(i, f), tEnd)
+        Else
+            _wallTime(i, side) = PredictGap(i, WallGap(i, side), tEnd)
+        End If
+    End Sub
+
+    ''' <summary>Predicts again every contact of the given bodies, with everything.</summary>
+    Private Sub Repredict(bodies As List(Of Integer), tEnd As Double)
+        For Each i In bodies
+            PredictBody(i, tEnd, 0)
+        Next
+    End Sub
+End Class
