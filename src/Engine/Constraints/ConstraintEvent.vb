@@ -10,4 +10,8 @@ Friend Enum ConstraintEvent
     Leaves
     ''' <summary>A slack string (or a rod the others implied) reaches its length.</summary>
     Snaps
+    ''' <summary>A contact touching without pressing is pressed in (by a slop).</summary>
+    Presses
+    ''' <summary>A contact touching without pressing opens clear.</summary>
+    Opens
 End Enum

@@ -19,9 +19,15 @@ Friend NotInheritable Class ConstraintSet
     ' Σ σ_i σ_j w_p over the shared bodies, for i ≥ j; zero where constraints i and j share none.
     Private ReadOnly _shared As Double()()
     Private ReadOnly _nx As Double(), _ny As Double(), _factor As Double()()
+    Private ReadOnly _independence As Double
 
-    ''' <summary>The constraints of a group whose bodies have the given inverse masses (1/kg, 0 for a body that cannot move).</summary>
-    Friend Sub New(rows As Constraint(), inverseMass As Double())
+    ''' <summary>
+    ''' The constraints of a group whose bodies have the given inverse masses (1/kg, 0 for a body that cannot move).
+    ''' A constraint counts as depending on those before it (the solve refuses) when what it adds to their span is
+    ''' below <paramref name="independence"/> of its own size (squared).
+    ''' </summary>
+    Friend Sub New(rows As Constraint(), inverseMass As Double(), Optional independence As Double = 0.000000000001)
+        _independence = independence
         _rows = rows
         _inverseMass = inverseMass
         Dim m = rows.Length
@@ -160,7 +166,7 @@ Friend NotInheritable Class ConstraintSet
             For p = 0 To j - 1
                 diagonal -= lj(p) * lj(p)
             Next
-            If Not (diagonal > 0.000000000001 * _shared(j)(j)) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
+            If Not (diagonal > _independence * _shared(j)(j)) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
             Dim root = Math.Sqrt(diagonal)
             lj(j) = root
             For i = j + 1 To m - 1

@@ -23,9 +23,11 @@ Friend NotInheritable Class ConstrainedMotion
     Private Const AbsoluteTolerance As Double = 0.000000000001
     ' Steps kept from one start at most: far more than any advance needs, far less than the memory holds.
     Private Const MaxSteps As Integer = 2000000
-    ' A chain with strings is integrated this far ahead (s) to look for a string's change; where none is
-    ' found, the motion hands over to a new one there, which looks further.
+    ' A group that can have events looks for them at most this far ahead at once (s), doubling the stretch it
+    ' looks at each time it reaches its end; after this many steps it hands over to a new motion, which starts
+    ' its list of steps anew.
     Private Const Lookahead As Double = 0.1
+    Private Const RestartSteps As Integer = 20000
     ' The state is projected back onto the lengths when it has drifted off by more than this fraction.
     Private Const DriftFraction As Double = 0.000000000001
     ' A string at full length snaps taut only once it is over-long by this fraction of its length, so that
@@ -36,6 +38,13 @@ Friend NotInheritable Class ConstrainedMotion
     ' otherwise bounce off its full length for ever (with e = 1 the bounces never shrink), as a ball resting on
     ' the floor would (LinkedEventSolver.Rest.vb).
     Private Const SettleFraction As Double = 0.000000001
+    ' A watched contact pressed this far in (m) is judged again; one open this fraction of its bodies' size is left
+    ' to the contact search.
+    Private Const WatchSlop As Double = 0.000000001
+    Private Const WatchOpening As Double = 0.000001
+    ' A constraint is held only if what it adds to the others' span is at least this fraction of it (squared): about
+    ' 10⁻⁴ rad away from depending on them.
+    Private Const IndependenceMargin As Double = 0.00000001
 
     Private ReadOnly _gravity As Double
     Private ReadOnly _n As Integer
@@ -45,6 +54,9 @@ Friend NotInheritable Class ConstrainedMotion
     Private ReadOnly _held As Link()
     ' The lasting contacts held (their constraints follow the links' in _rows).
     Private ReadOnly _contacts As Constraint()
+    ' Contacts that touch without pressing (or that the held ones already imply): not held, but watched, so that the
+    ' contact search need not follow a gap that the motion keeps at nothing.
+    Private ReadOnly _watched As Constraint()
     ' Every constraint held: the links' ties, then the contacts.
     Private ReadOnly _rows As Constraint()
     Private ReadOnly _constraints As ConstraintSet
@@ -63,6 +75,10 @@ Friend NotInheritable Class ConstrainedMotion
     Private ReadOnly _quintics As New List(Of Double())
     ' Per step: each body's speed bound (m/s) and acceleration bound (m/s²), once asked for.
     Private ReadOnly _bounds As New List(Of Double())
+    ' The bounds of every body over the steps _rangeFirst to _rangeLast, the stretch asked about last.
+    Private _range As Double() = Array.Empty(Of Double)()
+    Private _rangeFirst As Integer = -1
+    Private _rangeLast As Integer = -1
     Private _step As Double
     ' The tensions (N) at the last evaluation.
     Private _lastTensions As Double()
@@ -70,6 +86,8 @@ Friend NotInheritable Class ConstrainedMotion
     Private _eventTime As Double = Double.PositiveInfinity
     Private _eventRow As Constraint
     Private _eventKind As ConstraintEvent
+    ' The integration met a state where the constraints are no longer independent: nothing is integrated past it.
+    Private _ended As Boolean
 
     ''' <summary>
     ''' The group of <paramref name="bodies"/>, <paramref name="links"/> and lasting <paramref name="contacts"/>
@@ -81,7 +99,7 @@ Friend NotInheritable Class ConstrainedMotion
     ''' <paramref name="size"/> (m) is a length of the group's size, for its first step.
     ''' </summary>
     Friend Sub New(bodies As Shape(), links As List(Of Link), contacts As IEnumerable(Of Constraint), startTime As Double, gravity As Double,
-                   released As Object, size As Double)
+                   released As Object, size As Double, Optional touching As IEnumerable(Of Constraint) = Nothing)
         MyBase.New(bodies, startTime)
         _gravity = gravity
         _n = bodies.Length
@@ -94,7 +112,8 @@ Friend NotInheritable Class ConstrainedMotion
             y(4 * k + 2) = bodies(k).Velocity.X
             y(4 * k + 3) = bodies(k).Velocity.Y
         Next
-        Dim held As New List(Of Constraint), slack As New List(Of Constraint)
+        Dim held As New List(Of Constraint), slack As New List(Of Constraint), watched As New List(Of Constraint)
+        If touching IsNot Nothing Then watched.AddRange(touching)
         Dim snapNow As Constraint = Nothing
         For Each l In links
             If l.Kind = LinkKind.Rod Then
@@ -113,7 +132,7 @@ Friend NotInheritable Class ConstrainedMotion
         Dim independent = IndependentRows(held, y)
         For Each c In held.Except(independent).ToList()
             held.Remove(c)
-            If c.Shape = ConstraintShape.Tie Then slack.Add(c)
+            If c.Shape = ConstraintShape.Tie Then slack.Add(c) Else watched.Add(c)
         Next
         ' A string or contact whose force would be negative with the others holding lets go: the most negative
         ' first, then look again.
@@ -129,7 +148,7 @@ Friend NotInheritable Class ConstrainedMotion
                 If pull < least AndAlso pull < -0.000000001 * (gravity + 1) Then least = pull : worst = i
             Next
             If worst < 0 Then Exit Do
-            If held(worst).Shape = ConstraintShape.Tie Then slack.Add(held(worst))
+            If held(worst).Shape = ConstraintShape.Tie Then slack.Add(held(worst)) Else watched.Add(held(worst))
             held.RemoveAt(worst)
         Loop
         _rows = held.ToArray()
@@ -143,7 +162,8 @@ Friend NotInheritable Class ConstrainedMotion
             Dim spare = SpareLength(y, _slackTies(i))
             _snapAt(i) = If(spare > OverLength * _slack(i).Length, 0, Math.Min(spare, 0) - OverLength * _slack(i).Length)
         Next
-        _hasEvents = _slack.Length > 0 OrElse _rows.Any(Function(c) Not c.Holds)
+        _watched = watched.Where(Function(c) Not Equals(c.Tag, released)).ToArray()
+        _hasEvents = _slack.Length > 0 OrElse _watched.Length > 0 OrElse _rows.Any(Function(c) Not c.Holds)
         Dim tensions As Double() = Nothing
         _times.Add(startTime)
         _states.Add(y)
@@ -161,14 +181,18 @@ Friend NotInheritable Class ConstrainedMotion
         _step = 0.06 * Math.Sqrt(shortest / Math.Max(gravity, 1))
     End Sub
 
-    ''' <summary>The constraints of <paramref name="rows"/>, in order, that do not depend on those kept before them at <paramref name="y"/>.</summary>
+    ''' <summary>
+    ''' The constraints of <paramref name="rows"/>, in order, that do not depend on those kept before them at
+    ''' <paramref name="y"/>, with room to spare: one within 10⁻⁴ rad of the others' span (two rods in line but for
+    ''' rounding) would be lost to rounding a step later.
+    ''' </summary>
     Private Function IndependentRows(rows As List(Of Constraint), y As Double()) As List(Of Constraint)
         Dim kept As New List(Of Constraint)
         For Each c In rows
             kept.Add(c)
             Dim d = FreeDerivative(y)
             Try
-                Call New ConstraintSet(kept.ToArray(), _inverseMass).Tensions(y, d)
+                Call New ConstraintSet(kept.ToArray(), _inverseMass, IndependenceMargin).Tensions(y, d)
             Catch ex As InvalidOperationException
                 kept.RemoveAt(kept.Count - 1)
             End Try
@@ -241,7 +265,7 @@ Friend NotInheritable Class ConstrainedMotion
     ''' <summary>Takes steps until the last one ends at or after <paramref name="time"/>, looking at each for a string's change.</summary>
     Private Sub ExtendTo(time As Double)
         If Double.IsInfinity(time) Then Throw New ArgumentOutOfRangeException(NameOf(time), "a chain's motion is integrated only to a finite time")
-        Do While _times(_times.Count - 1) < time
+        Do While _times(_times.Count - 1) < time AndAlso Not _ended
             If _times.Count > MaxSteps Then Throw New InvalidOperationException($"the chain integrator took more than {MaxSteps} steps from t = {StartTime} s to t = {_times(_times.Count - 1)} s without reaching t = {time} s")
             Dim t = _times(_times.Count - 1)
             Dim y = _states(_states.Count - 1)
@@ -249,26 +273,42 @@ Friend NotInheritable Class ConstrainedMotion
             Do
                 Dim h = _step
                 Dim result As Double() = Nothing, slope As Double() = Nothing
-                Dim worst = DormandPrince.TryStep(AddressOf Derivative, y, k1, h, RelativeTolerance, AbsoluteTolerance, result, slope)
+                Dim worst As Double
+                Dim tensions As Double() = Nothing
+                Try
+                    worst = DormandPrince.TryStep(AddressOf Derivative, y, k1, h, RelativeTolerance, AbsoluteTolerance, result, slope)
+                    If worst <= 1 Then
+                        Dim lengthError As Double, rateError As Double
+                        _constraints.Drift(result, lengthError, rateError)
+                        ' The step's last evaluation was at its result: its tensions are those there, unless the result is moved back onto the lengths.
+                        tensions = _lastTensions
+                        If lengthError > DriftFraction OrElse rateError > DriftFraction * SpeedScale(result) Then
+                            _constraints.Project(result)
+                            slope = Derivative(result, tensions)
+                        End If
+                    End If
+                Catch ex As InvalidOperationException
+                    ' The constraints lose their independence within the step (two contacts turning parallel, a group
+                    ' carried on past a collision it will meet first): a shorter step, or the motion ends before it.
+                    worst = Double.PositiveInfinity
+                End Try
                 _step = h * DormandPrince.StepFactor(worst)
                 If worst <= 1 Then
-                    Dim lengthError As Double, rateError As Double
-                    _constraints.Drift(result, lengthError, rateError)
-                    ' The step's last evaluation was at its result: its tensions are those there, unless the result is moved back onto the lengths.
-                    Dim tensions = _lastTensions
-                    If lengthError > DriftFraction OrElse rateError > DriftFraction * SpeedScale(result) Then
-                        _constraints.Project(result)
-                        slope = Derivative(result, tensions)
-                    End If
                     _times.Add(t + h)
                     _states.Add(result)
                     _derivatives.Add(slope)
                     _tensions.Add(tensions)
                     Exit Do
                 End If
-                If Not (_step > 0.000000000000001 * Math.Max(1, Math.Abs(t))) Then Throw New InvalidOperationException($"the chain integrator could not keep its error down at t = {t} s")
+                If Not (_step > 0.000000000000001 * Math.Max(1, Math.Abs(t))) Then
+                    If Not Double.IsPositiveInfinity(worst) Then Throw New InvalidOperationException($"the chain integrator could not keep its error down at t = {t} s")
+                    ' Where the constraints stop being independent, this motion ends: the group is formed anew there.
+                    _ended = True
+                    Keep(t, Nothing, ConstraintEvent.Leaves)
+                    Exit Do
+                End If
             Loop
-            If _hasEvents AndAlso Double.IsPositiveInfinity(_eventTime) Then ScanStep(_times.Count - 2)
+            If Not _ended AndAlso _hasEvents AndAlso Double.IsPositiveInfinity(_eventTime) Then ScanStep(_times.Count - 2)
         Loop
     End Sub
 
@@ -305,6 +345,25 @@ Friend NotInheritable Class ConstrainedMotion
                 End If
             End If
         Next
+        For Each row In _watched
+            Dim v0 = Gap(row, _states(j)), v1 = Gap(row, _states(j + 1))
+            If v1 < -WatchSlop Then
+                ' Pressed a slop in: from here the contact is the one rule's to judge again (a collision, or held).
+                Dim root = If(v0 <= -WatchSlop, t0, ScalarRoot.Brent(Function(t) Gap(row, StateArray(t)) + WatchSlop, t0, t1, v0 + WatchSlop, v1 + WatchSlop))
+                Keep(root, row, ConstraintEvent.Presses)
+            ElseIf v1 > WatchOpening * row.Scale AndAlso v0 <= WatchOpening * row.Scale Then
+                ' Opened clear: from here the contact search follows it.
+                Dim root = ScalarRoot.Brent(Function(t) WatchOpening * row.Scale - Gap(row, StateArray(t)), t0, t1, WatchOpening * row.Scale - v0, WatchOpening * row.Scale - v1)
+                Keep(root, row, ConstraintEvent.Opens)
+            End If
+            If row.Bounded Then
+                Dim m0 = row.Margin(_states(j)), m1 = row.Margin(_states(j + 1))
+                If m1 < 0 Then
+                    Dim root = If(m0 <= 0, t0, ScalarRoot.Brent(Function(t) row.Margin(StateArray(t)), t0, t1, m0, m1))
+                    Keep(root, row, ConstraintEvent.Leaves)
+                End If
+            End If
+        Next
         For i = 0 To _slack.Length - 1
             Dim tie = _slackTies(i)
             Dim target = _snapAt(i)
@@ -326,6 +385,13 @@ Friend NotInheritable Class ConstrainedMotion
             End If
         Next
     End Sub
+
+    ''' <summary>A contact's ψ (m) at state <paramref name="y"/>: its gap, negative when pressed in.</summary>
+    Private Shared Function Gap(row As Constraint, y As Double()) As Double
+        Dim u As Vector, value As Double, rate As Double, curvature As Double
+        row.Measure(y, u, value, rate, curvature)
+        Return value
+    End Function
 
     Private Sub Keep(time As Double, row As Constraint, kind As ConstraintEvent)
         If time >= _eventTime Then Return
@@ -402,7 +468,8 @@ Friend NotInheritable Class ConstrainedMotion
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
         Dim j = If(time = StartTime, 0, StepAt(time))
         Dim y0 = _states(j)
-        If time = _times(j) Then
+        ' A motion that ended where it started (its constraints not independent past it) has only its start.
+        If time = _times(j) OrElse _times.Count = 1 Then
             position = New Vector(y0(4 * k), y0(4 * k + 1))
             velocity = New Vector(y0(4 * k + 2), y0(4 * k + 3))
             Return
@@ -437,22 +504,68 @@ Friend NotInheritable Class ConstrainedMotion
         Return Math.Sqrt(bx * bx + by * by) / Math.Pow(h, order) * (1 + 0.000000001)
     End Function
 
+    ''' <summary>
+    ''' Bounds on the relative motion of bodies <paramref name="k1"/> and <paramref name="k2"/> of this group over
+    ''' [<paramref name="t0"/>, <paramref name="t1"/>]: the speed (m/s) and acceleration (m/s²) of their difference,
+    ''' read from the differences of their quintics. Two bodies that move together (resting on each other, sliding
+    ''' as one) have small ones, however fast they go.
+    ''' </summary>
+    Friend Sub RelativeBounds(k1 As Integer, k2 As Integer, t0 As Double, t1 As Double, ByRef speed As Double, ByRef acceleration As Double)
+        Dim first = StepAt(t0), last = StepAt(t1)
+        speed = 0
+        acceleration = 0
+        If _times.Count = 1 Then
+            Dim y = _states(0), d = _derivatives(0)
+            speed = New Vector(y(4 * k1 + 2) - y(4 * k2 + 2), y(4 * k1 + 3) - y(4 * k2 + 3)).Length
+            acceleration = New Vector(d(4 * k1 + 2) - d(4 * k2 + 2), d(4 * k1 + 3) - d(4 * k2 + 3)).Length
+            Return
+        End If
+        For j = first To last
+            Dim h = _times(j + 1) - _times(j)
+            Dim c = Quintics(j)
+            For order = 1 To 2
+                Dim bx = 0.0, by = 0.0
+                For p = order To 5
+                    Dim w = If(order = 1, p, p * (p - 1))
+                    bx += w * Math.Abs(c(12 * k1 + p) - c(12 * k2 + p))
+                    by += w * Math.Abs(c(12 * k1 + 6 + p) - c(12 * k2 + 6 + p))
+                Next
+                Dim b = Math.Sqrt(bx * bx + by * by) / Math.Pow(h, order) * (1 + 0.000000001)
+                If order = 1 Then speed = Math.Max(speed, b) Else acceleration = Math.Max(acceleration, b)
+            Next
+        Next
+    End Sub
+
     ''' <summary>The largest of body k's per-step bounds over the steps that meet [t0, t1]; each step's bounds are worked out once.</summary>
     Private Function Bound(k As Integer, t0 As Double, t1 As Double, order As Integer) As Double
         Dim first = StepAt(t0), last = StepAt(t1)
-        Dim worst = 0.0
-        For j = first To last
-            Do While _bounds.Count <= j
-                Dim b(2 * _n - 1) As Double
-                For body = 0 To _n - 1
-                    b(2 * body) = StepBound(_bounds.Count, body, 1)
-                    b(2 * body + 1) = StepBound(_bounds.Count, body, 2)
+        If _times.Count = 1 Then
+            ' Ended where it started: only the start is known, and the motion is over there.
+            Dim y = _states(0), d = _derivatives(0)
+            Return If(order = 1, New Vector(y(4 * k + 2), y(4 * k + 3)).Length, New Vector(d(4 * k + 2), d(4 * k + 3)).Length)
+        End If
+        ' Every body's bounds over these steps at once: the searches of one instant all ask about the same stretch.
+        If first <> _rangeFirst OrElse last <> _rangeLast Then
+            If _range.Length < 2 * _n Then _range = New Double(2 * _n - 1) {}
+            Array.Clear(_range, 0, 2 * _n)
+            For j = first To last
+                Do While _bounds.Count <= j
+                    Dim b(2 * _n - 1) As Double
+                    For body = 0 To _n - 1
+                        b(2 * body) = StepBound(_bounds.Count, body, 1)
+                        b(2 * body + 1) = StepBound(_bounds.Count, body, 2)
+                    Next
+                    _bounds.Add(b)
+                Loop
+                Dim stepBounds = _bounds(j)
+                For i = 0 To 2 * _n - 1
+                    _range(i) = Math.Max(_range(i), stepBounds(i))
                 Next
-                _bounds.Add(b)
-            Loop
-            worst = Math.Max(worst, _bounds(j)(2 * k + order - 1))
-        Next
-        Return worst
+            Next
+            _rangeFirst = first
+            _rangeLast = last
+        End If
+        Return _range(2 * k + order - 1)
     End Function
 
     Friend Overrides Function SpeedBound(k As Integer, t0 As Double, t1 As Double) As Double
@@ -464,18 +577,30 @@ Friend NotInheritable Class ConstrainedMotion
     End Function
 
     ''' <summary>
-    ''' The first event on the steps looked at; a group that can have one looks <see cref="Lookahead"/> ahead and,
-    ''' finding none, hands over to a new motion at the end of what it looked at. +∞ when nothing can end it.
+    ''' The first event on the steps looked at so far; a group that can have one and has found none yet gives the end
+    ''' of its last step instead, where it looks further (<see cref="LookFurther"/>). +∞ when nothing can end it.
     ''' </summary>
     Friend Overrides ReadOnly Property TransitionTime As Double
         Get
-            If Not _hasEvents Then Return Double.PositiveInfinity
-            If Double.IsPositiveInfinity(_eventTime) Then ExtendTo(StartTime + Lookahead)
             If Not Double.IsPositiveInfinity(_eventTime) Then Return _eventTime
-            ' The end of the first step at or after the look-ahead: a node, so the next motion starts from an integrated state.
-            Return _times(StepAt(StartTime + Lookahead) + 1)
+            If Not _hasEvents Then Return Double.PositiveInfinity
+            If _times.Count < 2 Then ExtendTo(StartTime + _step)
+            If Not Double.IsPositiveInfinity(_eventTime) Then Return _eventTime
+            Return _times(_times.Count - 1)
         End Get
     End Property
+
+    ''' <summary>
+    ''' At the end of the steps looked at, with no event on them: takes as many steps again (up to
+    ''' <see cref="Lookahead"/> at once) and returns True, so the motion goes on as it was; False once it has taken so
+    ''' many that the group had better start anew from where it is.
+    ''' </summary>
+    Friend Overrides Function LookFurther(time As Double) As Boolean
+        If _eventRow IsNot Nothing OrElse _ended OrElse Not Double.IsPositiveInfinity(_eventTime) OrElse time <> _times(_times.Count - 1) Then Return False
+        If _times.Count > RestartSteps Then Return False
+        ExtendTo(time + Math.Min(Lookahead, Math.Max(time - StartTime, _step)))
+        Return True
+    End Function
 
     ''' <summary>The string or contact whose force has just fallen to zero (not held in the next motion), or Nothing.</summary>
     Friend Overrides ReadOnly Property Released As Object
@@ -567,6 +692,12 @@ Friend NotInheritable Class ConstrainedMotion
     Friend Overrides ReadOnly Property HeldContacts As Constraint()
         Get
             Return _contacts
+        End Get
+    End Property
+
+    Friend Overrides ReadOnly Property WatchedContacts As Constraint()
+        Get
+            Return _watched
         End Get
     End Property
 

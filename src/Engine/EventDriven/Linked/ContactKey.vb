@@ -27,9 +27,45 @@ Friend NotInheritable Class ContactKey
         Return New ContactKey(Encode(2, i, f))
     End Function
 
+    ''' <summary>The value of <see cref="Pair"/>(i, j)'s key, without making one.</summary>
+    Friend Shared Function PairValue(i As Integer, j As Integer) As Long
+        Return Encode(0, Math.Min(i, j), Math.Max(i, j))
+    End Function
+
+    ''' <summary>The value of <see cref="Wall"/>(i, side)'s key.</summary>
+    Friend Shared Function WallValue(i As Integer, side As WallSide) As Long
+        Return Encode(1, i, CInt(side))
+    End Function
+
+    ''' <summary>The value of <see cref="Fixed"/>(i, f)'s key.</summary>
+    Friend Shared Function FixedValue(i As Integer, f As Integer) As Long
+        Return Encode(2, i, f)
+    End Function
+
     Private Shared Function Encode(kind As Integer, i As Integer, j As Integer) As Long
         Return (CLng(kind) << 60) Or (CLng(i) << 30) Or CLng(j)
     End Function
+
+    ''' <summary>0 a pair of movable bodies, 1 a wall, 2 a fixed body.</summary>
+    Friend ReadOnly Property Kind As Integer
+        Get
+            Return CInt(Value >> 60)
+        End Get
+    End Property
+
+    ''' <summary>The (lower) body's index.</summary>
+    Friend ReadOnly Property Body As Integer
+        Get
+            Return CInt((Value >> 30) And &H3FFFFFFFL)
+        End Get
+    End Property
+
+    ''' <summary>The other: a movable body's index, a wall side, or a fixed body's index.</summary>
+    Friend ReadOnly Property Other As Integer
+        Get
+            Return CInt(Value And &H3FFFFFFFL)
+        End Get
+    End Property
 
     ''' <summary>The key as one number.</summary>
     Friend ReadOnly Property Value As Long

@@ -47,6 +47,12 @@ Friend NotInheritable Class FlightMotion
         velocity = New Vector(_v0.X + _acceleration.X * tau, _v0.Y + _acceleration.Y * tau)
     End Sub
 
+    Friend Overrides Function Parabola(k As Integer, time As Double, ByRef position As Vector, ByRef velocity As Vector, ByRef acceleration As Vector) As Boolean
+        StateAt(time, 0, position, velocity)
+        acceleration = _acceleration
+        Return True
+    End Function
+
     ''' <summary>Its acceleration, m/s²: (0, −g) in flight, zero resting on a level face, g's part along a slope sliding down it.</summary>
     Friend ReadOnly Property Acceleration As Vector
         Get

@@ -17,6 +17,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Const RoundingFraction As Double = 0.000000000000001
 
     Private ReadOnly _solve As New ContactSolve()
+    ' The keys of every contact a group's motion holds.
+    Private ReadOnly _heldKeys As New HashSet(Of Long)
 
     ''' <summary>A touching contact that may last: which one, on what feature (global slots), and its key.</summary>
     Private NotInheritable Class Touch
@@ -27,15 +29,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Friend Fixed As Integer
     End Class
 
-    ''' <summary>Whether a group's motion holds contact <paramref name="key"/> now.</summary>
-    Private Function IsHeld(key As ContactKey) As Boolean
-        Dim v = key.Value
-        Dim i = CInt((v >> 30) And &H3FFFFFFFL)
-        Dim m = MotionOf(i)
-        For Each c In m.HeldContacts
-            If key.Equals(c.Tag) Then Return True
-        Next
-        Return False
+    ''' <summary>Whether a group's motion holds the contact whose key has value <paramref name="key"/> now.</summary>
+    Private Function IsHeld(key As Long) As Boolean
+        Return _heldKeys.Contains(key)
     End Function
 
     ''' <summary>
@@ -150,24 +146,32 @@ Partial Friend NotInheritable Class LinkedEventSolver
             made(byRoot(Root(parent, local(Array.IndexOf(_bodies, l.A))))).Links.Add(l)
         Next
         Dim contactsOf = made.Select(Function(x) New List(Of Constraint)).ToList()
-        For Each c In pressing
+        Dim touchingOf = made.Select(Function(x) New List(Of Constraint)).ToList()
+        For Each c In rows
             If c.Shape = ConstraintShape.Tie Then Continue For
-            contactsOf(byRoot(Root(parent, c.A))).Add(c.WithSlots(slots(c.A), If(c.B >= 0, slots(c.B), -1)))
+            ' A contact between two groups that does not press is left to the contact search.
+            If c.B >= 0 AndAlso Root(parent, c.A) <> Root(parent, c.B) Then Continue For
+            Dim onSlots = c.WithSlots(slots(c.A), If(c.B >= 0, slots(c.B), -1))
+            If pressing.Contains(c) Then contactsOf(byRoot(Root(parent, c.A))).Add(onSlots) Else touchingOf(byRoot(Root(parent, c.A))).Add(onSlots)
         Next
         For g = 0 To made.Count - 1
-            made(g).Motion = MotionFor(made(g), contactsOf(g), t, released)
+            made(g).Motion = MotionFor(made(g), contactsOf(g), touchingOf(g), t, released)
         Next
 
         ' 8. In place of the groups they came from.
         Dim kept = Enumerable.Range(0, _groups.Count).Where(Function(g) Not inSet.Contains(g)).Select(Function(g) _groups(g)).ToList()
         kept.AddRange(made)
         _groups = kept
+        _heldKeys.Clear()
         For g = 0 To _groups.Count - 1
             Dim m = _groups(g).Motion
             For k = 0 To m.Bodies.Length - 1
                 Dim i = Array.IndexOf(_bodies, m.Bodies(k))
                 _groupOf(i) = g
                 _slotOf(i) = k
+            Next
+            For Each c In m.HeldContacts.Concat(m.WatchedContacts)
+                _heldKeys.Add(DirectCast(c.Tag, ContactKey).Value)
             Next
         Next
         Return members
@@ -230,7 +234,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             If touch.Other >= 0 Then
                 Dim j = touch.Other
                 shift = _offset(i) - _offset(j)
-                k = If(BothBalls(i, j), Outline.MinkowskiDifference(_bodies(j).Outline, _bodies(i).Outline), _pairDifferences(i, j))
+                k = _pairDifferences(i, j)
                 pb = New Vector(y(4 * b), y(4 * b + 1))
                 vb = New Vector(y(4 * b + 2), y(4 * b + 3))
                 If accelerations IsNot Nothing Then qb = accelerations(b)
@@ -356,18 +360,71 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' The motion of a group newly formed: its closed form when it holds no contact (<see cref="LinkedMotions"/>),
     ''' exact uniform acceleration when it holds only flat ones and has no links, else integrated.
     ''' </summary>
-    Private Function MotionFor(group As LinkedGroup, contacts As List(Of Constraint), t As Double, released As Object) As LinkedMotion
+    Private Function MotionFor(group As LinkedGroup, contacts As List(Of Constraint), touching As List(Of Constraint), t As Double, released As Object) As LinkedMotion
         Dim bodies = group.Bodies.ToArray()
         If contacts.Count = 0 Then Return LinkedMotions.Create(group, _world, t, released, Slop)
+        SnapToLevelFaces(contacts)
         If group.Links.Count = 0 AndAlso contacts.All(Function(c) c.Shape = ConstraintShape.Plane) Then
             Return New UniformMotion(bodies, contacts.ToArray(), t, _world.Gravity)
         End If
         Dim size = bodies.Min(Function(b) Math.Min(b.Outline.MaxX - b.Outline.MinX, b.Outline.MaxY - b.Outline.MinY))
-        Dim m = New ConstrainedMotion(bodies, group.Links, contacts, t, _world.Gravity, released, size)
+        Dim m = New ConstrainedMotion(bodies, group.Links, contacts, t, _world.Gravity, released, size, touching)
         ' At rest, every force balanced: nothing changes until something reaches it, so nothing is integrated.
         If m.IsStill(UniformMotion.RestFraction) Then Return New UniformMotion(bodies, m.HeldContacts, m.HeldLinks, m.StartTensions, m.SlackLinks, t)
         Return m
     End Function
+
+    ''' <summary>
+    ''' Puts each body held on a face square to the axes (a floor, a wall, a table top, the top of a box resting on
+    ''' one) exactly on it, where it touches within a slop: its reference point's coordinate across the face is the
+    ''' face's own level, so that a body at rest on a table is never a rounding error below its top. A body on a
+    ''' movable body is placed after that one, so a stack is placed from the bottom up.
+    ''' </summary>
+    Private Sub SnapToLevelFaces(contacts As List(Of Constraint))
+        Dim placed As New HashSet(Of Integer)
+        For pass = 0 To contacts.Count
+            Dim moved = False
+            For Each c In contacts
+                If c.Shape <> ConstraintShape.Plane Then Continue For
+                Dim n = c.Normal
+                If Not ((n.X = 0 AndAlso Math.Abs(n.Y) = 1) OrElse (n.Y = 0 AndAlso Math.Abs(n.X) = 1)) Then Continue For
+                Dim key = DirectCast(c.Tag, ContactKey)
+                Dim i As Integer, support As Double
+                Select Case key.Kind
+                    Case 1
+                        i = key.Body
+                        If placed.Contains(i) Then Continue For
+                        Dim o = _bodies(i).Outline
+                        Select Case CType(key.Other, WallSide)
+                            Case WallSide.Bottom : support = -o.MinY
+                            Case WallSide.Top : support = _world.Height - o.MaxY
+                            Case WallSide.Left : support = -o.MinX
+                            Case Else : support = _world.Width - o.MaxX
+                        End Select
+                    Case 2
+                        i = key.Body
+                        If placed.Contains(i) Then Continue For
+                        Dim p = _fixed(key.Other).Position
+                        support = If(n.X = 0, p.Y, p.X) + If(n.X + n.Y > 0, c.Length, -c.Length)
+                    Case Else
+                        ' A pair: the body on the far side of the face from the other, once that other is placed.
+                        Dim lowFirst = n.X + n.Y > 0
+                        i = If(lowFirst, key.Body, key.Other)
+                        Dim other = If(lowFirst, key.Other, key.Body)
+                        If placed.Contains(i) OrElse Not placed.Contains(other) Then Continue For
+                        Dim p = _bodies(other).Position
+                        support = If(n.X = 0, p.Y, p.X) + c.Length
+                End Select
+                Dim q = _bodies(i).Position
+                Dim across = If(n.X = 0, q.Y, q.X)
+                If Math.Abs(across - support) > Slop Then Continue For
+                _bodies(i).Position = If(n.X = 0, New Vector(q.X, support), New Vector(support, q.Y))
+                placed.Add(i)
+                moved = True
+            Next
+            If Not moved Then Exit For
+        Next
+    End Sub
 
     ''' <summary>
     ''' Makes the rates of the constraints that will hold (<paramref name="pressing"/>: rods, taut strings, contacts

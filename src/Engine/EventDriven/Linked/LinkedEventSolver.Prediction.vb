@@ -18,14 +18,14 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Dim a = Math.Min(i, j), b = Math.Max(i, j)
             ' A contact held by a group's motion is kept by it exactly (it ends by that motion's own events), and
             ' two balls on a rod can never meet: neither is searched.
-            Dim skip = IsHeld(ContactKey.Pair(a, b)) OrElse _neverMeet.Contains(PairKey(a, b))
+            Dim skip = IsHeld(ContactKey.PairValue(a, b)) OrElse _neverMeet.Contains(PairKey(a, b))
             _pairTime(a, b) = If(skip, Double.PositiveInfinity, PredictPair(a, b, tEnd))
         Next
         For s = 1 To 4
-            _wallTime(i, s) = If(_world.Walls AndAlso Not IsHeld(ContactKey.Wall(i, CType(s, WallSide))), PredictGap(i, WallGap(i, CType(s, WallSide)), tEnd), Double.PositiveInfinity)
+            _wallTime(i, s) = If(_world.Walls AndAlso Not IsHeld(ContactKey.WallValue(i, CType(s, WallSide))), PredictObstacle(i, CType(s, WallSide), -1, tEnd), Double.PositiveInfinity)
         Next
         For f = 0 To _fixed.Length - 1
-            _fixedTime(i, f) = If(IsHeld(ContactKey.Fixed(i, f)), Double.PositiveInfinity, PredictGap(i, FixedGap(i, f), tEnd))
+            _fixedTime(i, f) = If(IsHeld(ContactKey.FixedValue(i, f)), Double.PositiveInfinity, PredictObstacle(i, WallSide.None, f, tEnd))
         Next
     End Sub
 
@@ -56,14 +56,23 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' shape rounded by R (a ball is involved) and unbounded about a sharp one (boxes and polygons).
     ''' </summary>
     Private Function PredictPair(a As Integer, b As Integer, tEnd As Double) As Double
+        Dim pa As Vector, va As Vector, qa As Vector, pb As Vector, vb As Vector, qb As Vector
+        If Not IsQuiet(ContactKey.Pair(a, b)) AndAlso MotionOf(a).Parabola(_slotOf(a), _now, pa, va, qa) AndAlso MotionOf(b).Parabola(_slotOf(b), _now, pb, vb, qb) Then
+            ' Both on parabolas: their difference is one, and the contact time is solved for, not searched.
+            Dim k = _pairDifferences(a, b)
+            Return Exact(k, pa - pb - (_offset(a) - _offset(b)), va - vb, qa - qb, va.Length + vb.Length)
+        End If
         Dim gap = PairGap(a, b)
         Dim t0 = _now
         Dim until = Math.Min(tEnd, t0 + Horizon)
         Dim ma = MotionOf(a), mb = MotionOf(b)
         Dim speed As Double, accel As Double
         Dim flightA = TryCast(ma, FlightMotion), flightB = TryCast(mb, FlightMotion)
+        Dim together = TryCast(ma, ConstrainedMotion)
         If Not BothBalls(a, b) AndAlso flightA IsNot Nothing AndAlso flightB IsNot Nothing Then
             FlightMotion.RelativeBounds(flightA, flightB, t0, until, speed, accel)
+        ElseIf together IsNot Nothing AndAlso ma Is mb Then
+            together.RelativeBounds(_slotOf(a), _slotOf(b), t0, until, speed, accel)
         Else
             speed = ma.SpeedBound(_slotOf(a), t0, until) + mb.SpeedBound(_slotOf(b), t0, until)
             accel = ma.AccelerationBound(_slotOf(a), t0, until) + mb.AccelerationBound(_slotOf(b), t0, until)
@@ -79,6 +88,34 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Shared Function UpperCurvature(accel As Double, speed As Double, radius As Double) As Double
         If radius > 0 Then Return accel + speed * speed / radius
         Return If(speed > 0, Double.PositiveInfinity, accel)
+    End Function
+
+    ''' <summary>
+    ''' The first time (s, absolute) at which d(τ) = <paramref name="d"/> + <paramref name="w"/> τ + ½ <paramref name="q"/> τ²
+    ''' enters pair shape <paramref name="k"/> while closing, from now; +∞ for never.
+    ''' </summary>
+    Private Function Exact(k As Outline, d As Vector, w As Vector, q As Vector, speeds As Double) As Double
+        Dim feature As Integer
+        Return _now + OutlineContact.EarliestEntry(k, d, w, q, Slop, speeds, Double.PositiveInfinity, feature)
+    End Function
+
+    ''' <summary>Body i's next contact with wall <paramref name="side"/>, or with fixed body f (f ≥ 0).</summary>
+    Private Function PredictObstacle(i As Integer, side As WallSide, f As Integer, tEnd As Double) As Double
+        Dim p As Vector, v As Vector, a As Vector
+        Dim key = If(f >= 0, ContactKey.Fixed(i, f), ContactKey.Wall(i, side))
+        If Not IsQuiet(key) AndAlso MotionOf(i).Parabola(_slotOf(i), _now, p, v, a) Then
+            If f >= 0 Then Return Exact(_differences(i, f), p - (_fixed(f).Position + _offset(i)), v, a, v.Length)
+            ' A wall: its gap is a quadratic in time.
+            Dim gap As Double, rate As Double, accel As Double
+            Select Case side
+                Case WallSide.Left : gap = p.X + _low(i).X : rate = v.X : accel = a.X
+                Case WallSide.Right : gap = _world.Width - _high(i).X - p.X : rate = -v.X : accel = -a.X
+                Case WallSide.Bottom : gap = p.Y + _low(i).Y : rate = v.Y : accel = a.Y
+                Case Else : gap = _world.Height - _high(i).Y - p.Y : rate = -v.Y : accel = -a.Y
+            End Select
+            Return _now + TimeOfImpact.GapCloses(gap, rate, accel, Slop)
+        End If
+        Return PredictGap(i, If(f >= 0, FixedGap(i, f), WallGap(i, side)), tEnd)
     End Function
 
     Private Function PredictGap(i As Integer, gap As LinkedGap, tEnd As Double) As Double
@@ -194,10 +231,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Sub PredictAgain(i As Integer, j As Integer, side As WallSide, f As Integer, tEnd As Double)
         If j >= 0 Then
             _pairTime(Math.Min(i, j), Math.Max(i, j)) = PredictPair(Math.Min(i, j), Math.Max(i, j), tEnd)
-        ElseIf f >= 0 Then
-            _fixedTime(i, f) = PredictGap(i, FixedGap(i, f), tEnd)
         Else
-            _wallTime(i, side) = PredictGap(i, WallGap(i, side), tEnd)
+            If f >= 0 Then _fixedTime(i, f) = PredictObstacle(i, WallSide.None, f, tEnd) Else _wallTime(i, side) = PredictObstacle(i, side, -1, tEnd)
         End If
     End Sub
 

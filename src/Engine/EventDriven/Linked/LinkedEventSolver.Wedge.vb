@@ -33,7 +33,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 For m = 0 To _bodies.Length - 1
                     If m = k OrElse Not pairs.Add(PairKey(k, m)) OrElse _neverMeet.Contains(PairKey(k, m)) Then Continue For
                     Dim lo = Math.Min(k, m), hi = Math.Max(k, m)
-                    If IsHeld(ContactKey.Pair(lo, hi)) Then Continue For
+                    If IsHeld(ContactKey.PairValue(lo, hi)) Then Continue For
                     Dim gm = _groupOf(m)
                     If Not groups.Contains(gm) Then
                         If Not MayTouch(k, m) Then Continue For
@@ -51,12 +51,12 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 Next
                 If _world.Walls Then
                     For s = 1 To 4
-                        If (k = i AndAlso j < 0 AndAlso f < 0 AndAlso s = side) OrElse IsHeld(ContactKey.Wall(k, CType(s, WallSide))) Then Continue For
+                        If (k = i AndAlso j < 0 AndAlso f < 0 AndAlso s = side) OrElse IsHeld(ContactKey.WallValue(k, CType(s, WallSide))) Then Continue For
                         AddTouching(k, WallGap(k, CType(s, WallSide)), t)
                     Next
                 End If
                 For o = 0 To _fixed.Length - 1
-                    If (k = i AndAlso o = f) OrElse IsHeld(ContactKey.Fixed(k, o)) Then Continue For
+                    If (k = i AndAlso o = f) OrElse IsHeld(ContactKey.FixedValue(k, o)) Then Continue For
                     AddTouching(k, FixedGap(k, o), t)
                 Next
             Next

@@ -60,12 +60,15 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private _wallTime As Double(,) = New Double(-1, -1) {}
     Private _fixedTime As Double(,) = New Double(-1, -1) {}
     Private _differences As Outline(,) = New Outline(-1, -1) {}
-    ' For each pair (i < j) not of two balls: the Minkowski difference of j's outline and i's.
+    ' For each pair (i < j): the Minkowski difference of j's outline and i's (for two balls, a point rounded by both radii).
     Private _pairDifferences As Outline(,) = New Outline(-1, -1) {}
     ' Collisions of the advance under way, reported when it is done.
     Private ReadOnly _reports As New List(Of CollisionRecord)
     ' Two balls joined by a rod can never meet: those pairs are never searched.
     Private ReadOnly _neverMeet As New HashSet(Of Long)
+    ' Contacts found touching without approaching at the instant _quietAt (see Quiet).
+    Private ReadOnly _quiet As New HashSet(Of Long)
+    Private _quietAt As Double = Double.NaN
     ' Events within a nanosecond of the last instant, and when that instant was.
     Private _instant As Integer
     Private _lastTime As Double = Double.NaN
@@ -174,7 +177,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         _pairDifferences = New Outline(n - 1, n - 1) {}
         For i = 0 To n - 1
             For j = i + 1 To n - 1
-                If Not BothBalls(i, j) Then _pairDifferences(i, j) = Outline.MinkowskiDifference(_bodies(j).Outline, _bodies(i).Outline)
+                _pairDifferences(i, j) = Outline.MinkowskiDifference(_bodies(j).Outline, _bodies(i).Outline)
             Next
         Next
         _neverMeet.Clear()
@@ -305,8 +308,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' its bodies anew.
     ''' </summary>
     Private Sub TransitionOf(g As Integer, t As Double, tEnd As Double)
-        Sync(g, t)
         Dim m = _groups(g).Motion
+        If m.LookFurther(t) Then Return
+        Sync(g, t)
         Dim before = m.Bodies.Select(Function(b) b.Velocity).ToArray()
         m.Snapped = Nothing
         m.Transition(_world)
@@ -339,10 +343,19 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim normal As Vector, rate As Double
         Dim depth = gap.GapAndNormal(t, normal, rate)
         Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
-        If depth > Slop OrElse rate >= -(CreepSpeed + 0.000000001 * speeds) Then
-            ' Not a contact: a search that reached its horizon or its budget, or a touch that does not press. Only
-            ' this prediction is taken up again from now: nothing has moved differently, so body i's others stand.
+        If depth > Slop Then
+            ' Not a contact: a search that reached its horizon or its budget. Only this prediction is taken up again
+            ' from now: nothing has moved differently, so body i's others stand.
             PredictAgain(i, j, side, f, tEnd)
+            Return
+        End If
+        If rate >= -(CreepSpeed + 0.000000001 * speeds) Then
+            ' Touching, not approaching, and pressed together (or pressed in by a slop): whether the touch holds is
+            ' for the one rule to say. From here on, this instant, the touch is searched for, not solved for.
+            Quiet(If(j >= 0, ContactKey.Pair(i, j), If(f >= 0, ContactKey.Fixed(i, f), ContactKey.Wall(i, side))), t)
+            Dim touched As New List(Of Integer) From {gi}
+            If gj >= 0 AndAlso gj <> gi Then touched.Add(gj)
+            Repredict(Regroup(touched, t, Nothing), tEnd)
             Return
         End If
         ' A corner on a corner of two sharp shapes takes the bisector of the pair shape's corner (docs/shapes.md).
@@ -381,6 +394,23 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim u = a.Velocity - If(b Is Nothing, Vector.Zero, b.Velocity)
         Dim tolerance = CreepSpeed + 0.000000001 * (aBefore.Length + bBefore.Length)
         Return Vector.Dot(u, first) > tolerance AndAlso Vector.Dot(u, second) > tolerance
+    End Function
+
+    ''' <summary>
+    ''' Marks contact <paramref name="key"/> as touching without approaching at <paramref name="t"/>: its parabolas'
+    ''' exact contact time would be "now" again (they press), so until the clock moves on it is searched for instead.
+    ''' </summary>
+    Private Sub Quiet(key As ContactKey, t As Double)
+        If t <> _quietAt Then
+            _quiet.Clear()
+            _quietAt = t
+        End If
+        _quiet.Add(key.Value)
+    End Sub
+
+    ''' <summary>Whether contact <paramref name="key"/> was found touching without approaching now.</summary>
+    Private Function IsQuiet(key As ContactKey) As Boolean
+        Return _quietAt = _now AndAlso _quiet.Contains(key.Value)
     End Function
 
     ''' <summary>Group g's held links and lasting contacts as rows of the blow under way: they hold through it.</summary>

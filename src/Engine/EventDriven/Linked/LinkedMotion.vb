@@ -35,6 +35,14 @@ Friend MustInherit Class LinkedMotion
     End Property
 
     ''' <summary>
+    ''' At <see cref="TransitionTime"/>: whether that was only the end of what the motion had looked at, and it has
+    ''' now looked further and goes on as it was (nothing to do). False when something happens there.
+    ''' </summary>
+    Friend Overridable Function LookFurther(time As Double) As Boolean
+        Return False
+    End Function
+
+    ''' <summary>
     ''' At <see cref="TransitionTime"/>, with the bodies' states written to them: does what happens there
     ''' (a string snapping taut changes their velocities). Returns true when the string is to be slack next.
     ''' </summary>
@@ -49,8 +57,27 @@ Friend MustInherit Class LinkedMotion
         End Get
     End Property
 
+    ''' <summary>
+    ''' Whether body k moves on a parabola (a constant acceleration) from <paramref name="time"/> until this motion's
+    ''' transition, and then its position (m), velocity (m/s) and acceleration (m/s²) there: contacts with it can then
+    ''' be solved for exactly rather than searched for.
+    ''' </summary>
+    Friend Overridable Function Parabola(k As Integer, time As Double, ByRef position As Vector, ByRef velocity As Vector, ByRef acceleration As Vector) As Boolean
+        Return False
+    End Function
+
     ''' <summary>The lasting contacts this motion holds (constraints on its bodies' slots): their pairs are not searched.</summary>
     Friend Overridable ReadOnly Property HeldContacts As Constraint()
+        Get
+            Return Array.Empty(Of Constraint)()
+        End Get
+    End Property
+
+    ''' <summary>
+    ''' Contacts that touch without pressing, which this motion watches until they press in or open clear: their
+    ''' pairs are not searched either.
+    ''' </summary>
+    Friend Overridable ReadOnly Property WatchedContacts As Constraint()
         Get
             Return Array.Empty(Of Constraint)()
         End Get

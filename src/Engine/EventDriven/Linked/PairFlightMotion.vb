@@ -24,6 +24,10 @@ Friend NotInheritable Class PairFlightMotion
         _flights(k).StateAt(time, 0, position, velocity)
     End Sub
 
+    Friend Overrides Function Parabola(k As Integer, time As Double, ByRef position As Vector, ByRef velocity As Vector, ByRef acceleration As Vector) As Boolean
+        Return _flights(k).Parabola(0, time, position, velocity, acceleration)
+    End Function
+
     Friend Overrides Function SpeedBound(k As Integer, t0 As Double, t1 As Double) As Double
         Return _flights(k).SpeedBound(0, t0, t1)
     End Function

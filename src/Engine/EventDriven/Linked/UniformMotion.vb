@@ -100,6 +100,12 @@ Friend NotInheritable Class UniformMotion
         velocity = New Vector(v.X + a.X * tau, v.Y + a.Y * tau)
     End Sub
 
+    Friend Overrides Function Parabola(k As Integer, time As Double, ByRef position As Vector, ByRef velocity As Vector, ByRef acceleration As Vector) As Boolean
+        StateAt(time, k, position, velocity)
+        acceleration = _a(k)
+        Return True
+    End Function
+
     Friend Overrides Function SpeedBound(k As Integer, t0 As Double, t1 As Double) As Double
         ' |v| is convex in time with a constant acceleration: its largest value is at an end.
         Dim p As Vector, a As Vector, b As Vector
