@@ -37,26 +37,39 @@ Friend NotInheritable Class ForceField
     ''' the drag forces among it take energy away: −F_drag·v.
     ''' </summary>
     Friend Function Force(body As Shape, position As Vector, velocity As Vector, ByRef dragPower As Double) As Vector
-        Dim drag = velocity * -body.LinearDrag
+        Dim resistance As Double, lift As Double
+        Evaluate(body, position, velocity, resistance, lift)
+        dragPower = resistance * velocity.LengthSquared
+        Return New Vector(-resistance * velocity.X, lift - resistance * velocity.Y)
+    End Function
+
+    ''' <summary>
+    ''' The two parts of the force: every drag here acts along −v, so together they are −c v with
+    ''' <paramref name="resistance"/> c = b + ½ ρ C_d L |v| + Σ (fraction inside) (b_l + ½ ρ_l C_d L |v|) (N·s/m,
+    ''' ≥ 0); and <paramref name="lift"/>, the buoyancy ρ_l g A_sub upwards summed over the liquids (N).
+    ''' </summary>
+    Friend Sub Evaluate(body As Shape, position As Vector, velocity As Vector, ByRef resistance As Double, ByRef lift As Double)
+        Dim c = body.LinearDrag
+        Dim speed = velocity.Length
         Dim width = -1.0 ' L, worked out once if some quadratic drag needs it
-        If _air > 0 AndAlso body.DragCoefficient > 0 Then
+        If _air > 0 AndAlso body.DragCoefficient > 0 AndAlso speed > 0 Then
             width = QuadraticDrag.Width(body.Outline, velocity)
-            drag += QuadraticDrag.Force(_air, body.DragCoefficient, width, velocity)
+            c += 0.5 * _air * body.DragCoefficient * width * speed
         End If
-        Dim lift = 0.0
+        Dim up = 0.0
         For Each l In _liquids
             Dim part = SubmergedArea.Inside(body.Outline, position, l.Min, l.Max)
             If part.Area <= 0 Then Continue For
-            lift += Buoyancy.Force(l.Density, _gravity, part)
+            up += Buoyancy.Force(l.Density, _gravity, part)
             Dim fraction = Math.Min(part.Area / body.Area, 1)
-            Dim inLiquid = velocity * -l.LinearDrag
-            If l.DragCoefficient > 0 Then
+            Dim inLiquid = l.LinearDrag
+            If l.DragCoefficient > 0 AndAlso speed > 0 Then
                 If width < 0 Then width = QuadraticDrag.Width(body.Outline, velocity)
-                inLiquid += QuadraticDrag.Force(l.Density, l.DragCoefficient, width, velocity)
+                inLiquid += 0.5 * l.Density * l.DragCoefficient * width * speed
             End If
-            drag += inLiquid * fraction
+            c += inLiquid * fraction
         Next
-        dragPower = Math.Max(-Vector.Dot(drag, velocity), 0)
-        Return New Vector(drag.X, drag.Y + lift)
-    End Function
+        resistance = c
+        lift = up
+    End Sub
 End Class

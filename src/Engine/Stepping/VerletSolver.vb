@@ -34,12 +34,18 @@ Public NotInheritable Class VerletSolver
     Private ReadOnly _links As New LinkStep()
     ' Each movable body's acceleration in the current step, m/s² (used only when the world has links).
     Private _acceleration As Vector() = Array.Empty(Of Vector)()
+    ' Drag and buoyancy, read from the world once per advance; Nothing when there are none.
+    Private _forces As ForceField
+    ' Per body, in the step under way: the factor e^(−c h/(2m)) by which drag slows it in each half of the step (1: no drag).
+    Private _decay As Double() = Array.Empty(Of Double)()
 
     ''' <param name="timeStep">sub-step, s, &gt; 0</param>
     Public Sub New(Optional timeStep As Double = DefaultTimeStep)
         If Not (timeStep > 0) OrElse Double.IsInfinity(timeStep) Then Throw New ArgumentOutOfRangeException(NameOf(timeStep), "time step must be a finite number greater than 0")
         _dt = timeStep
         _hPrevious = timeStep
+        ' A friction impulse acting through a step moves a body ½ (Δv) h, as any force does in Verlet's x += v h + ½ a h².
+        _contacts.FrictionShare = 0.5
     End Sub
 
     ''' <summary>"verlet".</summary>
@@ -84,13 +90,14 @@ Public NotInheritable Class VerletSolver
         If Not (duration > 0) Then Return t0
         LoadPrevious()
         _links.Prepare(_world)
+        _forces = If(_world.HasDragOrLiquids, New ForceField(_world), Nothing)
         Dim n = SubSteps.Count(duration, _dt)
         Dim reached = t0 + duration
         For k = 1L To n
             Dim h = SubSteps.Length(k, n, duration, _dt)
             Dim offset = SubSteps.EndOffset(k, n, duration, _dt)
             If h > 0 Then
-                If _links.HasLinks Then
+                If _links.HasLinks OrElse _forces IsNot Nothing Then
                     IntegrateLinked(h, duration - offset + h)
                     _links.Constrain(h, _world.Restitution, _world.Movables, _touched)
                     _contacts.Resolve(_world, t0 + offset, h, _touched)
@@ -142,9 +149,12 @@ Public NotInheritable Class VerletSolver
     End Sub
 
     ''' <summary>
-    ''' As <see cref="Integrate"/>, with each body's own acceleration: gravity plus its springs' pull divided
-    ''' by its mass, read from the positions and velocities at the start of the step (Störmer–Verlet with
-    ''' forces that depend on position, still symplectic for springs).
+    ''' As <see cref="Integrate"/>, with each body's own acceleration: gravity plus its springs' pull and buoyancy
+    ''' divided by its mass, read from the positions and velocities at the start of the step (Störmer–Verlet with
+    ''' forces that depend on position, still symplectic for springs and buoyancy). Drag, −c v, is split off
+    ''' (Strang splitting): half a step of it alone, v × e^(−c h/(2m)), which is exact for −c v and can only slow
+    ''' the body however strong the drag, then the Verlet step, then the other half. Second order, like the rest.
+    ''' The kinetic energy each half takes is added to <see cref="World.Dissipated"/>.
     ''' </summary>
     Private Sub IntegrateLinked(h As Double, remaining As Double)
         Dim bodies = _world.Movables
@@ -155,6 +165,11 @@ Public NotInheritable Class VerletSolver
             _acceleration(i) = gravity
         Next
         _links.AddAccelerations(_acceleration)
+        If _decay.Length < bodies.Count Then _decay = New Double(bodies.Count - 1) {}
+        For i = 0 To bodies.Count - 1
+            _decay(i) = 1
+        Next
+        If _forces IsNot Nothing Then AddForces(h)
         If h > _hPrevious * MaxStepRatio Then
             For i = 0 To bodies.Count - 1
                 _prev(i) = SeedWith(bodies(i), h, _acceleration(i))
@@ -177,6 +192,40 @@ Public NotInheritable Class VerletSolver
             _prev(i) = x
             c.Position = xNext
             c.Velocity = (xNext - x) / h + a * (h / 2)
+            If _decay(i) < 1 Then
+                ' The second half of the drag; its history is re-seeded from the velocity it leaves.
+                Slow(c, _decay(i))
+                _touched(i) = True
+            End If
+        Next
+    End Sub
+
+    ''' <summary>Multiplies a body's velocity by <paramref name="factor"/> (≤ 1), adding the kinetic energy that takes to <see cref="World.Dissipated"/>.</summary>
+    Private Sub Slow(body As Shape, factor As Double)
+        Dim v = body.Velocity
+        body.Velocity = v * factor
+        _world.Dissipate(0.5 * body.Mass * v.LengthSquared * (1 - factor * factor))
+    End Sub
+
+    ''' <summary>
+    ''' Adds buoyancy ÷ mass to each movable body's acceleration of this step (the dragged body aside), and for a
+    ''' body with drag −c v takes its first half-step of drag: its velocity × e^(−c h/(2m)), its previous position
+    ''' re-seeded to match.
+    ''' </summary>
+    Private Sub AddForces(h As Double)
+        Dim bodies = _world.Movables
+        Dim dragged = _world.DraggedBody
+        For i = 0 To bodies.Count - 1
+            Dim b = bodies(i)
+            If b Is dragged OrElse Not _forces.Acts(b) Then Continue For
+            Dim resistance As Double, lift As Double
+            _forces.Evaluate(b, b.Position, b.Velocity, resistance, lift)
+            _acceleration(i) += New Vector(0, lift * b.InverseMass)
+            If resistance > 0 Then
+                _decay(i) = Math.Exp(-0.5 * resistance * b.InverseMass * h)
+                Slow(b, _decay(i))
+                _prev(i) = SeedWith(b, _hPrevious, _acceleration(i))
+            End If
         Next
     End Sub
 
