@@ -51,6 +51,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If gravity <= 0 OrElse group.Bodies.Count <> 1 OrElse group.Links.Count > 1 Then Return Nothing
         Dim body = group.Bodies(0)
         Dim i = Array.IndexOf(_bodies, body)
+        If ForcedMotions.KeepsFromResting(body, _world, LinkedMotions.RestingSpeed(gravity, Slop)) Then Return Nothing
         Dim tie = If(group.Links.Count = 1, group.Links(0), Nothing)
         Dim pressing = gravity
         Dim slack As Link = Nothing

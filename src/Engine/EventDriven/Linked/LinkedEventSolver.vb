@@ -40,6 +40,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Const Unbounded As Double = Double.PositiveInfinity
 
     Private ReadOnly _impulse As New LinkedImpulse()
+    ' The energy drag, spring damping and inelastic blows take out of the world (World.Dissipated).
+    Private ReadOnly _ledger As New DissipationLedger()
     Private _world As World
     Private _dirty As Boolean = True
     Private _now As Double
@@ -84,6 +86,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim positions = _bodies.Select(Function(b) b.Position).ToArray()
         Dim velocities = _bodies.Select(Function(b) b.Velocity).ToArray()
         Dim tensions = _world.Links.Select(Function(l) l.Tension).ToArray()
+        Dim dissipated = _world.Dissipated
         _reports.Clear()
         Try
             AdvanceTo(_now + duration)
@@ -96,6 +99,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             For k = 0 To _world.Links.Count - 1
                 If _world.Links(k).Kind <> LinkKind.Spring Then _world.Links(k).SetTension(tensions(k))
             Next
+            _world.RestoreDissipated(dissipated)
             _reports.Clear()
             _dirty = True
             Throw
@@ -249,7 +253,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' <summary>Group g's closed form from its bodies' states (already written to them) at <paramref name="t"/>.</summary>
     Private Sub Restart(g As Integer, t As Double, slack As Boolean)
         Dim group = _groups(g)
+        _ledger.Settle(group, _world, t)
         group.Motion = If(RestingMotion(g, t), LinkedMotions.Create(group, _world, t, slack, Slop))
+        _ledger.Started(group, _world)
         For Each c In group.Bodies
             Dim i = Array.IndexOf(_bodies, c)
             _slotOf(i) = Array.IndexOf(group.Motion.Bodies, c)
@@ -272,6 +278,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         For g = 0 To _groups.Count - 1
             Sync(g, t)
             _groups(g).Motion.UpdateTensions(t)
+            _ledger.Settle(_groups(g), _world, t)
         Next
     End Sub
 
@@ -488,7 +495,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' <summary>Group g's closed form ends (a string goes slack or snaps taut): do what happens there and go on with the next form.</summary>
     Private Sub TransitionOf(g As Integer, t As Double, tEnd As Double)
         Sync(g, t)
+        Dim kinetic = DissipationLedger.Kinetic(_bodies)
         Dim slack = _groups(g).Motion.Transition(_world)
+        DissipationLedger.Blow(_world, kinetic, _bodies)
         Restart(g, t, slack)
         Repredict(RestartResting(New List(Of Integer) From {g}, t), tEnd)
     End Sub
@@ -525,6 +534,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim b = If(j >= 0, _bodies(j), Nothing)
         Dim aBefore = a.Velocity
         Dim bBefore = If(b Is Nothing, Vector.Zero, b.Velocity)
+        Dim kinetic = DissipationLedger.Kinetic(_bodies)
         _impulse.Clear()
         _impulse.AddContact(a, b, normal, _world.Restitution)
         Dim held As New HashSet(Of Integer)
@@ -540,6 +550,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         End If
         Dim gathered = If(wedged, AddTouchingContacts(i, j, side, f, t, held), New List(Of Integer))
         If wedged Then _impulse.ResolveWedged(_world.Restitution) Else _impulse.Resolve()
+        DissipationLedger.Blow(_world, kinetic, _bodies)
         Dim other = If(b, If(f >= 0, _fixed(f), Nothing))
         Dim aAfter = a.Velocity
         Dim bAfter = If(b Is Nothing, Vector.Zero, b.Velocity)

@@ -1,0 +1,174 @@
+Option Strict On
+Imports Xunit
+
+Namespace EventDriven
+    ''' <summary>
+    ''' Drag and liquids in the event solver (docs/forces.md, "In the event solver"): a scene with them goes to the
+    ''' linked solver, which moves a body with linear drag alone in closed form and anything else by an integral
+    ''' with error control, finding contacts by conservative advancement. Against the closed forms to 1e-9: the
+    ''' linear-drag projectile and the time it lands, the tanh fall, the floating depth, the undamped bobbing;
+    ''' energy plus what drag and blows took stays constant to rounding.
+    ''' </summary>
+    Public Class ForcesEventTests
+        Private Const G As Double = 9.81
+
+        Private Shared Function EventWorld(width As Double, height As Double, Optional restitution As Double = 1.0) As World
+            Dim w As New World(width, height, G, restitution)
+            w.Solver = SolverFactory.Create("event")
+            Return w
+        End Function
+
+        <Fact>
+        Public Sub LinearDragProjectile_FollowsTheClosedForm_AndLandsAtItsRoot()
+            Const m = 0.5, b = 0.3, r = 0.05
+            Dim w = EventWorld(100, 30, 0.5)
+            Dim x0 = New Vector(1, 2), v0 = New Vector(12, 9)
+            Dim ball As New Circle(x0, r, m, v0, "ball") With {.LinearDrag = b}
+            w.Add(ball)
+            Dim hits As New List(Of CollisionRecord)
+            w.CollisionListener = Sub(c) hits.Add(c)
+            Dim tau = LinearDrag.TimeConstant(m, b), vt = LinearDrag.TerminalVelocity(m, b, G)
+            ' The landing: the root of y(t) = r, by bisection on the closed form (it rises, then falls for good).
+            Dim lo = 1.0, hi = 10.0
+            For k = 1 To 200
+                Dim mid = 0.5 * (lo + hi)
+                If LinearDrag.Position(x0, v0, vt, tau, mid).Y > r Then lo = mid Else hi = mid
+            Next
+            Dim landing = 0.5 * (lo + hi)
+            Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+            For Each t In {0.1, 0.5, 1.0, 1.7, landing - 0.01}
+                w.Advance(t - w.Time)
+                Dim expected = LinearDrag.Position(x0, v0, vt, tau, t)
+                Assert.True((ball.Position - expected).Length < 0.000000001, $"t = {t}: {ball.Position} against {expected}")
+                Assert.True((ball.Velocity - LinearDrag.Velocity(v0, vt, tau, t)).Length < 0.000000001)
+                ' The energy drag took, in closed form: energy + dissipated is what it was.
+                Assert.True(Math.Abs(w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated - e0) < 0.000000001 * e0)
+            Next
+            Assert.Empty(hits)
+            w.Advance(landing + 0.01 - w.Time)
+            Assert.True(hits.Count >= 1)
+            Assert.Equal("wall:bottom", hits(0).BName)
+            Assert.True(Math.Abs(hits(0).Time - landing) < 0.000000001, $"landed at {hits(0).Time} s, the root is {landing} s")
+            Dim atLanding = LinearDrag.Velocity(v0, vt, tau, landing)
+            Assert.True((hits(0).AVelocityBefore - atLanding).Length < 0.000000001)
+            ' The bounce, e = 0.5, took ½ m (1 − e²) v_y² on top of the drag.
+            Assert.True(Math.Abs(w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated - e0) < 0.000000001 * e0)
+        End Sub
+
+        <Fact>
+        Public Sub QuadraticDrag_VerticalFall_IsTheTanh()
+            Const m = 0.2, rho = 1.2, cd = 0.8, r = 0.15
+            Dim w = EventWorld(10, 100)
+            w.AirDensity = rho
+            Dim ball As New Circle(New Vector(5, 90), r, m, id:="ball") With {.DragCoefficient = cd}
+            w.Add(ball)
+            Dim vt = QuadraticDrag.TerminalSpeed(m, G, rho, cd, 2 * r)
+            Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+            Dim previous = 0.0
+            For Each t In {0.25, 0.5, 1.0, 2.0, 3.0}
+                w.Advance(t - w.Time)
+                Assert.True(Math.Abs(-ball.Velocity.Y - QuadraticDrag.FallSpeed(vt, G, t)) < 0.000000001, $"t = {t}: {ball.Velocity.Y}")
+                Assert.True(Math.Abs(90 - ball.Position.Y - QuadraticDrag.FallDistance(vt, G, t)) < 0.000000001, $"t = {t}: {ball.Position.Y}")
+                Assert.Equal(5.0, ball.Position.X)
+                Assert.True(w.Dissipated >= previous)
+                previous = w.Dissipated
+                Assert.True(Math.Abs(w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated - e0) < 0.000000001 * e0)
+            Next
+        End Sub
+
+        ''' <summary>A 0.4 m × 0.5 m box of mass m in water (1000 kg/m², surface at 1.5 m), its bottom <paramref name="depth"/> under the surface.</summary>
+        Private Shared Function Floating(m As Double, depth As Double, damping As Double) As (World As World, Box As Rectangle)
+            Dim w = EventWorld(4, 3, 0.3)
+            w.Add(New Liquid(New Vector(0, 0), 4, 1.5, 1000, "water") With {.LinearDrag = damping})
+            Dim box = Rectangle.CreateMovable(New Vector(1.5, 1.5 - depth), 0.4, 0.5, m, id:="box")
+            w.Add(box)
+            Return (w, box)
+        End Function
+
+        <Fact>
+        Public Sub ABoxAtItsFloatingDepth_StaysThere()
+            Const m = 40.0
+            Dim d = Buoyancy.FloatingDepth(m, 0.4, 1000)
+            Dim s = Floating(m, d, 0)
+            For k = 1 To 10
+                s.World.Advance(1)
+                Assert.True(Math.Abs(s.Box.Position.Y - (1.5 - d)) < 0.000000001, $"y = {s.Box.Position.Y}")
+            Next
+        End Sub
+
+        <Fact>
+        Public Sub ABoxBobsUndamped_AsTheCosineOfItsPeriod()
+            Const m = 40.0, amplitude = 0.03
+            Dim d = Buoyancy.FloatingDepth(m, 0.4, 1000)
+            Dim s = Floating(m, d - amplitude, 0)
+            Dim period = Buoyancy.BobbingPeriod(m, 0.4, 1000, G)
+            Dim omega = 2 * Math.PI / period
+            Dim e0 = s.World.KineticEnergy() + s.World.PotentialEnergy()
+            For k = 1 To 100
+                Dim t = 5 * period * k / 100
+                s.World.Advance(t - s.World.Time)
+                Dim expected = 1.5 - d + amplitude * Math.Cos(omega * t)
+                Assert.True(Math.Abs(s.Box.Position.Y - expected) < 0.000000001, $"t = {t}: {s.Box.Position.Y} against {expected}")
+                ' Buoyancy's potential is in the potential energy: nothing is lost, at any moment of the swing.
+                Assert.True(Math.Abs(s.World.KineticEnergy() + s.World.PotentialEnergy() - e0) < 0.000000001 * Math.Abs(e0))
+            Next
+            Assert.Equal(0.0, s.World.Dissipated)
+        End Sub
+
+        <Fact>
+        Public Sub ABoxDroppedIn_SettlesAtTheFloatingDepth_CountingWhatTheWaterTook()
+            Const m = 40.0
+            Dim s = Floating(m, 0, 300)
+            Dim e0 = s.World.KineticEnergy() + s.World.PotentialEnergy()
+            Dim previous = 0.0
+            For k = 1 To 30
+                s.World.Advance(1)
+                Assert.True(s.World.Dissipated >= previous)
+                previous = s.World.Dissipated
+                Assert.True(Math.Abs(s.World.KineticEnergy() + s.World.PotentialEnergy() + s.World.Dissipated - e0) < 0.000000001 * Math.Abs(e0))
+            Next
+            Assert.True(Math.Abs(1.5 - s.Box.Position.Y - Buoyancy.FloatingDepth(m, 0.4, 1000)) < 0.000000001, $"y = {s.Box.Position.Y}")
+        End Sub
+
+        <Fact>
+        Public Sub ABoxLighterThanTheLiquid_StartingOnTheBottom_FloatsUp()
+            Dim s = Floating(40, 1.5, 300) ' on the floor of the tank
+            s.World.Advance(20)
+            Assert.True(Math.Abs(1.5 - s.Box.Position.Y - Buoyancy.FloatingDepth(40, 0.4, 1000)) < 0.000001, $"y = {s.Box.Position.Y}")
+        End Sub
+
+        <Fact>
+        Public Sub ABoxDenserThanTheLiquid_SinksAndStaysOnTheBottom()
+            Dim s = Floating(250, 0, 300)
+            s.World.Advance(10)
+            Assert.True(Math.Abs(s.Box.Position.Y) < 0.000000001, $"y = {s.Box.Position.Y}")
+            Assert.True(s.Box.Velocity.Length < 0.000001)
+        End Sub
+
+        <Fact>
+        Public Sub ABodyOnALinkThatFeelsDrag_IsRefusedInPlainWords_AndTheWorldIsUntouched()
+            Dim w = EventWorld(10, 10)
+            Dim bob As New Circle(New Vector(6, 5), 0.05, 0.5, id:="bob") With {.LinearDrag = 0.2}
+            w.Add(bob)
+            w.Add(Link.CreateTie(LinkKind.Rod, bob, New Vector(5, 5), 1))
+            Dim ex = Assert.Throws(Of UnsupportedSceneException)(Sub() w.Advance(0.1))
+            Assert.Contains("drag or buoyancy", ex.Message)
+            Assert.Contains("--solver verlet", ex.Message)
+            Assert.Equal(New Vector(6, 5), bob.Position)
+            Assert.Equal(0.0, w.Time)
+        End Sub
+
+        <Fact>
+        Public Sub BodiesWithoutDrag_InASceneWithDrag_StillFlyTheirParabolas()
+            Dim w = EventWorld(20, 20)
+            Dim plain As New Circle(New Vector(2, 10), 0.1, 1, New Vector(3, 4), "plain")
+            Dim draggy As New Circle(New Vector(10, 10), 0.1, 1, New Vector(3, 4), "draggy") With {.LinearDrag = 0.1}
+            w.Add(plain)
+            w.Add(draggy)
+            w.Advance(1.0)
+            Assert.Equal(5.0, plain.Position.X, 12)
+            Assert.Equal(10 + 4 - 0.5 * G, plain.Position.Y, 12)
+            Assert.True(draggy.Position.X < 13)
+        End Sub
+    End Class
+End Namespace
