@@ -105,6 +105,7 @@ Friend NotInheritable Class LinkStep
     ''' taut now, before the step.
     ''' </summary>
     Friend Sub AddAccelerations(acceleration As Vector())
+        DampingPower = 0
         For k = 0 To _links.Length - 1
             Dim l = _links(k)
             If l.Kind <> LinkKind.Spring Then
@@ -115,10 +116,17 @@ Friend NotInheritable Class LinkStep
                 Continue For
             End If
             Dim force = SpringForce(l)
+            If l.Damping > 0 Then
+                Dim rate = l.StretchRate
+                DampingPower += l.Damping * rate * rate
+            End If
             If _indexA(k) >= 0 Then acceleration(_indexA(k)) += force * _inverseMassA(k)
             If _indexB(k) >= 0 Then acceleration(_indexB(k)) -= force * _inverseMassB(k)
         Next
     End Sub
+
+    ''' <summary>The rate (W) at which the springs' damping took energy at the last <see cref="AddAccelerations"/>: Σ c ḋ².</summary>
+    Friend Property DampingPower As Double
 
     ''' <summary>
     ''' The force on end A, N: k (d − L) + c ḋ along the unit vector from A to B (so positive pulls A

@@ -112,6 +112,8 @@ Public NotInheritable Class SemiImplicitEulerSolver
             _acceleration(i) = gravity
         Next
         _links.AddAccelerations(_acceleration)
+        ' What the springs' damping takes over the step, c ḋ² h (at the step's start, as the forces are).
+        _world.Dissipate(_links.DampingPower * h)
         Dim dragged = _world.DraggedBody
         For i = 0 To bodies.Count - 1
             Dim b = bodies(i)

@@ -376,8 +376,9 @@ Friend NotInheritable Class StepContacts
         If separation < 0 Then
             Dim resting = support OrElse -separation <= _restingSpeed
             Dim result = Impulse.Resolve(va, invA, vb, invB, n, If(resting, 0.0, _world.Restitution))
-            ' What the blow took: ½ μ (1 − e²) u², the kinetic energy of the pair before less after.
-            If _lossy Then _world.Dissipate(Energy(va, invA, vb, invB) - Energy(result.A, invA, result.B, invB))
+            ' What the blow took: ½ μ (1 − e²) u², the kinetic energy of the pair before less after. Not a resting
+            ' contact's: that only takes back the speed the step's own fall gave (its height is given back too).
+            If _lossy AndAlso Not resting Then _world.Dissipate(Energy(va, invA, vb, invB) - Energy(result.A, invA, result.B, invB))
             va = result.A
             If invB > 0 Then
                 b.Velocity = result.B

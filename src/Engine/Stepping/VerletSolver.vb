@@ -165,6 +165,8 @@ Public NotInheritable Class VerletSolver
             _acceleration(i) = gravity
         Next
         _links.AddAccelerations(_acceleration)
+        ' What the springs' damping takes over the step, c ḋ² h (at the step's start, as the forces are).
+        _world.Dissipate(_links.DampingPower * h)
         If _decay.Length < bodies.Count Then _decay = New Double(bodies.Count - 1) {}
         For i = 0 To bodies.Count - 1
             _decay(i) = 1
