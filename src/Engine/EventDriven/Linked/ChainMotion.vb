@@ -36,6 +36,8 @@ Friend NotInheritable Class ChainMotion
     Private Const SettleFraction As Double = 0.000000001
 
     Private ReadOnly _gravity As Double
+    ' Drag and buoyancy on the bodies (docs/forces.md), or Nothing.
+    Private ReadOnly _forces As ForceField
     Private ReadOnly _n As Integer
     Private ReadOnly _inverseMass As Double()
     Private ReadOnly _springs As Link()
@@ -72,8 +74,9 @@ Friend NotInheritable Class ChainMotion
     ''' worked out with the others, is not negative; <paramref name="slackened"/> (a string whose tension has
     ''' just fallen to zero) is slack whatever the rounding says.
     ''' </summary>
-    Friend Sub New(bodies As Shape(), links As List(Of Link), startTime As Double, gravity As Double, slackened As Link)
+    Friend Sub New(bodies As Shape(), links As List(Of Link), startTime As Double, gravity As Double, slackened As Link, Optional forces As ForceField = Nothing)
         MyBase.New(bodies, startTime)
+        _forces = forces
         _gravity = gravity
         _n = bodies.Length
         _inverseMass = bodies.Select(Function(b) b.InverseMass).ToArray()
@@ -206,6 +209,7 @@ Friend NotInheritable Class ChainMotion
                 d(4 * b + 3) -= force.Y * _inverseMass(b)
             End If
         Next
+        If _forces IsNot Nothing Then BodyForceTerm.Add(_forces, Bodies, y, d)
         Return d
     End Function
 

@@ -25,7 +25,7 @@ Friend NotInheritable Class DissipationLedger
         If m Is Nothing Then Return
         Dim account As New Account()
         If Not TypeOf m Is IDissipatingMotion Then
-            If Not Damped(group) Then Return
+            If Not Damped(group) AndAlso Not Forced(group, world) Then Return
             account.StartEnergy = Energy(group, world, m.StartTime)
         End If
         _accounts.Remove(m)
@@ -60,6 +60,13 @@ Friend NotInheritable Class DissipationLedger
         If world.Restitution < 1 Then world.Dissipate(before - Kinetic(bodies))
     End Sub
 
+    ''' <summary>Whether drag or buoyancy acts on a body of the group (linked, so integrated by the springs' or the chains' motion).</summary>
+    Private Shared Function Forced(group As LinkedGroup, world As World) As Boolean
+        If Not world.HasDragOrLiquids Then Return False
+        Dim forces As New ForceField(world)
+        Return group.Bodies.Any(Function(b) forces.Acts(b))
+    End Function
+
     ''' <summary>Whether a spring of the group has damping.</summary>
     Private Shared Function Damped(group As LinkedGroup) As Boolean
         For Each l In group.Links
@@ -70,8 +77,8 @@ Friend NotInheritable Class DissipationLedger
 
     ''' <summary>
     ''' The group's mechanical energy on its motion at <paramref name="time"/> (s), J: ½ m v² + m g y of each body
-    ''' (at its centre of mass) and ½ k (d − L)² of each spring, read from the motion itself, so that a blow already
-    ''' applied to the bodies at that instant is not counted twice.
+    ''' (at its centre of mass), buoyancy's potential in each liquid, and ½ k (d − L)² of each spring, read from the
+    ''' motion itself, so that a blow already applied to the bodies at that instant is not counted twice.
     ''' </summary>
     Private Shared Function Energy(group As LinkedGroup, world As World, time As Double) As Double
         Dim m = group.Motion
@@ -80,7 +87,12 @@ Friend NotInheritable Class DissipationLedger
         For k = 0 To m.Bodies.Length - 1
             Dim v As Vector
             m.StateAt(time, k, centres(k), v)
-            sum += 0.5 * m.Bodies(k).Mass * v.LengthSquared + m.Bodies(k).Mass * world.Gravity * centres(k).Y
+            Dim body = m.Bodies(k)
+            sum += 0.5 * body.Mass * v.LengthSquared + body.Mass * world.Gravity * centres(k).Y
+            For Each liquid In world.Liquids
+                Dim part = SubmergedArea.Inside(body.Outline, centres(k) - body.Outline.Centroid, liquid.Min, liquid.Max)
+                If part.Area > 0 Then sum += Buoyancy.Potential(liquid.Density, world.Gravity, liquid.Surface, part)
+            Next
         Next
         For Each l In group.Links
             If l.Kind <> LinkKind.Spring Then Continue For

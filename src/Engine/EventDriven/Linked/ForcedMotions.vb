@@ -3,30 +3,30 @@ Option Strict On
 ''' <summary>
 ''' Which motion the linked event solver gives a body that drag or buoyancy act on (docs/forces.md, "In the event
 ''' solver"): linear drag alone in closed form (<see cref="LinearDragMotion"/>), anything else integrated with error
-''' control (<see cref="DragMotion"/>); and what it cannot move yet, said in a plain sentence.
+''' control (<see cref="DragMotion"/>, or for linked bodies the springs' and chains' integrators with the forces added).
 ''' </summary>
 Friend Module ForcedMotions
-    ''' <summary>Throws <see cref="UnsupportedSceneException"/> when drag or buoyancy acts on a body that links hold.</summary>
-    Friend Sub CheckSupported(world As World, groups As List(Of LinkedGroup))
-        If Not world.HasDragOrLiquids Then Return
+    ''' <summary>
+    ''' The motion of a group that drag or buoyancy acts on, from its state now; Nothing when none does. A free body
+    ''' with linear drag alone, in a world without liquids, moves in closed form; any other free body, and every
+    ''' linked group (springs: <see cref="IntegratedMotion"/>; rods and strings: <see cref="ChainMotion"/>), is
+    ''' integrated with the forces as a term of its equations of motion. <paramref name="slack"/>: a string of the
+    ''' group has just gone slack, whatever the rounding says.
+    ''' </summary>
+    Friend Function Create(group As LinkedGroup, world As World, time As Double, slack As Boolean) As LinkedMotion
+        If Not world.HasDragOrLiquids Then Return Nothing
         Dim forces As New ForceField(world)
-        For Each g In groups
-            If g.Links.Count = 0 Then Continue For
-            For Each b In g.Bodies
-                If forces.Acts(b) Then Throw New UnsupportedSceneException("the event solver does not yet move a body on a link that feels drag or buoyancy ('" & b.Id & "'); use --solver verlet")
-            Next
-        Next
-    End Sub
-
-    ''' <summary>The motion of a free body that drag or buoyancy acts on, from its state now; Nothing when none does (or it has links).</summary>
-    Friend Function Create(group As LinkedGroup, world As World, time As Double) As LinkedMotion
-        If group.Links.Count > 0 OrElse group.Bodies.Count <> 1 OrElse Not world.HasDragOrLiquids Then Return Nothing
+        If Not group.Bodies.Any(Function(b) forces.Acts(b)) Then Return Nothing
+        Dim g = world.Gravity
+        If group.Links.Count > 0 Then
+            If group.Links.All(Function(l) l.Kind = LinkKind.Spring) Then Return New IntegratedMotion(group.Bodies.ToArray(), group.Links, time, g, forces)
+            Dim previous = TryCast(group.Motion, ChainMotion)
+            Return New ChainMotion(group.Bodies.ToArray(), group.Links, time, g, If(slack AndAlso previous IsNot Nothing, previous.Slackened, Nothing), forces)
+        End If
         Dim body = group.Bodies(0)
-        Dim forces As New ForceField(world)
-        If Not forces.Acts(body) Then Return Nothing
         ' Linear drag alone, and no liquid it could fly into: the exponential approach in closed form.
-        If Not forces.HasLiquids AndAlso Not (world.AirDensity > 0 AndAlso body.DragCoefficient > 0) Then Return New LinearDragMotion(body, time, world.Gravity)
-        Return New DragMotion(body, time, world.Gravity, forces)
+        If Not forces.HasLiquids AndAlso Not (world.AirDensity > 0 AndAlso body.DragCoefficient > 0) Then Return New LinearDragMotion(body, time, g)
+        Return New DragMotion(body, time, g, forces)
     End Function
 
     ''' <summary>

@@ -18,7 +18,6 @@ Friend Module LinkedMotions
             If OnlySprings(g) OrElse Not IsChain(g) Then Continue For
             If Not ChainMotion.CanHoldAll(g.Bodies.ToArray(), g.Links) Then Throw New UnsupportedSceneException("the event solver does not yet move rods or strings that hold a body in more ways than it can move (two rods between the same two balls, or a ball on rods to two points in line with it)" & UseVerlet)
         Next
-        ForcedMotions.CheckSupported(world, groups)
     End Sub
 
     ''' <summary>
@@ -30,7 +29,7 @@ Friend Module LinkedMotions
         Dim a = group.Bodies(0)
         ' A free body that rests has had its motion chosen already (LinkedEventSolver.Rest.vb): this one flies.
         ' Drag or buoyancy: its closed form (linear drag alone) or its integral (docs/forces.md).
-        Dim forced = ForcedMotions.Create(group, world, time)
+        Dim forced = ForcedMotions.Create(group, world, time, slack)
         If forced IsNot Nothing Then Return forced
         If group.Links.Count = 0 Then Return New FlightMotion(a, time, g)
         Dim l = group.Links(0)
