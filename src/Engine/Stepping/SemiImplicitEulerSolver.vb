@@ -66,6 +66,7 @@ Public NotInheritable Class SemiImplicitEulerSolver
         If Not (duration > 0) Then Return t0
         _links.Prepare(_world)
         _forces = If(_world.HasDragOrLiquids, New ForceField(_world), Nothing)
+        _contacts.Prepare(_world)
         Dim n = SubSteps.Count(duration, _dt)
         For k = 1L To n
             Dim h = SubSteps.Length(k, n, duration, _dt)

@@ -70,7 +70,6 @@ Friend NotInheritable Class StepContacts
         _restingSpeed = 2 * _gravity * h + MinimumSpeed
         _touched = touched
         _h = h
-        _friction = HasFriction(world)
         _lossy = world.Restitution < 1 OrElse _friction
         Dim bodies = _bodies
         If _support.Length < bodies.Count Then
@@ -114,14 +113,20 @@ Friend NotInheritable Class StepContacts
     ''' </summary>
     Friend Property FrictionShare As Double = 1.0
 
-    ''' <summary>Whether any contact can have friction: the world's μk or some body's own is above 0 (circles aside).</summary>
-    Private Shared Function HasFriction(world As World) As Boolean
-        If world.Friction > 0 Then Return True
+    ''' <summary>
+    ''' Reads, once per advance, whether any contact can have friction: the world's μk or some body's own is above 0
+    ''' (circles aside). Without, the contacts do no friction work at all.
+    ''' </summary>
+    Friend Sub Prepare(world As World)
+        _friction = world.Friction > 0
+        If _friction Then Return
         For Each b In world.Bodies
-            If b.Friction.GetValueOrDefault() > 0 AndAlso b.Kind <> ShapeKind.Circle Then Return True
+            If b.Friction.GetValueOrDefault() > 0 AndAlso b.Kind <> ShapeKind.Circle Then
+                _friction = True
+                Return
+            End If
         Next
-        Return False
-    End Function
+    End Sub
 
     Private Sub ResolvePairs()
         Dim bodies = _bodies

@@ -91,6 +91,7 @@ Public NotInheritable Class VerletSolver
         LoadPrevious()
         _links.Prepare(_world)
         _forces = If(_world.HasDragOrLiquids, New ForceField(_world), Nothing)
+        _contacts.Prepare(_world)
         Dim n = SubSteps.Count(duration, _dt)
         Dim reached = t0 + duration
         For k = 1L To n

@@ -203,6 +203,23 @@ Namespace EventDriven
         End Sub
 
         <Fact>
+        Public Sub ABallFarFromALiquid_FliesItsParabola_AndLandsWhenSuvatSays()
+            ' A liquid makes every body's motion an integral; one that never reaches it must still land exactly.
+            Dim w = EventWorld(20, 10, 0.5)
+            w.Add(New Liquid(New Vector(15, 0), 5, 1, 1000, "pool"))
+            Dim ball As New Circle(New Vector(1, 0.05), 0.05, 1, New Vector(4, 7), "ball")
+            w.Add(ball)
+            Dim hits As New List(Of CollisionRecord)
+            w.CollisionListener = Sub(c) hits.Add(c)
+            w.Advance(0.7)
+            Assert.Equal(1 + 4 * 0.7, ball.Position.X, 9)
+            Assert.Equal(0.05 + 7 * 0.7 - 0.5 * G * 0.49, ball.Position.Y, 9)
+            w.Advance(1.0)
+            Assert.Equal("wall:bottom", hits(0).BName)
+            Assert.True(Math.Abs(hits(0).Time - 2 * 7 / G) < 0.000000001, $"landed at {hits(0).Time} s")
+        End Sub
+
+        <Fact>
         Public Sub BodiesWithoutDrag_InASceneWithDrag_StillFlyTheirParabolas()
             Dim w = EventWorld(20, 20)
             Dim plain As New Circle(New Vector(2, 10), 0.1, 1, New Vector(3, 4), "plain")

@@ -17,6 +17,8 @@ Friend NotInheritable Class DragMotion
     Private Const AbsoluteTolerance As Double = 0.000000000001
     ' Steps kept from one start at most: far more than any advance needs, far less than the memory holds.
     Private Const MaxSteps As Integer = 2000000
+    ' The longest step, s: about the linked solver's search horizon.
+    Private Const MaxStep As Double = 0.01
 
     Private ReadOnly _forces As ForceField
     Private ReadOnly _gravity As Double
@@ -64,7 +66,10 @@ Friend NotInheritable Class DragMotion
                 Dim h = _step
                 Dim next5 As Double() = Nothing, k7 As Double() = Nothing
                 Dim worst = DormandPrince.TryStep(AddressOf Derivative, y, k1, h, RelativeTolerance, AbsoluteTolerance, next5, k7)
-                _step = h * DormandPrince.StepFactor(worst)
+                ' Never longer than MaxStep: the bounds are read from a whole step's quintic, and a step grown long
+                ' over a smooth stretch (a body in free flight far from any liquid) would bound a search of a few
+                ' milliseconds by the motion of seconds.
+                _step = Math.Min(h * DormandPrince.StepFactor(worst), MaxStep)
                 If worst <= 1 Then
                     _times.Add(t + h)
                     _states.Add(next5)
