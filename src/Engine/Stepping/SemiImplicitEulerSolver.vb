@@ -74,6 +74,7 @@ Public NotInheritable Class SemiImplicitEulerSolver
             If _links.HasLinks OrElse _forces IsNot Nothing Then
                 IntegrateLinked(h, duration - offset + h)
                 _links.Constrain(h, _world.Restitution, _world.Movables, Nothing)
+                _world.Dissipate(_links.SnapLoss)
             Else
                 Integrate(h, duration - offset + h)
             End If

@@ -101,6 +101,7 @@ Public NotInheritable Class VerletSolver
                 If _links.HasLinks OrElse _forces IsNot Nothing Then
                     IntegrateLinked(h, duration - offset + h)
                     _links.Constrain(h, _world.Restitution, _world.Movables, _touched)
+                    _world.Dissipate(_links.SnapLoss)
                     _contacts.Resolve(_world, t0 + offset, h, _touched)
                     ReseedTouchedLinked(h)
                 Else
