@@ -24,6 +24,15 @@ Friend NotInheritable Class ForceField
         Return body.LinearDrag > 0 OrElse (_air > 0 AndAlso body.DragCoefficient > 0) OrElse _liquids.Length > 0
     End Function
 
+    ''' <summary>Whether some drag can act on <paramref name="body"/>: its own linear drag, air with its drag coefficient, or a liquid's drag.</summary>
+    Friend Function CanDrag(body As Shape) As Boolean
+        If body.LinearDrag > 0 OrElse (_air > 0 AndAlso body.DragCoefficient > 0) Then Return True
+        For Each l In _liquids
+            If l.LinearDrag > 0 OrElse l.DragCoefficient > 0 Then Return True
+        Next
+        Return False
+    End Function
+
     ''' <summary>Whether the world has any liquid.</summary>
     Friend ReadOnly Property HasLiquids As Boolean
         Get

@@ -36,8 +36,11 @@ Public NotInheritable Class VerletSolver
     Private _acceleration As Vector() = Array.Empty(Of Vector)()
     ' Drag and buoyancy, read from the world once per advance; Nothing when there are none.
     Private _forces As ForceField
-    ' Per body, in the step under way: the factor e^(−c h/(2m)) by which drag slows it in each half of the step (1: no drag).
-    Private _decay As Double() = Array.Empty(Of Double)()
+    ' Per body, in the step under way: whether drag is split off for it, and the buoyancy (N) at the step's start.
+    Private _dragged As Boolean() = Array.Empty(Of Boolean)()
+    Private _lift As Double() = Array.Empty(Of Double)()
+    ' Per body: seeded from its velocity at this advance's start (its forces besides gravity not yet known then).
+    Private _fresh As Boolean() = Array.Empty(Of Boolean)()
 
     ''' <param name="timeStep">sub-step, s, &gt; 0</param>
     Public Sub New(Optional timeStep As Double = DefaultTimeStep)
@@ -169,10 +172,11 @@ Public NotInheritable Class VerletSolver
         _links.AddAccelerations(_acceleration)
         ' What the springs' damping takes over the step, c ḋ² h (at the step's start, as the forces are).
         _world.Dissipate(_links.DampingPower * h)
-        If _decay.Length < bodies.Count Then _decay = New Double(bodies.Count - 1) {}
-        For i = 0 To bodies.Count - 1
-            _decay(i) = 1
-        Next
+        If _dragged.Length < bodies.Count Then
+            _dragged = New Boolean(bodies.Count - 1) {}
+            _lift = New Double(bodies.Count - 1) {}
+        End If
+        Array.Clear(_dragged, 0, bodies.Count)
         If _forces IsNot Nothing Then AddForces(h)
         If h > _hPrevious * MaxStepRatio Then
             For i = 0 To bodies.Count - 1
@@ -196,13 +200,35 @@ Public NotInheritable Class VerletSolver
             _prev(i) = x
             c.Position = xNext
             c.Velocity = (xNext - x) / h + a * (h / 2)
-            If _decay(i) < 1 Then
-                ' The second half of the drag; its history is re-seeded from the velocity it leaves.
-                Slow(c, _decay(i))
-                _touched(i) = True
-            End If
+            If _dragged(i) Then FinishDragStep(c, i, h)
         Next
+        Array.Clear(_fresh, 0, bodies.Count)
     End Sub
+
+    ''' <summary>
+    ''' The end of a step of a body whose drag is split off: its velocity as velocity Verlet gives it (the average of
+    ''' buoyancy at the two ends of the step, which the position formula took at the start only), then the second
+    ''' half-step of drag. Its history is re-seeded from the velocity it leaves.
+    ''' </summary>
+    Private Sub FinishDragStep(c As Shape, i As Integer, h As Double)
+        Dim resistance As Double, lift As Double
+        _forces.Evaluate(c, c.Position, c.Velocity, resistance, lift)
+        c.Velocity += New Vector(0, 0.5 * (lift - _lift(i)) * c.InverseMass * h)
+        Slow(c, DragFactor(c, h))
+        _touched(i) = True
+    End Sub
+
+    ''' <summary>
+    ''' The factor by which half a step of drag alone slows a body: e^(−c h/(2m)), with c taken at the middle of that half
+    ''' (midpoint rule; c grows with speed for quadratic drag), so each half, and the whole split step, is second order.
+    ''' </summary>
+    Private Function DragFactor(body As Shape, h As Double) As Double
+        Dim resistance As Double, lift As Double
+        _forces.Evaluate(body, body.Position, body.Velocity, resistance, lift)
+        Dim quarter = Math.Exp(-0.25 * resistance * body.InverseMass * h)
+        _forces.Evaluate(body, body.Position, body.Velocity * quarter, resistance, lift)
+        Return Math.Exp(-0.5 * resistance * body.InverseMass * h)
+    End Function
 
     ''' <summary>Multiplies a body's velocity by <paramref name="factor"/> (≤ 1), adding the kinetic energy that takes to <see cref="World.Dissipated"/>.</summary>
     Private Sub Slow(body As Shape, factor As Double)
@@ -212,9 +238,9 @@ Public NotInheritable Class VerletSolver
     End Sub
 
     ''' <summary>
-    ''' Adds buoyancy ÷ mass to each movable body's acceleration of this step (the dragged body aside), and for a
-    ''' body with drag −c v takes its first half-step of drag: its velocity × e^(−c h/(2m)), its previous position
-    ''' re-seeded to match.
+    ''' Adds buoyancy ÷ mass to each movable body's acceleration of this step (the dragged body aside). A body that
+    ''' some drag can act on takes its first half-step of drag, and its previous position is re-seeded to match; a
+    ''' body seeded at this advance's start from gravity alone is re-seeded with its whole acceleration.
     ''' </summary>
     Private Sub AddForces(h As Double)
         Dim bodies = _world.Movables
@@ -225,9 +251,12 @@ Public NotInheritable Class VerletSolver
             Dim resistance As Double, lift As Double
             _forces.Evaluate(b, b.Position, b.Velocity, resistance, lift)
             _acceleration(i) += New Vector(0, lift * b.InverseMass)
-            If resistance > 0 Then
-                _decay(i) = Math.Exp(-0.5 * resistance * b.InverseMass * h)
-                Slow(b, _decay(i))
+            _lift(i) = lift
+            If _forces.CanDrag(b) Then
+                _dragged(i) = True
+                Slow(b, DragFactor(b, h))
+                _prev(i) = SeedWith(b, _hPrevious, _acceleration(i))
+            ElseIf _fresh(i) Then
                 _prev(i) = SeedWith(b, _hPrevious, _acceleration(i))
             End If
         Next
@@ -265,11 +294,13 @@ Public NotInheritable Class VerletSolver
         If _prev.Length < bodies.Count Then
             _prev = New Vector(bodies.Count - 1) {}
             _touched = New Boolean(bodies.Count - 1) {}
+            _fresh = New Boolean(bodies.Count - 1) {}
         End If
         For i = 0 To bodies.Count - 1
             Dim c = bodies(i)
             Dim p As Vector
-            _prev(i) = If(_previous.TryGetValue(c, p), p, Seed(c, _hPrevious))
+            _fresh(i) = Not _previous.TryGetValue(c, p)
+            _prev(i) = If(_fresh(i), Seed(c, _hPrevious), p)
         Next
     End Sub
 
