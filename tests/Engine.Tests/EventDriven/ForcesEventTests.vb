@@ -220,6 +220,49 @@ Namespace EventDriven
         End Sub
 
         <Fact>
+        Public Sub ADenseBallWithoutDrag_SlidesAlongTheTankFloorAtItsSpeed()
+            ' Nothing slows it along the level floor, and the water only lightens it: resting on the floor is exact.
+            Dim w = EventWorld(6, 3, 0.3)
+            w.Add(New Liquid(New Vector(0, 0), 6, 1.5, 1000, "water"))
+            Dim ball As New Circle(New Vector(1, 0.15), 0.15, 150, New Vector(0.5, 0), "ball")
+            w.Add(ball)
+            w.Advance(4)
+            Assert.Equal(3.0, ball.Position.X, 9)
+            Assert.Equal(0.15, ball.Position.Y, 12)
+            Assert.Equal(0.5, ball.Velocity.X, 12)
+        End Sub
+
+        <Fact>
+        Public Sub ADenseBallThatWaterWouldSlow_SettlingWhileItSlides_IsRefusedInPlainWords_AndTheWorldIsUntouched()
+            Dim w = EventWorld(6, 3, 0.3)
+            w.Add(New Liquid(New Vector(0, 0), 6, 1.5, 1000, "water") With {.LinearDrag = 20})
+            Dim ball As New Circle(New Vector(1, 0.6), 0.15, 150, New Vector(0.8, 0), "ball")
+            w.Add(ball)
+            Dim ex = Assert.Throws(Of UnsupportedSceneException)(Sub() w.Advance(3))
+            Assert.Contains("'ball'", ex.Message)
+            Assert.Contains("--solver verlet", ex.Message)
+            Assert.Equal(New Vector(1, 0.6), ball.Position)
+            Assert.Equal(0.0, w.Time)
+            Assert.Equal(0.0, w.Dissipated)
+        End Sub
+
+        <Fact>
+        Public Sub ADenseBallSinkingStraightDown_ComesToRestOnTheFloor()
+            Dim w = EventWorld(6, 3, 0.3)
+            w.Add(New Liquid(New Vector(0, 0), 6, 1.5, 1000, "water") With {.LinearDrag = 20})
+            Dim ball As New Circle(New Vector(3, 1.0), 0.15, 150, id:="ball")
+            w.Add(ball)
+            Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+            w.Advance(5)
+            Assert.Equal(0.15, ball.Position.Y, 12)
+            Assert.Equal(3.0, ball.Position.X)
+            Assert.True(ball.Velocity.Length < 0.000000001)
+            ' To rounding: contacts are found, and rests placed, within the touching slop of 1e-9 m, which for 150 kg is
+            ' m g × 1e-9 m = 1.5e-6 J of height at each.
+            Assert.True(Math.Abs(w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated - e0) < 4 * 150 * G * 0.000000001, $"{w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated - e0} J")
+        End Sub
+
+        <Fact>
         Public Sub BodiesWithoutDrag_InASceneWithDrag_StillFlyTheirParabolas()
             Dim w = EventWorld(20, 20)
             Dim plain As New Circle(New Vector(2, 10), 0.1, 1, New Vector(3, 4), "plain")

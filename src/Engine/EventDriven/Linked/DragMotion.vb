@@ -18,7 +18,7 @@ Friend NotInheritable Class DragMotion
     ' Steps kept from one start at most: far more than any advance needs, far less than the memory holds.
     Private Const MaxSteps As Integer = 2000000
     ' The longest step, s: about the linked solver's search horizon.
-    Private Const MaxStep As Double = 0.01
+    Private Const MaxStepLength As Double = 0.01
 
     Private ReadOnly _forces As ForceField
     Private ReadOnly _gravity As Double
@@ -45,6 +45,23 @@ Friend NotInheritable Class DragMotion
         _step = 0.001
     End Sub
 
+    ''' <summary>
+    ''' The longest next step from state <paramref name="y"/>, s: 10 ms, and with liquids about, the time to move a fifth
+    ''' of the body's smaller extent. A liquid acts on a body only while some of it is inside, over a stretch of the
+    ''' path as long as the body at least; steps that short put stages inside that stretch, so the error control
+    ''' sees the push begin and end, and a body cannot be stepped through the water unpushed.
+    ''' </summary>
+    Private Function MaxStep(y As Double()) As Double
+        Dim longest = MaxStepLength
+        If _forces.HasLiquids Then
+            Dim speed = Math.Sqrt(y(2) * y(2) + y(3) * y(3))
+            Dim o = _body.Outline
+            Dim size = Math.Min(o.MaxX - o.MinX, o.MaxY - o.MinY)
+            If speed > 0 Then longest = Math.Min(longest, 0.2 * size / speed)
+        End If
+        Return longest
+    End Function
+
     ''' <summary>dy/dt: the velocity, gravity plus the forces ÷ mass, and the drag's power.</summary>
     Private Function Derivative(y As Double()) As Double()
         Dim velocity As New Vector(y(2), y(3))
@@ -69,7 +86,7 @@ Friend NotInheritable Class DragMotion
                 ' Never longer than MaxStep: the bounds are read from a whole step's quintic, and a step grown long
                 ' over a smooth stretch (a body in free flight far from any liquid) would bound a search of a few
                 ' milliseconds by the motion of seconds.
-                _step = Math.Min(h * DormandPrince.StepFactor(worst), MaxStep)
+                _step = Math.Min(h * DormandPrince.StepFactor(worst), MaxStep(next5))
                 If worst <= 1 Then
                     _times.Add(t + h)
                     _states.Add(next5)

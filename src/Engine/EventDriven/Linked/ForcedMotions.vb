@@ -30,18 +30,39 @@ Friend Module ForcedMotions
     End Function
 
     ''' <summary>
-    ''' Whether the rest rules (which know gravity alone) must leave this body be: drag or buoyancy acts on it and
-    ''' it is moving (drag would slow its slide along a face, which a resting motion at constant speed does not),
-    ''' or the liquids push it up at least as hard as it weighs (it would float off the face). A body that drag
-    ''' acts on may rest when it is still and pressed down: drag is then zero and the face holds it, exactly.
+    ''' Whether the rest rules (which know gravity alone) must leave this body be, touching faces of the given unit normals
+    ''' (docs/forces.md, section 6). A body drag and buoyancy do not act on: no. One the liquids push up at least as hard
+    ''' as it weighs: yes (it floats off). One still (slower than <paramref name="restingSpeed"/>): no, it may rest,
+    ''' since drag is then zero and the face holds it exactly. One moving on level faces only, with no drag that could
+    ''' slow it: no, it slides on at its speed, as the rest rules move it. Otherwise (drag would slow its slide, or a
+    ''' liquid would lighten it on a slope, neither of which the rest rules know) it is not rested; and if it is
+    ''' settling onto a face all the same (its speed across the face within a bounce of four slops), it would bounce
+    ''' for ever a slop deeper each time: refused, in words, with <see cref="UnsupportedSceneException"/>.
     ''' </summary>
-    Friend Function KeepsFromResting(body As Shape, world As World, restingSpeed As Double) As Boolean
+    Friend Function KeepsFromResting(body As Shape, world As World, restingSpeed As Double, normals As IReadOnlyList(Of Vector)) As Boolean
         If Not world.HasDragOrLiquids Then Return False
         Dim forces As New ForceField(world)
         If Not forces.Acts(body) Then Return False
-        If body.Velocity.Length > restingSpeed Then Return True
         Dim resistance As Double, lift As Double
         forces.Evaluate(body, body.Position, body.Velocity, resistance, lift)
-        Return lift >= body.Mass * world.Gravity
+        If lift >= body.Mass * world.Gravity Then Return True
+        Dim v = body.Velocity
+        If v.Length <= restingSpeed Then Return False
+        If Not forces.CanDrag(body) AndAlso normals.All(Function(n) n.Y >= RestingFaces.LevelCosine) Then Return False
+        For Each n In normals
+            If n.Y > 0 AndAlso Math.Abs(Vector.Dot(v, n)) <= restingSpeed Then
+                Throw New UnsupportedSceneException("the event solver does not yet let a body that feels drag or buoyancy ('" & body.Id &
+                    "') come to rest while it slides along what it touches; use --solver verlet")
+            End If
+        Next
+        Return True
+    End Function
+    ''' <summary>What drag and buoyancy add to a body's acceleration in its state now (written to it), m/s²; zero when none act.</summary>
+    Friend Function Acceleration(body As Shape, world As World) As Vector
+        If Not world.HasDragOrLiquids Then Return Vector.Zero
+        Dim forces As New ForceField(world)
+        If Not forces.Acts(body) Then Return Vector.Zero
+        Dim power As Double
+        Return forces.Force(body, body.Position, body.Velocity, power) * body.InverseMass
     End Function
 End Module

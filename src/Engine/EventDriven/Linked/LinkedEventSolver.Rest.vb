@@ -51,7 +51,6 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If gravity <= 0 OrElse group.Bodies.Count <> 1 OrElse group.Links.Count > 1 Then Return Nothing
         Dim body = group.Bodies(0)
         Dim i = Array.IndexOf(_bodies, body)
-        If ForcedMotions.KeepsFromResting(body, _world, LinkedMotions.RestingSpeed(gravity, Slop)) Then Return Nothing
         Dim tie = If(group.Links.Count = 1, group.Links(0), Nothing)
         Dim pressing = gravity
         Dim slack As Link = Nothing
@@ -73,6 +72,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             End Select
         End If
         Dim faces = FacesTouched(i, t)
+        If ForcedMotions.KeepsFromResting(body, _world, LinkedMotions.RestingSpeed(gravity, Slop), faces.Select(Function(f) f.Normal).ToList()) Then Return Nothing
         Dim p = body.Position
         Dim v = body.Velocity
         Dim restSpeed = LinkedMotions.RestingSpeed(pressing, Slop)

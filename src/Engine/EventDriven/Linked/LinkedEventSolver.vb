@@ -609,7 +609,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim flight = TryCast(MotionOf(k), FlightMotion)
         If flight IsNot Nothing Then Return flight.Acceleration
         Dim body = _bodies(k)
-        Dim a = New Vector(0, -_world.Gravity)
+        Dim a = New Vector(0, -_world.Gravity) + ForcedMotions.Acceleration(body, _world)
         For Each l In _groups(_groupOf(k)).Links
             If l.Kind <> LinkKind.Spring Then Continue For
             Dim along = (l.EndB - l.EndA).Normalized(Vector.Zero)
