@@ -27,10 +27,10 @@ Friend Module LinkedMotions
     Friend Function Create(group As LinkedGroup, world As World, time As Double, slack As Boolean, slop As Double) As LinkedMotion
         Dim g = world.Gravity
         Dim a = group.Bodies(0)
-        ' A free body that rests has had its motion chosen already (LinkedEventSolver.Rest.vb): this one flies.
         ' Drag or buoyancy: its closed form (linear drag alone) or its integral (docs/forces.md).
         Dim forced = ForcedMotions.Create(group, world, time, slack)
         If forced IsNot Nothing Then Return forced
+        ' A free body that rests has had its motion chosen already (LinkedEventSolver.Rest.vb): this one flies.
         If group.Links.Count = 0 Then Return New FlightMotion(a, time, g)
         Dim l = group.Links(0)
         If OnlySprings(group) Then
