@@ -135,6 +135,25 @@ Partial Public NotInheritable Class World
     End Function
 
     ''' <summary>
+    ''' Whether some contact can have friction: the world's μk is above 0 (every wall and every surface without
+    ''' its own has it), or two bodies that are not circles have their own μk above 0 (a contact's μ is the
+    ''' geometric mean of its two surfaces', so one rough surface alone among icy ones rubs nothing).
+    ''' </summary>
+    Public ReadOnly Property HasFriction As Boolean
+        Get
+            If _friction > 0 Then Return True
+            Dim rough = 0
+            For Each b In _bodies
+                If b.Kind <> ShapeKind.Circle AndAlso b.Friction.GetValueOrDefault() > 0 Then
+                    rough += 1
+                    If rough >= 2 Then Return True
+                End If
+            Next
+            Return False
+        End Get
+    End Property
+
+    ''' <summary>
     ''' Whether anything here drags or floats a body: a liquid, a movable body with linear drag, or air with a
     ''' movable body that has a drag coefficient. (Friction alone is not counted: it acts only at contacts.)
     ''' </summary>

@@ -17,7 +17,7 @@ Friend Module RunCommand
         For Each output In o.Outputs
             OutputFile.CheckTarget(output.Name, output.Path)
         Next
-        world.Solver = CreateSolver(o)
+        world.Solver = CreateSolver(o, world)
         ' A valid scene too fast to simulate fails (exit 1) before any file is created.
         world.CheckSpeeds()
 
@@ -56,9 +56,9 @@ Friend Module RunCommand
         End Using
     End Function
 
-    Private Function CreateSolver(o As RunOptions) As ISolver
+    Private Function CreateSolver(o As RunOptions, world As World) As ISolver
         Try
-            Return SolverFactory.Create(o.SolverName, o.TimeStep)
+            Return SolverFactory.Create(o.SolverName, o.TimeStep, world)
         Catch ex As ArgumentException
             If SolverFactory.Names.Contains(o.SolverName) Then
                 Throw New BadInputException("--solver: '" & o.SolverName & "' is not available in this build", ex)

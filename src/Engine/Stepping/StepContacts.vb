@@ -114,18 +114,11 @@ Friend NotInheritable Class StepContacts
     Friend Property FrictionShare As Double = 1.0
 
     ''' <summary>
-    ''' Reads, once per advance, whether any contact can have friction: the world's μk or some body's own is above 0
-    ''' (circles aside). Without, the contacts do no friction work at all.
+    ''' Reads, once per advance, whether any contact can have friction (<see cref="World.HasFriction"/>). Without, the
+    ''' contacts do no friction work at all.
     ''' </summary>
     Friend Sub Prepare(world As World)
-        _friction = world.Friction > 0
-        If _friction Then Return
-        For Each b In world.Bodies
-            If b.Friction.GetValueOrDefault() > 0 AndAlso b.Kind <> ShapeKind.Circle Then
-                _friction = True
-                Return
-            End If
-        Next
+        _friction = world.HasFriction
     End Sub
 
     Private Sub ResolvePairs()

@@ -263,6 +263,32 @@ Namespace EventDriven
         End Sub
 
         <Fact>
+        Public Sub ASceneWithFriction_IsRefusedInPlainWords_AndAutoChoosesVerlet()
+            Dim w = EventWorld(4, 3)
+            w.Friction = 0.5
+            Dim box = Rectangle.CreateMovable(New Vector(1, 0), 0.3, 0.2, 1, New Vector(2, 0), "box")
+            w.Add(box)
+            Dim ex = Assert.Throws(Of UnsupportedSceneException)(Sub() w.Advance(0.5))
+            Assert.Equal("the event solver does not yet apply friction (this scene has rough surfaces); use --solver verlet", ex.Message)
+            Assert.Equal(New Vector(1, 0), box.Position)
+            Assert.Equal(0.0, w.Time)
+            Assert.Equal("verlet", SolverFactory.Create("auto", Nothing, w).Name)
+            Assert.Equal("event", SolverFactory.Create("event", Nothing, w).Name)
+            ' One rough box among icy surfaces rubs nothing: the event solver moves it.
+            Dim icy = EventWorld(4, 3)
+            Dim rough = Rectangle.CreateMovable(New Vector(1, 0), 0.3, 0.2, 1, New Vector(2, 0), "rough")
+            rough.Friction = 0.8
+            icy.Add(rough)
+            Assert.False(icy.HasFriction)
+            Assert.Equal("event", SolverFactory.Create("auto", Nothing, icy).Name)
+            icy.Advance(0.5)
+            Assert.Equal(2.0, rough.Position.X, 12)
+            ' Two rough surfaces do.
+            icy.Add(New Segment(New Vector(3, 1), New Vector(4, 1), "ledge") With {.Friction = 0.3})
+            Assert.True(icy.HasFriction)
+        End Sub
+
+        <Fact>
         Public Sub BodiesWithoutDrag_InASceneWithDrag_StillFlyTheirParabolas()
             Dim w = EventWorld(20, 20)
             Dim plain As New Circle(New Vector(2, 10), 0.1, 1, New Vector(3, 4), "plain")
