@@ -8,7 +8,7 @@ Imports System.Globalization
 Friend NotInheritable Class BenchmarkOptions
     ''' <summary>Every scene, in report order.</summary>
     Public Shared ReadOnly Property AllScenes As IReadOnlyList(Of String) =
-        {"bouncing-apex", "bouncing-rest", "projectile", "oblique-hit", "cradle", "gas-energy", "pile", "ramp-slide", "box-drop", "pendulum", "spring", "rope", "cradle-strings", "galton", "mixed"}
+        {"bouncing-apex", "bouncing-rest", "projectile", "oblique-hit", "cradle", "gas-energy", "pile", "ramp-slide", "box-drop", "pendulum", "spring", "rope", "cradle-strings", "drag-projectile", "tanh-fall", "floating-box", "galton", "mixed"}
 
     ''' <summary>The solvers compared, as SolverFactory names them.</summary>
     Public Shared ReadOnly Property AllSolvers As IReadOnlyList(Of String) = {"event", "euler", "verlet"}
@@ -37,7 +37,7 @@ Friend NotInheritable Class BenchmarkOptions
         "  --gas-rounds K  run every gas size K times, in rounds that take the sizes in turn and every solver" & vbLf &
         "               at a size one after the other; report the median run with the range (default 3; 1 with --quick)" & vbLf &
         "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, ramp-slide, box-drop, pendulum," & vbLf &
-        "          spring, rope, cradle-strings, galton, mixed, and gas-scaling" & vbLf &
+        "          spring, rope, cradle-strings, drag-projectile, tanh-fall, floating-box, galton, mixed, and gas-scaling" & vbLf &
         "  gas-scaling also times the textbook baseline (a plain event-driven gas, not the engine) beside event"
 
     Public Property Quick As Boolean

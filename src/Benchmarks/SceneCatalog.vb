@@ -20,6 +20,9 @@ Friend Module SceneCatalog
             Case "rope" : Return New RopeScene()
             Case "cradle-strings" : Return New CradleStringsScene()
             Case "galton" : Return New GaltonScene()
+            Case "drag-projectile" : Return New DragProjectileScene()
+            Case "tanh-fall" : Return New TanhFallScene()
+            Case "floating-box" : Return New FloatingBoxScene()
             ' 0.1 s: the event solver's first 0.1 s of it takes about 14 s, so the run with the error checks
             ' and a timed run both fit the 30 s budget of a case (0.2 s took 28 to 30 s, and a busy
             ' machine left the row without a result).

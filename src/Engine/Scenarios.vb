@@ -305,6 +305,43 @@ Public Module Scenarios
         Return w
     End Function
 
+    ''' <summary>
+    ''' A projectile in air with linear drag b (N·s/m): a ball of mass m launched from (1, 1) m at v0 (m/s) and θ (rad),
+    ''' in a walled box 20 m × 10 m. It follows x(t) = x0 + v_t t + (v0 − v_t) τ (1 − e^(−t/τ)), τ = m/b (docs/forces.md).
+    ''' </summary>
+    Public Function DragProjectile(Optional speed As Double = 10.0, Optional angle As Double = Math.PI / 4, Optional linearDrag As Double = 0.2,
+                                   Optional mass As Double = 0.5, Optional gravity As Double = 9.81) As World
+        Dim w As New World(20.0, 10.0, gravity, 1.0)
+        Dim v = New Vector(speed * Math.Cos(angle), speed * Math.Sin(angle))
+        w.Add(New Circle(New Vector(1.0, 1.0), 0.05, mass, v, "ball") With {.LinearDrag = linearDrag})
+        Return w
+    End Function
+
+    ''' <summary>
+    ''' A ball of mass m (kg) and radius r (m) dropped from rest 95 m up in air of density ρ (kg/m²) with drag coefficient
+    ''' C_d: it falls at v(t) = v_t tanh(g t/v_t), v_t = √(2 m g/(ρ C_d 2r)).
+    ''' </summary>
+    Public Function AirFall(Optional mass As Double = 0.2, Optional radius As Double = 0.15, Optional airDensity As Double = 1.2,
+                            Optional dragCoefficient As Double = 0.8, Optional gravity As Double = 9.81) As World
+        Dim w As New World(10.0, 100.0, gravity, 1.0) With {.AirDensity = airDensity}
+        w.Add(New Circle(New Vector(5.0, 95.0), radius, mass, id:="ball") With {.DragCoefficient = dragCoefficient})
+        Return w
+    End Function
+
+    ''' <summary>
+    ''' A box (mass m, width w, 0.5 m tall) in a tank of water (density ρ_l, kg/m², surface 1.5 m up, as wide as the
+    ''' container), released at rest <paramref name="displacement"/> m above its floating depth m/(ρ_l w): undamped, it
+    ''' bobs about that depth with period 2π √(m/(ρ_l g w)).
+    ''' </summary>
+    Public Function FloatingBox(Optional mass As Double = 40.0, Optional width As Double = 0.4, Optional liquidDensity As Double = 1000.0,
+                                Optional displacement As Double = 0.03, Optional gravity As Double = 9.81) As World
+        Dim w As New World(4.0, 3.0, gravity, 0.5)
+        w.Add(New Liquid(New Vector(0, 0), 4.0, 1.5, liquidDensity, "water") With {.Color = "#1e88e5"})
+        Dim depth = Buoyancy.FloatingDepth(mass, width, liquidDensity)
+        w.Add(Rectangle.CreateMovable(New Vector(2.0 - width / 2, 1.5 - depth + displacement), width, 0.5, mass, id:="box"))
+        Return w
+    End Function
+
     ''' <summary>The app's opening scene: a few balls, a peg and a table, so something happens at once.</summary>
     Public Function Demo() As World
         Dim w As New World(8.0, 5.0, 9.81, 0.9)

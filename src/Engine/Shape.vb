@@ -9,6 +9,10 @@ Option Strict On
 ''' </summary>
 Public MustInherit Class Shape
     Private ReadOnly _fixed As Boolean
+    Private _friction As Double?
+    Private _staticFriction As Double?
+    Private _dragCoefficient As Double
+    Private _linearDrag As Double
 
     ''' <param name="position">reference point, m</param>
     ''' <param name="outline">the shape, as offsets from the reference point</param>
@@ -32,6 +36,59 @@ Public MustInherit Class Shape
 
     ''' <summary>How the app draws the body, "#rrggbb", or Nothing to let the app choose.</summary>
     Public Property Color As String
+
+    ''' <summary>
+    ''' μk of this body's own surface, or Nothing for the world's (<see cref="World.Friction"/>). A contact
+    ''' uses the geometric mean of its two surfaces' values. Circles keep it but take no friction: they cannot
+    ''' spin, and a ball that slid on a rough ramp instead of rolling would teach the wrong physics.
+    ''' </summary>
+    Public Property Friction As Double?
+        Get
+            Return _friction
+        End Get
+        Set(value As Double?)
+            If value.HasValue Then CheckCoefficient(value.Value, NameOf(Friction))
+            _friction = value
+        End Set
+    End Property
+
+    ''' <summary>μs of this body's own surface, or Nothing for its <see cref="Friction"/> when that is set, else the world's <see cref="World.StaticFriction"/>.</summary>
+    Public Property StaticFriction As Double?
+        Get
+            Return _staticFriction
+        End Get
+        Set(value As Double?)
+            If value.HasValue Then CheckCoefficient(value.Value, NameOf(StaticFriction))
+            _staticFriction = value
+        End Set
+    End Property
+
+    ''' <summary>C_d, the drag coefficient (≥ 0; 0: none): with the world's air density ρ &gt; 0, drag −½ ρ C_d L |v| v, L the body's width across its motion.</summary>
+    Public Property DragCoefficient As Double
+        Get
+            Return _dragCoefficient
+        End Get
+        Set(value As Double)
+            CheckCoefficient(value, NameOf(DragCoefficient))
+            _dragCoefficient = value
+        End Set
+    End Property
+
+    ''' <summary>b, N·s/m (≥ 0; 0: none): linear (Stokes) drag −b v, in air and in liquids.</summary>
+    Public Property LinearDrag As Double
+        Get
+            Return _linearDrag
+        End Get
+        Set(value As Double)
+            CheckCoefficient(value, NameOf(LinearDrag))
+            _linearDrag = value
+        End Set
+    End Property
+
+    ''' <summary>A coefficient of friction or drag must be a finite number ≥ 0.</summary>
+    Friend Shared Sub CheckCoefficient(value As Double, name As String)
+        If Not (value >= 0) OrElse Double.IsInfinity(value) Then Throw New ArgumentOutOfRangeException(name, name & " must be a finite number ≥ 0")
+    End Sub
 
     ''' <summary>Which kind of body this is.</summary>
     Public MustOverride ReadOnly Property Kind As ShapeKind

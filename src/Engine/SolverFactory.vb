@@ -10,6 +10,16 @@ Public Module SolverFactory
     ''' the step of a stepping solver; Nothing means its default. Unknown names throw ArgumentException.
     ''' </summary>
     Public Function Create(name As String, Optional timeStep As Double? = Nothing) As ISolver
+        Return Create(name, timeStep, Nothing)
+    End Function
+
+    ''' <summary>
+    ''' As <see cref="Create(String, Double?)"/>, with "auto" choosing for <paramref name="world"/>: Verlet for a scene
+    ''' with friction (<see cref="World.HasFriction"/>), which the event solver does not apply yet; the event solver
+    ''' otherwise.
+    ''' </summary>
+    Public Function Create(name As String, timeStep As Double?, world As World) As ISolver
+        If name = "auto" AndAlso world IsNot Nothing AndAlso world.HasFriction Then Return New VerletSolver(If(timeStep, VerletSolver.DefaultTimeStep))
         Select Case name
             Case "auto", "event"
                 Return New EventDrivenSolver()

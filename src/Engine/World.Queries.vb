@@ -13,7 +13,8 @@ Partial Public NotInheritable Class World
 
     ''' <summary>
     ''' Σ m g y over movable bodies (y of each one's centre of mass; zero level at y = 0, the container's
-    ''' floor) plus the energy stored in springs, Σ ½ k extension², J.
+    ''' floor) plus the energy stored in springs, Σ ½ k extension², plus buoyancy's in liquids
+    ''' (<see cref="BuoyancyPotentialEnergy"/>), J.
     ''' </summary>
     Public Function PotentialEnergy() As Double
         Dim sum = 0.0
@@ -23,7 +24,7 @@ Partial Public NotInheritable Class World
         For Each l In _links
             sum += l.StoredEnergy
         Next
-        Return sum
+        Return sum + BuoyancyPotentialEnergy()
     End Function
 
     ''' <summary>Σ m v over movable bodies, kg·m/s.</summary>

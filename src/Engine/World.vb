@@ -320,6 +320,8 @@ Partial Public NotInheritable Class World
         _nextLinkId = 1
         _DraggedBody = Nothing
         _Time = 0
+        _liquids.Clear()
+        _dissipated = 0
         _solver?.Invalidate(Nothing)
     End Sub
 

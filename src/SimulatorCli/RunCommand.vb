@@ -9,7 +9,7 @@ Imports System.Threading
 Friend Module RunCommand
     Friend Const StatesHeader As String = "t,id,x,y,vx,vy"
     Friend Const EventsHeader As String = "t,a,b,kind,a_vx_before,a_vy_before,a_vx_after,a_vy_after,b_vx_before,b_vy_before,b_vx_after,b_vy_after"
-    Friend Const SeriesHeader As String = "t,ke,pe,energy,px,py,com_x,com_y"
+    Friend Const SeriesHeader As String = "t,ke,pe,energy,px,py,com_x,com_y,dissipated"
 
     Friend Function Execute(o As RunOptions) As Integer
         ' Everything that can be bad input is checked here, before any file is created.
@@ -17,7 +17,7 @@ Friend Module RunCommand
         For Each output In o.Outputs
             OutputFile.CheckTarget(output.Name, output.Path)
         Next
-        world.Solver = CreateSolver(o)
+        world.Solver = CreateSolver(o, world)
         ' A valid scene too fast to simulate fails (exit 1) before any file is created.
         world.CheckSpeeds()
 
@@ -56,9 +56,9 @@ Friend Module RunCommand
         End Using
     End Function
 
-    Private Function CreateSolver(o As RunOptions) As ISolver
+    Private Function CreateSolver(o As RunOptions, world As World) As ISolver
         Try
-            Return SolverFactory.Create(o.SolverName, o.TimeStep)
+            Return SolverFactory.Create(o.SolverName, o.TimeStep, world)
         Catch ex As ArgumentException
             If SolverFactory.Names.Contains(o.SolverName) Then
                 Throw New BadInputException("--solver: '" & o.SolverName & "' is not available in this build", ex)
@@ -123,7 +123,10 @@ Friend Module RunCommand
         Next
     End Sub
 
-    ''' <summary>One row of the totals: kinetic and potential energy and their sum (J), momentum (kg·m/s), centre of mass (m).</summary>
+    ''' <summary>
+    ''' One row of the totals: kinetic and potential energy and their sum (J), momentum (kg·m/s), centre of mass (m),
+    ''' and the energy taken since the start by inelastic collisions, friction, drag and spring damping (J).
+    ''' </summary>
     Private Sub WriteTotals(w As IO.TextWriter, t As Double, world As World)
         Dim ke = world.KineticEnergy()
         Dim pe = Totals.PotentialEnergy(world)
@@ -131,7 +134,7 @@ Friend Module RunCommand
         Dim com = world.CentreOfMass()
         w.WriteLine(String.Join(",",
             CsvText.Number(t), CsvText.Number(ke), CsvText.Number(pe), CsvText.Number(ke + pe),
-            CsvText.Number(p.X), CsvText.Number(p.Y), CsvText.Number(com.X), CsvText.Number(com.Y)))
+            CsvText.Number(p.X), CsvText.Number(p.Y), CsvText.Number(com.X), CsvText.Number(com.Y), CsvText.Number(world.Dissipated)))
     End Sub
 
     Private Sub WriteCollision(w As IO.TextWriter, r As CollisionRecord)

@@ -48,6 +48,9 @@ Public Class ShapeAndLinkScenesTests
     <InlineData("box-drop", 1.0E-9)>
     <InlineData("pendulum", 1.0E-9)>
     <InlineData("spring", 1.0E-9)>
+    <InlineData("drag-projectile", 1.0E-9)>
+    <InlineData("tanh-fall", 1.0E-9)>
+    <InlineData("floating-box", 1.0E-9)>
     Public Sub EventSolver_MeetsTheClosedForm_WhereAFirstOrderStepperDoesNot(name As String, tolerance As Double)
         Dim options = BenchmarkOptions.Parse(QuickRun)
         Dim exact = SceneRunner.Run(SceneCatalog.Create(name, options), "event", Nothing, 1, 60)

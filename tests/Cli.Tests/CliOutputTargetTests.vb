@@ -95,7 +95,7 @@ Public Class CliOutputTargetTests
             Dim r = RunCli("run", scene, "--time", "0.2", "--sample", "0.1", "--series", fifo)
             Assert.True(r.ExitCode = 0, r.ToString())
             Assert.True(reader.Wait(TimeSpan.FromSeconds(30)), "the reader never saw the end of the table")
-            Assert.StartsWith("t,ke,pe,energy,px,py,com_x,com_y" & vbLf, reader.Result)
+            Assert.StartsWith("t,ke,pe,energy,px,py,com_x,com_y,dissipated" & vbLf, reader.Result)
             Assert.Equal(4, reader.Result.TrimEnd(ChrW(10)).Split(ChrW(10)).Length) ' header + 3 samples
             Assert.Equal("head-on.json series.fifo", AllFiles(t.Path))
         End Using

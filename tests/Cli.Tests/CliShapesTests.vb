@@ -9,7 +9,7 @@ Imports Xunit
 ''' the totals (--series) recomputed from the states, and a collision kind for every pair of shapes.
 ''' </summary>
 Public Class CliShapesTests
-    Private Const SeriesHeader As String = "t,ke,pe,energy,px,py,com_x,com_y"
+    Private Const SeriesHeader As String = "t,ke,pe,energy,px,py,com_x,com_y,dissipated"
     Private Const G As Double = 9.81
 
     ''' <summary>
@@ -92,6 +92,8 @@ Public Class CliShapesTests
                 Assert.Equal(py, D(z(row)(5)), 9)
                 Assert.Equal(mx / 3.5, D(z(row)(6)), 9)
                 Assert.Equal(my / 3.5, D(z(row)(7)), 9)
+                ' Energy taken (e = 0.8): never negative, never falling.
+                Assert.True(D(z(row)(8)) >= If(row > 1, D(z(row - 1)(8)), 0))
             Next
             ' The summary's energies are the last row's.
             Using doc = JsonDocument.Parse(r.StdOut)

@@ -64,19 +64,17 @@ Public Class ShapeAndLinkChecksTests
     End Sub
 
     <Fact>
-    Public Sub ARefusedScene_IsUnsupported_NotAFailure_AndTheRunStopsThere()
-        ' A ball balanced on top of a fixed peg beside a pendulum: the event solver refuses it (docs/links.md: a
-        ' ball rests only on flat faces there), and puts the world back as it was before the advance.
+    Public Sub ABallBalancedOnAPegTop_RestsThere_BreakingNoInvariant_AndUnsupportedIsNoFailure()
+        ' A ball balanced on top of a fixed peg beside a pendulum: the peg's push is straight up and matches its
+        ' weight, so it rests there (an unstable balance, but one), and nothing is broken.
         Const Scene As String = "{""format"": ""physics-scene/1"", ""world"": {""width"": 10, ""height"": 10, ""gravity"": 9.81, ""restitution"": 0.5, ""walls"": true}," &
             """bodies"": [{""id"": ""peg"", ""type"": ""circle"", ""x"": 3, ""y"": 2.5, ""radius"": 0.5, ""fixed"": true}," &
             "{""id"": ""c0"", ""type"": ""circle"", ""x"": 3, ""y"": 3.1, ""radius"": 0.1, ""mass"": 1, ""vx"": 0, ""vy"": 0}," &
             "{""id"": ""bob"", ""type"": ""circle"", ""x"": 8, ""y"": 8, ""radius"": 0.05, ""mass"": 1, ""vx"": 0, ""vy"": 0}]," &
             """links"": [{""id"": ""l1"", ""type"": ""rod"", ""a"": ""bob"", ""at"": [8, 9]}]}"
         Dim outcome = SceneRunner.Run(Scene, "event", 1.0, 0.05, 60)
-        Dim v = Assert.Single(outcome.Violations)
-        Assert.Equal(Invariants.Unsupported, v.Invariant)
-        Assert.Contains("come to rest", v.Message, StringComparison.Ordinal)
-        Assert.False(outcome.Completed)
+        Assert.True(outcome.Violations.Count = 0, String.Join("; ", outcome.Violations))
+        Assert.True(outcome.Completed)
         Assert.DoesNotContain(Invariants.Unsupported, Invariants.All)
         Assert.Equal("UNSUPPORTED ", Campaign.LinePrefix(Invariants.Unsupported))
         Assert.Equal("FAIL ", Campaign.LinePrefix(Invariants.Overlap))

@@ -13,25 +13,36 @@ Friend Module ContactFeatures
     ''' The contact of slot <paramref name="a"/> with slot <paramref name="b"/> (−1: a fixed body) on pair shape
     ''' <paramref name="k"/>, for d = c_A − c_B − <paramref name="shift"/> (m) moving at <paramref name="w"/> = ḋ
     ''' (m/s) with <paramref name="q"/> = d̈ (m/s², or zero when not known); within <paramref name="slop"/> (m) of
-    ''' the boundary. Nothing where d is on a sharp corner (R = 0) and not on an edge it stays on: a corner of one
-    ''' box on a corner of another holds nothing.
+    ''' the boundary, or pressed in. Nothing where d is on a sharp corner (R = 0) and not on an edge it stays on: a
+    ''' corner of one box on a corner of another holds nothing.
     ''' </summary>
     Friend Function OnOutline(a As Integer, b As Integer, shift As Vector, k As Outline, d As Vector, w As Vector, q As Vector, slop As Double) As Constraint
         Dim corners = k.Corners, normals = k.EdgeNormals, lengths = k.EdgeLengths
         Dim r = k.Radius
         Dim m = corners.Length
         If m = 1 Then Return Constraint.Round(a, b, shift, corners(0), r, Vector.Zero, Vector.Zero)
-        ' An edge d lies on and is not leaving by one of its ends.
+        ' The nearest edge d lies along (within its extent), if d is on it (pressed in or not) and not leaving by one
+        ' of its ends. Of a polygon's edges the nearest is the one d is least deep behind, as for the contact normal.
+        Dim edge = -1, nearest = Double.NegativeInfinity
         For i = 0 To normals.Length - 1
             Dim n = normals(i)
             Dim rel = d - corners(i)
-            If Math.Abs(Vector.Dot(n, rel) - r) > slop Then Continue For
+            Dim gap = Vector.Dot(n, rel) - r
+            If gap > slop OrElse gap <= nearest Then Continue For
             Dim t = RestingFaces.Along(n)
             Dim s = Vector.Dot(t, rel)
             If s < -slop OrElse s > lengths(i) + slop Then Continue For
-            If RestingFaces.IsLeaving(s, Vector.Dot(t, w), Vector.Dot(t, q), lengths(i), slop) Then Continue For
-            Return Constraint.Plane(a, b, shift, n, Vector.Dot(n, corners(i)) + r, corners(i), t, lengths(i))
+            edge = i
+            nearest = gap
         Next
+        If edge >= 0 Then
+            Dim n = normals(edge)
+            Dim t = RestingFaces.Along(n)
+            Dim s = Vector.Dot(t, d - corners(edge))
+            If Not RestingFaces.IsLeaving(s, Vector.Dot(t, w), Vector.Dot(t, q), lengths(edge), slop) Then
+                Return Constraint.Plane(a, b, shift, n, Vector.Dot(n, corners(edge)) + r, corners(edge), t, lengths(edge))
+            End If
+        End If
         If r <= 0 Then Return Nothing
         ' The rounded corner whose region d is in (or nearest to).
         Dim best = -1, bestMargin = Double.NegativeInfinity

@@ -125,6 +125,7 @@ Friend NotInheritable Class Responder
         End If
         If b.Mode(i) = BodyMode.Supported AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then _rest.MakeFree(i)
         If b.Mode(i) = BodyMode.Free Then _rest.AfterSupportContact(i, n, support, edge, 0, 0, curve, before)
+        If _s.E < 1 Then CollisionLosses.Note(_s, i, before)
         _s.Changed(i)
     End Sub
 
@@ -167,6 +168,7 @@ Friend NotInheritable Class Responder
         If b.Slot(i).Mode <> BodyMode.Free OrElse b.Slot(j).Mode <> BodyMode.Free OrElse invI = 0 OrElse invJ = 0 OrElse _s.G <> 0 Then
             RestAfterHit(i, j, n, vi, vj, result.A, result.B, invI, invJ)
         End If
+        If _s.E < 1 Then CollisionLosses.Note(_s, i, vi, j, vj)
         _s.Changed(i)
         _s.Changed(j)
     End Sub

@@ -28,6 +28,12 @@ Namespace Scenes
         Friend Property IsFixed As Boolean
         ''' <summary>"#rrggbb" or Nothing.</summary>
         Friend Property Color As String
+        ''' <summary>The body's own μk and μs, or Nothing for the world's.</summary>
+        Friend Property Friction As Double?
+        Friend Property StaticFriction As Double?
+        ''' <summary>C_d and b (N·s/m) of a movable body; 0 for none.</summary>
+        Friend Property DragCoefficient As Double
+        Friend Property LinearDrag As Double
         ''' <summary>The body's shape as offsets from <see cref="Position"/>.</summary>
         Friend Property Outline As Outline
         ''' <summary>Its reference point, m (a polygon's centroid).</summary>
@@ -92,6 +98,10 @@ Namespace Scenes
                     body = If(IsFixed, Polygon.CreateFixed(Vertices, Id), New Polygon(Vertices, Mass, v, Id))
             End Select
             body.Color = Color
+            body.Friction = Friction
+            body.StaticFriction = StaticFriction
+            body.DragCoefficient = DragCoefficient
+            body.LinearDrag = LinearDrag
             Return body
         End Function
     End Class

@@ -26,11 +26,13 @@ Namespace Scenes
             Dim root = New JsonFields(ParseJson(text), "")
             CheckFormat(root)
             Dim settings = ReadWorld(root)
-            Dim bodies = ReadBodies(root)
+            Dim liquids As New List(Of LiquidSpec)
+            Dim bodies = ReadBodies(root, settings, liquids)
             If settings.Walls Then CheckInside(bodies, settings)
             OverlapCheck.Check(bodies)
+            CheckLiquids(liquids)
             Dim links = LinkReader.ReadLinks(root, bodies)
-            Return Build(settings, bodies, links)
+            Return Build(settings, bodies, liquids, links)
         End Function
 
         ''' <summary>"bodies[3]": 0-based, as in a JSON path.</summary>
@@ -133,6 +135,12 @@ Namespace Scenes
                 .Walls = f.OptionalBoolean("walls", True)}
             If s.Gravity < 0 Then Throw New SceneFormatException("world.gravity", "must be 0 or greater")
             If s.Restitution < 0 OrElse s.Restitution > 1 Then Throw New SceneFormatException("world.restitution", "must be between 0 and 1")
+            s.Friction = If(OptionalCoefficient(f, "friction"), 0.0)
+            s.StaticFriction = OptionalCoefficient(f, "static_friction")
+            If s.StaticFriction.HasValue AndAlso s.StaticFriction.Value < s.Friction Then
+                Throw New SceneFormatException("world.static_friction", "must be at least friction (" & Brief(s.Friction) & "), not " & Brief(s.StaticFriction.Value))
+            End If
+            s.AirDensity = If(OptionalCoefficient(f, "air_density"), 0.0)
             Return s
         End Function
 
@@ -141,7 +149,19 @@ Namespace Scenes
             Return value
         End Function
 
-        Private Function ReadBodies(root As JsonFields) As List(Of BodySpec)
+        ''' <summary>An optional coefficient of friction or drag (a density of air): a finite number ≥ 0, or Nothing when absent.</summary>
+        Private Function OptionalCoefficient(f As JsonFields, name As String) As Double?
+            If f.Find(name) Is Nothing Then Return Nothing
+            Dim value = f.RequiredNumber(name)
+            If value < 0 Then Throw New SceneFormatException(f.PlaceOf(name), "must be 0 or greater")
+            Return value
+        End Function
+
+        ''' <summary>
+        ''' The entries of "bodies": the bodies, in file order, and the liquid regions (entries of type "liquid",
+        ''' which share the bodies' ids and places but never collide) into <paramref name="liquids"/>.
+        ''' </summary>
+        Private Function ReadBodies(root As JsonFields, settings As WorldSettings, liquids As List(Of LiquidSpec)) As List(Of BodySpec)
             Dim e = root.Require("bodies")
             If JsonFields.JsonType(e) <> "array" Then Throw JsonFields.WrongType(e, "bodies", "an array")
             Dim bodies As New List(Of BodySpec)
@@ -151,15 +171,84 @@ Namespace Scenes
             For Each item In e.Elements()
                 Dim place = BodyPlace(index)
                 If JsonFields.JsonType(item) <> "object" Then Throw JsonFields.WrongType(item, place, "an object")
-                Dim body = ReadBody(New JsonFields(item, place), index, owners)
-                owners.Add(body.Id, index)
-                bodies.Add(body)
+                Dim f As New JsonFields(item, place)
+                If IsLiquid(f) Then
+                    Dim liquid = ReadLiquid(f, index, owners)
+                    owners.Add(liquid.Id, index)
+                    liquids.Add(liquid)
+                Else
+                    Dim body = ReadBody(f, index, owners, settings)
+                    owners.Add(body.Id, index)
+                    bodies.Add(body)
+                End If
                 index += 1
             Next
             Return bodies
         End Function
 
-        Private Function ReadBody(f As JsonFields, index As Integer, owners As Dictionary(Of String, Integer)) As BodySpec
+        ''' <summary>Whether the entry's "type" is the string "liquid" (anything else is read, and checked, as a body).</summary>
+        Private Function IsLiquid(f As JsonFields) As Boolean
+            Dim e = f.Find("type")
+            Return e IsNot Nothing AndAlso JsonFields.JsonType(e) = "string" AndAlso e.Value = "liquid"
+        End Function
+
+        ''' <summary>A liquid region: its rectangle, density (&gt; 0), drag coefficients (≥ 0) and colour.</summary>
+        Private Function ReadLiquid(f As JsonFields, index As Integer, owners As Dictionary(Of String, Integer)) As LiquidSpec
+            Dim liquid As New LiquidSpec With {.Index = index, .Id = SceneIds.ReadId(f, index, owners, "", AddressOf BodyPlace)}
+            liquid.X = f.RequiredNumber("x")
+            liquid.Y = f.RequiredNumber("y")
+            liquid.Width = Positive(f, "width", f.RequiredNumber("width"))
+            liquid.Height = Positive(f, "height", f.RequiredNumber("height"))
+            liquid.Density = Positive(f, "density", f.RequiredNumber("density"))
+            liquid.DragCoefficient = If(OptionalCoefficient(f, "drag_coefficient"), 0.0)
+            liquid.LinearDrag = If(OptionalCoefficient(f, "linear_drag"), 0.0)
+            liquid.Color = ReadColor(f)
+            Return liquid
+        End Function
+
+        ''' <summary>Liquids may not overlap each other (touching is fine): the later of the first overlapping pair is named.</summary>
+        Private Sub CheckLiquids(liquids As List(Of LiquidSpec))
+            For j = 1 To liquids.Count - 1
+                Dim b = liquids(j)
+                For i = 0 To j - 1
+                    Dim a = liquids(i)
+                    If Math.Min(a.X + a.Width, b.X + b.Width) > Math.Max(a.X, b.X) AndAlso Math.Min(a.Y + a.Height, b.Y + b.Height) > Math.Max(a.Y, b.Y) Then
+                        Throw New SceneFormatException(b.Place, "overlaps the liquid " & a.Place & " (liquids may not overlap each other)")
+                    End If
+                Next
+            Next
+        End Sub
+
+        ''' <summary>
+        ''' A body's own surface (friction, static_friction: any body, circles included, which keep them but take no
+        ''' friction) and a movable body's drag (drag_coefficient, linear_drag; on a fixed body checked and ignored).
+        ''' </summary>
+        Private Sub ReadForces(f As JsonFields, body As BodySpec, settings As WorldSettings)
+            body.Friction = OptionalCoefficient(f, "friction")
+            body.StaticFriction = OptionalCoefficient(f, "static_friction")
+            Dim kinetic = If(body.Friction, settings.Friction)
+            If body.StaticFriction.HasValue AndAlso body.StaticFriction.Value < kinetic Then
+                Throw New SceneFormatException(f.PlaceOf("static_friction"), "must be at least " & If(body.Friction.HasValue, "its friction", "world.friction") &
+                                               " (" & Brief(kinetic) & "), not " & Brief(body.StaticFriction.Value))
+            End If
+            Dim dragCoefficient = OptionalCoefficient(f, "drag_coefficient")
+            Dim linearDrag = OptionalCoefficient(f, "linear_drag")
+            If Not body.IsFixed Then
+                body.DragCoefficient = If(dragCoefficient, 0.0)
+                body.LinearDrag = If(linearDrag, 0.0)
+            End If
+        End Sub
+
+        ''' <summary>An optional "color": "#rrggbb", or Nothing.</summary>
+        Private Function ReadColor(f As JsonFields) As String
+            Dim color = f.OptionalString("color")
+            If color IsNot Nothing AndAlso Not ColorPattern.IsMatch(color) Then
+                Throw New SceneFormatException(f.PlaceOf("color"), "must be a colour ""#rrggbb"" such as ""#e53935"", not """ & color & """")
+            End If
+            Return color
+        End Function
+
+        Private Function ReadBody(f As JsonFields, index As Integer, owners As Dictionary(Of String, Integer), settings As WorldSettings) As BodySpec
             Dim typeName = f.RequiredString("type")
             Dim kind As ShapeKind
             Select Case typeName
@@ -168,7 +257,7 @@ Namespace Scenes
                 Case "segment" : kind = ShapeKind.Segment
                 Case "polygon" : kind = ShapeKind.Polygon
                 Case Else
-                    Throw New SceneFormatException(f.PlaceOf("type"), "unknown type """ & typeName & """ (expected ""circle"", ""rectangle"", ""segment"" or ""polygon"")")
+                    Throw New SceneFormatException(f.PlaceOf("type"), "unknown type """ & typeName & """ (expected ""circle"", ""rectangle"", ""segment"", ""polygon"" or ""liquid"")")
             End Select
             Dim body As New BodySpec With {.Index = index, .Kind = kind, .Id = SceneIds.ReadId(f, index, owners, "", AddressOf BodyPlace)}
             Select Case kind
@@ -212,10 +301,8 @@ Namespace Scenes
                     body.X = body.Position.X
                     body.Y = body.Position.Y
             End Select
-            body.Color = f.OptionalString("color")
-            If body.Color IsNot Nothing AndAlso Not ColorPattern.IsMatch(body.Color) Then
-                Throw New SceneFormatException(f.PlaceOf("color"), "must be a colour ""#rrggbb"" such as ""#e53935"", not """ & body.Color & """")
-            End If
+            body.Color = ReadColor(f)
+            ReadForces(f, body, settings)
             Return body
         End Function
 
@@ -301,13 +388,17 @@ Namespace Scenes
             Return value.ToString("G6", CultureInfo.InvariantCulture)
         End Function
 
-        Private Function Build(s As WorldSettings, bodies As List(Of BodySpec), links As List(Of LinkSpec)) As World
-            Dim w As New World(s.Width, s.Height, s.Gravity, s.Restitution, s.Walls)
+        Private Function Build(s As WorldSettings, bodies As List(Of BodySpec), liquids As List(Of LiquidSpec), links As List(Of LinkSpec)) As World
+            Dim w As New World(s.Width, s.Height, s.Gravity, s.Restitution, s.Walls) With {
+                .Friction = s.Friction, .StaticFriction = s.StaticFriction, .AirDensity = s.AirDensity}
             Dim shapes As New List(Of Shape)(bodies.Count)
             For Each b In bodies
                 Dim shape = b.ToShape()
                 w.Add(shape)
                 shapes.Add(shape)
+            Next
+            For Each l In liquids
+                w.Add(l.ToLiquid())
             Next
             For Each l In links
                 w.Add(l.ToLink(shapes))

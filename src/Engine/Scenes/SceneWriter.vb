@@ -18,9 +18,17 @@ Namespace Scenes
                 JsonValue("gravity", world.Gravity),
                 JsonValue("restitution", world.Restitution),
                 JsonValue("walls", world.Walls))
+            ' Friction and air only when set, so a scene without them is written as before.
+            If world.Friction <> 0 Then settings.Add(JsonValue("friction", world.Friction))
+            If world.StaticFriction.HasValue Then settings.Add(JsonValue("static_friction", world.StaticFriction.Value))
+            If world.AirDensity <> 0 Then settings.Add(JsonValue("air_density", world.AirDensity))
             Dim bodies As New XElement("bodies", New XAttribute("type", "array"))
             For Each b In world.Bodies
                 bodies.Add(BodyElement(b))
+            Next
+            ' Liquids are entries of "bodies" too (they share its ids), after the bodies.
+            For Each l In world.Liquids
+                bodies.Add(LiquidElement(l))
             Next
             Dim root = JsonObject("root", JsonValue("format", SceneReader.FormatName), settings, bodies)
             ' A scene without links is written as before, so older builds read it unchanged.
@@ -85,6 +93,23 @@ Namespace Scenes
                 e.Add(JsonValue("mass", b.Mass), JsonValue("vx", b.Velocity.X), JsonValue("vy", b.Velocity.Y))
             End If
             If b.Color IsNot Nothing Then e.Add(JsonValue("color", b.Color))
+            ' A body's own friction and drag only when it has them.
+            If b.Friction.HasValue Then e.Add(JsonValue("friction", b.Friction.Value))
+            If b.StaticFriction.HasValue Then e.Add(JsonValue("static_friction", b.StaticFriction.Value))
+            If Not b.IsFixed Then
+                If b.DragCoefficient <> 0 Then e.Add(JsonValue("drag_coefficient", b.DragCoefficient))
+                If b.LinearDrag <> 0 Then e.Add(JsonValue("linear_drag", b.LinearDrag))
+            End If
+            Return e
+        End Function
+
+        Private Function LiquidElement(l As Liquid) As XElement
+            Dim e = JsonObject("item", JsonValue("id", l.Id), JsonValue("type", "liquid"),
+                               JsonValue("x", l.Min.X), JsonValue("y", l.Min.Y), JsonValue("width", l.Width), JsonValue("height", l.Height),
+                               JsonValue("density", l.Density))
+            If l.DragCoefficient <> 0 Then e.Add(JsonValue("drag_coefficient", l.DragCoefficient))
+            If l.LinearDrag <> 0 Then e.Add(JsonValue("linear_drag", l.LinearDrag))
+            If l.Color IsNot Nothing Then e.Add(JsonValue("color", l.Color))
             Return e
         End Function
 

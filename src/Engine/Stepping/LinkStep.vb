@@ -105,6 +105,7 @@ Friend NotInheritable Class LinkStep
     ''' taut now, before the step.
     ''' </summary>
     Friend Sub AddAccelerations(acceleration As Vector())
+        DampingPower = 0
         For k = 0 To _links.Length - 1
             Dim l = _links(k)
             If l.Kind <> LinkKind.Spring Then
@@ -115,10 +116,33 @@ Friend NotInheritable Class LinkStep
                 Continue For
             End If
             Dim force = SpringForce(l)
+            If l.Damping > 0 Then
+                Dim rate = l.StretchRate
+                DampingPower += l.Damping * rate * rate
+            End If
             If _indexA(k) >= 0 Then acceleration(_indexA(k)) += force * _inverseMassA(k)
             If _indexB(k) >= 0 Then acceleration(_indexB(k)) -= force * _inverseMassB(k)
         Next
     End Sub
+
+    ''' <summary>The kinetic energy (J) that strings snapping taut with e &lt; 1 took in the last <see cref="Constrain"/>.</summary>
+    Friend Property SnapLoss As Double
+
+    ''' <summary>Σ ½ m v² (J) of the movable bodies at the ends of the links that act in this step.</summary>
+    Private Function KineticOfActive(bodies As IReadOnlyList(Of Shape)) As Double
+        Dim seen As New HashSet(Of Integer)
+        Dim sum = 0.0
+        For k = 0 To _links.Length - 1
+            If Not _active(k) Then Continue For
+            For Each i In {_indexA(k), _indexB(k)}
+                If i >= 0 AndAlso seen.Add(i) Then sum += bodies(i).KineticEnergy
+            Next
+        Next
+        Return sum
+    End Function
+
+    ''' <summary>The rate (W) at which the springs' damping took energy at the last <see cref="AddAccelerations"/>: Σ c ḋ².</summary>
+    Friend Property DampingPower As Double
 
     ''' <summary>
     ''' The force on end A, N: k (d − L) + c ḋ along the unit vector from A to B (so positive pulls A
@@ -140,6 +164,7 @@ Friend NotInheritable Class LinkStep
     ''' given) every body it moved or pushed.
     ''' </summary>
     Friend Sub Constrain(h As Double, restitution As Double, bodies As IReadOnlyList(Of Shape), touched As Boolean())
+        SnapLoss = 0
         If _links.Length = 0 Then Return
         ProjectPositions(h, bodies)
         CorrectVelocities(h, restitution, bodies, touched)
@@ -238,6 +263,15 @@ Friend NotInheritable Class LinkStep
             End If
         Next
         If Not any Then Return
+        ' A string snapping taut with e < 1 is an inelastic collision: what the sweeps take from the kinetic energy of
+        ' the bodies they move is counted (SnapLoss), only then, so a rod's or taut string's own correction is not.
+        Dim snapping = False
+        If restitution < 1 Then
+            For k = 0 To _links.Length - 1
+                If _active(k) AndAlso Not _wasTaut(k) Then snapping = True
+            Next
+        End If
+        Dim kineticBefore = If(snapping, KineticOfActive(bodies), 0.0)
         For sweep = 1 To MaxSweeps
             Dim largest = 0.0, change = 0.0
             For k = 0 To _links.Length - 1
@@ -253,6 +287,7 @@ Friend NotInheritable Class LinkStep
             Next
             If change <= Tolerance * largest Then Exit For
         Next
+        If snapping Then SnapLoss = Math.Max(kineticBefore - KineticOfActive(bodies), 0)
         For k = 0 To _links.Length - 1
             If Not _active(k) Then Continue For
             ' The pull that gives this impulse over the step, N.

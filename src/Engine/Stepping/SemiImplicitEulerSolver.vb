@@ -21,6 +21,8 @@ Public NotInheritable Class SemiImplicitEulerSolver
     Private ReadOnly _links As New LinkStep()
     ' Each movable body's acceleration in the current step, m/s² (used only when the world has links).
     Private _acceleration As Vector() = Array.Empty(Of Vector)()
+    ' Drag and buoyancy, read from the world once per advance; Nothing when there are none.
+    Private _forces As ForceField
     Private _world As World
 
     ''' <param name="timeStep">sub-step, s, &gt; 0</param>
@@ -63,13 +65,16 @@ Public NotInheritable Class SemiImplicitEulerSolver
         Dim t0 = _world.Time
         If Not (duration > 0) Then Return t0
         _links.Prepare(_world)
+        _forces = If(_world.HasDragOrLiquids, New ForceField(_world), Nothing)
+        _contacts.Prepare(_world)
         Dim n = SubSteps.Count(duration, _dt)
         For k = 1L To n
             Dim h = SubSteps.Length(k, n, duration, _dt)
             Dim offset = SubSteps.EndOffset(k, n, duration, _dt)
-            If _links.HasLinks Then
+            If _links.HasLinks OrElse _forces IsNot Nothing Then
                 IntegrateLinked(h, duration - offset + h)
                 _links.Constrain(h, _world.Restitution, _world.Movables, Nothing)
+                _world.Dissipate(_links.SnapLoss)
             Else
                 Integrate(h, duration - offset + h)
             End If
@@ -96,7 +101,10 @@ Public NotInheritable Class SemiImplicitEulerSolver
 
     ''' <summary>
     ''' As <see cref="Integrate"/>, with each spring's pull (from the positions and velocities at the start
-    ''' of the step) added to gravity: v += (g + F/m) h, then x += v h.
+    ''' of the step) and buoyancy added to gravity: v += (g + F/m) h, then x += v h. Drag, −c v, is taken at
+    ''' the new velocity (v' = (v + a h)/(1 + c h/m)), so that even a drag far too strong for the step (c h/m
+    ''' ≫ 1: a small ball in syrup) only slows the body, as it should, instead of reversing it a little more
+    ''' every step; the energy it takes, c |v'|² h, is added to <see cref="World.Dissipated"/>.
     ''' </summary>
     Private Sub IntegrateLinked(h As Double, remaining As Double)
         Dim bodies = _world.Movables
@@ -106,6 +114,8 @@ Public NotInheritable Class SemiImplicitEulerSolver
             _acceleration(i) = gravity
         Next
         _links.AddAccelerations(_acceleration)
+        ' What the springs' damping takes over the step, c ḋ² h (at the step's start, as the forces are).
+        _world.Dissipate(_links.DampingPower * h)
         Dim dragged = _world.DraggedBody
         For i = 0 To bodies.Count - 1
             Dim b = bodies(i)
@@ -114,6 +124,12 @@ Public NotInheritable Class SemiImplicitEulerSolver
                 Continue For
             End If
             Dim v = b.Velocity + _acceleration(i) * h
+            If _forces IsNot Nothing AndAlso _forces.Acts(b) Then
+                Dim resistance As Double, lift As Double
+                _forces.Evaluate(b, b.Position, b.Velocity, resistance, lift)
+                v = New Vector(v.X, v.Y + lift * b.InverseMass * h) / (1 + resistance * b.InverseMass * h)
+                _world.Dissipate(resistance * v.LengthSquared * h)
+            End If
             b.Velocity = v
             b.Position += v * h
         Next

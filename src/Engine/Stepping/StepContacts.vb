@@ -42,6 +42,13 @@ Friend NotInheritable Class StepContacts
     Private _moved As Boolean
     ' Per body: the sum of the normals of what holds it (fixed bodies, walls, bodies that are held), or zero.
     Private _support As Vector() = Array.Empty(Of Vector)()
+    ' Whether any contact can have friction this step (the world's μk, or some body's own, is above 0).
+    Private _friction As Boolean
+    ' Whether collisions can lose energy this step (e < 1, or friction): then what they take is added to World.Dissipated.
+    Private _lossy As Boolean
+    ' The step, s, and how much of a friction impulse's velocity change the step's move would have carried
+    ' (1 for semi-implicit Euler, whose x += v h uses the new velocity; ½ for Verlet, whose move is v h + ½ a h²).
+    Private _h As Double
     Private _pairKeys As Double() = Array.Empty(Of Double)()
     Private _pairOrder As (A As Integer, B As Integer)() = Array.Empty(Of (A As Integer, B As Integer))()
 
@@ -62,6 +69,8 @@ Friend NotInheritable Class StepContacts
         ' (after an e = 0 collision, say) from being reported as collisions when g = 0.
         _restingSpeed = 2 * _gravity * h + MinimumSpeed
         _touched = touched
+        _h = h
+        _lossy = world.Restitution < 1 OrElse _friction
         Dim bodies = _bodies
         If _support.Length < bodies.Count Then
             _support = New Vector(bodies.Count - 1) {}
@@ -94,6 +103,22 @@ Friend NotInheritable Class StepContacts
             ResolveFixed()
             If Not _moved Then Exit For
         Next
+    End Sub
+
+    ''' <summary>
+    ''' What a friction impulse's velocity change moves the body by within the step, as a fraction of that change
+    ''' times the step: 1 for semi-implicit Euler (its move uses the new velocity), ½ for Verlet (a force acting
+    ''' through the step moves a body ½ (F/m) h²). Without it a block held by static friction on a ramp would
+    ''' creep down by what gravity's part moved it in each step before the contact stopped it.
+    ''' </summary>
+    Friend Property FrictionShare As Double = 1.0
+
+    ''' <summary>
+    ''' Reads, once per advance, whether any contact can have friction (<see cref="World.HasFriction"/>). Without, the
+    ''' contacts do no friction work at all.
+    ''' </summary>
+    Friend Sub Prepare(world As World)
+        _friction = world.HasFriction
     End Sub
 
     Private Sub ResolvePairs()
@@ -334,6 +359,7 @@ Friend NotInheritable Class StepContacts
         ' A body held up from below moves at no more than the resting speed; taking it as still keeps the
         ' support pass from handing that jitter (as energy) to the bodies resting on it.
         Dim vb = If(bMovable AndAlso Not support, b.Velocity, Vector.Zero)
+        Dim vbBefore = vb
         Dim separation = Vector.Dot(va - vb, n) ' m/s, > 0 when moving apart
         If bImmovable AndAlso _gravity > 0 AndAlso shiftA <> 0 Then
             ' Pushing A out of something immovable lifts it by shiftA·n_y: m g shiftA n_y of potential energy
@@ -348,6 +374,9 @@ Friend NotInheritable Class StepContacts
         If separation < 0 Then
             Dim resting = support OrElse -separation <= _restingSpeed
             Dim result = Impulse.Resolve(va, invA, vb, invB, n, If(resting, 0.0, _world.Restitution))
+            ' What the blow took: ½ μ (1 − e²) u², the kinetic energy of the pair before less after. Not a resting
+            ' contact's: that only takes back the speed the step's own fall gave (its height is given back too).
+            If _lossy AndAlso Not resting Then _world.Dissipate(Energy(va, invA, vb, invB) - Energy(result.A, invA, result.B, invB))
             va = result.A
             If invB > 0 Then
                 b.Velocity = result.B
@@ -358,6 +387,9 @@ Friend NotInheritable Class StepContacts
                                                            If(bMovable, b.Velocity, Vector.Zero)))
             End If
         End If
+        If _friction AndAlso a.Kind <> ShapeKind.Circle AndAlso (b Is Nothing OrElse b.Kind <> ShapeKind.Circle) Then
+            va = Rub(ib, a, b, n, before, vbBefore, va, invA, invB)
+        End If
         If va <> before Then
             a.Velocity = va
             MarkTouched(ia)
@@ -365,6 +397,49 @@ Friend NotInheritable Class StepContacts
         ' Resting on something immovable (or on a body that is): the bodies resting on A can lean on it.
         If bImmovable AndAlso Math.Abs(Vector.Dot(va - vb, n)) <= _restingSpeed Then _support(ia) += n
     End Sub
+
+    ''' <summary>Kinetic energy (J) of two bodies of inverse masses invA, invB (1/kg; 0 counts nothing) at velocities va, vb.</summary>
+    Private Shared Function Energy(va As Vector, invA As Double, vb As Vector, invB As Double) As Double
+        Return If(invA > 0, 0.5 * va.LengthSquared / invA, 0) + If(invB > 0, 0.5 * vb.LengthSquared / invB, 0)
+    End Function
+
+    ''' <summary>
+    ''' Coulomb friction at a contact just resolved (docs/forces.md, "Friction in the stepping solvers"). The normal
+    ''' impulse is what the contact did to the bodies' speed towards each other in this step, j_n = m_eff Δu (the
+    ''' blow and the lift's correction alike: on a resting body that is m g cos θ h, its weight's part into the
+    ''' surface over the step); friction then gives at most μs j_n to stop the slip, else μk j_n against it
+    ''' (<see cref="ContactFriction.TangentialImpulse"/>), with μ the geometric mean of the two surfaces'. The
+    ''' bodies' positions move with the velocity change as the step's move would have carried it
+    ''' (<see cref="FrictionShare"/>). Returns A's new velocity (B's is set here); the energy it takes is
+    ''' added to <see cref="World.Dissipated"/>: the impulse times the slip that remains, the work of the
+    ''' friction over the step's move.
+    ''' </summary>
+    Private Function Rub(ib As Integer, a As Shape, b As Shape, n As Vector, vaStart As Vector, vbStart As Vector, va As Vector,
+                         invA As Double, invB As Double) As Vector
+        Dim sumInv = invA + invB
+        Dim vb = If(invB > 0, b.Velocity, vbStart)
+        Dim pressed = (Vector.Dot(va - vb, n) - Vector.Dot(vaStart - vbStart, n)) / sumInv
+        If Not (pressed > 0) Then Return va
+        Dim w = va - vb
+        Dim slipping = w - n * Vector.Dot(w, n)
+        Dim slip = slipping.Length
+        If Not (slip > 0) Then Return va
+        Dim muK = ContactFriction.Mean(_world.KineticFrictionOf(a), _world.KineticFrictionOf(b))
+        Dim muS = ContactFriction.Mean(_world.StaticFrictionOf(a), _world.StaticFrictionOf(b))
+        Dim jt = ContactFriction.TangentialImpulse(slip, 1 / sumInv, pressed, muS, muK)
+        If jt <= 0 Then Return va
+        Dim kick = slipping * (-jt / slip) ' on A; B takes the opposite
+        Dim shift = _h * FrictionShare
+        va += kick * invA
+        If invA > 0 Then a.Position += kick * (invA * shift)
+        If invB > 0 Then
+            b.Velocity -= kick * invB
+            b.Position -= kick * (invB * shift)
+            MarkTouched(ib)
+        End If
+        _world.Dissipate(jt * Math.Max(slip - jt * sumInv, 0))
+        Return va
+    End Function
 
     Private Sub MarkTouched(i As Integer)
         _moved = True

@@ -34,12 +34,21 @@ Public NotInheritable Class VerletSolver
     Private ReadOnly _links As New LinkStep()
     ' Each movable body's acceleration in the current step, m/s² (used only when the world has links).
     Private _acceleration As Vector() = Array.Empty(Of Vector)()
+    ' Drag and buoyancy, read from the world once per advance; Nothing when there are none.
+    Private _forces As ForceField
+    ' Per body, in the step under way: whether drag is split off for it, and the buoyancy (N) at the step's start.
+    Private _dragged As Boolean() = Array.Empty(Of Boolean)()
+    Private _lift As Double() = Array.Empty(Of Double)()
+    ' Per body: seeded from its velocity at this advance's start (its forces besides gravity not yet known then).
+    Private _fresh As Boolean() = Array.Empty(Of Boolean)()
 
     ''' <param name="timeStep">sub-step, s, &gt; 0</param>
     Public Sub New(Optional timeStep As Double = DefaultTimeStep)
         If Not (timeStep > 0) OrElse Double.IsInfinity(timeStep) Then Throw New ArgumentOutOfRangeException(NameOf(timeStep), "time step must be a finite number greater than 0")
         _dt = timeStep
         _hPrevious = timeStep
+        ' A friction impulse acting through a step moves a body ½ (Δv) h, as any force does in Verlet's x += v h + ½ a h².
+        _contacts.FrictionShare = 0.5
     End Sub
 
     ''' <summary>"verlet".</summary>
@@ -84,15 +93,18 @@ Public NotInheritable Class VerletSolver
         If Not (duration > 0) Then Return t0
         LoadPrevious()
         _links.Prepare(_world)
+        _forces = If(_world.HasDragOrLiquids, New ForceField(_world), Nothing)
+        _contacts.Prepare(_world)
         Dim n = SubSteps.Count(duration, _dt)
         Dim reached = t0 + duration
         For k = 1L To n
             Dim h = SubSteps.Length(k, n, duration, _dt)
             Dim offset = SubSteps.EndOffset(k, n, duration, _dt)
             If h > 0 Then
-                If _links.HasLinks Then
+                If _links.HasLinks OrElse _forces IsNot Nothing Then
                     IntegrateLinked(h, duration - offset + h)
                     _links.Constrain(h, _world.Restitution, _world.Movables, _touched)
+                    _world.Dissipate(_links.SnapLoss)
                     _contacts.Resolve(_world, t0 + offset, h, _touched)
                     ReseedTouchedLinked(h)
                 Else
@@ -142,9 +154,12 @@ Public NotInheritable Class VerletSolver
     End Sub
 
     ''' <summary>
-    ''' As <see cref="Integrate"/>, with each body's own acceleration: gravity plus its springs' pull divided
-    ''' by its mass, read from the positions and velocities at the start of the step (Störmer–Verlet with
-    ''' forces that depend on position, still symplectic for springs).
+    ''' As <see cref="Integrate"/>, with each body's own acceleration: gravity plus its springs' pull and buoyancy
+    ''' divided by its mass, read from the positions and velocities at the start of the step (Störmer–Verlet with
+    ''' forces that depend on position, still symplectic for springs and buoyancy). Drag, −c v, is split off
+    ''' (Strang splitting): half a step of it alone, v × e^(−c h/(2m)), which is exact for −c v and can only slow
+    ''' the body however strong the drag, then the Verlet step, then the other half. Second order, like the rest.
+    ''' The kinetic energy each half takes is added to <see cref="World.Dissipated"/>.
     ''' </summary>
     Private Sub IntegrateLinked(h As Double, remaining As Double)
         Dim bodies = _world.Movables
@@ -155,6 +170,14 @@ Public NotInheritable Class VerletSolver
             _acceleration(i) = gravity
         Next
         _links.AddAccelerations(_acceleration)
+        ' What the springs' damping takes over the step, c ḋ² h (at the step's start, as the forces are).
+        _world.Dissipate(_links.DampingPower * h)
+        If _dragged.Length < bodies.Count Then
+            _dragged = New Boolean(bodies.Count - 1) {}
+            _lift = New Double(bodies.Count - 1) {}
+        End If
+        Array.Clear(_dragged, 0, bodies.Count)
+        If _forces IsNot Nothing Then AddForces(h)
         If h > _hPrevious * MaxStepRatio Then
             For i = 0 To bodies.Count - 1
                 _prev(i) = SeedWith(bodies(i), h, _acceleration(i))
@@ -177,6 +200,65 @@ Public NotInheritable Class VerletSolver
             _prev(i) = x
             c.Position = xNext
             c.Velocity = (xNext - x) / h + a * (h / 2)
+            If _dragged(i) Then FinishDragStep(c, i, h)
+        Next
+        Array.Clear(_fresh, 0, bodies.Count)
+    End Sub
+
+    ''' <summary>
+    ''' The end of a step of a body whose drag is split off: its velocity as velocity Verlet gives it (the average of
+    ''' buoyancy at the two ends of the step, which the position formula took at the start only), then the second
+    ''' half-step of drag. Its history is re-seeded from the velocity it leaves.
+    ''' </summary>
+    Private Sub FinishDragStep(c As Shape, i As Integer, h As Double)
+        Dim resistance As Double, lift As Double
+        _forces.Evaluate(c, c.Position, c.Velocity, resistance, lift)
+        c.Velocity += New Vector(0, 0.5 * (lift - _lift(i)) * c.InverseMass * h)
+        Slow(c, DragFactor(c, h))
+        _touched(i) = True
+    End Sub
+
+    ''' <summary>
+    ''' The factor by which half a step of drag alone slows a body: e^(−c h/(2m)), with c taken at the middle of that half
+    ''' (midpoint rule; c grows with speed for quadratic drag), so each half, and the whole split step, is second order.
+    ''' </summary>
+    Private Function DragFactor(body As Shape, h As Double) As Double
+        Dim resistance As Double, lift As Double
+        _forces.Evaluate(body, body.Position, body.Velocity, resistance, lift)
+        Dim quarter = Math.Exp(-0.25 * resistance * body.InverseMass * h)
+        _forces.Evaluate(body, body.Position, body.Velocity * quarter, resistance, lift)
+        Return Math.Exp(-0.5 * resistance * body.InverseMass * h)
+    End Function
+
+    ''' <summary>Multiplies a body's velocity by <paramref name="factor"/> (≤ 1), adding the kinetic energy that takes to <see cref="World.Dissipated"/>.</summary>
+    Private Sub Slow(body As Shape, factor As Double)
+        Dim v = body.Velocity
+        body.Velocity = v * factor
+        _world.Dissipate(0.5 * body.Mass * v.LengthSquared * (1 - factor * factor))
+    End Sub
+
+    ''' <summary>
+    ''' Adds buoyancy ÷ mass to each movable body's acceleration of this step (the dragged body aside). A body that
+    ''' some drag can act on takes its first half-step of drag, and its previous position is re-seeded to match; a
+    ''' body seeded at this advance's start from gravity alone is re-seeded with its whole acceleration.
+    ''' </summary>
+    Private Sub AddForces(h As Double)
+        Dim bodies = _world.Movables
+        Dim dragged = _world.DraggedBody
+        For i = 0 To bodies.Count - 1
+            Dim b = bodies(i)
+            If b Is dragged OrElse Not _forces.Acts(b) Then Continue For
+            Dim resistance As Double, lift As Double
+            _forces.Evaluate(b, b.Position, b.Velocity, resistance, lift)
+            _acceleration(i) += New Vector(0, lift * b.InverseMass)
+            _lift(i) = lift
+            If _forces.CanDrag(b) Then
+                _dragged(i) = True
+                Slow(b, DragFactor(b, h))
+                _prev(i) = SeedWith(b, _hPrevious, _acceleration(i))
+            ElseIf _fresh(i) Then
+                _prev(i) = SeedWith(b, _hPrevious, _acceleration(i))
+            End If
         Next
     End Sub
 
@@ -212,11 +294,13 @@ Public NotInheritable Class VerletSolver
         If _prev.Length < bodies.Count Then
             _prev = New Vector(bodies.Count - 1) {}
             _touched = New Boolean(bodies.Count - 1) {}
+            _fresh = New Boolean(bodies.Count - 1) {}
         End If
         For i = 0 To bodies.Count - 1
             Dim c = bodies(i)
             Dim p As Vector
-            _prev(i) = If(_previous.TryGetValue(c, p), p, Seed(c, _hPrevious))
+            _fresh(i) = Not _previous.TryGetValue(c, p)
+            _prev(i) = If(_fresh(i), Seed(c, _hPrevious), p)
         Next
     End Sub
 

@@ -95,8 +95,8 @@ Public Class SceneErrorTests
     <InlineData("[1]", "bodies[0]: must be an object, not a number")>
     <InlineData("[{'type':'circle','x':1,'y':1,'radius':0.1,'mass':1},[]]", "bodies[1]: must be an object, not an array")>
     <InlineData("[{'x':1,'y':1,'radius':0.1,'mass':1}]", "bodies[0].type: is required")>
-    <InlineData("[{'type':'triangle','x':1,'y':1}]", "bodies[0].type: unknown type ""triangle"" (expected ""circle"", ""rectangle"", ""segment"" or ""polygon"")")>
-    <InlineData("[{'type':'Circle','x':1,'y':1,'radius':0.1,'mass':1}]", "bodies[0].type: unknown type ""Circle"" (expected ""circle"", ""rectangle"", ""segment"" or ""polygon"")")>
+    <InlineData("[{'type':'triangle','x':1,'y':1}]", "bodies[0].type: unknown type ""triangle"" (expected ""circle"", ""rectangle"", ""segment"", ""polygon"" or ""liquid"")")>
+    <InlineData("[{'type':'Circle','x':1,'y':1,'radius':0.1,'mass':1}]", "bodies[0].type: unknown type ""Circle"" (expected ""circle"", ""rectangle"", ""segment"", ""polygon"" or ""liquid"")")>
     <InlineData("[{'type':3,'x':1,'y':1}]", "bodies[0].type: must be a string, not a number")>
     <InlineData("[{'type':'circle','y':1,'radius':0.1,'mass':1}]", "bodies[0].x: is required")>
     <InlineData("[{'type':'circle','x':1,'radius':0.1,'mass':1}]", "bodies[0].y: is required")>

@@ -47,6 +47,8 @@ Friend NotInheritable Class ConstrainedMotion
     Private Const IndependenceMargin As Double = 0.00000001
 
     Private ReadOnly _gravity As Double
+    ' Drag and buoyancy on the bodies (docs/forces.md), or Nothing.
+    Private ReadOnly _forces As ForceField
     Private ReadOnly _n As Integer
     Private ReadOnly _inverseMass As Double()
     Private ReadOnly _springs As Link()
@@ -99,8 +101,10 @@ Friend NotInheritable Class ConstrainedMotion
     ''' <paramref name="size"/> (m) is a length of the group's size, for its first step.
     ''' </summary>
     Friend Sub New(bodies As Shape(), links As List(Of Link), contacts As IEnumerable(Of Constraint), startTime As Double, gravity As Double,
-                   released As Object, size As Double, Optional touching As IEnumerable(Of Constraint) = Nothing)
+                   released As Object, size As Double, Optional touching As IEnumerable(Of Constraint) = Nothing,
+                   Optional forces As ForceField = Nothing)
         MyBase.New(bodies, startTime)
+        _forces = forces
         _gravity = gravity
         _n = bodies.Length
         _inverseMass = bodies.Select(Function(b) b.InverseMass).ToArray()
@@ -246,6 +250,7 @@ Friend NotInheritable Class ConstrainedMotion
                 d(4 * b + 3) -= force.Y * _inverseMass(b)
             End If
         Next
+        If _forces IsNot Nothing Then BodyForceTerm.Add(_forces, Bodies, y, d)
         Return d
     End Function
 

@@ -25,9 +25,12 @@ Friend NotInheritable Class IntegratedMotion
     Private ReadOnly _states As New List(Of Double())
     Private ReadOnly _accelerations As New List(Of Double())
     Private _step As Double
+    ' Drag and buoyancy on the bodies (docs/forces.md), or Nothing.
+    Private ReadOnly _forces As ForceField
 
-    Friend Sub New(bodies As Shape(), links As List(Of Link), startTime As Double, gravity As Double)
+    Friend Sub New(bodies As Shape(), links As List(Of Link), startTime As Double, gravity As Double, Optional forces As ForceField = Nothing)
         MyBase.New(bodies, startTime)
+        _forces = forces
         _links = links.ToArray()
         _gravity = gravity
         _n = bodies.Length
@@ -79,6 +82,7 @@ Friend NotInheritable Class IntegratedMotion
                 d(4 * b + 3) -= fb.Y
             End If
         Next
+        If _forces IsNot Nothing Then BodyForceTerm.Add(_forces, Bodies, y, d)
         Return d
     End Function
 

@@ -12,6 +12,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ' the acceleration pressing them) may be held: a bounce that small is the end of a series of ever smaller
     ' bounces, which has a finite sum but endless terms.
     Private Const BounceSlops As Double = 4
+    ' A bounce slower than this fraction of its bodies' speeds may be held too.
+    Private Const CrumbFraction As Double = 0.000001
+    ' A body held on a level face is put exactly on it when it is within this many slops of it (pressed a little in
+    ' by the bounces that ended there, or a rounding off).
+    Private Const SnapSlops As Double = 16
     ' A speed within this fraction of the group's own speeds is rounding: after its contacts' rates are taken away,
     ' a body at rest keeps none of it.
     Private Const RoundingFraction As Double = 0.000000000000001
@@ -45,8 +50,10 @@ Partial Friend NotInheritable Class LinkedEventSolver
         '    bodies touches where it may last.
         Dim inSet As New HashSet(Of Integer)(seeds)
         Dim order As New List(Of Integer)(seeds)
-        ' What the gaps read while this works: the seeds' states now, not their old motions'.
+        ' What the gaps read while this works: the seeds' states now, not their old motions' (whose account of the
+        ' energy drag and damping took is settled first).
         For Each g In seeds
+            _ledger.Settle(_groups(g), _world, t)
             _groups(g).Motion = New SnapshotMotion(_groups(g).Motion.Bodies, t)
         Next
         Dim touches As New List(Of Touch)
@@ -71,6 +78,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                     If Not inSet.Contains(gj) Then
                         If Not MayTouch(i, j) Then Continue For
                         Sync(gj, t)
+                        _ledger.Settle(_groups(gj), _world, t)
                     End If
                     If AddIfLasting(touches, Math.Min(i, j), Math.Max(i, j), WallSide.None, -1, t, released) AndAlso inSet.Add(gj) Then order.Add(gj)
                 Next
@@ -108,6 +116,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             If c IsNot Nothing Then rows.Add(c)
         Next
 
+        Dim kinetic = DissipationLedger.Kinetic(shapes)
         ' 4. No contact approaches and no rod stretches: the least change of the velocities (in the kinetic-energy
         '    metric) that makes it so, which rounding alone has made necessary.
         StopApproaches(shapes, rows, y)
@@ -116,6 +125,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
         '    off the end of its face is moved onto the feature it goes onto, and the forces found again.
         Dim pressing = PressingRows(shapes, links, rows, y, touches, local)
         HoldRates(shapes, pressing, rows, y)
+        ' What the last crumb of a bounce, taken away, held (never more than a bounce of four slops).
+        Dim crumb = kinetic - DissipationLedger.Kinetic(shapes)
+        If crumb > 0 Then _world.Dissipate(crumb)
 
         ' 6. The groups: bodies joined by links or by a contact that presses.
         Dim parent = Enumerable.Range(0, members.Count).ToArray()
@@ -156,6 +168,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Next
         For g = 0 To made.Count - 1
             made(g).Motion = MotionFor(made(g), contactsOf(g), touchingOf(g), t, released)
+            _ledger.Started(made(g), _world)
         Next
 
         ' 8. In place of the groups they came from.
@@ -209,7 +222,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
         If rate < -(CreepSpeed + 0.000000001 * speeds) Then Return False
         Dim press = Math.Max(_world.Gravity, MotionOf(i).AccelerationBound(_slotOf(i), t, t) + If(j >= 0, MotionOf(j).AccelerationBound(_slotOf(j), t, t), 0))
-        If rate > Math.Sqrt(2 * press * BounceSlops * Slop) Then Return False
+        ' Or a bounce far too slow to matter beside the bodies' own speeds (pressed by almost nothing, the four slops
+        ' would allow any bounce at all): holding it takes a 10⁻¹² part of their kinetic energy at most.
+        If rate > Math.Max(Math.Sqrt(2 * press * BounceSlops * Slop), CrumbFraction * speeds) Then Return False
         touches.Add(New Touch With {.Key = key, .Body = i, .Other = j, .Side = side, .Fixed = f})
         Return True
     End Function
@@ -332,11 +347,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Return a.Shape = b.Shape AndAlso a.Normal = b.Normal AndAlso a.Length = b.Length
     End Function
 
-    ''' <summary>Each body's acceleration (m/s²) from gravity and the springs alone, at state <paramref name="y"/>.</summary>
+    ''' <summary>Each body's acceleration (m/s²) from gravity, the springs, drag and buoyancy alone, at state <paramref name="y"/>.</summary>
     Private Function FreeAccelerations(shapes As Shape(), links As List(Of Link), y As Double()) As Vector()
         Dim a(shapes.Length - 1) As Vector
         For k = 0 To shapes.Length - 1
-            a(k) = New Vector(0, -_world.Gravity)
+            a(k) = New Vector(0, -_world.Gravity) + ForcedMotions.Acceleration(shapes(k), _world)
         Next
         For Each l In links
             If l.Kind <> LinkKind.Spring Then Continue For
@@ -364,11 +379,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim bodies = group.Bodies.ToArray()
         If contacts.Count = 0 Then Return LinkedMotions.Create(group, _world, t, released, Slop)
         SnapToLevelFaces(contacts)
-        If group.Links.Count = 0 AndAlso contacts.All(Function(c) c.Shape = ConstraintShape.Plane) Then
+        ' Drag and buoyancy change as the bodies move: such a group is integrated, however flat its faces.
+        Dim forces = ForcedMotions.FieldFor(group, _world)
+        If forces Is Nothing AndAlso group.Links.Count = 0 AndAlso contacts.All(Function(c) c.Shape = ConstraintShape.Plane) Then
             Return New UniformMotion(bodies, contacts.ToArray(), t, _world.Gravity)
         End If
         Dim size = bodies.Min(Function(b) Math.Min(b.Outline.MaxX - b.Outline.MinX, b.Outline.MaxY - b.Outline.MinY))
-        Dim m = New ConstrainedMotion(bodies, group.Links, contacts, t, _world.Gravity, released, size, touching)
+        Dim m = New ConstrainedMotion(bodies, group.Links, contacts, t, _world.Gravity, released, size, touching, forces)
         ' At rest, every force balanced: nothing changes until something reaches it, so nothing is integrated.
         If m.IsStill(UniformMotion.RestFraction) Then Return New UniformMotion(bodies, m.HeldContacts, m.HeldLinks, m.StartTensions, m.SlackLinks, t)
         Return m
@@ -417,7 +434,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 End Select
                 Dim q = _bodies(i).Position
                 Dim across = If(n.X = 0, q.Y, q.X)
-                If Math.Abs(across - support) > Slop Then Continue For
+                If Math.Abs(across - support) > SnapSlops * Slop Then Continue For
                 _bodies(i).Position = If(n.X = 0, New Vector(q.X, support), New Vector(support, q.Y))
                 placed.Add(i)
                 moved = True

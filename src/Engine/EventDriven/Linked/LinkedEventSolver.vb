@@ -43,6 +43,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Const ClockEvery As Integer = 16
 
     Private ReadOnly _impulse As New LinkedImpulse()
+    ' The energy drag, spring damping and inelastic blows take out of the world (World.Dissipated).
+    Private ReadOnly _ledger As New DissipationLedger()
     Private _world As World
     Private _dirty As Boolean = True
     Private _now As Double
@@ -273,6 +275,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         For g = 0 To _groups.Count - 1
             Sync(g, t)
             _groups(g).Motion.UpdateTensions(t)
+            _ledger.Settle(_groups(g), _world, t)
         Next
     End Sub
 
@@ -312,8 +315,10 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If m.LookFurther(t) Then Return
         Sync(g, t)
         Dim before = m.Bodies.Select(Function(b) b.Velocity).ToArray()
+        Dim kinetic = DissipationLedger.Kinetic(m.Bodies)
         m.Snapped = Nothing
         m.Transition(_world)
+        DissipationLedger.Blow(_world, kinetic, m.Bodies)
         Dim l = m.Snapped
         If l IsNot Nothing Then
             Dim a = Array.IndexOf(m.Bodies, l.A), b = If(l.IsAnchored, -1, Array.IndexOf(m.Bodies, l.B))
@@ -372,6 +377,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             AddHeldRows(g)
         Next
         If wedged Then groups = AddTouchingContacts(i, j, side, f, t, groups)
+        Dim kinetic = _impulse.KineticEnergy
         If wedged Then _impulse.ResolveWedged(_world.Restitution) Else _impulse.Resolve()
         ' A corner on a corner whose blow along the bisector still leaves it closing on both faces there (the other
         ' rows held it back) is a blow on the two faces at once, resolved as wedged bodies are (Poisson's rule).
@@ -381,6 +387,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _impulse.AddContact(a, b, second, _world.Restitution)
             _impulse.ResolveWedged(_world.Restitution)
         End If
+        If _world.Restitution < 1 Then _world.Dissipate(kinetic - _impulse.KineticEnergy)
         Dim other = If(b, If(f >= 0, _fixed(f), Nothing))
         _reports.Add(New CollisionRecord(t, a, other, side, CollisionKinds.Between(a, other), aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
         Repredict(Regroup(groups, t, Nothing), tEnd)

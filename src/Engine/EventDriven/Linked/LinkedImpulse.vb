@@ -31,6 +31,17 @@ Friend NotInheritable Class LinkedImpulse
         Public Impulse As Double
     End Structure
 
+    ''' <summary>Σ ½ m v² of the bodies of the blow, at their velocities so far (before it, or after it once resolved), J.</summary>
+    Friend ReadOnly Property KineticEnergy As Double
+        Get
+            Dim sum = 0.0
+            For i = 0 To _bodies.Count - 1
+                sum += 0.5 * _bodies(i).Mass * _velocities(i).LengthSquared
+            Next
+            Return sum
+        End Get
+    End Property
+
     ''' <summary>Forgets the rows of the previous collision.</summary>
     Friend Sub Clear()
         _bodies.Clear()

@@ -17,7 +17,10 @@ Friend Module LinkedMotions
         Dim g = world.Gravity
         Dim slack = released IsNot Nothing AndAlso group.Links.Contains(TryCast(released, Link))
         Dim a = group.Bodies(0)
-        ' A free body that rests has had its motion chosen already (LinkedEventSolver.Rest.vb): this one flies.
+        ' Drag or buoyancy: its closed form (linear drag alone) or its integral (docs/forces.md).
+        Dim forced = ForcedMotions.Create(group, world, time, released)
+        If forced IsNot Nothing Then Return forced
+        ' A group that holds no contact: a free body flies.
         If group.Links.Count = 0 Then Return New FlightMotion(a, time, g)
         Dim l = group.Links(0)
         If OnlySprings(group) Then
@@ -25,8 +28,7 @@ Friend Module LinkedMotions
             Return New IntegratedMotion(group.Bodies.ToArray(), group.Links, time, g)
         End If
         If IsChain(group) Then
-            Dim size = group.Bodies.Min(Function(body) Math.Min(body.Outline.MaxX - body.Outline.MinX, body.Outline.MaxY - body.Outline.MinY))
-            Return New ConstrainedMotion(group.Bodies.ToArray(), group.Links, Array.Empty(Of Constraint)(), time, g, released, size)
+            Return New ConstrainedMotion(group.Bodies.ToArray(), group.Links, Array.Empty(Of Constraint)(), time, g, released, ForcedMotions.Size(group))
         End If
         If group.Bodies.Count = 1 Then
             Select Case l.Kind
