@@ -6,7 +6,8 @@ Imports Xunit
 ''' <summary>
 ''' run with links, with every solver: a pendulum on a string ends where the elliptic closed form puts it
 ''' (to the step's order for the stepping solvers), the lesson scenes with chains of rods run with the event
-''' solver, and a scene it cannot move yet fails with its plain message, not an internal error.
+''' solver, a box pulled along a table by a spring slides as the spring says, and a string snapping taut has
+''' its row in the collisions CSV.
 ''' </summary>
 Public Class CliLinksTests
     Private Const G As Double = 9.81
@@ -79,6 +80,21 @@ Public Class CliLinksTests
             Assert.Equal("1", last(0))
             Assert.Equal(2.15 - 0.5 * Math.Cos(Math.Sqrt(5.0)) - 0.15, D(last(2)), 9)
             Assert.Equal(1.0, D(last(3)), 12)
+        End Using
+    End Sub
+    <Fact>
+    Public Sub AStringSnappingTaut_IsARowOfItsOwnInTheCollisionsCsv()
+        ' The collisions CSV names a string snapping taut: kind string-taut, b the string's id (docs/cli.md).
+        Using t As New TempFolder()
+            Dim events = t.File("events.csv")
+            Dim scene = Path.Combine(RepoRoot, "tests", "cases", "string-taut-not-in-events.json")
+            Dim r = RunCli("run", scene, "--time", "1", "--solver", "event", "--events", events)
+            Assert.True(r.ExitCode = 0, r.ToString())
+            Dim rows = IO.File.ReadAllLines(events).Skip(1).Select(Function(l) l.Split(","c)).ToList()
+            Dim snap = rows.First(Function(c) c(3) = "string-taut")
+            Assert.Equal("bob", snap(1))
+            Assert.Equal("s", snap(2))
+            Assert.InRange(D(snap(0)), 0.4, 0.45)
         End Using
     End Sub
 

@@ -7,8 +7,19 @@ Option Strict On
 ' touching the bodies it moves, all in one blow (LinkedImpulse.ResolveWedged): the same complementarity
 ' solve, for impulses.
 Partial Friend NotInheritable Class LinkedEventSolver
-    ' Events within a nanosecond after which a contact is resolved with every contact around it at once.
-    Private Const WedgedAfter As Integer = 1000
+    ' Blows a body takes within a nanosecond after which a contact of it is resolved with every contact around it
+    ' at once. A cradle's cascade hits each ball once or twice; a body wedged is hit again and again.
+    Private Const WedgedAfter As Integer = 16
+
+    ' Blows each body has taken at the instant under way.
+    Private _hitsNow As Integer() = Array.Empty(Of Integer)()
+
+    ''' <summary>Counts a blow on body i (and j, if ≥ 0) at the instant under way; whether either is now wedged.</summary>
+    Private Function Wedged(i As Integer, j As Integer) As Boolean
+        _hitsNow(i) += 1
+        If j >= 0 Then _hitsNow(j) += 1
+        Return _hitsNow(i) > WedgedAfter OrElse (j >= 0 AndAlso _hitsNow(j) > WedgedAfter)
+    End Function
     ' At most this many bodies are gathered into one blow.
     Private Const MaxWedgedBodies As Integer = 64
 

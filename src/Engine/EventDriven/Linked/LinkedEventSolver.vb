@@ -123,9 +123,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _now = t
             Select Case kind
                 Case 0 : TransitionOf(i, t, Unbounded)
-                Case 1 : Collide(i, j, WallSide.None, -1, t, Unbounded, _instant > WedgedAfter)
-                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded, _instant > WedgedAfter)
-                Case Else : Collide(i, -1, WallSide.None, j, t, Unbounded, _instant > WedgedAfter)
+                Case 1 : Collide(i, j, WallSide.None, -1, t, Unbounded, Wedged(i, j))
+                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded, Wedged(i, -1))
+                Case Else : Collide(i, -1, WallSide.None, j, t, Unbounded, Wedged(i, -1))
             End Select
         Loop
         _now = tEnd
@@ -145,6 +145,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Else
             _instant = 0
             _lastTime = t
+            Array.Clear(_hitsNow, 0, _hitsNow.Length)
         End If
     End Sub
 
@@ -169,6 +170,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Next
         _groupOf = New Integer(n - 1) {}
         _slotOf = New Integer(n - 1) {}
+        _hitsNow = New Integer(n - 1) {}
         _fixed = w.Bodies.Where(Function(b) b.IsFixed).ToArray()
         _differences = New Outline(n - 1, _fixed.Length - 1) {}
         For i = 0 To n - 1
