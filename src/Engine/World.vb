@@ -424,10 +424,14 @@ Partial Public NotInheritable Class World
         _solver?.Invalidate(body)
     End Sub
 
-    ''' <summary>Sets where the dragged body's reference point is heading, m (kept inside a walled container).</summary>
+    ''' <summary>
+    ''' Sets where the dragged body's reference point is heading, m: kept inside a walled container, and within reach of
+    ''' the rods and strings that tie it to fixed points (<see cref="WithinLinks"/>).
+    ''' </summary>
     Public Sub DragTo(target As Vector)
         If _DraggedBody Is Nothing Then Return
         If Not target.IsFinite Then Throw New ArgumentException("target must be finite", NameOf(target))
+        target = WithinLinks(_DraggedBody, target)
         _DragTarget = If(_walls, InsideFor(_DraggedBody, target), target)
         _solver?.Invalidate(_DraggedBody)
     End Sub
@@ -438,6 +442,8 @@ Partial Public NotInheritable Class World
         If b Is Nothing Then Return
         _DraggedBody = Nothing
         b.Velocity = If(releaseVelocity.IsFinite, releaseVelocity, Vector.Zero)
+        ' What the hand did to the links (a rod a little off its length after stepping) is put right before anything moves.
+        HoldLinks()
         _solver?.Invalidate(b)
     End Sub
 

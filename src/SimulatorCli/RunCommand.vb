@@ -20,6 +20,10 @@ Friend Module RunCommand
         world.Solver = CreateSolver(o, world)
         ' A valid scene too fast to simulate fails (exit 1) before any file is created.
         world.CheckSpeeds()
+        ' A rod whose ends the file sets moving apart keeps its length from the start: say what was changed.
+        For Each note In world.HoldLinks()
+            Console.Error.WriteLine("note: " & note)
+        Next
 
         Dim states As OutputFile = Nothing
         Dim events As OutputFile = Nothing

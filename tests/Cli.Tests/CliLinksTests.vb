@@ -97,6 +97,19 @@ Public Class CliLinksTests
             Assert.InRange(D(snap(0)), 0.4, 0.45)
         End Using
     End Sub
+    <Fact>
+    Public Sub ARodWhoseEndsTheFileSetsMovingApart_KeepsItsLength_AndTheRunSaysSo()
+        ' The file gives the bob a speed along its rod: the run makes the rod keep its length from the start (the
+        ' least change of kinetic energy) and says what it did, on standard error, before it starts.
+        Using t As New TempFolder()
+            Dim scene = t.Write("rod.json", Q("{'format':'physics-scene/1','world':{'width':10,'height':10,'gravity':9.81,'restitution':1}," &
+                "'bodies':[{'id':'bob','type':'circle','x':5,'y':4,'radius':0.1,'mass':2,'vx':1,'vy':-0.5}]," &
+                "'links':[{'id':'arm','type':'rod','a':'bob','at':[5,5]}]}"))
+            Dim r = RunCli("run", scene, "--time", "1", "--solver", "event")
+            Assert.True(r.ExitCode = 0, r.ToString())
+            Assert.Contains("note: links[0] ('arm', a rod): its ends moved apart along it; they now keep its length (kinetic energy 1.25 J before, 1 J after)", r.StdErr)
+        End Using
+    End Sub
 
     <Theory>
     <InlineData("double-pendulum.json")>
