@@ -110,7 +110,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Function AdvanceTo(tEnd As Double, deadline As Long) As Double
         Dim processed = 0
         Do
-            Dim kind As Integer, i As Integer, j As Integer
+            Dim kind As LinkedEventKind, i As Integer, j As Integer
             Dim t = Earliest(kind, i, j)
             If Not (t <= tEnd) Then Exit Do
             processed += 1
@@ -122,9 +122,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
             CountInstant(t)
             _now = t
             Select Case kind
-                Case 0 : TransitionOf(i, t, Unbounded)
-                Case 1 : Collide(i, j, WallSide.None, -1, t, Unbounded, Wedged(i, j))
-                Case 2 : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded, Wedged(i, -1))
+                Case LinkedEventKind.GroupEnds : TransitionOf(i, t, Unbounded)
+                Case LinkedEventKind.Pair : Collide(i, j, WallSide.None, -1, t, Unbounded, Wedged(i, j))
+                Case LinkedEventKind.Wall : Collide(i, -1, CType(j, WallSide), -1, t, Unbounded, Wedged(i, -1))
                 Case Else : Collide(i, -1, WallSide.None, j, t, Unbounded, Wedged(i, -1))
             End Select
         Loop
@@ -281,23 +281,23 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Next
     End Sub
 
-    ''' <summary>The earliest predicted event: kind 0 a group's transition (i the group), 1 a pair (i, j), 2 a wall (i, side j), 3 a fixed body (i, j).</summary>
-    Private Function Earliest(ByRef kind As Integer, ByRef i As Integer, ByRef j As Integer) As Double
+    ''' <summary>The earliest predicted event: a group's end (i the group), a pair (i, j), a wall (i, side j) or a fixed body (i, j).</summary>
+    Private Function Earliest(ByRef kind As LinkedEventKind, ByRef i As Integer, ByRef j As Integer) As Double
         Dim best = Double.PositiveInfinity
         For g = 0 To _groups.Count - 1
             Dim t = _groups(g).Motion.TransitionTime
-            If t < best Then best = t : kind = 0 : i = g
+            If t < best Then best = t : kind = LinkedEventKind.GroupEnds : i = g
         Next
         Dim n = _bodies.Length
         For a = 0 To n - 1
             For b = a + 1 To n - 1
-                If _pairTime(a, b) < best Then best = _pairTime(a, b) : kind = 1 : i = a : j = b
+                If _pairTime(a, b) < best Then best = _pairTime(a, b) : kind = LinkedEventKind.Pair : i = a : j = b
             Next
             For s = 1 To 4
-                If _wallTime(a, s) < best Then best = _wallTime(a, s) : kind = 2 : i = a : j = s
+                If _wallTime(a, s) < best Then best = _wallTime(a, s) : kind = LinkedEventKind.Wall : i = a : j = s
             Next
             For f = 0 To _fixed.Length - 1
-                If _fixedTime(a, f) < best Then best = _fixedTime(a, f) : kind = 3 : i = a : j = f
+                If _fixedTime(a, f) < best Then best = _fixedTime(a, f) : kind = LinkedEventKind.Fixed : i = a : j = f
             Next
         Next
         Return best
