@@ -14,12 +14,10 @@ Public Module SolverFactory
     End Function
 
     ''' <summary>
-    ''' As <see cref="Create(String, Double?)"/>, with "auto" choosing for <paramref name="world"/>: Verlet for a scene
-    ''' with friction (<see cref="World.HasFriction"/>), which the event solver does not apply yet; the event solver
-    ''' otherwise.
+    ''' As <see cref="Create(String, Double?)"/>, for <paramref name="world"/> (which "auto" may look at: today the
+    ''' event solver takes every scene).
     ''' </summary>
     Public Function Create(name As String, timeStep As Double?, world As World) As ISolver
-        If name = "auto" AndAlso world IsNot Nothing AndAlso world.HasFriction Then Return New VerletSolver(If(timeStep, VerletSolver.DefaultTimeStep))
         Select Case name
             Case "auto", "event"
                 Return New EventDrivenSolver()

@@ -68,7 +68,7 @@ Friend Module Campaign
         End If
         For k = 0 To options.Scenes - 1
             Dim seed = options.Seed + k
-            Dim draft = SceneGenerator.Generate(seed, options.Kinds, options.MaxBodies)
+            Dim draft = SceneGenerator.Generate(seed, options.Kinds, options.MaxBodies, options.Rough)
             list.Add(New SceneOutcome(seed.ToString(CultureInfo.InvariantCulture), seed, draft.ToDoc(), PlanFor(draft, options)))
         Next
         Return list
@@ -144,7 +144,8 @@ Friend Module Campaign
         Dim runs = result.Outcomes.Count * options.Solvers.Count
         Dim what = If(options.SceneFile IsNot Nothing, options.SceneFile,
             result.Outcomes.Count.ToString(inv) & " scenes (seeds " & options.Seed.ToString(inv) & " to " & (options.Seed + options.Scenes - 1).ToString(inv) & ")")
-        log.WriteLine("fuzz: " & what & ", solvers " & String.Join(",", options.Solvers) & ", kinds " & BodyKindNames.Format(options.Kinds) & ": " &
+        log.WriteLine("fuzz: " & what & ", solvers " & String.Join(",", options.Solvers) & ", kinds " & BodyKindNames.Format(options.Kinds) &
+            If(options.Rough > 0, ", rough " & options.Rough.ToString("R", inv), "") & ": " &
             runs.ToString(inv) & " scene runs in " & result.ElapsedSeconds.ToString("0.0", inv) & " s")
         For Each o In result.Outcomes
             For Each v In o.Violations.Where(Function(x) IsNoted(x.Invariant))

@@ -12,6 +12,8 @@ Friend NotInheritable Class FuzzOptions
     Friend Property Out As String = "fuzz-failures"
     Friend Property Solvers As IReadOnlyList(Of String) = {"event", "euler", "verlet"}
     Friend Property Kinds As BodyKinds = BodyKinds.Default
+    ''' <summary>The fraction of generated scenes with friction, 0 to 1.</summary>
+    Friend Property Rough As Double
     ''' <summary>Simulated time T of a run, s (shorter for fast scenes: see <see cref="Campaign.PlanFor"/>).</summary>
     Friend Property Time As Double = 1.0
     ''' <summary>Sampling interval S, s.</summary>
@@ -36,6 +38,7 @@ Friend NotInheritable Class FuzzOptions
 
     Friend Const Usage As String =
         "usage: Fuzzer [--scenes N] [--seed S] [--out DIR] [--solvers event,euler,verlet] [--kinds circle,rectangle|all]" & vbLf &
+        "              [--rough FRACTION]" & vbLf &
         "              [--time T] [--sample S] [--second-sample S2] [--cap SECONDS] [--bodies N] [--jobs N]" & vbLf &
         "              [--no-shrink] [--shrink-budget SECONDS] [--in-process] [--scene FILE] [--print]" & vbLf &
         "Generates N scenes from seeds S, S+1, …, runs each with every solver in worker processes, checks the" & vbLf &
@@ -63,6 +66,12 @@ Friend NotInheritable Class FuzzOptions
                 Case "--out" : o.Out = value
                 Case "--solvers" : o.Solvers = ParseSolvers(value)
                 Case "--kinds" : o.Kinds = BodyKindNames.Parse(value)
+                Case "--rough"
+                    Dim fraction As Double
+                    If Not Double.TryParse(value, NumberStyles.Float, CultureInfo.InvariantCulture, fraction) OrElse Not (fraction >= 0 AndAlso fraction <= 1) Then
+                        Throw New ArgumentException(name & ": must be a fraction from 0 to 1, not '" & value & "'")
+                    End If
+                    o.Rough = fraction
                 Case "--time" : o.Time = PositiveNumber(name, value)
                 Case "--sample" : o.Sample = PositiveNumber(name, value)
                 Case "--second-sample" : o.SecondSample = If(value = "0", 0.0, PositiveNumber(name, value))

@@ -33,7 +33,7 @@ Friend NotInheritable Class Program
         End Try
         If options.Print Then
             For k = 0 To options.Scenes - 1
-                Console.Out.Write(SceneGenerator.Generate(options.Seed + k, options.Kinds, options.MaxBodies).ToText())
+                Console.Out.Write(SceneGenerator.Generate(options.Seed + k, options.Kinds, options.MaxBodies, options.Rough).ToText())
             Next
             Return 0
         End If

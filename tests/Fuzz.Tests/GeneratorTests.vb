@@ -41,6 +41,28 @@ Public Class GeneratorTests
     End Sub
 
     <Fact>
+    Public Sub RoughScenes_HaveFrictionTheReaderTakes_AndTheSameBodies()
+        Dim rough = 0
+        For seed = 1 To 200
+            Dim plain = SceneGenerator.Generate(seed, BodyKinds.All, MaxBodies)
+            Dim some = SceneGenerator.Generate(seed, BodyKinds.All, MaxBodies, 0.5)
+            Assert.Equal(plain.ToText(), SceneGenerator.Generate(seed, BodyKinds.All, MaxBodies, 0).ToText())
+            Dim world = SceneFile.Load(some.ToText())
+            If some.World.Friction > 0 Then
+                rough += 1
+                Assert.Equal(some.World.Friction, world.Friction)
+                Dim mus = world.StaticFriction.GetValueOrDefault(world.Friction)
+                Assert.True(mus >= world.Friction AndAlso mus <= 1.5 * world.Friction, $"seed {seed}: μs {mus}")
+            Else
+                Assert.Equal(0.0, world.Friction)
+            End If
+            ' Friction or not, the bodies are the same.
+            Assert.Equal(plain.Bodies.Select(Function(b) b.ToJson()), some.Bodies.Select(Function(b) b.ToJson()))
+        Next
+        Assert.InRange(rough, 70, 130)
+    End Sub
+
+    <Fact>
     Public Sub TheSameSeed_GivesTheSameScene_BitForBit()
         For seed = 1 To 200
             Dim first = SceneGenerator.Generate(seed, BodyKinds.Default, MaxBodies).ToText()

@@ -67,8 +67,49 @@ Friend NotInheritable Class Constraint
 
     ''' <summary>The same constraint on other slots (a group's bodies numbered anew), with its tag and scale.</summary>
     Friend Function WithSlots(a As Integer, b As Integer) As Constraint
-        Dim c = New Constraint(Shape, a, b, Point, Length, Normal, Holds) With {.From = From, .Along = Along, .Extent = Extent, .Tag = Tag, .Scale = Scale}
+        Dim c = New Constraint(Shape, a, b, Point, Length, Normal, Holds) With {.From = From, .Along = Along, .Extent = Extent, .Tag = Tag, .Scale = Scale,
+            .Friction = Friction, .StaticFriction = StaticFriction, .Sliding = Sliding}
         Return c
+    End Function
+
+    ''' <summary>
+    ''' A contact on a flat face that sticks (docs/contact.md, "Friction"): holds the position along the face,
+    ''' t·d, where it is in <paramref name="state"/>, with a force of either sign, which Coulomb's law bounds by μs
+    ''' times <paramref name="face"/>'s push (<see cref="StuckTo"/>).
+    ''' </summary>
+    Friend Shared Function Sticking(face As Constraint, state As Double()) As Constraint
+        Dim t = face.Along
+        Dim d = face.Difference(state)
+        Dim c = New Constraint(ConstraintShape.Plane, face.A, face.B, face.Point, Vector.Dot(t, d), t, True) With {
+            .Extent = Double.PositiveInfinity, .Tag = face.Tag, .Scale = face.Scale, .StuckTo = face}
+        Return c
+    End Function
+
+    ''' <summary>μk of a contact on a flat face (0: frictionless).</summary>
+    Friend Property Friction As Double
+
+    ''' <summary>μs of a contact on a flat face.</summary>
+    Friend Property StaticFriction As Double
+
+    ''' <summary>
+    ''' A contact with friction sliding: +1 when A slides along the face's direction relative to B, −1 against it, 0
+    ''' when it does not slide (it sticks, or has no friction). Its force then leans back against the sliding:
+    ''' λ (n − μk s t) on A.
+    ''' </summary>
+    Friend Property Sliding As Integer
+
+    ''' <summary>For the tangential row of a contact that sticks: that contact's normal row; else Nothing.</summary>
+    Friend Property StuckTo As Constraint
+
+    ''' <summary>The direction its force acts along on A (unit for a frictionless row): u, leaning back by μk along the face when it slides.</summary>
+    Friend Function ForceDirection(u As Vector) As Vector
+        If Sliding = 0 Then Return u
+        Return u - Along * (Friction * Sliding)
+    End Function
+
+    ''' <summary>A contact on a flat face: how fast A slides along it relative to B (m/s) at <paramref name="state"/>.</summary>
+    Friend Function SlidingRate(state As Double()) As Double
+        Return Vector.Dot(Along, RelativeVelocity(state))
     End Function
 
     ''' <summary>What it holds.</summary>
@@ -123,14 +164,14 @@ Friend NotInheritable Class Constraint
     End Function
 
     ''' <summary>A contact's d = c_A − c_B − shift (m).</summary>
-    Private Function Difference(state As Double()) As Vector
+    Friend Function Difference(state As Double()) As Vector
         Dim d = Position(state, A) - Point
         If B >= 0 Then d -= Position(state, B)
         Return d
     End Function
 
     ''' <summary>The relative velocity v_A − v_B (m/s).</summary>
-    Private Function RelativeVelocity(state As Double()) As Vector
+    Friend Function RelativeVelocity(state As Double()) As Vector
         Dim w = Velocity(state, A)
         If B >= 0 Then w -= Velocity(state, B)
         Return w

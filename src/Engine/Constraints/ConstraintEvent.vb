@@ -14,4 +14,8 @@ Friend Enum ConstraintEvent
     Presses
     ''' <summary>A contact touching without pressing opens clear.</summary>
     Opens
+    ''' <summary>A contact sliding with friction stops sliding.</summary>
+    Stops
+    ''' <summary>A contact sticking by friction needs more than μs times its push: it starts to slide.</summary>
+    Slips
 End Enum

@@ -19,6 +19,11 @@ Friend NotInheritable Class ConstraintSet
     ' Σ σ_i σ_j w_p over the shared bodies, for i ≥ j; zero where constraints i and j share none.
     Private ReadOnly _shared As Double()()
     Private ReadOnly _nx As Double(), _ny As Double(), _factor As Double()()
+    ' Friction: the force directions (where a sliding contact's leans back from its normal), and the general
+    ' (unsymmetric) matrix and its pivots when any row slides.
+    Private ReadOnly _fx As Double(), _fy As Double()
+    Private ReadOnly _slides As Boolean
+    Private ReadOnly _general As Double(,)
     Private ReadOnly _independence As Double
 
     ''' <summary>
@@ -33,6 +38,12 @@ Friend NotInheritable Class ConstraintSet
         Dim m = rows.Length
         _nx = New Double(m - 1) {}
         _ny = New Double(m - 1) {}
+        _fx = New Double(m - 1) {}
+        _fy = New Double(m - 1) {}
+        _slides = rows.Any(Function(r) r.Sliding <> 0)
+        If _slides Then
+            _general = New Double(m - 1, m - 1) {}
+        End If
         _shared = New Double(m - 1)() {}
         _factor = New Double(m - 1)() {}
         For i = 0 To m - 1
@@ -65,12 +76,21 @@ Friend NotInheritable Class ConstraintSet
             c.Measure(state, u, value, rate, curvature)
             _nx(i) = u.X
             _ny(i) = u.Y
+            Dim f = c.ForceDirection(u)
+            _fx(i) = f.X
+            _fy(i) = f.Y
             Dim relative = AccelerationB(accelerations, c) - Acceleration(accelerations, c.A)
             lambda(i) = Vector.Dot(u, relative) - curvature
         Next
-        Factor()
-        Solve(lambda)
-        Apply(accelerations, lambda, 2)
+        If _slides Then
+            ' A sliding contact's force is not along its normal: M_ij = (u_i·f_j) Σ σσw is not symmetric.
+            SolveGeneral(lambda)
+            ApplyForces(accelerations, lambda)
+        Else
+            Factor()
+            Solve(lambda)
+            Apply(accelerations, lambda, 2)
+        End If
         Return lambda
     End Function
 
@@ -154,6 +174,64 @@ Friend NotInheritable Class ConstraintSet
                 values(4 * t.B + offset) -= wb * _nx(j)
                 values(4 * t.B + offset + 1) -= wb * _ny(j)
             End If
+        Next
+    End Sub
+
+    ''' <summary>Adds Σ_j λ_j × (constraint j's force direction at each end) × w to the accelerations.</summary>
+    Private Sub ApplyForces(values As Double(), lambda As Double())
+        For j = 0 To _rows.Length - 1
+            Dim t = _rows(j)
+            Dim wa = _inverseMass(t.A) * lambda(j)
+            values(4 * t.A + 2) += wa * _fx(j)
+            values(4 * t.A + 3) += wa * _fy(j)
+            If t.B >= 0 Then
+                Dim wb = _inverseMass(t.B) * lambda(j)
+                values(4 * t.B + 2) -= wb * _fx(j)
+                values(4 * t.B + 3) -= wb * _fy(j)
+            End If
+        Next
+    End Sub
+
+    ''' <summary>Solves M λ = b in place, M_ij = (u_i·f_j) × the shared inverse mass, by Gaussian elimination with partial pivoting.</summary>
+    Private Sub SolveGeneral(b As Double())
+        Dim m = _rows.Length
+        For i = 0 To m - 1
+            For j = 0 To m - 1
+                Dim sharedMass = If(i >= j, _shared(i)(j), _shared(j)(i))
+                _general(i, j) = If(sharedMass = 0, 0, sharedMass * (_nx(i) * _fx(j) + _ny(i) * _fy(j)))
+            Next
+        Next
+        For k = 0 To m - 1
+            Dim p = k
+            For i = k + 1 To m - 1
+                If Math.Abs(_general(i, k)) > Math.Abs(_general(p, k)) Then p = i
+            Next
+            If Not (Math.Abs(_general(p, k)) > _independence * Math.Abs(_shared(k)(k))) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
+            If p <> k Then
+                For j = 0 To m - 1
+                    Dim swap = _general(k, j)
+                    _general(k, j) = _general(p, j)
+                    _general(p, j) = swap
+                Next
+                Dim sb = b(k)
+                b(k) = b(p)
+                b(p) = sb
+            End If
+            For i = k + 1 To m - 1
+                Dim factor = _general(i, k) / _general(k, k)
+                If factor = 0 Then Continue For
+                For j = k To m - 1
+                    _general(i, j) -= factor * _general(k, j)
+                Next
+                b(i) -= factor * b(k)
+            Next
+        Next
+        For i = m - 1 To 0 Step -1
+            Dim sum = b(i)
+            For j = i + 1 To m - 1
+                sum -= _general(i, j) * b(j)
+            Next
+            b(i) = sum / _general(i, i)
         Next
     End Sub
 

@@ -22,13 +22,19 @@ Friend Module ContactFeatures
         Dim m = corners.Length
         If m = 1 Then Return Constraint.Round(a, b, shift, corners(0), r, Vector.Zero, Vector.Zero)
         ' The nearest edge d lies along (within its extent), if d is on it (pressed in or not) and not leaving by one
-        ' of its ends. Of a polygon's edges the nearest is the one d is least deep behind, as for the contact normal.
+        ' of its ends. Of a polygon's edges the nearest is the one d is least deep behind, as for the contact normal:
+        ' an edge further behind than that by more than a slop is the far side of the outline (d past the end of the
+        ' near edge is at a rounded corner, never on a face across the body).
+        Dim least = Double.NegativeInfinity
+        For i = 0 To normals.Length - 1
+            least = Math.Max(least, Vector.Dot(normals(i), d - corners(i)) - r)
+        Next
         Dim edge = -1, nearest = Double.NegativeInfinity
         For i = 0 To normals.Length - 1
             Dim n = normals(i)
             Dim rel = d - corners(i)
             Dim gap = Vector.Dot(n, rel) - r
-            If gap > slop OrElse gap <= nearest Then Continue For
+            If gap > slop OrElse gap <= nearest OrElse gap < least - slop Then Continue For
             Dim t = RestingFaces.Along(n)
             Dim s = Vector.Dot(t, rel)
             If s < -slop OrElse s > lengths(i) + slop Then Continue For
@@ -59,10 +65,10 @@ Friend Module ContactFeatures
     ''' <summary>A body's contact with a wall of the container: slot <paramref name="a"/>, its extents <paramref name="low"/> and <paramref name="high"/> from its centre (m).</summary>
     Friend Function OnWall(a As Integer, side As WallSide, low As Vector, high As Vector, width As Double, height As Double) As Constraint
         Select Case side
-            Case WallSide.Left : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(1, 0), -low.X, Vector.Zero, Vector.Zero, Double.PositiveInfinity)
-            Case WallSide.Right : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(-1, 0), high.X - width, Vector.Zero, Vector.Zero, Double.PositiveInfinity)
-            Case WallSide.Bottom : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(0, 1), -low.Y, Vector.Zero, Vector.Zero, Double.PositiveInfinity)
-            Case Else : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(0, -1), high.Y - height, Vector.Zero, Vector.Zero, Double.PositiveInfinity)
+            Case WallSide.Left : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(1, 0), -low.X, Vector.Zero, RestingFaces.Along(New Vector(1, 0)), Double.PositiveInfinity)
+            Case WallSide.Right : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(-1, 0), high.X - width, Vector.Zero, RestingFaces.Along(New Vector(-1, 0)), Double.PositiveInfinity)
+            Case WallSide.Bottom : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(0, 1), -low.Y, Vector.Zero, RestingFaces.Along(New Vector(0, 1)), Double.PositiveInfinity)
+            Case Else : Return Constraint.Plane(a, -1, Vector.Zero, New Vector(0, -1), high.Y - height, Vector.Zero, RestingFaces.Along(New Vector(0, -1)), Double.PositiveInfinity)
         End Select
     End Function
 End Module

@@ -138,8 +138,8 @@ Public NotInheritable Class EventDrivenSolver
     ''' </summary>
     Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
         If _s.World Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
-        If _s.World.HasFriction Then Throw New UnsupportedSceneException(ForcedMotions.NoFriction)
-        If _s.World.Links.Count > 0 OrElse _s.World.HasDragOrLiquids Then Return AdvanceLinked(duration, deadline)
+        ' Links, drag, liquids and friction take the general path; a scene with none of them, this one.
+        If _s.World.Links.Count > 0 OrElse _s.World.HasDragOrLiquids OrElse _s.World.HasFriction Then Return AdvanceLinked(duration, deadline)
         If _dirty OrElse _s.Now <> _s.World.Time Then Rebuild()
         Dim tEnd = _s.World.Time + duration
         StartDrag(duration)

@@ -25,11 +25,21 @@ Namespace Generation
         ''' <summary>Every ingredient, for coverage reports.</summary>
         Friend ReadOnly Property All As IReadOnlyList(Of Ingredient) = Obstacles.Concat(Structures).Concat({CType(Scatter, Ingredient), LinkMaker}).ToList()
 
-        ''' <summary>The scene of <paramref name="seed"/>, with bodies of <paramref name="kinds"/> only and at most about <paramref name="maxBodies"/> of them (obstacles come on top).</summary>
-        Friend Function Generate(seed As Long, kinds As BodyKinds, maxBodies As Integer) As SceneDraft
+        ''' <summary>
+        ''' The scene of <paramref name="seed"/>, with bodies of <paramref name="kinds"/> only and at most about
+        ''' <paramref name="maxBodies"/> of them (obstacles come on top); a fraction <paramref name="rough"/> of the
+        ''' scenes have friction, μk from 0.05 to 1 and μs up to 1.5 μk, drawn from a stream of their own so that a
+        ''' seed's bodies are the same rough or not.
+        ''' </summary>
+        Friend Function Generate(seed As Long, kinds As BodyKinds, maxBodies As Integer, Optional rough As Double = 0) As SceneDraft
             If maxBodies < 1 Then Throw New ArgumentOutOfRangeException(NameOf(maxBodies), "at least one body")
             Dim rng As New SplitMix(seed)
             Dim world = DrawWorld(rng)
+            Dim surfaces As New SplitMix(seed Xor &H5EEDF00DL)
+            If surfaces.NextDouble() < rough Then
+                world.Friction = surfaces.Uniform(0.05, 1)
+                world.StaticFriction = world.Friction * surfaces.Uniform(1, 1.5)
+            End If
             ' Half the scenes are small: failures shrink faster and small scenes run faster.
             Dim budget = If(rng.Chance(0.5), rng.Between(1, maxBodies), rng.Between(1, Math.Max(1, maxBodies \ 4)))
             Dim scene As New SceneBuilder(rng, world, kinds, budget)

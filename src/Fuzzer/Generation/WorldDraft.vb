@@ -11,10 +11,15 @@ Namespace Generation
         ''' <summary>e in [0, 1].</summary>
         Friend Property Restitution As Double
         Friend Property Walls As Boolean
+        ''' <summary>μk and μs of every surface (0: no friction, and the fields are left out).</summary>
+        Friend Property Friction As Double
+        Friend Property StaticFriction As Double
 
         ''' <summary>The world as one physics-scene/1 object, every field explicit.</summary>
         Friend Function ToJson() As String
-            Return New JsonText().Add("width", Width).Add("height", Height).Add("gravity", Gravity).Add("restitution", Restitution).Add("walls", Walls).ToString()
+            Dim json = New JsonText().Add("width", Width).Add("height", Height).Add("gravity", Gravity).Add("restitution", Restitution).Add("walls", Walls)
+            If Friction > 0 Then json.Add("friction", Friction).Add("static_friction", StaticFriction)
+            Return json.ToString()
         End Function
     End Class
 End Namespace

@@ -44,7 +44,7 @@ Friend NotInheritable Class ConstrainedMotion
     Private Const WatchOpening As Double = 0.000001
     ' A constraint is held only if what it adds to the others' span is at least this fraction of it (squared): about
     ' 10⁻⁴ rad away from depending on them.
-    Private Const IndependenceMargin As Double = 0.00000001
+    Friend Const IndependenceMargin As Double = 0.00000001
 
     Private ReadOnly _gravity As Double
     ' Drag and buoyancy on the bodies (docs/forces.md), or Nothing.
@@ -59,6 +59,8 @@ Friend NotInheritable Class ConstrainedMotion
     ' Contacts that touch without pressing (or that the held ones already imply): not held, but watched, so that the
     ' contact search need not follow a gap that the motion keeps at nothing.
     Private ReadOnly _watched As Constraint()
+    ' The gap (m) at which each watched contact counts as pressed in.
+    Private ReadOnly _pressedAt As Double()
     ' Every constraint held: the links' ties, then the contacts.
     Private ReadOnly _rows As Constraint()
     Private ReadOnly _constraints As ConstraintSet
@@ -152,8 +154,11 @@ Friend NotInheritable Class ConstrainedMotion
                 If pull < least AndAlso pull < -0.000000001 * (gravity + 1) Then least = pull : worst = i
             Next
             If worst < 0 Then Exit Do
-            If held(worst).Shape = ConstraintShape.Tie Then slack.Add(held(worst)) Else watched.Add(held(worst))
+            Dim letGo = held(worst)
+            If letGo.Shape = ConstraintShape.Tie Then slack.Add(letGo) Else watched.Add(letGo)
             held.RemoveAt(worst)
+            ' A contact that lets go no longer sticks either.
+            held.RemoveAll(Function(c) c.StuckTo Is letGo)
         Loop
         _rows = held.ToArray()
         _held = held.Where(Function(c) c.Shape = ConstraintShape.Tie).Select(Function(c) DirectCast(c.Tag, Link)).ToArray()
@@ -167,7 +172,10 @@ Friend NotInheritable Class ConstrainedMotion
             _snapAt(i) = If(spare > OverLength * _slack(i).Length, 0, Math.Min(spare, 0) - OverLength * _slack(i).Length)
         Next
         _watched = watched.Where(Function(c) Not Equals(c.Tag, released)).ToArray()
-        _hasEvents = _slack.Length > 0 OrElse _watched.Length > 0 OrElse _rows.Any(Function(c) Not c.Holds)
+        ' A watched contact already pressed in a little at the start (a body put on a level face beside it) is
+        ' judged from there: pressed a slop further in, not at once.
+        _pressedAt = _watched.Select(Function(c) Math.Min(0, Gap(c, y)) - WatchSlop).ToArray()
+        _hasEvents = _slack.Length > 0 OrElse _watched.Length > 0 OrElse _rows.Any(Function(c) Not c.Holds OrElse c.StuckTo IsNot Nothing)
         Dim tensions As Double() = Nothing
         _times.Add(startTime)
         _states.Add(y)
@@ -350,11 +358,34 @@ Friend NotInheritable Class ConstrainedMotion
                 End If
             End If
         Next
-        For Each row In _watched
+        ' Friction: a sliding contact that stops sliding, a sticking one whose pull outgrows μs times its push.
+        For i = 0 To _rows.Length - 1
+            Dim row = _rows(i)
+            If row.Sliding <> 0 Then
+                Dim r0 = row.SlidingRate(_states(j)) * row.Sliding, r1 = row.SlidingRate(_states(j + 1)) * row.Sliding
+                If r1 <= 0 Then
+                    Dim root = If(r0 <= 0, t0, ScalarRoot.Brent(Function(t) row.SlidingRate(StateArray(t)) * row.Sliding, t0, t1, r0, r1))
+                    Keep(root, row, ConstraintEvent.Stops)
+                End If
+            ElseIf row.StuckTo IsNot Nothing Then
+                Dim n = Array.IndexOf(_rows, row.StuckTo)
+                If n < 0 Then Continue For
+                Dim stick = i
+                Dim spare = Function(tensions As Double()) row.StuckTo.StaticFriction * tensions(n) - Math.Abs(tensions(stick))
+                Dim s0 = spare(_tensions(j)), s1 = spare(_tensions(j + 1))
+                If s1 < 0 Then
+                    Dim root = If(s0 <= 0, t0, ScalarRoot.Brent(Function(t) spare(TensionsAt(t)), t0, t1, s0, s1))
+                    Keep(root, row, ConstraintEvent.Slips)
+                End If
+            End If
+        Next
+        For w = 0 To _watched.Length - 1
+            Dim row = _watched(w)
             Dim v0 = Gap(row, _states(j)), v1 = Gap(row, _states(j + 1))
-            If v1 < -WatchSlop Then
+            Dim pressed = _pressedAt(w)
+            If v1 < pressed Then
                 ' Pressed a slop in: from here the contact is the one rule's to judge again (a collision, or held).
-                Dim root = If(v0 <= -WatchSlop, t0, ScalarRoot.Brent(Function(t) Gap(row, StateArray(t)) + WatchSlop, t0, t1, v0 + WatchSlop, v1 + WatchSlop))
+                Dim root = If(v0 <= pressed, t0, ScalarRoot.Brent(Function(t) Gap(row, StateArray(t)) - pressed, t0, t1, v0 - pressed, v1 - pressed))
                 Keep(root, row, ConstraintEvent.Presses)
             ElseIf v1 > WatchOpening * row.Scale AndAlso v0 <= WatchOpening * row.Scale Then
                 ' Opened clear: from here the contact search follows it.
@@ -427,9 +458,14 @@ Friend NotInheritable Class ConstrainedMotion
     End Function
 
     Private Function TensionAt(time As Double, i As Integer) As Double
+        Return TensionsAt(time)(i)
+    End Function
+
+    ''' <summary>Every held row's force (N) at <paramref name="time"/>, on the quintics.</summary>
+    Private Function TensionsAt(time As Double) As Double()
         Dim tensions As Double() = Nothing
         Derivative(StateArray(time), tensions)
-        Return tensions(i)
+        Return tensions
     End Function
 
     ''' <summary>The step holding <paramref name="time"/> (the last whose start is at or before it).</summary>

@@ -5,8 +5,8 @@ Imports System.Runtime.CompilerServices
 ''' <summary>
 ''' Where the linked event solver counts the energy it takes out of the world (<see cref="World.Dissipated"/>):
 ''' the drag of a motion that knows its own (<see cref="IDissipatingMotion"/>: a closed form, or the integral
-''' carried with the motion), the damping of springs (from the energy the group's motion has lost since it
-''' started: between events nothing else takes any), and the kinetic energy an inelastic blow or a string
+''' carried with the motion), the damping of springs and the friction of sliding contacts (from the energy the
+''' group's motion has lost since it started: between events nothing else takes any), and the kinetic energy an inelastic blow or a string
 ''' snapping taut takes. Each motion is credited up to a time once: when an advance ends (the motion goes on)
 ''' and when the motion is replaced.
 ''' </summary>
@@ -25,7 +25,7 @@ Friend NotInheritable Class DissipationLedger
         If m Is Nothing Then Return
         Dim account As New Account()
         If Not TypeOf m Is IDissipatingMotion Then
-            If Not Damped(group) AndAlso Not Forced(group, world) Then Return
+            If Not Damped(group) AndAlso Not Forced(group, world) AndAlso Not Rubbing(m) Then Return
             account.StartEnergy = Energy(group, world, m.StartTime)
         End If
         _accounts.Remove(m)
@@ -65,6 +65,11 @@ Friend NotInheritable Class DissipationLedger
         If Not world.HasDragOrLiquids Then Return False
         Dim forces As New ForceField(world)
         Return group.Bodies.Any(Function(b) forces.Acts(b))
+    End Function
+
+    ''' <summary>Whether a contact the motion holds slides with friction (its work is taken out as the group goes).</summary>
+    Private Shared Function Rubbing(m As LinkedMotion) As Boolean
+        Return m.HeldContacts.Any(Function(c) c.Sliding <> 0)
     End Function
 
     ''' <summary>Whether a spring of the group has damping.</summary>

@@ -7,13 +7,6 @@ Option Strict On
 ''' </summary>
 Friend Module ForcedMotions
     ''' <summary>
-    ''' What the event solver says of a scene with friction: friction at a resting contact belongs to the same solve as
-    ''' the resting contact itself, which the event solver does not do yet; moving such a scene as if every surface
-    ''' were ice would teach the wrong physics without a word, so it is refused before anything moves.
-    ''' </summary>
-    Friend Const NoFriction As String = "the event solver does not yet apply friction (this scene has rough surfaces); use --solver verlet"
-
-    ''' <summary>
     ''' The motion of a group that drag or buoyancy acts on, from its state now; Nothing when none does. A free body
     ''' with linear drag alone, in a world without liquids, moves in closed form; any other free body, and every
     ''' linked group (springs: <see cref="IntegratedMotion"/>; rods and strings: <see cref="ConstrainedMotion"/>), is

@@ -263,7 +263,118 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If c Is Nothing Then Return Nothing
         c.Tag = touch.Key
         c.Scale = size
+        ' Coulomb friction on a flat face, between bodies that do not turn (a ball would roll: docs/forces.md).
+        If c.Shape = ConstraintShape.Plane AndAlso _world.HasFriction Then
+            Dim other = If(touch.Other >= 0, _bodies(touch.Other), If(touch.Fixed >= 0, _fixed(touch.Fixed), Nothing))
+            If _bodies(i).Kind <> ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind <> ShapeKind.Circle) Then
+                c.Friction = ContactFriction.Mean(_world.KineticFrictionOf(_bodies(i)), _world.KineticFrictionOf(other))
+                c.StaticFriction = ContactFriction.Mean(_world.StaticFrictionOf(_bodies(i)), _world.StaticFrictionOf(other))
+            End If
+        End If
         Return c
+    End Function
+
+    ''' <summary>
+    ''' Coulomb's law at the held flat contacts with friction of a group about to move (docs/contact.md, "Friction"):
+    ''' one sliding slides on, its force leaning back against the sliding by μk; one not sliding sticks (a row holds
+    ''' its place along the face) if the friction that takes is at most μs times its push, else starts to slide the
+    ''' way the other forces take it. Each change is solved again, until none is needed. Returns the contacts with the
+    ''' sticking rows among them, the velocities made to stick exactly.
+    ''' </summary>
+    Private Function ApplyFriction(bodies As Shape(), links As List(Of Link), contacts As List(Of Constraint)) As List(Of Constraint)
+        If Not contacts.Any(Function(c) c.Friction > 0 OrElse c.StaticFriction > 0) Then Return contacts
+        Dim y = Constraint.StateOf(bodies)
+        Dim scale = 0.0
+        For Each b In bodies
+            scale = Math.Max(scale, b.Velocity.Length)
+        Next
+        Dim still = 0.000000001 * scale + 0.000000000001
+        Dim result As New List(Of Constraint)(contacts)
+        Dim sticks As New List(Of Constraint)
+        Dim ties = TiesOf(bodies, links)
+        ' A contact that sticks holds its place along its face by a row of its own, unless the others hold that
+        ' already (a box in a corner: the wall holds it along the floor); then it sticks with no friction of its own.
+        Dim basis As New RowBasis(bodies.Select(Function(b) b.InverseMass).ToArray(), ConstrainedMotion.IndependenceMargin)
+        For Each c In ties.Concat(contacts)
+            basis.TryAdd(c, y)
+        Next
+        For Each c In contacts
+            c.Sliding = 0
+            If c.Friction <= 0 AndAlso c.StaticFriction <= 0 Then Continue For
+            Dim rate = c.SlidingRate(y)
+            If Math.Abs(rate) > still Then
+                c.Sliding = Math.Sign(rate)
+            Else
+                Dim stick = Constraint.Sticking(c, y)
+                If Not basis.TryAdd(stick, y) Then Continue For
+                sticks.Add(stick)
+                result.Add(stick)
+            End If
+        Next
+        For attempt = 1 To 2 * sticks.Count + 1
+            If sticks.Count = 0 Then Exit For
+            Dim rows = ties.Concat(result).ToArray()
+            Dim lambda As Double()
+            Try
+                Dim accel = FreeState(bodies, links, y)
+                lambda = New ConstraintSet(rows, bodies.Select(Function(b) b.InverseMass).ToArray()).Tensions(y, accel)
+            Catch ex As InvalidOperationException
+                ' Sliding forces that make the rows depend on one another: the sticking rows are let go.
+                For Each stick In sticks
+                    result.Remove(stick)
+                Next
+                sticks.Clear()
+                Exit For
+            End Try
+            ' The stuck contact that needs most beyond what static friction gives starts to slide, against its pull.
+            Dim worst As Constraint = Nothing, excess = 0.0, pull = 0.0
+            For Each stick In sticks
+                Dim k = Array.IndexOf(rows, stick), n = Array.IndexOf(rows, stick.StuckTo)
+                Dim over = Math.Abs(lambda(k)) - stick.StuckTo.StaticFriction * Math.Max(lambda(n), 0)
+                If over > excess + 0.000000001 * (Math.Abs(lambda(k)) + Math.Abs(lambda(n))) Then excess = over : worst = stick : pull = lambda(k)
+            Next
+            If worst Is Nothing Then Exit For
+            worst.StuckTo.Sliding = -Math.Sign(pull)
+            sticks.Remove(worst)
+            result.Remove(worst)
+        Next
+        If sticks.Count > 0 Then
+            ' Stuck means no sliding at all: what rounding left of it is taken away.
+            Try
+                Call New ConstraintSet(result.ToArray(), bodies.Select(Function(b) b.InverseMass).ToArray()).ProjectRates(y)
+                For k = 0 To bodies.Length - 1
+                    Dim v = New Vector(y(4 * k + 2), y(4 * k + 3))
+                    Dim zero = RoundingFraction * Math.Max(scale, 1)
+                    bodies(k).Velocity = New Vector(If(Math.Abs(v.X) <= zero, 0, v.X), If(Math.Abs(v.Y) <= zero, 0, v.Y))
+                Next
+            Catch ex As InvalidOperationException
+                ' Dependent rows: the stick rows only repeat others; nothing to project.
+            End Try
+        End If
+        Return result
+    End Function
+
+    ''' <summary>The rods and taut strings of a group as constraints on its bodies' slots.</summary>
+    Private Function TiesOf(bodies As Shape(), links As List(Of Link)) As List(Of Constraint)
+        Dim ties As New List(Of Constraint)
+        For Each l In links
+            If l.Kind = LinkKind.Spring OrElse (l.Kind = LinkKind.String AndAlso Not IsTaut(l)) Then Continue For
+            ties.Add(Constraint.Tie(Array.IndexOf(bodies, l.A), If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B)), If(l.IsAnchored, l.EndB, Vector.Zero), l.Length, l.Kind = LinkKind.Rod))
+        Next
+        Return ties
+    End Function
+
+    ''' <summary>A state-shaped array of the free accelerations (gravity, springs, drag, buoyancy) at state <paramref name="y"/>.</summary>
+    Private Function FreeState(bodies As Shape(), links As List(Of Link), y As Double()) As Double()
+        Dim free = FreeAccelerations(bodies, links, y)
+        Dim d(y.Length - 1) As Double
+        For k = 0 To bodies.Length - 1
+            d(4 * k) = y(4 * k + 2)
+            d(4 * k + 1) = y(4 * k + 3)
+            d(4 * k + 2) = free(k).X
+            d(4 * k + 3) = free(k).Y
+        Next
+        Return d
     End Function
 
     ''' <summary>
@@ -321,7 +432,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 scale = Math.Max(scale, Math.Abs(curvature))
             Next
             If forces.Length < rows.Count Then forces = New Double(rows.Count - 1) {}
-            _solve.Solve(inverse, free, solveRows, ContactSolve.ApproachTolerance * scale, result, forces)
+            SolveWithFriction(inverse, free, rows, solveRows, y, ContactSolve.ApproachTolerance * scale, result, forces)
             ' A contact on a face's end that these accelerations take off it goes onto its next feature.
             If attempt = 5 Then Exit For
             Dim changed = False
@@ -341,6 +452,69 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Next
         Return pressing
     End Function
+
+    ''' <summary>
+    ''' The complementarity solve of <see cref="PressingRows"/>, with Coulomb friction at the rough flat contacts that
+    ''' press (docs/contact.md, "Friction"): one sliding is pushed back along its face by μk times its push, one
+    ''' not sliding is held along its face (a pair of opposite rows, one of which pushes) while that takes at most μs
+    ''' times its push, and slides the way it is pulled when it would take more. The pushes friction depends on
+    ''' are those of the solve before, so it is solved again until they, the contacts that push and the ones that
+    ''' stick, no longer change. Without friction, one solve.
+    ''' </summary>
+    Private Sub SolveWithFriction(inverse As Double(), free As Vector(), rows As List(Of Constraint), solveRows As ContactRow(), y As Double(),
+                                  tolerance As Double, result As Vector(), forces As Double())
+        _solve.Solve(inverse, free, solveRows, tolerance, result, forces)
+        Dim rough = Enumerable.Range(0, rows.Count).Where(Function(k) rows(k).Shape = ConstraintShape.Plane AndAlso Not rows(k).Holds AndAlso
+                                                            (rows(k).Friction > 0 OrElse rows(k).StaticFriction > 0)).ToList()
+        If rough.Count = 0 Then Return
+        Dim speed = 0.0
+        For k = 0 To inverse.Length - 1
+            speed = Math.Max(speed, New Vector(y(4 * k + 2), y(4 * k + 3)).Length)
+        Next
+        Dim still = 0.000000001 * speed + 0.000000000001
+        Dim sliding(rows.Count - 1) As Integer
+        For Each k In rough
+            Dim rate = rows(k).SlidingRate(y)
+            If Math.Abs(rate) > still Then sliding(k) = Math.Sign(rate)
+        Next
+        Dim pushed(inverse.Length - 1) As Vector
+        Dim trial(inverse.Length - 1) As Vector
+        For iteration = 1 To 4 * rough.Count + 8
+            Array.Copy(free, pushed, free.Length)
+            Dim all As New List(Of ContactRow)(solveRows)
+            Dim stickAt As New Dictionary(Of Integer, Integer)
+            For Each k In rough
+                If Not (forces(k) > 0) Then Continue For
+                Dim c = rows(k)
+                If sliding(k) <> 0 Then
+                    Dim f = c.Along * (-c.Friction * forces(k) * sliding(k))
+                    pushed(c.A) += f * inverse(c.A)
+                    If c.B >= 0 Then pushed(c.B) -= f * inverse(c.B)
+                Else
+                    stickAt(k) = all.Count
+                    all.Add(New ContactRow(c.A, c.B, c.Along, 0, False))
+                    all.Add(New ContactRow(c.A, c.B, -c.Along, 0, False))
+                End If
+            Next
+            Dim trialForces(all.Count - 1) As Double
+            _solve.Solve(inverse, pushed, all, tolerance, trial, trialForces)
+            ' The sticking contact that needs most beyond μs times its push starts to slide.
+            Dim worst = -1, excess = 0.0, pull = 0.0
+            For Each entry In stickAt
+                Dim n = trialForces(entry.Key), along = trialForces(entry.Value) - trialForces(entry.Value + 1)
+                Dim over = Math.Abs(along) - rows(entry.Key).StaticFriction * Math.Max(n, 0)
+                If over > excess + 0.000000001 * (Math.Abs(along) + Math.Abs(n)) Then worst = entry.Key : excess = over : pull = along
+            Next
+            Dim settled = worst < 0
+            For k = 0 To rows.Count - 1
+                If (forces(k) > 0) <> (trialForces(k) > 0) OrElse Math.Abs(forces(k) - trialForces(k)) > 0.000000000001 * (Math.Abs(forces(k)) + Math.Abs(trialForces(k))) Then settled = False
+                forces(k) = trialForces(k)
+            Next
+            Array.Copy(trial, result, trial.Length)
+            If worst >= 0 Then sliding(worst) = -Math.Sign(pull)
+            If settled Then Exit For
+        Next
+    End Sub
 
     ''' <summary>Whether two contact constraints are on the same feature.</summary>
     Private Shared Function SameFeature(a As Constraint, b As Constraint) As Boolean
@@ -379,6 +553,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim bodies = group.Bodies.ToArray()
         If contacts.Count = 0 Then Return LinkedMotions.Create(group, _world, t, released, Slop)
         SnapToLevelFaces(contacts)
+        contacts = ApplyFriction(bodies, group.Links, contacts)
         ' Drag and buoyancy change as the bodies move: such a group is integrated, however flat its faces.
         Dim forces = ForcedMotions.FieldFor(group, _world)
         If forces Is Nothing AndAlso group.Links.Count = 0 AndAlso contacts.All(Function(c) c.Shape = ConstraintShape.Plane) Then

@@ -389,8 +389,14 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _impulse.AddContact(a, b, second, _world.Restitution)
             _impulse.ResolveWedged(_world.Restitution)
         End If
-        If _world.Restitution < 1 Then _world.Dissipate(kinetic - _impulse.KineticEnergy)
         Dim other = If(b, If(f >= 0, _fixed(f), Nothing))
+        ' Friction at the blow's own contact, between bodies that do not turn (a ball would roll: docs/forces.md).
+        If _world.HasFriction AndAlso a.Kind <> ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind <> ShapeKind.Circle) Then
+            _impulse.Rub(ContactFriction.Mean(_world.StaticFrictionOf(a), _world.StaticFrictionOf(other)),
+                         ContactFriction.Mean(_world.KineticFrictionOf(a), _world.KineticFrictionOf(other)))
+        End If
+        Dim lost = kinetic - _impulse.KineticEnergy
+        If lost > 0 Then _world.Dissipate(lost)
         _reports.Add(New CollisionRecord(t, a, other, side, CollisionKinds.Between(a, other), aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
         Repredict(Regroup(groups, t, Nothing), tEnd)
     End Sub

@@ -155,6 +155,30 @@ Friend NotInheritable Class LinkedImpulse
         Next
     End Sub
 
+    ''' <summary>
+    ''' Coulomb friction at the blow's own contact (the first added), once its normal impulse is known: the bodies'
+    ''' slip across the contact is stopped if that takes at most <paramref name="staticCoefficient"/> times the normal
+    ''' impulse, else <paramref name="kineticCoefficient"/> times it acts against the slip, never reversing it
+    ''' (<see cref="ContactFriction.TangentialImpulse"/>). Writes the new velocities to the bodies.
+    ''' </summary>
+    Friend Sub Rub(staticCoefficient As Double, kineticCoefficient As Double)
+        If _rows.Count = 0 Then Return
+        Dim row = _rows(0)
+        If Not row.IsContact OrElse Not (row.Impulse > 0) Then Return
+        Dim va = If(row.A >= 0, _velocities(row.A), Vector.Zero)
+        Dim vb = If(row.B >= 0, _velocities(row.B), Vector.Zero)
+        Dim relative = vb - va
+        Dim slipVector = relative - row.U * Vector.Dot(relative, row.U)
+        Dim slip = slipVector.Length
+        Dim w = InverseMass(row.A) + InverseMass(row.B)
+        If slip = 0 OrElse w = 0 Then Return
+        Dim along = slipVector / slip
+        Dim jt = ContactFriction.TangentialImpulse(slip, 1 / w, row.Impulse, staticCoefficient, kineticCoefficient)
+        If row.A >= 0 Then _velocities(row.A) += along * (jt * InverseMass(row.A))
+        If row.B >= 0 Then _velocities(row.B) -= along * (jt * InverseMass(row.B))
+        WriteVelocities()
+    End Sub
+
     Private Sub WriteVelocities()
         For i = 0 To _bodies.Count - 1
             _bodies(i).Velocity = _velocities(i)

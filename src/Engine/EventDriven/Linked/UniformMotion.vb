@@ -5,8 +5,9 @@ Option Strict On
 ''' gravity alone (docs/contact.md, "Flat contacts"): the contacts' directions never turn and nothing depends on
 ''' the velocities, so the contact forces found at the start hold as long as the contacts do, and every body
 ''' moves with a constant acceleration, p = p₀ + v₀τ + ½aτ², exactly. A box on a table (a = 0), a stack of boxes,
-''' a box sliding down a ramp at g sin θ, a ball resting in a V. The forces are constant, so no contact lifts off;
-''' the motion ends where a contact runs off the end of its face (a quadratic's root), or never.
+''' a box sliding down a ramp at g sin θ (g (sin θ − μk cos θ) on a rough one), a ball resting in a V. The forces are
+''' constant, so no contact lifts off; the motion ends where a contact runs off the end of its face (a quadratic's
+''' root), or where one sliding with friction stops (a linear one), or never.
 ''' </summary>
 Friend NotInheritable Class UniformMotion
     Inherits LinkedMotion
@@ -66,6 +67,12 @@ Friend NotInheritable Class UniformMotion
             _a(k) = New Vector(If(Math.Abs(ax) <= zero, 0, ax), If(Math.Abs(ay) <= zero, 0, ay))
         Next
         For Each c In contacts
+            ' A contact sliding with friction slows at a constant rate: it stops where its sliding speed reaches zero.
+            If c.Sliding <> 0 Then
+                Dim rate = Vector.Dot(_v0(c.A) - If(c.B >= 0, _v0(c.B), Vector.Zero), c.Along)
+                Dim slowing = Vector.Dot(_a(c.A) - If(c.B >= 0, _a(c.B), Vector.Zero), c.Along)
+                If rate * slowing < 0 Then _leaves = Math.Min(_leaves, startTime - rate / slowing)
+            End If
             If Not c.Bounded Then Continue For
             ' Along the face, s(τ) = s₀ + ṡτ + ½s̈τ² from the relative motion of the two bodies.
             Dim d = _p0(c.A) - c.Point - If(c.B >= 0, _p0(c.B), Vector.Zero)
