@@ -42,16 +42,28 @@ Partial Friend NotInheritable Class MainForm
         Return Measure("Ag", font).Height
     End Function
 
-    ''' <summary>The message box's height for its text at the panel's width: up to ten lines, never fewer than two.</summary>
+    ''' <summary>Lines of text the message area shows at once; a longer message scrolls within it.</summary>
+    Private Const MessageLines As Integer = 3
+
+    ''' <summary>The message area's height: <see cref="MessageLines"/> lines whatever it says, so the controls under it never move.</summary>
     Private Function MessageHeight() As Integer
-        Dim width = Math.Max(S(50), RowWidthFor(_side.Width) - S(12))
-        Dim measured = Measure(_message.Text, _message.Font, width).Height
-        Dim line = LineHeight(_message.Font)
-        Return Math.Min(10 * line, Math.Max(2 * line, measured)) + S(12)
+        Return MessageLines * LineHeight(_message.Font) + S(10)
     End Function
 
-    Private Function RowWidthFor(sideWidth As Integer) As Integer
-        Return sideWidth - S(10) - S(22) ' room for the vertical scroll bar
+    ''' <summary>The wheel over the message area scrolls a long message within it, and the panel when the message has no more to show that way.</summary>
+    Private Sub ScrollMessage(delta As Integer)
+        Dim pixels = -Math.Sign(delta) * 2 * LineHeight(_message.Font)
+        If Not _message.ScrollBy(pixels) Then _sideView.ScrollBy(-Math.Sign(delta) * 3 * LineHeight(Font))
+    End Sub
+
+    ''' <summary>The side panel's rows' width in a panel <paramref name="contentWidth"/> px wide.</summary>
+    Private Function RowWidthFor(contentWidth As Integer) As Integer
+        Return contentWidth - S(10) - S(8)
+    End Function
+
+    ''' <summary>Height of a row of buttons: Mono centres a caption by the font height it reports, which a desktop's Xft.dpi can make larger than the text drawn.</summary>
+    Private Function ButtonRowHeight() As Integer
+        Return Math.Max(S(26), Math.Max(LineHeight(Font) + S(9), Font.Height + S(4)))
     End Function
 
     Private Sub ArrangeControls()
@@ -63,9 +75,13 @@ Partial Friend NotInheritable Class MainForm
         ' With large fonts the canvas takes more of the height (the tables less), so it grows too.
         Dim canvasHeight = CInt(h * If(large, 0.68, 0.62))
         _canvas.SetBounds(0, 0, w - sideWidth, canvasHeight)
-        Dim totalsLines = If(TotalsFitOnOneLine(w - sideWidth - S(20)), 1, 2)
-        _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), totalsLines * line + S(8))
+        ' The totals always have room for two lines: a total that grows (3141 collisions) never moves the tabs.
+        _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), 2 * LineHeight(_totals.Font) + S(8))
         Dim tabsTop = _totals.Bottom
+        ' Headers as tall as a line of text and a margin, as wide as their titles in bold (the chosen one is bold).
+        _tabs.Padding = New Point(S(8), S(3))
+        Dim header = LineHeight(Font) + S(8)
+        If _tabs.ItemSize.Height <> header Then _tabs.ItemSize = New Size(S(40), header)
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
         PlaceLessonButtons(tabsTop, w - sideWidth)
         PlaceGraphControls()
@@ -74,29 +90,35 @@ Partial Friend NotInheritable Class MainForm
         Next
         FitLogColumns()
 
-        ' Keep the panel where it was scrolled to: rows are placed relative to its current scroll.
-        Dim scrolled = _side.AutoScrollPosition
-        _side.SuspendLayout()
-        _side.AutoScrollPosition = New Point(0, 0)
-        _side.SetBounds(w - sideWidth, 0, sideWidth, h)
-        ' Mono centres a button's caption by the font height it reports, which a desktop's Xft.dpi can
-        ' make larger than the text drawn: rows are tall enough for that too, so captions stay inside.
-        Dim rh = Math.Max(S(26), Math.Max(line + S(9), Font.Height + S(4)))
-        Dim sliderHeight = Math.Max(S(30), line + S(12))
+        _sideView.BarWidth = S(17)
+        _sideView.SetBounds(w - sideWidth, 0, sideWidth, h)
+        ' Laid out for the whole width; again with room for the scroll bar when the rows are taller than the panel.
+        Dim contentHeight = ArrangeSide(sideWidth, large, line)
+        If contentHeight > _sideView.ClientSize.Height Then contentHeight = ArrangeSide(_sideView.ContentWidthFor(contentHeight), large, line)
+        _sideView.SetContentHeight(contentHeight)
+        OrderTabsByPlace()
+        ShowState()
+        ShowMessage(_presenter.Message)
+    End Sub
+
+    ''' <summary>Places the side panel's rows for a content <paramref name="width"/> px wide; returns their height, px.</summary>
+    Private Function ArrangeSide(width As Integer, large As Boolean, line As Integer) As Integer
+        Dim rh = ButtonRowHeight()
+        Dim sliderHeight = Math.Max(S(24), line + S(8))
         _rowY = S(6)
         _rowX = S(10)
-        _rowWidth = RowWidthFor(sideWidth)
+        _rowWidth = RowWidthFor(width)
         ' Labels and boxes two to a row when every label fits its share; one to a row otherwise (large fonts).
         Dim fieldUsable = _rowWidth - 3 * S(6)
         Dim pairs = Not large AndAlso
-            {_radiusLabel, _widthLabel, _boxWidthLabel, _sidesLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
-            {_massLabel, _heightLabel, _boxHeightLabel, _angleLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
+            {_radiusLabel, _widthLabel, _sidesLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
+            {_massLabel, _heightLabel, _angleLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
 
         Row(MessageHeight(), (_message, 1.0))
         Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
-        Row(line + S(4), (_speedLabel, 1.0))
+        Row(line + S(2), (_speedLabel, 1.0))
         Row(sliderHeight, (_speed, 1.0))
-        Row(line + S(4), (_gravityLabel, 1.0))
+        Row(line + S(2), (_gravityLabel, 1.0))
         Row(sliderHeight, (_gravity, 1.0))
         ' The four planets in one row when their names and values fit there, else in two.
         Dim quarter = (_rowWidth - 3 * S(6)) \ 4
@@ -106,14 +128,16 @@ Partial Friend NotInheritable Class MainForm
             Row(rh, (_gravityMarks(0), 0.5), (_gravityMarks(1), 0.5))
             Row(rh, (_gravityMarks(2), 0.5), (_gravityMarks(3), 0.5))
         End If
-        Row(line + S(4), (_restitutionLabel, 1.0))
+        Row(line + S(2), (_restitutionLabel, 1.0))
         Row(sliderHeight, (_restitution, 1.0))
         Gap()
         Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
         ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
         Fields(rh, pairs, (_sidesLabel, _sides), (_angleLabel, _angle))
-        ' A polygon drawn by clicking its corners takes the mass and Fixed box too: its button sits under the regular one's.
-        If pairs Then
+        ' A polygon drawn by clicking its corners takes the mass and Fixed box too: its button sits beside the regular one's.
+        If pairs AndAlso FitRow(rh + S(2), _fixed, _addCircle, _addPolygon, _addCorners) Then
+            ' One row: Fixed, Add circle, Add polygon, Add by corners.
+        ElseIf pairs Then
             Row(rh + S(2), (_fixed, 0.2), (_addCircle, 0.4), (_addPolygon, 0.4))
             Row(rh + S(2), (Nothing, 0.2), (Nothing, 0.4), (_addCorners, 0.4))
         Else
@@ -139,8 +163,19 @@ Partial Friend NotInheritable Class MainForm
             Row(rh + S(2), (_addSpring, 1 / 3), (_addRod, 1 / 3), (_addString, 1 / 3))
         End If
         Gap()
-        Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
-        Row(rh + S(2), (Nothing, 0.35), (_resize, 0.65))
+        ' The container's size and its button on one row when they fit: "Container (m) [8] × [5] [Resize container]".
+        _boxWidthLabel.Text = "Container (m)"
+        _boxHeightLabel.Text = "×"
+        _boxHeightLabel.TextAlign = ContentAlignment.MiddleCenter
+        If pairs AndAlso FitRow(rh + S(2), _boxWidthLabel, _boxWidth, _boxHeightLabel, _boxHeight, _resize) Then
+            ' One row.
+        Else
+            _boxWidthLabel.Text = "Container w (m)"
+            _boxHeightLabel.Text = "h (m)"
+            _boxHeightLabel.TextAlign = ContentAlignment.MiddleLeft
+            Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
+            Row(rh + S(2), (Nothing, 0.35), (_resize, 0.65))
+        End If
         Gap()
         If pairs Then
             Row(rh, (_largeFonts, 0.36), (_highContrast, 0.4), (_arrows, 0.24))
@@ -153,15 +188,34 @@ Partial Friend NotInheritable Class MainForm
         End If
         ArrangeTimeControls(line)
         ArrangeMomentumControls(rh, pairs)
-        OrderTabsByPlace()
-        _side.ResumeLayout(True)
-        _side.AutoScrollPosition = New Point(0, -scrolled.Y)
-        ShowState()
-    End Sub
+        Return _rowY + S(4)
+    End Function
+
+    ''' <summary>
+    ''' One row of the side panel when every control's caption fits: each as wide as its caption needs
+    ''' (a text box as wide as five digits), and the width left over shared out in proportion. Returns
+    ''' False, placing nothing, when they do not fit.
+    ''' </summary>
+    Private Function FitRow(height As Integer, ParamArray controls As Control()) As Boolean
+        Dim needed = controls.Select(Function(c) NeededWidth(c)).ToArray()
+        Dim usable = _rowWidth - S(6) * (controls.Length - 1)
+        Dim total = needed.Sum()
+        If total > usable Then Return False
+        Row(height, controls.Select(Function(c, i) (c, needed(i) * (usable / total) / usable)).ToArray())
+        Return True
+    End Function
+
+    ''' <summary>The least width a control of the side panel needs for its caption (or, a text box, five digits), px.</summary>
+    Private Function NeededWidth(c As Control) As Integer
+        If TypeOf c Is TextBox Then Return Measure("00000", c.Font).Width + S(8)
+        Dim box = TryCast(c, ScaledCheckBox)
+        Return Measure(c.Text, c.Font).Width + If(box IsNot Nothing, box.CaptionOffset + S(2), S(10)) + S(2)
+    End Function
 
     ''' <summary>Whether a control's caption fits in <paramref name="width"/> px (with a button's edges or a check box's box).</summary>
     Private Function TextFits(c As Control, width As Integer) As Boolean
-        Dim room = width - If(TypeOf c Is CheckBox, S(22), S(10))
+        Dim box = TryCast(c, ScaledCheckBox)
+        Dim room = width - If(box IsNot Nothing, box.CaptionOffset + S(2), S(10))
         Return Measure(c.Text, c.Font).Width <= room
     End Function
 
@@ -303,7 +357,7 @@ Partial Friend NotInheritable Class MainForm
             ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
-            ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
+            ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _sideView)}
         named.AddRange(LessonControls())
         named.AddRange(GraphControls())
         named.AddRange(MomentumControls())

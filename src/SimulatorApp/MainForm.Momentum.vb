@@ -6,12 +6,12 @@ Imports PhysicsEngine.Presentation
 ' momentum Σp, the momenta diagram, the impulses Δp, the path traces, and the container's walls.
 ' What they do is the presenter's (SimulationPresenter.Momentum); the canvas draws them (ScenePainter.Momentum).
 Partial Friend NotInheritable Class MainForm
-    Private ReadOnly _showCentre As New CheckBox()
-    Private ReadOnly _showTotal As New CheckBox()
-    Private ReadOnly _showDiagram As New CheckBox()
-    Private ReadOnly _showImpulses As New CheckBox()
-    Private ReadOnly _showTraces As New CheckBox()
-    Private ReadOnly _walls As New CheckBox()
+    Private ReadOnly _showCentre As New ScaledCheckBox()
+    Private ReadOnly _showTotal As New ScaledCheckBox()
+    Private ReadOnly _showDiagram As New ScaledCheckBox()
+    Private ReadOnly _showImpulses As New ScaledCheckBox()
+    Private ReadOnly _showTraces As New ScaledCheckBox()
+    Private ReadOnly _walls As New ScaledCheckBox()
 
     Private Sub BuildMomentumControls()
         AddCheck(_showCentre, MomentumCaptions.CentreOfMass, Sub() _presenter.SetShowCentreOfMass(_showCentre.Checked))

@@ -10,7 +10,7 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _step As New Button()
     Private ReadOnly _previousCollision As New Button()
     Private ReadOnly _nextCollision As New Button()
-    Private ReadOnly _timeline As New TrackBar()
+    Private ReadOnly _timeline As New ScaledSlider()
     Private _timelineTip As String = ""
 
     Private Sub BuildTimeControls()
@@ -30,6 +30,8 @@ Partial Friend NotInheritable Class MainForm
             Dim control = c
             AddHandler control.GotFocus,
                 Sub(s, e)
+                    ' Tab to a control below the panel's visible part scrolls it into view.
+                    _sideView.EnsureVisible(control)
                     If _trace Is Nothing Then Return
                     Dim p = control.PointToScreen(Point.Empty)
                     Dim name = NamedControls().FirstOrDefault(Function(n) n.Control Is control).Name
@@ -99,7 +101,7 @@ Partial Friend NotInheritable Class MainForm
     Private Function ProcessTimeKey(keyData As Keys) As Boolean
         Dim focused = ActiveControl
         If TypeOf focused Is TextBox Then Return False
-        Dim onSlider = TypeOf focused Is TrackBar
+        Dim onSlider = TypeOf focused Is ScaledSlider
         Dim action As Action = Nothing
         Dim name As String = Nothing
         Select Case keyData

@@ -35,30 +35,35 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _tabs As New TabControl()
     Private ReadOnly _tables As New List(Of BufferedListView)
     Private ReadOnly _logList As New BufferedListView()
-    Private ReadOnly _side As New Panel()
-    Private ReadOnly _message As New Label()
+    ''' <summary>The side panel as it shows on screen: a window onto <see cref="_side"/>, which scrolls with its own bar and the wheel.</summary>
+    Private ReadOnly _sideView As New ScrollingPanel()
+    ''' <summary>The side panel's controls live here, at fixed places: only a scroll the teacher asks for moves them.</summary>
+    Private ReadOnly _side As Panel = _sideView.Content
+    ''' <summary>The message area: a fixed height on top of the panel, scrolling within itself when a message is longer.</summary>
+    Private ReadOnly _message As New MessageArea()
+    Private ReadOnly _wheel As New WheelRouter()
     Private ReadOnly _pause As New Button()
     Private ReadOnly _reset As New Button()
     Private ReadOnly _deleteMode As New Button()
     Private ReadOnly _speedLabel As New Label()
-    Private ReadOnly _speed As New TrackBar()
+    Private ReadOnly _speed As New ScaledSlider()
     Private ReadOnly _gravityLabel As New Label()
-    Private ReadOnly _gravity As New TrackBar()
+    Private ReadOnly _gravity As New ScaledSlider()
     Private ReadOnly _gravityMarks As New List(Of Button)
     Private ReadOnly _restitutionLabel As New Label()
-    Private ReadOnly _restitution As New TrackBar()
+    Private ReadOnly _restitution As New ScaledSlider()
     Private ReadOnly _radiusLabel As New Label()
     Private ReadOnly _radius As New TextBox()
     Private ReadOnly _massLabel As New Label()
     Private ReadOnly _mass As New TextBox()
-    Private ReadOnly _fixed As New CheckBox()
+    Private ReadOnly _fixed As New ScaledCheckBox()
     Private ReadOnly _addCircle As New Button()
     Private ReadOnly _widthLabel As New Label()
     Private ReadOnly _rectWidth As New TextBox()
     Private ReadOnly _heightLabel As New Label()
     Private ReadOnly _rectHeight As New TextBox()
     Private ReadOnly _addRectangle As New Button()
-    Private ReadOnly _rectFixed As New CheckBox()
+    Private ReadOnly _rectFixed As New ScaledCheckBox()
     Private ReadOnly _sidesLabel As New Label()
     Private ReadOnly _sides As New TextBox()
     Private ReadOnly _angleLabel As New Label()
@@ -77,9 +82,9 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _boxHeightLabel As New Label()
     Private ReadOnly _boxHeight As New TextBox()
     Private ReadOnly _resize As New Button()
-    Private ReadOnly _largeFonts As New CheckBox()
-    Private ReadOnly _highContrast As New CheckBox()
-    Private ReadOnly _arrows As New CheckBox()
+    Private ReadOnly _largeFonts As New ScaledCheckBox()
+    Private ReadOnly _highContrast As New ScaledCheckBox()
+    Private ReadOnly _arrows As New ScaledCheckBox()
     Private ReadOnly _tutorial As New Button()
     Private ReadOnly _maths As New Button()
     Private ReadOnly _open As New Button()
@@ -159,15 +164,21 @@ Partial Friend NotInheritable Class MainForm
         BuildGraphControls()
         ' Mono leaves a details list's header unpainted when its tab comes back: repaint the list then.
         AddHandler _tabs.SelectedIndexChanged, AddressOf OnTabChanged
+        ' The tabs' headers are drawn here: in the theme's colours (Mono leaves them light grey in high
+        ' contrast), and as tall as the text at any DPI (Mono keeps them 96-dpi high).
+        _tabs.DrawMode = TabDrawMode.OwnerDrawFixed
+        AddHandler _tabs.DrawItem, AddressOf OnDrawTab
         Controls.Add(_tabs)
 
-        _side.AutoScroll = True
         ' With --trace, where the controls are after the panel scrolls (GUI tests click them there).
-        AddHandler _side.Scroll, Sub(s, a) TraceLayout()
-        AddHandler _side.MouseWheel, Sub(s, a) BeginInvoke(New Action(AddressOf TraceLayout))
-        Controls.Add(_side)
-        _message.BorderStyle = BorderStyle.FixedSingle
-        _message.UseMnemonic = False
+        AddHandler _sideView.Scrolled, Sub(s, a) If IsHandleCreated Then TraceLayout()
+        ' The wheel anywhere over the panel scrolls it (a long message scrolls within its own box).
+        _wheel.Add(_message, Sub(delta, p) ScrollMessage(delta))
+        _wheel.Add(_sideView, Sub(delta, p) _sideView.ScrollBy(-Math.Sign(delta) * 3 * LineHeight(Font)))
+        Application.AddMessageFilter(_wheel)
+        Controls.Add(_sideView)
+        _message.ScreenScale = _dpi.Scale
+        _message.SetMeasure(Function(text, font, width) Measure(text, font, width))
         _side.Controls.Add(_message)
 
         AddButton(_pause, "Pause", Sub() _presenter.TogglePause())
@@ -196,6 +207,7 @@ Partial Friend NotInheritable Class MainForm
         AddField(_radiusLabel, "Radius (m)", _radius, InputField.Radius)
         AddField(_massLabel, "Mass (kg)", _mass, InputField.Mass)
         _fixed.Text = Captions.Fixed
+        _fixed.ScreenScale = _dpi.Scale
         AddHandler _fixed.CheckedChanged, Sub(s, a) If Not _updating Then _presenter.FixedChanged(_fixed.Checked)
         _side.Controls.Add(_fixed)
         AddButton(_addCircle, Captions.AddCircle, Sub() _presenter.BeginAddCircle())
@@ -203,6 +215,7 @@ Partial Friend NotInheritable Class MainForm
         AddField(_widthLabel, "Rectangle w (m)", _rectWidth, InputField.RectangleWidth)
         AddField(_heightLabel, "h (m)", _rectHeight, InputField.RectangleHeight)
         _rectFixed.Text = Captions.Fixed
+        _rectFixed.ScreenScale = _dpi.Scale
         AddHandler _rectFixed.CheckedChanged, Sub(s, a) If Not _updating Then _presenter.RectangleFixedChanged(_rectFixed.Checked)
         _side.Controls.Add(_rectFixed)
         AddButton(_addRectangle, Captions.AddRectangle, Sub() _presenter.BeginAddRectangle())
@@ -278,18 +291,18 @@ Partial Friend NotInheritable Class MainForm
         _side.Controls.Add(button)
     End Sub
 
-    Private Sub AddCheck(box As CheckBox, text As String, action As Action)
+    Private Sub AddCheck(box As ScaledCheckBox, text As String, action As Action)
         box.Text = text
+        box.ScreenScale = _dpi.Scale
         AddHandler box.CheckedChanged, Sub(s, e) If Not _updating Then Act(action)
         _side.Controls.Add(box)
     End Sub
 
-    Private Sub SetUpSlider(slider As TrackBar, max As Integer, tick As Integer, action As Action)
+    Private Sub SetUpSlider(slider As ScaledSlider, max As Integer, tick As Integer, action As Action)
+        slider.ScreenScale = _dpi.Scale
         slider.Minimum = 0
         slider.Maximum = max
         slider.TickFrequency = Math.Max(1, tick)
-        slider.TickStyle = TickStyle.BottomRight
-        slider.AutoSize = False
         AddHandler slider.ValueChanged, Sub(s, e) If Not _updating Then Act(action)
         _side.Controls.Add(slider)
     End Sub
@@ -390,6 +403,26 @@ Partial Friend NotInheritable Class MainForm
             FitLogColumns()
         End If
         _logList.Invalidate()
+    End Sub
+
+    ''' <summary>Draws one tab's header: the chosen tab in the canvas's colours, the others as buttons, the title in the panel's text colour.</summary>
+    Private Sub OnDrawTab(sender As Object, e As DrawItemEventArgs)
+        If _presenter Is Nothing OrElse e.Index < 0 OrElse e.Index >= _tabs.TabCount Then Return
+        Dim theme = _presenter.Theme
+        Dim chosen = e.Index = _tabs.SelectedIndex
+        Dim r = e.Bounds
+        Using back As New SolidBrush(ScenePainter.Rgb(If(chosen, theme.Field, theme.Button))), edge As New Pen(ScenePainter.Rgb(theme.PanelText), CSng(Math.Max(1, S(1))))
+            e.Graphics.FillRectangle(back, r)
+            If theme.IsHighContrast OrElse chosen Then e.Graphics.DrawRectangle(edge, r.X, r.Y, r.Width - 1, r.Height - 1)
+        End Using
+        Dim title = If(chosen, New Font(Font, FontStyle.Bold), Font)
+        Try
+            Using ink As New SolidBrush(ScenePainter.Rgb(theme.PanelText)), format As New StringFormat() With {.Alignment = StringAlignment.Center, .LineAlignment = StringAlignment.Center, .FormatFlags = StringFormatFlags.NoWrap}
+                e.Graphics.DrawString(_tabs.TabPages(e.Index).Text, title, ink, New RectangleF(r.X, r.Y, r.Width, r.Height), format)
+            End Using
+        Finally
+            If title IsNot Font Then title.Dispose()
+        End Try
     End Sub
 
     Private Sub OnTabChanged(sender As Object, e As EventArgs)
@@ -505,15 +538,16 @@ Partial Friend NotInheritable Class MainForm
         ' No message: a quiet reminder of what the mouse does, in grey rather than highlighted.
         Dim quiet = String.IsNullOrEmpty(text)
         Dim theme = _presenter.Theme
-        _message.Text = If(quiet, SimulationPresenter.MouseHint, text)
+        Dim shown = If(quiet, SimulationPresenter.MouseHint, text)
+        If _message.Text <> shown Then _message.Text = shown
         _message.BackColor = ScenePainter.Rgb(If(quiet, theme.Panel, theme.MessageBack))
         _message.ForeColor = ScenePainter.Rgb(If(quiet, theme.HintText, theme.MessageText))
-        ' A longer message makes the box taller (the panel below moves down), so it is never cut off.
-        If IsHandleCreated AndAlso MessageHeight() <> _message.Height Then
-            ArrangeControls()
-            TraceLayout()
-        End If
-        _trace?.Invoke("message shown " & _message.Height & " px, needs " & MessageHeight() & " px")
+        ' The area keeps its height whatever the message, so nothing under it moves; a message longer
+        ' than the area scrolls within it (the wheel over it).
+        _message.Invalidate()
+        _trace?.Invoke("message shown " & _message.Height & " px, needs " & _message.Needs & " px" & If(_message.Scrolls, ", scrolls", ""))
+        ' With --trace, the layout after every message: GUI tests check that no control moved.
+        If IsHandleCreated AndAlso _trace IsNot Nothing Then TraceLayout()
     End Sub
 
     Public Sub ShowSettings() Implements ISimulationView.ShowSettings
@@ -590,13 +624,8 @@ Partial Friend NotInheritable Class MainForm
             If _linkList.VirtualListSize <> snap.LinkCount Then _linkList.VirtualListSize = snap.LinkCount
             _linkList.Invalidate()
         End If
+        ' Two lines are kept for the totals whatever their length, so their growing never moves the tables.
         Dim totals = WrapTotals(snap.Totals, _totals.Width - S(8))
-        ' Totals that grew past one line (3141 collisions, 5.00×10⁵ J) get the second line the layout gave them no room for.
-        If totals.Contains(Environment.NewLine) AndAlso _totals.Height < 2 * LineHeight(_totals.Font) AndAlso IsHandleCreated Then
-            ArrangeControls()
-            TraceLayout()
-            Return
-        End If
         If totals <> _totals.Text Then _totals.Text = totals
         If _presenter.IsPaused Then _trace?.Invoke("totals " & totals.Replace(Environment.NewLine, " / "))
         _canvas.Invalidate()
@@ -653,6 +682,7 @@ Partial Friend NotInheritable Class MainForm
         _totals.BackColor = panel
         _totals.ForeColor = text
         _side.BackColor = panel
+        _sideView.BackColor = panel
         For Each c As Control In _side.Controls
             c.ForeColor = text
             If TypeOf c Is Button Then
@@ -662,7 +692,7 @@ Partial Friend NotInheritable Class MainForm
                 b.FlatAppearance.BorderColor = text
                 b.FlatAppearance.BorderSize = If(theme.IsHighContrast, 2, 1)
                 b.UseVisualStyleBackColor = Not theme.IsHighContrast
-            ElseIf TypeOf c Is TextBox Then
+            ElseIf TypeOf c Is TextBox AndAlso c IsNot _message Then
                 c.BackColor = ScenePainter.Rgb(theme.Field)
             ElseIf c IsNot _message Then
                 c.BackColor = panel
