@@ -86,6 +86,13 @@ Partial Friend NotInheritable Class MainForm
                 Dim top = _export.Bottom + S(2)
                 _tabs.SetBounds(_tabs.Left, top, _tabs.Width, Math.Max(1, _tabs.Bottom - top))
             End If
+            ' The strip right of the last header, in the panel's colour (under the header buttons).
+            Dim last = _tabs.GetTabRect(_tabs.TabCount - 1)
+            _tabStripFill.SetBounds(_tabs.Left + last.Right + S(2), _tabs.Top, Math.Max(1, _tabs.Width - last.Right - S(2)), last.Bottom)
+            _tabStripFill.BringToFront()
+            For Each b In {_export, _scenes, _restart}
+                b.BringToFront()
+            Next
         End If
     End Sub
 

@@ -72,8 +72,8 @@ Partial Friend NotInheritable Class MainForm
         Dim large = _presenter.LargeFonts
         Dim sideWidth = Math.Min(S(If(large, 470, 420)), Math.Max(S(380), CInt(w * 0.36)))
         Dim line = LineHeight(Font)
-        ' With large fonts the canvas takes more of the height (the tables less), so it grows too.
-        Dim canvasHeight = CInt(h * If(large, 0.68, 0.62))
+        ' With large fonts the tables' rows are taller: the canvas leaves them a little more of the height.
+        Dim canvasHeight = CInt(h * If(large, 0.58, 0.62))
         _canvas.SetBounds(0, 0, w - sideWidth, canvasHeight)
         ' The totals always have room for two lines: a total that grows (3141 collisions) never moves the tabs.
         _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), 2 * LineHeight(_totals.Font) + S(8))
@@ -326,12 +326,19 @@ Partial Friend NotInheritable Class MainForm
             Dim captioned = TypeOf c Is Button OrElse TypeOf c Is CheckBox OrElse (TypeOf c Is Label AndAlso c IsNot _message AndAlso c IsNot _totals)
             Dim fits = Not captioned OrElse TextFits(c, c.Width)
             _trace("control " & n.Name & " " & p.X & " " & p.Y & " " & c.Width & " " & c.Height & " " & If(fits, "fits", "cut"))
+            ' The parts that must grow with the text: a check box's box, a slider's thumb.
+            Dim check = TryCast(c, ScaledCheckBox)
+            If check IsNot Nothing Then _trace("part " & n.Name & " box " & check.BoxSize & " " & check.BoxSize)
+            Dim slider = TryCast(c, ScaledSlider)
+            If slider IsNot Nothing Then _trace("part " & n.Name & " thumb " & slider.ThumbWidth & " " & slider.ThumbHeight)
         Next
+        _trace("text line " & LineHeight(Font) & " px, scroll bar " & _sideView.BarWidth & " px, panel overflow " & _sideView.Overflow & " px, scrolled " & _sideView.Offset & " px")
         ' The tabs' headers, so tests can open a table as a teacher would: "tab-links", "tab-bodies".
         For i = 0 To _tabs.TabCount - 1
             Dim r = _tabs.GetTabRect(i)
             Dim p = _tabs.PointToScreen(r.Location)
-            _trace("control tab-" & _tabs.TabPages(i).Text.ToLowerInvariant().Replace(" "c, "-"c) & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & " fits")
+            Dim fits = Measure(_tabs.TabPages(i).Text, Font).Width <= r.Width
+            _trace("control tab-" & _tabs.TabPages(i).Text.ToLowerInvariant().Replace(" "c, "-"c) & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & If(fits, " fits", " cut"))
         Next
         Dim client = PointToScreen(Point.Empty)
         TraceCells()

@@ -33,6 +33,8 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _canvas As New PictureBox()
     Private ReadOnly _totals As New Label()
     Private ReadOnly _tabs As New TabControl()
+    ''' <summary>Covers the strip beside the tabs' headers, which Mono paints light grey whatever the theme.</summary>
+    Private ReadOnly _tabStripFill As New Panel()
     Private ReadOnly _tables As New List(Of BufferedListView)
     Private ReadOnly _logList As New BufferedListView()
     ''' <summary>The side panel as it shows on screen: a window onto <see cref="_side"/>, which scrolls with its own bar and the wheel.</summary>
@@ -168,6 +170,7 @@ Partial Friend NotInheritable Class MainForm
         ' contrast), and as tall as the text at any DPI (Mono keeps them 96-dpi high).
         _tabs.DrawMode = TabDrawMode.OwnerDrawFixed
         AddHandler _tabs.DrawItem, AddressOf OnDrawTab
+        Controls.Add(_tabStripFill)
         Controls.Add(_tabs)
 
         ' With --trace, where the controls are after the panel scrolls (GUI tests click them there).
@@ -415,14 +418,15 @@ Partial Friend NotInheritable Class MainForm
             e.Graphics.FillRectangle(back, r)
             If theme.IsHighContrast OrElse chosen Then e.Graphics.DrawRectangle(edge, r.X, r.Y, r.Width - 1, r.Height - 1)
         End Using
-        Dim title = If(chosen, New Font(Font, FontStyle.Bold), Font)
-        Try
-            Using ink As New SolidBrush(ScenePainter.Rgb(theme.PanelText)), format As New StringFormat() With {.Alignment = StringAlignment.Center, .LineAlignment = StringAlignment.Center, .FormatFlags = StringFormatFlags.NoWrap}
-                e.Graphics.DrawString(_tabs.TabPages(e.Index).Text, title, ink, New RectangleF(r.X, r.Y, r.Width, r.Height), format)
+        Using ink As New SolidBrush(ScenePainter.Rgb(theme.PanelText)), format As New StringFormat() With {.Alignment = StringAlignment.Center, .LineAlignment = StringAlignment.Center, .FormatFlags = StringFormatFlags.NoWrap}
+            e.Graphics.DrawString(_tabs.TabPages(e.Index).Text, Font, ink, New RectangleF(r.X, r.Y, r.Width, r.Height), format)
+        End Using
+        ' The chosen tab is marked by a bar along its top, in the colour of velocity arrows.
+        If chosen Then
+            Using bar As New SolidBrush(ScenePainter.Rgb(theme.Arrow))
+                e.Graphics.FillRectangle(bar, r.X + 1, r.Y + 1, r.Width - 2, Math.Max(2, S(3)))
             End Using
-        Finally
-            If title IsNot Font Then title.Dispose()
-        End Try
+        End If
     End Sub
 
     Private Sub OnTabChanged(sender As Object, e As EventArgs)
@@ -698,6 +702,9 @@ Partial Friend NotInheritable Class MainForm
                 c.BackColor = panel
             End If
         Next
+        ' Mono paints the strip beside the tabs' headers in the tab control's own colour.
+        _tabs.BackColor = panel
+        _tabStripFill.BackColor = panel
         For Each page As TabPage In _tabs.TabPages
             page.BackColor = panel
             page.ForeColor = text

@@ -86,6 +86,13 @@ Friend NotInheritable Class ScaledSlider
         End Get
     End Property
 
+    ''' <summary>The thumb's height, px.</summary>
+    Public ReadOnly Property ThumbHeight As Integer
+        Get
+            Return ThumbRectangle().Height
+        End Get
+    End Property
+
     ''' <summary>How far in from each end the thumb's middle can go, px.</summary>
     Public ReadOnly Property Inset As Integer
         Get
@@ -105,15 +112,17 @@ Friend NotInheritable Class ScaledSlider
         Return _minimum + CInt(Math.Round((_maximum - _minimum) * CDbl(x - Inset) / usable))
     End Function
 
+    ''' <summary>The thumb: the control's height less the ticks' strip under it, and a margin.</summary>
     Private Function ThumbRectangle() As Drawing.Rectangle
         Dim w = ThumbWidth
         Dim top = CInt(Math.Round(2 * ScreenScale))
-        Return New Drawing.Rectangle(ThumbCentre(_value) - w \ 2, top, w, TrackY() + TickRoom() - top)
+        Return New Drawing.Rectangle(ThumbCentre(_value) - w \ 2, top, w, Math.Max(4, Height - TickRoom() - top - CInt(ScreenScale)))
     End Function
 
-    ''' <summary>The track's middle line, px from the top: above the ticks.</summary>
+    ''' <summary>The track's line, px from the top: through the thumb's middle.</summary>
     Private Function TrackY() As Integer
-        Return Math.Max(CInt(6 * ScreenScale), (Height - TickRoom()) \ 2)
+        Dim top = CInt(Math.Round(2 * ScreenScale))
+        Return top + Math.Max(4, Height - TickRoom() - top - CInt(ScreenScale)) \ 2
     End Function
 
     Private Function TickRoom() As Integer
@@ -133,7 +142,7 @@ Friend NotInheritable Class ScaledSlider
             Dim tickTop = ThumbRectangle().Bottom + CInt(ScreenScale)
             For v = _minimum To _maximum Step every
                 Dim x = ThumbCentre(v)
-                g.DrawLine(tick, x, tickTop, x, Math.Min(Height - 1, tickTop + TickRoom() \ 2))
+                g.DrawLine(tick, x, tickTop, x, Math.Min(Height - 1, tickTop + TickRoom() - CInt(2 * ScreenScale)))
             Next
         End Using
         Dim thumb = ThumbRectangle()
