@@ -121,15 +121,18 @@ Partial Public NotInheritable Class SimulationPresenter
             _SlowedFrames += 1
             _HeldBackSeconds += asked - done
             _streakBehind += (asked - done) / Speed
+            _keptUpSeconds = 0
         Else
             _streakBehind = 0
             _streakNoticed = False
+            _keptUpSeconds += asked / Speed
         End If
         If slow AndAlso Not _IsRunningSlow Then Trace?.Invoke("running slow")
         _IsRunningSlow = slow
         If slow AndAlso Not _streakNoticed AndAlso _streakBehind >= SlowNoticeSeconds Then
             _streakNoticed = True
-            If Message <> SlowMessage Then ShowMessage(SlowMessage)
+            ' True until the scene has kept up for a while (the balls of a peg board all at rest).
+            If Message <> SlowMessage Then ShowMessage(SlowMessage, Function() _keptUpSeconds < KeptUpSeconds)
         End If
     End Sub
 
@@ -142,6 +145,12 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Real seconds time on screen has fallen behind in the current stretch of slow frames.</summary>
     Private _streakBehind As Double
+    ''' <summary>Real seconds the scene has kept up with the Speed slider since its last slow frame.</summary>
+    Private _keptUpSeconds As Double
+
+    ''' <summary>How long a scene must keep up before the message that it cannot goes, s: long enough not to flicker on and off.</summary>
+    Public Const KeptUpSeconds As Double = 1.0
+
     ''' <summary>Whether the current stretch of slow frames has been told.</summary>
     Private _streakNoticed As Boolean
 

@@ -132,6 +132,12 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Sub Export(kind As ExportKind, path As String, write As Action(Of Stream), what As String)
         If String.IsNullOrEmpty(path) Then Return
         Dim name = IO.Path.GetFileName(path)
+        Dim missing = MissingFolder(path)
+        If missing IsNot Nothing Then
+            Emit("export failed " & kind.ToString() & " " & path)
+            ShowMessage("Could not export " & name & ": " & missing & ".")
+            Return
+        End If
         Try
             WholeFile.Write(path, write)
             Emit("exported " & kind.ToString() & " " & path & " " & what)

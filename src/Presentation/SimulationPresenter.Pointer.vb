@@ -154,10 +154,14 @@ Partial Public NotInheritable Class SimulationPresenter
             End Sub)
     End Sub
 
-    ''' <summary>"radius set to the maximum, 2 m. " for each value brought to a limit; "" when none was.</summary>
+    ''' <summary>
+    ''' "radius set to the maximum, 2.00 m. " for each value brought to a limit; "" when none was. A
+    ''' count (no unit: the sides of a polygon) is written as the whole number it is, "3", not "3.00".
+    ''' </summary>
     Private Shared Function ClampNote(ParamArray fields As (Name As String, Input As NumberInput?, Unit As String)()) As String
         Dim notes = fields.Where(Function(f) f.Input.HasValue AndAlso f.Input.Value.WasClamped).
-            Select(Function(f) f.Name & " set to the " & If(f.Input.Value.WasRaised, "minimum", "maximum") & ", " & Units.Sig(f.Input.Value.Value) & If(f.Unit.Length > 0, " " & f.Unit, "")).ToList()
+            Select(Function(f) f.Name & " set to the " & If(f.Input.Value.WasRaised, "minimum", "maximum") & ", " &
+                               If(f.Unit.Length = 0, f.Input.Value.Value.ToString("0", Globalization.CultureInfo.InvariantCulture), Units.Sig(f.Input.Value.Value) & " " & f.Unit)).ToList()
         If notes.Count = 0 Then Return ""
         Return String.Join(", ", notes) & ". "
     End Function

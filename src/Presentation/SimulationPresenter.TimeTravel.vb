@@ -45,6 +45,10 @@ Partial Public NotInheritable Class SimulationPresenter
     Private _timeline As Timeline
     Private _firstCollision As CollisionRecord?
     Private _watchCollisions As Boolean
+    ''' <summary>The time of the last collision the world on show reported, s (Nothing after going back in time, when it is not known).</summary>
+    Private _lastCollisionTime As Double?
+    ''' <summary>While stepping to the next collision: the time of the collision before it, s, when known.</summary>
+    Private _beforeFirst As Double?
 
     ''' <summary>The recorded run of the world on show.</summary>
     Public ReadOnly Property Timeline As Timeline
@@ -88,7 +92,11 @@ Partial Public NotInheritable Class SimulationPresenter
         Log.Record(r, World.DraggedBody)
         GraphCollision(r)
         NoteImpulses(r)
-        If _watchCollisions AndAlso Not _firstCollision.HasValue Then _firstCollision = r
+        If _watchCollisions AndAlso Not _firstCollision.HasValue Then
+            _firstCollision = r
+            _beforeFirst = _lastCollisionTime
+        End If
+        _lastCollisionTime = r.Time
     End Sub
 
     ''' <summary>
@@ -112,6 +120,7 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Puts the world of a checkpoint on show, with its clock and collision count.</summary>
     Private Sub Take(point As Checkpoint)
         Dim w = Timeline.Build(point)
+        _lastCollisionTime = Nothing
         Dim resized = w.Width <> World.Width OrElse w.Height <> World.Height
         UseTimeline(w, SolverFactory.Create(point.SolverName), restartFirst:=False)
         ' A cue being aimed while the run replays keeps aiming at the same body of the new world.
@@ -198,9 +207,11 @@ Partial Public NotInheritable Class SimulationPresenter
                     Return
                 End If
                 Dim hit = _firstCollision.Value
+                ' The collision before it, to write the time with enough figures to tell the two apart.
+                Dim previousTime = If(_beforeFirst, LastCollisionBefore(hit.Time)?.Last.Time)
                 If SolverName(World) = "event" AndAlso hit.Time < World.Time Then ShowMoment(hit.Time)
                 ShowStep("next collision")
-                ShowMessage("Collision " & Log.TotalSeen & ": " & PairName(hit) & " at t = " & Units.Sig(hit.Time) & " s.")
+                ShowMessage(CollisionMessage(Log.TotalSeen, hit, previousTime))
             End Sub)
     End Sub
 
@@ -217,29 +228,49 @@ Partial Public NotInheritable Class SimulationPresenter
                     ShowMessage("There is no earlier collision in the recorded run.")
                     Return
                 End If
-                Dim found = last.Value
+                Dim found = last.Value.Last
                 ShowMoment(found.Time)
                 ShowStep("previous collision")
-                ShowMessage("Collision " & Log.TotalSeen & ": " & PairName(found) & " at t = " & Units.Sig(found.Time) & " s.")
+                ShowMessage(CollisionMessage(Log.TotalSeen, found, last.Value.Before?.Time))
             End Sub)
     End Sub
 
-    ''' <summary>The last collision strictly before <paramref name="time"/>, found by replaying the recorded run on a copy, or Nothing.</summary>
-    Private Function LastCollisionBefore(time As Double) As CollisionRecord?
+    ''' <summary>
+    ''' The last collision strictly before <paramref name="time"/>, and the one before it when the same
+    ''' stretch between checkpoints holds it, found by replaying the recorded run on a copy; Nothing
+    ''' when there is none.
+    ''' </summary>
+    Private Function LastCollisionBefore(time As Double) As (Last As CollisionRecord, Before As CollisionRecord?)?
         Dim until = time
         Dim point = _timeline.Before(until)
         Do While point IsNot Nothing
             Dim last As CollisionRecord? = Nothing
+            Dim previous As CollisionRecord? = Nothing
             Dim probe = Timeline.Build(point)
             probe.Solver = SolverFactory.Create(point.SolverName)
             Dim limit = until
-            probe.CollisionListener = Sub(r) If r.Time < limit Then last = r
+            probe.CollisionListener =
+                Sub(r)
+                    If r.Time >= limit Then Return
+                    previous = last
+                    last = r
+                End Sub
             probe.Advance(ExactClock.DurationTo(probe.Time, until))
-            If last.HasValue Then Return last
+            If last.HasValue Then Return (last.Value, previous)
             until = point.Time
             point = _timeline.Before(until)
         Loop
         Return Nothing
+    End Function
+
+    ''' <summary>
+    ''' "Collision 908: red ↔ blue at t = 3.141593 s.": the time with enough figures to tell it from the
+    ''' collision before (<paramref name="before"/>, s, when known), and said when both were at the same instant.
+    ''' </summary>
+    Private Shared Function CollisionMessage(count As Long, hit As CollisionRecord, before As Double?) As String
+        Dim same = before.HasValue AndAlso before.Value = hit.Time
+        Return "Collision " & count & ": " & PairName(hit) & " at t = " & Units.SigApart(hit.Time, before) & " s" &
+               If(same, ", the same instant as the collision before it.", ".")
     End Function
 
     ''' <summary>The timeline slider was moved to <paramref name="position"/> (0 to <see cref="TimelineSteps"/>).</summary>
@@ -258,7 +289,10 @@ Partial Public NotInheritable Class SimulationPresenter
                 PauseForStep()
                 ShowMoment(time)
                 ShowStep("rewound")
-                ShowMessage("Back at t = " & Units.Quantity(World.Time, "s") & " (kept: " & Units.Sig(_timeline.Earliest) & " to " & Units.Quantity(_timeline.Latest, "s") & "). Resume replays the run as it was; any change starts a new one from here.")
+                ' True while there is a recorded run ahead to replay: a change (a new g, a push) starts a
+                ' new run and forgets it, and a replay that reaches the latest moment has none left.
+                ShowMessage("Back at t = " & Units.Quantity(World.Time, "s") & " (kept: " & Units.Sig(_timeline.Earliest) & " to " & Units.Quantity(_timeline.Latest, "s") & "). Resume replays the run as it was; any change starts a new one from here.",
+                            Function() World.Time < _timeline.Latest)
             End Sub)
     End Sub
 

@@ -251,7 +251,10 @@ Partial Public NotInheritable Class SimulationPresenter
             ShowMessage("Now click the second body, or an empty place for a fixed anchor (Esc cancels).")
             Return
         End If
-        If body Is LinkStart Then Return
+        If body Is LinkStart Then
+            ShowMessage("A " & name & " joins two different bodies: click another body, or an empty place for a fixed anchor (Esc cancels).")
+            Return
+        End If
         Dim first = LinkStart
         ' End A must move: a fixed body can only be end B.
         Dim a = If(first.IsFixed AndAlso body IsNot Nothing, body, first)

@@ -151,6 +151,7 @@ Partial Public NotInheritable Class SimulationPresenter
         FollowMomentumViews(realSeconds, Not IsPaused)
         _sinceSnapshot += realSeconds
         If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
+        CheckMessage()
         Budget.AddOtherWork(ClockSeconds() - frameStart - advancing)
     End Sub
 
@@ -207,6 +208,7 @@ Partial Public NotInheritable Class SimulationPresenter
         SampleGraphs()
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
         _window.ShowState()
+        CheckMessage()
     End Sub
 
     ''' <summary>The canvas changed size, px.</summary>
@@ -316,6 +318,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 World.Restitution = Math.Max(0.0, Math.Min(1.0, e))
                 Emit("restitution " & Units.Num(World.Restitution))
                 _window.ShowSettings()
+                CheckMessage()
             End Sub)
     End Sub
 
@@ -380,7 +383,11 @@ Partial Public NotInheritable Class SimulationPresenter
                 EndGestures()
                 _Mode = If(_Mode = ClickMode.Delete, ClickMode.Move, ClickMode.Delete)
                 Emit("mode " & If(_Mode = ClickMode.Delete, "delete", "move"))
-                ShowMessage(If(_Mode = ClickMode.Delete, "Delete mode: click a body or a link to remove it. Press Delete mode again to stop.", ""))
+                If _Mode = ClickMode.Delete Then
+                    ShowMessage(DeleteModeMessage, Function() _Mode = ClickMode.Delete)
+                Else
+                    ShowMessage("")
+                End If
                 _window.ShowSettings()
             End Sub)
     End Sub
@@ -413,14 +420,11 @@ Partial Public NotInheritable Class SimulationPresenter
         Inputs.ContainerHeightText = heightText
         Guarded(
             Sub()
-                Dim w = NumberInput.ReadPositive(widthText, "container width (m)", InputLimits.MaxContainer)
-                Dim h = NumberInput.ReadPositive(heightText, "container height (m)", InputLimits.MaxContainer)
+                ' Brought to its limits and said, as every other box is.
+                Dim w = NumberInput.ReadPositive(widthText, "container width (m)", InputLimits.MaxContainer, InputLimits.MinContainer)
+                Dim h = NumberInput.ReadPositive(heightText, "container height (m)", InputLimits.MaxContainer, InputLimits.MinContainer)
                 If Not w.IsValid OrElse Not h.IsValid Then
                     ShowMessage(InputLimits.ContainerMessage & " " & Problems(w, h))
-                    Return
-                End If
-                If w.Value < InputLimits.MinContainer OrElse h.Value < InputLimits.MinContainer Then
-                    ShowMessage(InputLimits.ContainerMessage & " Each side must be at least " & Units.Quantity(InputLimits.MinContainer, "m") & ".")
                     Return
                 End If
                 Dim refusal = ContainerRefusal(w.Value, h.Value)
@@ -435,7 +439,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 If h.WasClamped Then Inputs.ContainerHeightText = Units.Input(h.Value)
                 If w.WasClamped OrElse h.WasClamped Then _window.ShowInputs()
                 Emit("container " & Units.Num(w.Value) & " x " & Units.Num(h.Value) & " m")
-                ShowMessage(If(w.WasClamped OrElse h.WasClamped, "The container is at most " & Units.Quantity(InputLimits.MaxContainer, "m") & " on each side: set to the maximum.", ""))
+                ShowMessage(ClampNote(("container width", w, "m"), ("container height", h, "m")).TrimEnd())
                 TakeSnapshot()
                 _window.ShowSettings()
             End Sub)
@@ -489,6 +493,9 @@ Partial Public NotInheritable Class SimulationPresenter
         _window.ShowTheme()
     End Sub
 
+    ''' <summary>The message while Delete mode is on: short enough for the message area's first lines at any panel width.</summary>
+    Public Const DeleteModeMessage As String = "Delete mode: click a body or a link to remove it. Press Delete mode again to stop."
+
     ''' <summary>"❚❚ Pause" or "▶ Resume".</summary>
     Public ReadOnly Property PauseText As String
         Get
@@ -503,11 +510,28 @@ Partial Public NotInheritable Class SimulationPresenter
         End Get
     End Property
 
-    ''' <summary>Shows a message and writes it to the trace.</summary>
-    Private Sub ShowMessage(text As String)
+    ''' <summary>While a message is on show: whether what it says is still true (Nothing: it stays until the next one).</summary>
+    Private _messageHolds As Func(Of Boolean)
+
+    ''' <summary>
+    ''' Shows a message and writes it to the trace. A message that is true only for a while (Delete
+    ''' mode is on, the run ahead can be replayed, the scene cannot keep up) comes with
+    ''' <paramref name="holds"/>, and goes as soon as that is no longer so (see <see cref="CheckMessage"/>).
+    ''' </summary>
+    Private Sub ShowMessage(text As String, Optional holds As Func(Of Boolean) = Nothing)
         _Message = If(text, "")
+        _messageHolds = If(_Message.Length > 0, holds, Nothing)
         If _Message.Length > 0 Then Emit("message: " & _Message)
         _window.ShowMessage(_Message)
+    End Sub
+
+    ''' <summary>After every change and every frame: a message that is no longer true goes.</summary>
+    Private Sub CheckMessage()
+        Dim holds = _messageHolds
+        If holds Is Nothing OrElse holds() Then Return
+        _messageHolds = Nothing
+        Emit("message gone: " & _Message)
+        ShowMessage("")
     End Sub
 
     Private Sub Emit(line As String)

@@ -227,15 +227,77 @@ Partial Friend NotInheritable Class MainForm
 
     ''' <summary>Each column as wide as its header, and the spare width shared out, so no header is clipped.</summary>
     Private Sub FitColumns(list As BufferedListView, available As Integer)
-        Dim widths(list.Columns.Count - 1) As Integer
-        ' Headers are wider than the numbers under them, except for the id and colour columns.
-        For i = 0 To widths.Length - 1
-            Dim sample = ColumnSample(list.Columns(i).Text, i)
-            widths(i) = Math.Max(Measure(list.Columns(i).Text, list.Font).Width, Measure(sample, list.Font).Width) + S(12)
-        Next
+        Dim widths = NeededColumnWidths(list)
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
         For i = 0 To widths.Length - 1
             list.Columns(i).Width = widths(i) + spare
+        Next
+        TraceColumns(list, widths)
+    End Sub
+
+    ''' <summary>
+    ''' Each column's least width, px: its header, a typical value, and what its rows hold now (a
+    ''' polygon's "12 sides, 1.23×10⁻³ × 0.500"), each with a margin.
+    ''' </summary>
+    Private Function NeededColumnWidths(list As BufferedListView) As Integer()
+        Dim widths(list.Columns.Count - 1) As Integer
+        Dim rows = ShownCells(list)
+        For i = 0 To widths.Length - 1
+            Dim sample = ColumnSample(list.Columns(i).Text, i)
+            Dim widest = Math.Max(Measure(list.Columns(i).Text, list.Font).Width, Measure(sample, list.Font).Width)
+            For Each rowCells In rows
+                If i < rowCells.Length Then widest = Math.Max(widest, Measure(rowCells(i), list.Font).Width)
+            Next
+            widths(i) = widest + S(12)
+        Next
+        Return widths
+    End Function
+
+    ''' <summary>The cells of the first rows a body or link table holds now (at most 40: enough to see how wide its values run).</summary>
+    Private Function ShownCells(list As BufferedListView) As List(Of String())
+        Dim snap = _presenter.Snapshot
+        Dim rows As New List(Of String())
+        Dim t = _tables.IndexOf(list)
+        If t >= 0 Then
+            For r = 0 To Math.Min(40, snap.RowCount(t)) - 1
+                rows.Add(snap.Cells(t, r))
+            Next
+        ElseIf list Is _linkList Then
+            For r = 0 To Math.Min(40, snap.LinkCount) - 1
+                rows.Add(snap.LinkCells(r))
+            Next
+        End If
+        Return rows
+    End Function
+
+    Private _columnsGrownAt As Double = -1
+
+    ''' <summary>
+    ''' While time runs or bodies change: a column of the table on show that its values have outgrown
+    ''' is widened (at most twice a second; columns only grow, so they do not jump about).
+    ''' </summary>
+    Private Sub GrowColumns(list As BufferedListView)
+        Dim now = _clock.Elapsed.TotalSeconds
+        If now - _columnsGrownAt < 0.5 Then Return
+        _columnsGrownAt = now
+        Dim widths = NeededColumnWidths(list)
+        Dim grew = False
+        For i = 0 To widths.Length - 1
+            If list.Columns(i).Width < widths(i) Then
+                list.Columns(i).Width = widths(i)
+                grew = True
+            End If
+        Next
+        If grew Then TraceColumns(list, widths)
+    End Sub
+
+    ''' <summary>With --trace: each column's width and the width its header and values need ("column Bodies 9 width 180 needs 150").</summary>
+    Private Sub TraceColumns(list As BufferedListView, needs As Integer())
+        If _trace Is Nothing Then Return
+        Dim t = _tables.IndexOf(list)
+        Dim name = If(t >= 0, SimulationPresenter.Tables(t).Title, LinkTable.Title)
+        For i = 0 To needs.Length - 1
+            _trace("column " & name & " " & i & " width " & list.Columns(i).Width & " needs " & needs(i))
         Next
     End Sub
 

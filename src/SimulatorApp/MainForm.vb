@@ -444,6 +444,9 @@ Partial Friend NotInheritable Class MainForm
         Dim t = _tables.IndexOf(list)
         If t >= 0 Then list.VirtualListSize = _presenter.Snapshot.RowCount(t)
         If list Is _linkList Then list.VirtualListSize = _presenter.Snapshot.LinkCount
+        ' Values that grew while the table was behind another tab get their room now.
+        _columnsGrownAt = -1
+        If t >= 0 OrElse list Is _linkList Then GrowColumns(list)
         If list.Columns.Count > 0 Then
             Dim first = list.Columns(0)
             first.Width += 1
@@ -504,12 +507,23 @@ Partial Friend NotInheritable Class MainForm
             s.BackColor = ScenePainter.Rgb(theme.Panel)
             s.ForeColor = ScenePainter.Rgb(theme.PanelText)
         Next
-        Dim colour = BodyColours.Parse(cells(1), -1)
+        ' The colour the canvas draws the body in: its own, or the theme's fixed grey.
+        Dim colour = If(cells(1) = BodyTable.FixedColourCell, theme.Fixed, BodyColours.Parse(cells(1), -1))
         If colour >= 0 Then
             item.SubItems(1).BackColor = ScenePainter.Rgb(colour)
-            item.SubItems(1).ForeColor = Color.White
+            ' Dark text on a light colour, white on a dark one: readable on every swatch.
+            item.SubItems(1).ForeColor = If(Luminance(colour) > 0.45, Color.Black, Color.White)
         End If
         Return item
+    End Function
+
+    ''' <summary>Relative luminance of an &amp;HRRGGBB colour, 0 (black) to 1 (white), as the WCAG contrast rule reckons it.</summary>
+    Private Shared Function Luminance(rgb As Integer) As Double
+        Dim channel = Function(c As Integer) As Double
+                          Dim v = c / 255.0
+                          Return If(v <= 0.03928, v / 12.92, Math.Pow((v + 0.055) / 1.055, 2.4))
+                      End Function
+        Return 0.2126 * channel((rgb >> 16) And 255) + 0.7152 * channel((rgb >> 8) And 255) + 0.0722 * channel(rgb And 255)
     End Function
 
     Private Sub OnCanvasPaint(sender As Object, e As PaintEventArgs)
@@ -623,9 +637,11 @@ Partial Friend NotInheritable Class MainForm
         If shown >= 0 AndAlso shown < _tables.Count Then
             Dim list = _tables(shown)
             If list.VirtualListSize <> snap.RowCount(shown) Then list.VirtualListSize = snap.RowCount(shown)
+            GrowColumns(list)
             list.Invalidate()
         ElseIf shown = _tables.Count Then
             If _linkList.VirtualListSize <> snap.LinkCount Then _linkList.VirtualListSize = snap.LinkCount
+            GrowColumns(_linkList)
             _linkList.Invalidate()
         End If
         ' Two lines are kept for the totals whatever their length, so their growing never moves the tables.

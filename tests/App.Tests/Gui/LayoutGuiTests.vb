@@ -196,6 +196,55 @@ Public Class LayoutGuiTests
         End Using
     End Sub
 
+    ''' <summary>
+    ''' The Bodies table with every kind of body (a 12-sided polygon of small sides, a ramp, boxes),
+    ''' with large fonts: every column is as wide as its header and its values need, the Size
+    ''' column too, and the tables have room for more than two rows.
+    ''' </summary>
+    <GuiFact>
+    Public Sub TheBodiesTable_GivesEveryColumnRoomForItsValues_WithLargeFonts()
+        Dim folder = IO.Path.Combine(IO.Path.GetTempPath(), "gui-columns-" & Guid.NewGuid().ToString("N"))
+        IO.Directory.CreateDirectory(folder)
+        Dim scene = IO.Path.Combine(folder, "kinds.json")
+        Dim corners = String.Join(", ", Enumerable.Range(0, 12).Select(Function(k) "[" & (4 + 0.0123 * Math.Cos(k * Math.PI / 6)).ToString("R", CultureInfo.InvariantCulture) & ", " &
+                                                                                          (3 + 0.0123 * Math.Sin(k * Math.PI / 6)).ToString("R", CultureInfo.InvariantCulture) & "]"))
+        IO.File.WriteAllText(scene, "{""format"":""physics-scene/1"",""world"":{""width"":8,""height"":5,""gravity"":0},""bodies"":[" &
+            "{""id"":""dodecagon"",""type"":""polygon"",""vertices"":[" & corners & "],""mass"":1.0}," &
+            "{""id"":""slope"",""type"":""segment"",""x1"":1,""y1"":0.5,""x2"":3.123456,""y2"":1.5}," &
+            "{""id"":""crate"",""type"":""rectangle"",""x"":5,""y"":0,""width"":1.23456,""height"":0.987654,""fixed"":false,""mass"":2.5,""vx"":-1.5}," &
+            "{""id"":""table"",""type"":""rectangle"",""x"":6.5,""y"":0,""width"":1,""height"":0.5,""fixed"":true}," &
+            "{""id"":""ball"",""type"":""circle"",""x"":2,""y"":3,""radius"":0.25,""mass"":1,""vx"":-12.345678}]}")
+        Try
+            Using app As New AppDriver(New XSessionOptions With {.Screen = "1280x800x24"}, scene)
+                app.WaitFor("^opened kinds.json: 5 bodies")
+                Dim from = app.Mark()
+                app.Click("large-fonts")
+                app.WaitFor("^large fonts on$", skip:=from)
+                app.WaitFor("^ready$", skip:=from)
+                from = app.Mark()
+                app.Click("tab-bodies")
+                app.WaitFor("^tab Bodies$", skip:=from)
+                app.WaitFor("^row Bodies 4: ", skip:=from)
+                Thread.Sleep(700)
+                Dim widths As New Dictionary(Of Integer, (Width As Integer, Needs As Integer))
+                For Each line In app.Lines()
+                    Dim m = Regex.Match(line, "^column Bodies (\d+) width (\d+) needs (\d+)$")
+                    If m.Success Then widths(Int(m.Groups(1).Value)) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value))
+                Next
+                Assert.Equal(10, widths.Count)
+                For Each kv In widths
+                    Assert.True(kv.Value.Width >= kv.Value.Needs, $"column {kv.Key} of the Bodies table is {kv.Value.Width} px wide; its header and values need {kv.Value.Needs} px")
+                Next
+                ' The Size column's widest value is the polygon's: "12 sides, 0.0246 × 0.0238" is longer than the typical value it started from.
+                Dim size = app.LastMatch("^row Bodies \d+: dodecagon \| .* \| (12 sides, [^|]+)$").Groups(1).Value
+                Assert.StartsWith("12 sides, ", size, StringComparison.Ordinal)
+                app.X.Shoot("bodies-table-large")
+            End Using
+        Finally
+            IO.Directory.Delete(folder, True)
+        End Try
+    End Sub
+
     Private Shared Function Int(text As String) As Integer
         Return Integer.Parse(text, CultureInfo.InvariantCulture)
     End Function
