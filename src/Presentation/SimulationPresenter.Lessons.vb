@@ -19,7 +19,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The tutorial's page on lessons, Restart and the keys.</summary>
     Public Shared ReadOnly Property LessonsHelp As New HelpTopic("6. Lesson scenes, Restart and keys",
-        "Scenes (" & ScenesKey & ") lists ready-made lessons: head-on collisions, a glancing blow, Newton's cradle, a pool break, a bouncing ball, π from collisions, an ideal gas, a settling pile and more. One click on a lesson opens it, and the message box says what it shows. The lessons are the scene files in the scenes folder beside the app; a file you save there appears in the list too (its title comes from lessons.txt in that folder, else from the file's name)." & vbLf & "" & vbLf &
+        "Scenes (" & ScenesKey & ") lists ready-made lessons by topic (collisions, momentum, energy, gases, pendulums and springs, ramps and boxes): head-on collisions, a glancing blow, Newton's cradle, a pool break, a bouncing ball, π from collisions, an ideal gas, a settling pile and more. Point at a topic and click a lesson to open it; the message box says what it shows (the keys work too: arrows and Enter). The lessons are the scene files in the scenes folder beside the app; a file you save there appears under  & LessonTopics.More &  (its title comes from lessons.txt in that folder, else from the file's name)." & vbLf & "" & vbLf &
         "Restart (" & RestartKey & ") puts every body back where it was, with its velocity, when the scene was opened or last built (a body added or deleted, a fixed body moved, the container resized), and sets the clock and the collision count to 0. Gravity, restitution and speed stay as you set them, so you can run the same start again on the Moon or with e = 0.5. Reset (" & ResetKey & ") still removes every body." & vbLf & "" & vbLf &
         "Keys: " & PauseKey & " pauses and resumes, " & RestartKey & " restarts, " & ResetKey & " resets, " & ScenesKey & " opens the Scenes menu, Esc drops a body you are placing; " & TimeKeysText & "." & vbLf & "" & vbLf &
         "A scene file opened with the app (double-clicked, or given on the command line) opens at the start. A file that cannot be opened leaves an empty box and a message saying why.")
@@ -38,6 +38,11 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim found = LessonIndex.Read(LessonFolder)
         Emit("lessons " & found.Count & " in " & If(LessonFolder, "(no folder)"))
         Return found
+    End Function
+
+    ''' <summary>The Scenes menu by topic (collisions, momentum, energy, …), read from <see cref="LessonFolder"/> now.</summary>
+    Public Function LessonMenu() As IReadOnlyList(Of (Topic As String, Lessons As IReadOnlyList(Of Lesson)))
+        Return LessonTopics.Group(Lessons())
     End Function
 
     ''' <summary>Opens a lesson from the Scenes menu; the message gives its title and what it shows. A file that fails keeps the scene on screen, as Open does.</summary>

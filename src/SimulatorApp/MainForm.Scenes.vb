@@ -74,8 +74,10 @@ Partial Friend NotInheritable Class MainForm
     End Function
 
     ''' <summary>
-    ''' Drops the Scenes menu down under its button: one item per lesson, its title and what it shows,
-    ''' read from the scenes folder now, so a file added there since is listed.
+    ''' Drops the Scenes menu down under its button: one item per topic, each opening its lessons
+    ''' (their titles; what each shows is in its tip and, once opened, the message box), read from
+    ''' the scenes folder now, so a file added there since is listed. The menu is kept on the screen,
+    ''' and its lists open towards the side with room.
     ''' </summary>
     Private Sub ShowLessonMenu()
         For Each old In _lessonMenu.Items.Cast(Of ToolStripItem)().ToList()
@@ -88,32 +90,82 @@ Partial Friend NotInheritable Class MainForm
         _lessonMenu.Renderer = If(theme.IsHighContrast, New ToolStripProfessionalRenderer(New LessonMenuColours()), New ToolStripProfessionalRenderer())
         _lessonMenu.BackColor = back
         _lessonMenu.ForeColor = fore
-        Dim lessons = _presenter.Lessons()
-        For Each lesson In lessons
-            Dim chosen = lesson
-            ' "&" would underline the next letter of a title; doubled it is shown as itself.
-            Dim item As New ToolStripMenuItem(chosen.MenuText.Replace("&", "&&")) With {.BackColor = back, .ForeColor = fore}
-            AddHandler item.Click, Sub(s, e) Act(Sub() _presenter.OpenLesson(chosen))
-            _lessonMenu.Items.Add(item)
+        _lessonMenu.ShowItemToolTips = True
+        Dim menu = _presenter.LessonMenu()
+        Dim count = 0
+        For k = 0 To menu.Count - 1
+            Dim topicIndex = k
+            Dim topic As New ToolStripMenuItem(menu(k).Topic.Replace("&", "&&")) With {.BackColor = back, .ForeColor = fore}
+            topic.DropDown.Font = Font
+            topic.DropDown.BackColor = back
+            topic.DropDown.ForeColor = fore
+            If TypeOf topic.DropDown Is ToolStripDropDownMenu Then DirectCast(topic.DropDown, ToolStripDropDownMenu).ShowItemToolTips = True
+            Dim lessons = menu(k).Lessons
+            For Each lesson In lessons
+                Dim chosen = lesson
+                ' "&" would underline the next letter of a title; doubled it is shown as itself.
+                Dim item As New ToolStripMenuItem(chosen.Title.Replace("&", "&&")) With {.BackColor = back, .ForeColor = fore, .ToolTipText = chosen.Summary}
+                AddHandler item.Click, Sub(s, e) Act(Sub() _presenter.OpenLesson(chosen))
+                topic.DropDownItems.Add(item)
+                count += 1
+            Next
+            AddHandler topic.DropDownOpened, Sub(s, e) TraceLessonList(topicIndex, topic, lessons)
+            _lessonMenu.Items.Add(topic)
         Next
-        If lessons.Count = 0 Then
+        If menu.Count = 0 Then
             _lessonMenu.Items.Add(New ToolStripMenuItem("No scene files in " & If(_presenter.LessonFolder, "the scenes folder")) With {.Enabled = False, .BackColor = back, .ForeColor = fore})
         End If
-        _lessonMenu.Show(_scenes, New Point(0, _scenes.Height))
-        TraceLessonMenu(lessons)
+        ' Under the button, moved left as far as it takes to stay on the screen; the lists open to the
+        ' right when there is room for the widest of them there, else to the left.
+        Dim area = Screen.FromControl(Me).WorkingArea
+        Dim menuSize = _lessonMenu.GetPreferredSize(Drawing.Size.Empty)
+        Dim widestList = _lessonMenu.Items.OfType(Of ToolStripMenuItem)().Select(Function(t) t.DropDown.GetPreferredSize(Drawing.Size.Empty).Width).DefaultIfEmpty(0).Max()
+        Dim at = _scenes.PointToScreen(New Point(0, _scenes.Height))
+        at.X = Math.Max(area.Left, Math.Min(at.X, area.Right - menuSize.Width))
+        at.Y = Math.Max(area.Top, Math.Min(at.Y, area.Bottom - menuSize.Height))
+        Dim direction = If(at.X + menuSize.Width + widestList <= area.Right, ToolStripDropDownDirection.Right, ToolStripDropDownDirection.Left)
+        For Each t In _lessonMenu.Items.OfType(Of ToolStripMenuItem)()
+            t.DropDownDirection = direction
+        Next
+        _lessonMenu.Show(at)
+        TraceLessonMenu(menu, count)
     End Sub
 
-    ''' <summary>With --trace: where each item of the open menu is on the screen (GUI tests click them there).</summary>
-    Private Sub TraceLessonMenu(lessons As IReadOnlyList(Of Lesson))
+    ''' <summary>With --trace: where each topic of the open menu is on the screen, and which topic holds each lesson (GUI tests click them there).</summary>
+    Private Sub TraceLessonMenu(menu As IReadOnlyList(Of (Topic As String, Lessons As IReadOnlyList(Of Lesson))), count As Integer)
         If _trace Is Nothing Then Return
-        For i = 0 To Math.Min(lessons.Count, _lessonMenu.Items.Count) - 1
-            Dim b = _lessonMenu.Items(i).Bounds
+        For k = 0 To Math.Min(menu.Count, _lessonMenu.Items.Count) - 1
+            Dim b = _lessonMenu.Items(k).Bounds
             Dim p = _lessonMenu.PointToScreen(b.Location)
+            _trace("lesson topic " & k & " " & p.X & " " & p.Y & " " & b.Width & " " & b.Height & " " & menu(k).Topic)
+            For Each lesson In menu(k).Lessons
+                _trace("lesson in " & k & " " & lesson.FileName)
+            Next
+        Next
+        TraceMenuBounds("lesson menu", _lessonMenu)
+        _trace("lesson menu shown " & count)
+    End Sub
+
+    ''' <summary>With --trace: where each lesson of a topic's list is on the screen, once it has opened.</summary>
+    Private Sub TraceLessonList(topic As Integer, item As ToolStripMenuItem, lessons As IReadOnlyList(Of Lesson))
+        If _trace Is Nothing Then Return
+        Dim list = item.DropDown
+        For i = 0 To Math.Min(lessons.Count, list.Items.Count) - 1
+            Dim b = list.Items(i).Bounds
+            Dim p = list.PointToScreen(b.Location)
             _trace("lesson item " & i & " " & p.X & " " & p.Y & " " & b.Width & " " & b.Height & " " & lessons(i).FileName)
         Next
-        _trace("lesson menu shown " & lessons.Count)
+        TraceMenuBounds("lesson list " & topic, list)
+        _trace("lesson list shown " & topic)
     End Sub
 
+    ''' <summary>With --trace: a drop-down's rectangle on the screen and the screen's, and whether every item's text fits ("menu … on screen").</summary>
+    Private Sub TraceMenuBounds(name As String, menu As ToolStrip)
+        Dim r = New Drawing.Rectangle(menu.PointToScreen(Point.Empty), menu.Size)
+        Dim area = Screen.FromControl(Me).Bounds
+        Dim fits = menu.Items.Cast(Of ToolStripItem)().All(Function(i) Measure(i.Text, menu.Font).Width <= i.Bounds.Width)
+        _trace(name & " at " & r.X & " " & r.Y & " " & r.Width & " " & r.Height & " screen " & area.Width & " " & area.Height & If(fits, " fits", " cut"))
+    End Sub
     ''' <summary>The keys of the lesson toolkit, wherever the focus is (a text box keeps every other key).</summary>
     Protected Overrides Function ProcessCmdKey(ByRef msg As Message, keyData As Keys) As Boolean
         Select Case keyData
