@@ -50,7 +50,7 @@ Partial Public NotInheritable Class SimulationPresenter
             ShowMessage("Saving scene files is not available in this build.")
             Return
         End If
-        Dim missing = MissingFolder(path)
+        Dim missing = FolderCheck.MissingFolder(path)
         If missing IsNot Nothing Then
             ShowMessage("Could not save " & SafeName(path) & ": " & missing & ".")
             Return
@@ -74,22 +74,6 @@ Partial Public NotInheritable Class SimulationPresenter
             ' Keep the folder there was.
         End Try
     End Sub
-
-    ''' <summary>
-    ''' "the folder /media/usb/lessons does not exist; nothing was written" when the folder of
-    ''' <paramref name="path"/> is not there, else Nothing. Checked before writing: Mono reports a
-    ''' missing folder as a missing file, and names the temporary file the write goes through.
-    ''' </summary>
-    Private Shared Function MissingFolder(path As String) As String
-        Dim folder As String
-        Try
-            folder = IO.Path.GetDirectoryName(IO.Path.GetFullPath(path))
-        Catch ex As Exception When TypeOf ex Is ArgumentException OrElse TypeOf ex Is NotSupportedException OrElse TypeOf ex Is IO.PathTooLongException OrElse TypeOf ex Is Security.SecurityException
-            Return Nothing ' the write itself says what is wrong with the name
-        End Try
-        If String.IsNullOrEmpty(folder) OrElse IO.Directory.Exists(folder) Then Return Nothing
-        Return "the folder " & folder & " does not exist; nothing was written"
-    End Function
 
     ''' <summary>Every exception a bad file or path can raise; programming errors (null references) still surface.</summary>
     Private Shared Function IsFileProblem(ex As Exception) As Boolean

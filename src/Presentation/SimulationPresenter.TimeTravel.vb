@@ -90,7 +90,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Sub OnCollision(r As CollisionRecord)
         Log.Record(r, World.DraggedBody)
-        GraphCollision(r)
+        _graphs.GraphCollision(r)
         NoteImpulses(r)
         If _watchCollisions AndAlso Not _firstCollision.HasValue Then
             _firstCollision = r
@@ -125,7 +125,7 @@ Partial Public NotInheritable Class SimulationPresenter
         UseTimeline(w, SolverFactory.Create(point.SolverName), restartFirst:=False)
         ' A cue being aimed while the run replays keeps aiming at the same body of the new world.
         If _AimedBody IsNot Nothing Then _AimedBody = w.Find(_AimedBody.Id)
-        _World = w
+        _stage.World = w
         Log.ContinueFrom(point.Collisions)
         ' Going back is not building: Restart keeps the start it had.
         _startBodies = w.Bodies.ToArray()
@@ -144,7 +144,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Sub PauseForStep()
         EndGestures()
         If Not IsPaused Then
-            _IsPaused = True
+            _stage.IsPaused = True
             Emit("paused t=" & Units.Num(World.Time, 3) & " s")
         End If
     End Sub

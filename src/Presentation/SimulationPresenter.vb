@@ -17,6 +17,12 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Const SnapshotSeconds As Double = 0.1
 
     Private ReadOnly _window As ISimulationView
+    ''' <summary>What the parts share: the world, the window, the trace, the message, the log, the typed boxes.</summary>
+    Private ReadOnly _stage As Stage
+    ''' <summary>The Graphs tab's series, pressure gauge and histogram.</summary>
+    Private ReadOnly _graphs As GraphRecorder
+    ''' <summary>The Export menu's files.</summary>
+    Private ReadOnly _export As ExportWriter
     Private ReadOnly _colours As BodyColours
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
@@ -30,6 +36,9 @@ Partial Public NotInheritable Class SimulationPresenter
                    Optional colourSeed As Integer = 12345)
         If view Is Nothing Then Throw New ArgumentNullException(NameOf(view))
         _window = view
+        _stage = New Stage(view) With {.TakeSnapshot = AddressOf TakeSnapshot, .EndGestures = AddressOf EndGestures}
+        _graphs = New GraphRecorder(_stage)
+        _export = New ExportWriter(_stage, _graphs)
         SceneStore = store
         _colours = New BodyColours(colourSeed)
         Attach(If(world, Scenarios.Demo()))
@@ -37,27 +46,54 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The world being shown. Replaced when a scene is opened. The window draws it; it never changes it.</summary>
     Public ReadOnly Property World As World
+        Get
+            Return _stage.World
+        End Get
+    End Property
 
     ''' <summary>Reads and writes scene files; Nothing disables Open and Save with a message.</summary>
     Public Property SceneStore As ISceneStore
 
     ''' <summary>Receives one line per action and state change (the app's --trace switch prints them).</summary>
     Public Property Trace As Action(Of String)
+        Get
+            Return _stage.Trace
+        End Get
+        Set(value As Action(Of String))
+            _stage.Trace = value
+        End Set
+    End Property
 
     ''' <summary>The last collisions, newest first.</summary>
-    Public ReadOnly Property Log As New CollisionLog()
+    Public ReadOnly Property Log As CollisionLog
+        Get
+            Return _stage.Log
+        End Get
+    End Property
 
     ''' <summary>The text of the input boxes, as typed.</summary>
-    Public ReadOnly Property Inputs As New BodyInputs()
+    Public ReadOnly Property Inputs As BodyInputs
+        Get
+            Return _stage.Inputs
+        End Get
+    End Property
 
     ''' <summary>What the message box shows when there is no message: how to use the mouse.</summary>
     Public Const MouseHint As String = "Right-drag carries a body. Left-drag back from a moving body and let go to fire it like a cue."
 
     ''' <summary>The message on show ("" for none).</summary>
-    Public ReadOnly Property Message As String = ""
+    Public ReadOnly Property Message As String
+        Get
+            Return _stage.Message
+        End Get
+    End Property
 
     ''' <summary>True while time is stopped.</summary>
     Public ReadOnly Property IsPaused As Boolean
+        Get
+            Return _stage.IsPaused
+        End Get
+    End Property
 
     ''' <summary>Position of the speed slider in <see cref="SpeedSteps.Values"/>.</summary>
     Public ReadOnly Property SpeedIndex As Integer = SpeedSteps.RealTimeIndex
@@ -146,7 +182,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 Fail("The simulation stopped: " & ex.Message)
             End Try
             Log.EndFrame()
-            SampleGraphs()
+            _graphs.SampleGraphs()
         End If
         FollowMomentumViews(realSeconds, Not IsPaused)
         _sinceSnapshot += realSeconds
@@ -173,31 +209,16 @@ Partial Public NotInheritable Class SimulationPresenter
     End Function
 
     Private Sub Fail(text As String)
-        _IsPaused = True
+        _stage.IsPaused = True
         EndGestures()
         ShowMessage(text)
         TakeSnapshot()
         _window.ShowSettings()
     End Sub
 
-    ''' <summary>
-    ''' Runs one of the teacher's actions. Anything the engine refuses becomes a message, never a
-    ''' crash; the tables are brought up to date either way.
-    ''' </summary>
+    ''' <summary>Runs one of the teacher's actions; anything the engine refuses becomes a message (see <see cref="Stage.Guarded"/>).</summary>
     Private Sub Guarded(action As Action)
-        Try
-            action()
-        Catch ex As ArgumentException
-            ShowMessage("That did not work: " & OneLine(ex.Message))
-        Catch ex As InvalidOperationException
-            ShowMessage("That did not work: " & OneLine(ex.Message))
-        Catch ex As ArithmeticException
-            ShowMessage("That did not work: " & OneLine(ex.Message))
-        Catch ex As NotSupportedException
-            ShowMessage("That did not work: " & OneLine(ex.Message))
-        Catch ex As Scenes.SceneFormatException
-            ShowMessage("That did not work: " & OneLine(ex.Message))
-        End Try
+        _stage.Guarded(action)
     End Sub
 
     ''' <summary>Copies the world's state for the tables and totals, follows it with the arrows' scale, and tells the window.</summary>
@@ -205,7 +226,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _sinceSnapshot = 0
         NoteBuilding()
         _Snapshot = TableSnapshot.Take(World, Log.TotalSeen)
-        SampleGraphs()
+        _graphs.SampleGraphs()
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
         _window.ShowState()
         CheckMessage()
@@ -244,14 +265,14 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub TogglePause()
         Guarded(
             Sub()
-                _IsPaused = Not _IsPaused
+                _stage.IsPaused = Not _stage.IsPaused
                 ' A body carried across the change keeps following the cursor: while paused it is moved
                 ' directly, while running the engine carries it (balls that meet it bounce off).
                 If _dragged IsNot Nothing AndAlso Not _dragged.IsFixed Then
-                    If _IsPaused Then World.EndDrag(Vector.Zero) Else World.BeginDrag(_dragged)
+                    If _stage.IsPaused Then World.EndDrag(Vector.Zero) Else World.BeginDrag(_dragged)
                 End If
                 TakeSnapshot()
-                If _IsPaused Then
+                If _stage.IsPaused Then
                     Emit("paused t=" & Units.Num(World.Time, 3) & " s")
                     For Each c In World.Circles
                         If Not c.IsFixed Then Emit("body " & c.Id & " at " & Units.Pair(c.Position, 3) & " m v " & Units.Pair(c.Velocity, 3) & " m/s")
@@ -510,32 +531,18 @@ Partial Public NotInheritable Class SimulationPresenter
         End Get
     End Property
 
-    ''' <summary>While a message is on show: whether what it says is still true (Nothing: it stays until the next one).</summary>
-    Private _messageHolds As Func(Of Boolean)
-
-    ''' <summary>
-    ''' Shows a message and writes it to the trace. A message that is true only for a while (Delete
-    ''' mode is on, the run ahead can be replayed, the scene cannot keep up) comes with
-    ''' <paramref name="holds"/>, and goes as soon as that is no longer so (see <see cref="CheckMessage"/>).
-    ''' </summary>
+    ''' <summary>Shows a message (see <see cref="Stage.ShowMessage"/>).</summary>
     Private Sub ShowMessage(text As String, Optional holds As Func(Of Boolean) = Nothing)
-        _Message = If(text, "")
-        _messageHolds = If(_Message.Length > 0, holds, Nothing)
-        If _Message.Length > 0 Then Emit("message: " & _Message)
-        _window.ShowMessage(_Message)
+        _stage.ShowMessage(text, holds)
     End Sub
 
-    ''' <summary>After every change and every frame: a message that is no longer true goes.</summary>
+    ''' <summary>A message that is no longer true goes (see <see cref="Stage.CheckMessage"/>).</summary>
     Private Sub CheckMessage()
-        Dim holds = _messageHolds
-        If holds Is Nothing OrElse holds() Then Return
-        _messageHolds = Nothing
-        Emit("message gone: " & _Message)
-        ShowMessage("")
+        _stage.CheckMessage()
     End Sub
 
     Private Sub Emit(line As String)
-        Trace?.Invoke(line)
+        _stage.Emit(line)
     End Sub
 
     ''' <summary>
@@ -563,11 +570,11 @@ Partial Public NotInheritable Class SimulationPresenter
     End Sub
 
     Private Shared Function Problems(ParamArray inputs As NumberInput()) As String
-        Return String.Join("; ", inputs.Where(Function(i) Not i.IsValid).Select(Function(i) i.Problem)) & "."
+        Return Stage.Problems(inputs)
     End Function
 
     Private Shared Function OneLine(text As String) As String
-        Return If(text, "").Replace(vbCr, " ").Replace(vbLf, " ").Trim()
+        Return Stage.OneLine(text)
     End Function
 
     ''' <summary>Makes <paramref name="w"/> the world on show: solver, collision log, colours, view, tables.</summary>
@@ -578,7 +585,7 @@ Partial Public NotInheritable Class SimulationPresenter
             If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
         Next
         ForgetMomentumViews()
-        _World = w
+        _stage.World = w
         Log.Clear()
         Inputs.ContainerWidthText = Units.Input(w.Width)
         Inputs.ContainerHeightText = Units.Input(w.Height)
@@ -590,4 +597,102 @@ Partial Public NotInheritable Class SimulationPresenter
         ' its first frame: it costs about a frame's time in a scene of hundreds of bodies.
         TryCast(w.Solver, TimelineSolver)?.CheckpointIfChanged()
     End Sub
+
+#Region "The Graphs tab (GraphRecorder)"
+    ''' <summary>Kinetic energy's colour on the graphs (red).</summary>
+    Public Const KineticColour As Integer = GraphRecorder.KineticColour
+    ''' <summary>Potential energy's colour on the graphs (green).</summary>
+    Public Const PotentialColour As Integer = GraphRecorder.PotentialColour
+    ''' <summary>Total energy's and the measured pressure's colour on the graphs (blue).</summary>
+    Public Const TotalColour As Integer = GraphRecorder.TotalColour
+    ''' <summary>The theory curves' colour on the graphs (orange).</summary>
+    Public Const TheoryColour As Integer = GraphRecorder.TheoryColour
+
+    ''' <summary>The graph the Graphs tab shows.</summary>
+    Public ReadOnly Property Graph As GraphKind
+        Get
+            Return _graphs.Graph
+        End Get
+    End Property
+
+    ''' <summary>The totals recorded as time runs.</summary>
+    Public ReadOnly Property Series As SeriesRecorder
+        Get
+            Return _graphs.Series
+        End Get
+    End Property
+
+    ''' <summary>The wall pressure measured since the gas last changed (Nothing before the first frame).</summary>
+    Public ReadOnly Property Pressure As WallPressure
+        Get
+            Return _graphs.Pressure
+        End Get
+    End Property
+
+    ''' <summary>Simulated time the pressure gauge was last started, s.</summary>
+    Public ReadOnly Property PressureStart As Double
+        Get
+            Return _graphs.PressureStart
+        End Get
+    End Property
+
+    ''' <summary>The graphs' names in the Graphs tab's chooser, in <see cref="GraphKind"/> order.</summary>
+    Public Shared ReadOnly Property GraphNames As IReadOnlyList(Of String) = GraphRecorder.Names
+
+    ''' <summary>Shows another graph.</summary>
+    Public Sub ChooseGraph(kind As GraphKind)
+        _graphs.ChooseGraph(kind)
+    End Sub
+
+    ''' <summary>The graph on show, built from what has been recorded.</summary>
+    Public Function CurrentGraph() As GraphPlot
+        Return _graphs.CurrentGraph()
+    End Function
+
+    ''' <summary>The speeds now as a histogram with the 2D Maxwell–Boltzmann curve (see <see cref="GraphRecorder.HistogramGraph"/>).</summary>
+    Public Shared Function HistogramGraph(gas As GasState) As GraphPlot
+        Return GraphRecorder.HistogramGraph(gas)
+    End Function
+#End Region
+
+#Region "The Export menu (ExportWriter)"
+    ''' <summary>The Export button's caption.</summary>
+    Public Const ExportCaption As String = ExportWriter.ExportCaption
+
+    ''' <summary>The Export menu's items, in <see cref="ExportKind"/> order.</summary>
+    Public Shared ReadOnly Property ExportNames As IReadOnlyList(Of String) = ExportWriter.Names
+
+    ''' <summary>The series CSV's header: the command line's --series columns, each with its unit.</summary>
+    Public Shared ReadOnly Property SeriesHeader As IReadOnlyList(Of String) = ExportWriter.SeriesHeader
+
+    ''' <summary>The file name the Save dialog suggests for an export.</summary>
+    Public Function ExportFileName(kind As ExportKind) As String
+        Return _export.ExportFileName(kind)
+    End Function
+
+    ''' <summary>The Bodies table as CSV: every body, numbers in SI units at full precision.</summary>
+    Public Function BodiesCsv() As String
+        Return _export.BodiesCsv()
+    End Function
+
+    ''' <summary>The collision log as CSV, oldest row first.</summary>
+    Public Function LogCsv() As String
+        Return _export.LogCsv()
+    End Function
+
+    ''' <summary>The graph on show as CSV.</summary>
+    Public Function SeriesCsv() As String
+        Return _export.SeriesCsv()
+    End Function
+
+    ''' <summary>Writes a CSV export to <paramref name="path"/>; says what was written, or why not.</summary>
+    Public Sub ExportCsv(kind As ExportKind, path As String)
+        _export.ExportCsv(kind, path)
+    End Sub
+
+    ''' <summary>Writes a picture the window drew (PNG) to <paramref name="path"/> through <paramref name="write"/>; says what was written, or why not.</summary>
+    Public Sub ExportPicture(kind As ExportKind, path As String, write As Action(Of IO.Stream), width As Integer, height As Integer)
+        _export.ExportPicture(kind, path, write, width, height)
+    End Sub
+#End Region
 End Class

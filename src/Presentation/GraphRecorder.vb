@@ -1,9 +1,17 @@
 Option Strict On
 
-' The Graphs tab: the series recorded as time runs (energies, momentum), the wall pressure gauge,
-' and the speed histogram with the 2D Maxwell–Boltzmann curve, each built as a GraphPlot the window
-' draws. Recording starts again when a scene is opened, restarted or reset, or the container changes.
-Partial Public NotInheritable Class SimulationPresenter
+''' <summary>
+''' The Graphs tab: the series recorded as time runs (energies, momentum), the wall pressure gauge,
+''' and the speed histogram with the 2D Maxwell–Boltzmann curve, each built as a GraphPlot the window
+''' draws. Recording starts again when a scene is opened, restarted or reset, or the container changes.
+''' </summary>
+Friend NotInheritable Class GraphRecorder
+    Private ReadOnly _stage As Stage
+
+    Public Sub New(stage As Stage)
+        _stage = stage
+    End Sub
+
     ''' <summary>Kinetic energy's colour on the graphs (red).</summary>
     Public Const KineticColour As Integer = &HE53935
     ''' <summary>Potential energy's colour on the graphs (green).</summary>
@@ -27,7 +35,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public ReadOnly Property Pressure As WallPressure
 
     ''' <summary>The graphs' names in the Graphs tab's chooser, in <see cref="GraphKind"/> order.</summary>
-    Public Shared ReadOnly Property GraphNames As IReadOnlyList(Of String) = {
+    Public Shared ReadOnly Property Names As IReadOnlyList(Of String) = {
         "Energy: KE, PE and total against time",
         "Momentum: px and py against time",
         "Speed histogram with Maxwell–Boltzmann",
@@ -37,7 +45,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub ChooseGraph(kind As GraphKind)
         If kind < GraphKind.Energy OrElse kind > GraphKind.Pressure Then Return
         _Graph = kind
-        Emit("graph " & kind.ToString())
+        _stage.Emit("graph " & kind.ToString())
     End Sub
 
     ''' <summary>
@@ -45,8 +53,8 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' with every snapshot. A new world, a time earlier than the last sample, or a gas whose count or
     ''' container changed starts the recording again.
     ''' </summary>
-    Private Sub SampleGraphs()
-        Dim w = World
+    Public Sub SampleGraphs()
+        Dim w = _stage.World
         If w IsNot _graphWorld Then
             _graphWorld = w
             Series.Clear()
@@ -71,8 +79,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Public ReadOnly Property PressureStart As Double
 
     ''' <summary>Takes one collision for the pressure gauge (walls only; not while a body is carried).</summary>
-    Private Sub GraphCollision(record As CollisionRecord)
-        If World.DraggedBody IsNot Nothing Then Return
+    Public Sub GraphCollision(record As CollisionRecord)
+        If _stage.World.DraggedBody IsNot Nothing Then Return
         _Pressure?.Collided(record)
     End Sub
 
@@ -80,7 +88,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Function CurrentGraph() As GraphPlot
         Select Case Graph
             Case GraphKind.Momentum : Return MomentumGraph()
-            Case GraphKind.SpeedHistogram : Return HistogramGraph(GasState.Read(World))
+            Case GraphKind.SpeedHistogram : Return HistogramGraph(GasState.Read(_stage.World))
             Case GraphKind.Pressure : Return PressureGraph()
             Case Else : Return EnergyGraph()
         End Select
@@ -168,7 +176,7 @@ Partial Public NotInheritable Class SimulationPresenter
             g.EmptyText = "Run time: a reading every " & Units.Quantity(If(gauge?.ReadingSeconds, 1.0), "s") & " of simulated time."
             Return g
         End If
-        Dim gas = GasState.Read(World)
+        Dim gas = GasState.Read(_stage.World)
         Dim err = gauge.StandardError
         g.Notes.Add("measured over " & Units.Quantity(gauge.MeasuredSeconds, "s") & ": " & Units.Quantity(gauge.Average, "N/m") &
                     If(Double.IsNaN(err), "", " ± " & Units.Sig(err, 2)) & "   N·k·T/A = " & Units.Quantity(gauge.AverageIdeal, "N/m"))

@@ -1,0 +1,107 @@
+Option Strict On
+
+''' <summary>
+''' What the presenter's parts share, and all they see of one another: the world on show, the
+''' window, the trace, the message, the collision log, the typed boxes, whether time is stopped,
+''' and the few things any part may ask for (a snapshot for the tables, the end of the mouse's
+''' gestures, a new run for a new world). Each part (time travel, graphs, export, lessons, table
+''' editing, momentum views, the pointer tools, the undo history) keeps its own state and is handed
+''' this; <see cref="SimulationPresenter"/> builds them and routes the window's calls to them.
+''' </summary>
+Friend NotInheritable Class Stage
+    Private _messageHolds As Func(Of Boolean)
+
+    Public Sub New(window As ISimulationView)
+        Me.Window = window
+    End Sub
+
+    ''' <summary>The window (or a test's recorder).</summary>
+    Public ReadOnly Property Window As ISimulationView
+
+    ''' <summary>The world on show. Replaced when a scene is opened, restarted, or a moment of the run is taken back.</summary>
+    Public Property World As World
+
+    ''' <summary>Receives one line per action and state change (the app's --trace switch); Nothing without one.</summary>
+    Public Property Trace As Action(Of String)
+
+    ''' <summary>The last collisions, newest first.</summary>
+    Public ReadOnly Property Log As New CollisionLog()
+
+    ''' <summary>The text of the input boxes, as typed.</summary>
+    Public ReadOnly Property Inputs As New BodyInputs()
+
+    ''' <summary>True while time is stopped.</summary>
+    Public Property IsPaused As Boolean
+
+    ''' <summary>The message on show ("" for none).</summary>
+    Public ReadOnly Property Message As String = ""
+
+    ''' <summary>Whether a trace is listening (lines that cost something to build are built only then).</summary>
+    Public ReadOnly Property Tracing As Boolean
+        Get
+            Return Trace IsNot Nothing
+        End Get
+    End Property
+
+    ''' <summary>Writes one line to the trace.</summary>
+    Public Sub Emit(line As String)
+        Trace?.Invoke(line)
+    End Sub
+
+    ''' <summary>
+    ''' Shows a message and writes it to the trace. A message that is true only for a while (Delete
+    ''' mode is on, the run ahead can be replayed, the scene cannot keep up) comes with
+    ''' <paramref name="holds"/>, and goes as soon as that is no longer so (see <see cref="CheckMessage"/>).
+    ''' </summary>
+    Public Sub ShowMessage(text As String, Optional holds As Func(Of Boolean) = Nothing)
+        _Message = If(text, "")
+        _messageHolds = If(_Message.Length > 0, holds, Nothing)
+        If _Message.Length > 0 Then Emit("message: " & _Message)
+        Window.ShowMessage(_Message)
+    End Sub
+
+    ''' <summary>After every change and every frame: a message that is no longer true goes.</summary>
+    Public Sub CheckMessage()
+        Dim holds = _messageHolds
+        If holds Is Nothing OrElse holds() Then Return
+        _messageHolds = Nothing
+        Emit("message gone: " & _Message)
+        ShowMessage("")
+    End Sub
+
+    ''' <summary>Copies the world's state for the tables and totals and tells the window (set by the presenter).</summary>
+    Public Property TakeSnapshot As Action
+
+    ''' <summary>Ends any carry, aim or tool in progress (set by the presenter: the pointer tools do it).</summary>
+    Public Property EndGestures As Action
+
+    ''' <summary>
+    ''' Runs one of the teacher's actions. Anything the engine refuses becomes a message, never a
+    ''' crash; the tables are brought up to date either way.
+    ''' </summary>
+    Public Sub Guarded(action As Action)
+        Try
+            action()
+        Catch ex As ArgumentException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        Catch ex As InvalidOperationException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        Catch ex As ArithmeticException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        Catch ex As NotSupportedException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        Catch ex As Scenes.SceneFormatException
+            ShowMessage("That did not work: " & OneLine(ex.Message))
+        End Try
+    End Sub
+
+    ''' <summary>The text on one line (a message from the engine may hold line breaks).</summary>
+    Public Shared Function OneLine(text As String) As String
+        Return If(text, "").Replace(vbCr, " ").Replace(vbLf, " ").Trim()
+    End Function
+
+    ''' <summary>"radius (m) is empty; mass (kg) 'x' is not a number.": what is wrong with each input that was refused.</summary>
+    Public Shared Function Problems(ParamArray inputs As NumberInput()) As String
+        Return String.Join("; ", inputs.Where(Function(i) Not i.IsValid).Select(Function(i) i.Problem)) & "."
+    End Function
+End Class
