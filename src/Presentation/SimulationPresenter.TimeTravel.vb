@@ -91,7 +91,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Sub OnCollision(r As CollisionRecord)
         Log.Record(r, World.DraggedBody)
         _graphs.GraphCollision(r)
-        NoteImpulses(r)
+        _momentum.NoteImpulses(r)
         If _watchCollisions AndAlso Not _firstCollision.HasValue Then
             _firstCollision = r
             _beforeFirst = _lastCollisionTime

@@ -23,6 +23,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _graphs As GraphRecorder
     ''' <summary>The Export menu's files.</summary>
     Private ReadOnly _export As ExportWriter
+    ''' <summary>The centre of mass, Σp, the momenta diagram, impulses and traces.</summary>
+    Private ReadOnly _momentum As MomentumViews
     Private ReadOnly _colours As BodyColours
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
@@ -39,6 +41,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _stage = New Stage(view) With {.TakeSnapshot = AddressOf TakeSnapshot, .EndGestures = AddressOf EndGestures}
         _graphs = New GraphRecorder(_stage)
         _export = New ExportWriter(_stage, _graphs)
+        _momentum = New MomentumViews(_stage, Function() MomentumRoomPixels)
         SceneStore = store
         _colours = New BodyColours(colourSeed)
         Attach(If(world, Scenarios.Demo()))
@@ -184,7 +187,7 @@ Partial Public NotInheritable Class SimulationPresenter
             Log.EndFrame()
             _graphs.SampleGraphs()
         End If
-        FollowMomentumViews(realSeconds, Not IsPaused)
+        _momentum.FollowMomentumViews(realSeconds, Not IsPaused)
         _sinceSnapshot += realSeconds
         If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
         CheckMessage()
@@ -280,7 +283,7 @@ Partial Public NotInheritable Class SimulationPresenter
                     For Each b In World.Movables
                         If b.Kind <> ShapeKind.Circle Then Emit("body " & b.Id & " at " & Units.Pair(b.CentreOfMass, 3) & " m v " & Units.Pair(b.Velocity, 3) & " m/s")
                     Next
-                    EmitMomentumViews()
+                    _momentum.EmitMomentumViews()
                     EmitScreenCheck()
                 Else
                     Emit("resumed")
@@ -389,7 +392,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 _SpeedIndex = SpeedSteps.RealTimeIndex
                 _Mode = ClickMode.Move
                 Log.Clear()
-                ForgetMomentumViews()
+                _momentum.ForgetMomentumViews()
                 Emit("reset: " & World.Bodies.Count & " bodies, g " & Units.Num(World.Gravity) & ", e " & Units.Num(World.Restitution) & ", speed " & SpeedSteps.Label(Speed))
                 ShowMessage("")
                 TakeSnapshot()
@@ -584,7 +587,7 @@ Partial Public NotInheritable Class SimulationPresenter
             ' A body without a colour in its file gets the same one every time: it follows from the id.
             If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
         Next
-        ForgetMomentumViews()
+        _momentum.ForgetMomentumViews()
         _stage.World = w
         Log.Clear()
         Inputs.ContainerWidthText = Units.Input(w.Width)
@@ -693,6 +696,143 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Writes a picture the window drew (PNG) to <paramref name="path"/> through <paramref name="write"/>; says what was written, or why not.</summary>
     Public Sub ExportPicture(kind As ExportKind, path As String, write As Action(Of IO.Stream), width As Integer, height As Integer)
         _export.ExportPicture(kind, path, write, width, height)
+    End Sub
+#End Region
+
+#Region "Seeing momentum (MomentumViews), and the walls"
+    ''' <summary>
+    ''' The container's walls on (its sides reflect balls) or off (balls fly out through where they
+    ''' were). Turning them on brings every movable body back inside; a body too large for the box
+    ''' makes it refuse, with the reason. Restart goes back to the scene's own choice.
+    ''' </summary>
+    Public Sub SetWalls(value As Boolean)
+        Guarded(
+            Sub()
+                ' The start Restart goes back to is taken first, so it keeps the scene's own walls.
+                NoteBuilding()
+                If value <> World.Walls Then
+                    World.Walls = value
+                    SettleOverlaps()
+                End If
+                Emit("walls " & If(World.Walls, "on", "off"))
+                ShowMessage(If(World.Walls, "Walls on: the sides reflect the balls; any ball outside was brought back in.",
+                               "No walls: balls fly out through the dashed outline."))
+                TakeSnapshot()
+            End Sub)
+        _window.ShowSettings()
+    End Sub
+
+    ''' <summary>The longest a momentum arrow may be drawn, px: a fifth of the canvas's smaller side.</summary>
+    Public ReadOnly Property MomentumRoomPixels As Double
+        Get
+            Return 0.2 * Math.Min(_canvasWidth, Math.Max(1, _canvasHeight - ScaleStripPixels))
+        End Get
+    End Property
+
+    ''' <summary>The tutorial's page on the momentum views, the walls toggle and typing into the tables.</summary>
+    Public Shared ReadOnly Property MomentumHelp As HelpTopic = MomentumViews.MomentumHelp
+
+    ''' <summary>The maths page on the momentum views.</summary>
+    Public Shared ReadOnly Property MomentumMaths As HelpTopic = MomentumViews.MomentumMaths
+
+    ''' <summary>Whether the centre of mass of the movable bodies is marked, with its velocity arrow.</summary>
+    Public ReadOnly Property ShowCentreOfMass As Boolean
+        Get
+            Return _momentum.ShowCentreOfMass
+        End Get
+    End Property
+
+    ''' <summary>Whether the total momentum Σp is drawn as an arrow from the centre of mass.</summary>
+    Public ReadOnly Property ShowTotalMomentum As Boolean
+        Get
+            Return _momentum.ShowTotalMomentum
+        End Get
+    End Property
+
+    ''' <summary>Whether the momenta diagram is drawn in a corner of the canvas.</summary>
+    Public ReadOnly Property ShowMomentaDiagram As Boolean
+        Get
+            Return _momentum.ShowMomentaDiagram
+        End Get
+    End Property
+
+    ''' <summary>Whether each collision's impulses Δp are drawn for a moment at the contact.</summary>
+    Public ReadOnly Property ShowImpulses As Boolean
+        Get
+            Return _momentum.ShowImpulses
+        End Get
+    End Property
+
+    ''' <summary>Whether bodies leave fading traces of where they have been.</summary>
+    Public ReadOnly Property ShowTraces As Boolean
+        Get
+            Return _momentum.ShowTraces
+        End Get
+    End Property
+
+    ''' <summary>The impulses on show.</summary>
+    Public ReadOnly Property Impulses As ImpulseMarks
+        Get
+            Return _momentum.Impulses
+        End Get
+    End Property
+
+    ''' <summary>The path traces.</summary>
+    Public ReadOnly Property Traces As PathTraces
+        Get
+            Return _momentum.Traces
+        End Get
+    End Property
+
+    ''' <summary>The momentum arrows' scale (Σp, the diagram and the impulses share it).</summary>
+    Public ReadOnly Property MomentumArrows As MomentumScale
+        Get
+            Return _momentum.MomentumArrows
+        End Get
+    End Property
+
+    ''' <summary>The centre of mass, total mass and total momentum of the movable bodies now.</summary>
+    Public ReadOnly Property Momentum As MomentumSummary
+        Get
+            Return _momentum.Momentum
+        End Get
+    End Property
+
+    ''' <summary>The momenta diagram of the movable bodies now.</summary>
+    Public Function Momenta() As MomentaDiagram
+        Return _momentum.Momenta()
+    End Function
+
+    ''' <summary>Whether any momentum view needs the momentum scale (and its key) drawn.</summary>
+    Public ReadOnly Property ShowsMomentumArrows As Boolean
+        Get
+            Return _momentum.ShowsMomentumArrows
+        End Get
+    End Property
+
+    ''' <summary>The centre-of-mass marker and its velocity arrow on or off.</summary>
+    Public Sub SetShowCentreOfMass(value As Boolean)
+        _momentum.SetShowCentreOfMass(value)
+    End Sub
+
+    ''' <summary>The total-momentum arrow on or off.</summary>
+    Public Sub SetShowTotalMomentum(value As Boolean)
+        _momentum.SetShowTotalMomentum(value)
+    End Sub
+
+    ''' <summary>The momenta diagram on or off.</summary>
+    Public Sub SetShowMomentaDiagram(value As Boolean)
+        _momentum.SetShowMomentaDiagram(value)
+    End Sub
+
+    ''' <summary>The impulse arrows on or off.</summary>
+    Public Sub SetShowImpulses(value As Boolean)
+        _momentum.SetShowImpulses(value)
+    End Sub
+
+    ''' <summary>Path traces on or off.</summary>
+    Public Sub SetShowTraces(value As Boolean)
+        _momentum.SetShowTraces(value)
     End Sub
 #End Region
 End Class
