@@ -151,7 +151,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Emit("edited " & body.Id & " " & label & " = " & value.ToString("R", Globalization.CultureInfo.InvariantCulture))
         Dim note = If(read.WasClamped, LabelOf(q) & " set to the " & If(read.WasRaised, "minimum", "maximum") & ", " & Units.Sig(value) & ". ", "")
         ShowMessage(note & body.Id & ": " & label & " is now " & Units.Sig(value) & ". Restart comes back to this.")
-        RememberStart()
+        _lessons.RememberStart()
         TakeSnapshot()
         Return True
     End Function
@@ -197,7 +197,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Emit("edited " & body.Id & " size (m) = " & width.Value.ToString("R", Globalization.CultureInfo.InvariantCulture) & " × " & height.Value.ToString("R", Globalization.CultureInfo.InvariantCulture))
         Dim note = If(width.WasClamped OrElse height.WasClamped, "A side was brought to its limit (" & Units.Sig(InputLimits.MinSide) & " to " & Units.Sig(InputLimits.MaxSide) & " m). ", "")
         ShowMessage(note & body.Id & ": its size is now " & said & ". Restart comes back to this.")
-        RememberStart()
+        _lessons.RememberStart()
         TakeSnapshot()
         Return True
     End Function

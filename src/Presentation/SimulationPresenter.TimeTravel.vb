@@ -128,10 +128,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _stage.World = w
         Log.ContinueFrom(point.Collisions)
         ' Going back is not building: Restart keeps the start it had.
-        _startBodies = w.Bodies.ToArray()
-        _startWidth = w.Width
-        _startHeight = w.Height
-        _startLinks = w.Links.Count
+        _lessons.FollowWorld(w)
         If resized Then
             Inputs.ContainerWidthText = Units.Input(w.Width)
             Inputs.ContainerHeightText = Units.Input(w.Height)

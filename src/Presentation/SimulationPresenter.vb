@@ -25,6 +25,10 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _export As ExportWriter
     ''' <summary>The centre of mass, Σp, the momenta diagram, impulses and traces.</summary>
     Private ReadOnly _momentum As MomentumViews
+    ''' <summary>Open and Save.</summary>
+    Private ReadOnly _files As SceneFiles
+    ''' <summary>The Scenes menu, the scene given at start, and Restart's start.</summary>
+    Private ReadOnly _lessons As LessonBook
     Private ReadOnly _colours As BodyColours
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
@@ -38,11 +42,13 @@ Partial Public NotInheritable Class SimulationPresenter
                    Optional colourSeed As Integer = 12345)
         If view Is Nothing Then Throw New ArgumentNullException(NameOf(view))
         _window = view
-        _stage = New Stage(view) With {.TakeSnapshot = AddressOf TakeSnapshot, .EndGestures = AddressOf EndGestures}
+        _stage = New Stage(view)
+        _stage.Connect(AddressOf TakeSnapshot, AddressOf EndGestures, AddressOf Present)
         _graphs = New GraphRecorder(_stage)
         _export = New ExportWriter(_stage, _graphs)
         _momentum = New MomentumViews(_stage, Function() MomentumRoomPixels)
-        SceneStore = store
+        _files = New SceneFiles(_stage, store)
+        _lessons = New LessonBook(_stage, _files)
         _colours = New BodyColours(colourSeed)
         Attach(If(world, Scenarios.Demo()))
     End Sub
@@ -56,6 +62,13 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Reads and writes scene files; Nothing disables Open and Save with a message.</summary>
     Public Property SceneStore As ISceneStore
+        Get
+            Return _files.SceneStore
+        End Get
+        Set(value As ISceneStore)
+            _files.SceneStore = value
+        End Set
+    End Property
 
     ''' <summary>Receives one line per action and state change (the app's --trace switch prints them).</summary>
     Public Property Trace As Action(Of String)
@@ -227,7 +240,7 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Copies the world's state for the tables and totals, follows it with the arrows' scale, and tells the window.</summary>
     Private Sub TakeSnapshot()
         _sinceSnapshot = 0
-        NoteBuilding()
+        _lessons.NoteBuilding()
         _Snapshot = TableSnapshot.Take(World, Log.TotalSeen)
         _graphs.SampleGraphs()
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
@@ -580,6 +593,13 @@ Partial Public NotInheritable Class SimulationPresenter
         Return Stage.OneLine(text)
     End Function
 
+    ''' <summary>Puts a new world on show: the gestures end, the body being placed is dropped, a new run starts with it.</summary>
+    Private Sub Present(w As World)
+        EndGestures()
+        _Draft = Nothing
+        Attach(w)
+    End Sub
+
     ''' <summary>Makes <paramref name="w"/> the world on show: solver, collision log, colours, view, tables.</summary>
     Private Sub Attach(w As World)
         StartTimeline(w, SolverFactory.Create("auto"))
@@ -595,7 +615,7 @@ Partial Public NotInheritable Class SimulationPresenter
         FitView()
         _Snapshot = TableSnapshot.Take(w, 0)
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(w.Width, w.Height))
-        RememberStart()
+        _lessons.RememberStart()
         ' The run's first checkpoint (the scene written out) now, as part of opening it, rather than in
         ' its first frame: it costs about a frame's time in a scene of hundreds of bodies.
         TryCast(w.Solver, TimelineSolver)?.CheckpointIfChanged()
@@ -709,7 +729,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Guarded(
             Sub()
                 ' The start Restart goes back to is taken first, so it keeps the scene's own walls.
-                NoteBuilding()
+                _lessons.NoteBuilding()
                 If value <> World.Walls Then
                     World.Walls = value
                     SettleOverlaps()
@@ -833,6 +853,86 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Path traces on or off.</summary>
     Public Sub SetShowTraces(value As Boolean)
         _momentum.SetShowTraces(value)
+    End Sub
+#End Region
+
+#Region "Scene files (SceneFiles) and lessons (LessonBook)"
+    ''' <summary>True when Open and Save can work (a scene store is present).</summary>
+    Public ReadOnly Property CanOpenAndSave As Boolean
+        Get
+            Return _files.CanOpenAndSave
+        End Get
+    End Property
+
+    ''' <summary>The folder the Open and Save dialogs start in: the example scenes at first, then the last one used.</summary>
+    Public Property SceneFolder As String
+        Get
+            Return _files.SceneFolder
+        End Get
+        Set(value As String)
+            _files.SceneFolder = value
+        End Set
+    End Property
+
+    ''' <summary>Opens the scene file at <paramref name="path"/>; on any problem shows a message and keeps the current scene.</summary>
+    Public Sub OpenScene(path As String)
+        _files.OpenScene(path)
+    End Sub
+
+    ''' <summary>Saves the scene to <paramref name="path"/>; on any problem shows a message naming the file and why.</summary>
+    Public Sub SaveScene(path As String)
+        _files.SaveScene(path)
+    End Sub
+
+    ''' <summary>The Scenes menu's button.</summary>
+    Public Const ScenesCaption As String = LessonBook.ScenesCaption
+    ''' <summary>The Restart button.</summary>
+    Public Const RestartCaption As String = LessonBook.RestartCaption
+    ''' <summary>Pause's key.</summary>
+    Public Const PauseKey As String = LessonBook.PauseKey
+    ''' <summary>Restart's key.</summary>
+    Public Const RestartKey As String = LessonBook.RestartKey
+    ''' <summary>Reset's key: with Shift, so clearing everything is never a slip of the finger.</summary>
+    Public Const ResetKey As String = LessonBook.ResetKey
+    ''' <summary>The Scenes menu's key.</summary>
+    Public Const ScenesKey As String = LessonBook.ScenesKey
+
+    ''' <summary>The tutorial's page on lessons, Restart and the keys.</summary>
+    Public Shared ReadOnly Property LessonsHelp As HelpTopic = LessonBook.LessonsHelp
+
+    ''' <summary>The folder the Scenes menu lists (the example scenes); Nothing for none.</summary>
+    Public Property LessonFolder As String
+        Get
+            Return _lessons.LessonFolder
+        End Get
+        Set(value As String)
+            _lessons.LessonFolder = value
+        End Set
+    End Property
+
+    ''' <summary>The Scenes menu, read from <see cref="LessonFolder"/> now.</summary>
+    Public Function Lessons() As IReadOnlyList(Of Lesson)
+        Return _lessons.Lessons()
+    End Function
+
+    ''' <summary>The Scenes menu by topic, read from <see cref="LessonFolder"/> now.</summary>
+    Public Function LessonMenu() As IReadOnlyList(Of (Topic As String, Lessons As IReadOnlyList(Of Lesson)))
+        Return _lessons.LessonMenu()
+    End Function
+
+    ''' <summary>Opens a lesson from the Scenes menu; the message gives its title and what it shows.</summary>
+    Public Sub OpenLesson(lesson As Lesson)
+        _lessons.OpenLesson(lesson)
+    End Sub
+
+    ''' <summary>Opens the file given on the command line; one that cannot be opened leaves an empty box and the message why.</summary>
+    Public Sub OpenAtStart(path As String)
+        _lessons.OpenAtStart(path)
+    End Sub
+
+    ''' <summary>Puts the scene back as it was when it was opened or last built.</summary>
+    Public Sub Restart()
+        _lessons.Restart()
     End Sub
 #End Region
 End Class

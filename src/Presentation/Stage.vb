@@ -69,11 +69,34 @@ Friend NotInheritable Class Stage
         ShowMessage("")
     End Sub
 
-    ''' <summary>Copies the world's state for the tables and totals and tells the window (set by the presenter).</summary>
-    Public Property TakeSnapshot As Action
+    Private _takeSnapshot As Action
+    Private _endGestures As Action
+    Private _present As Action(Of World)
 
-    ''' <summary>Ends any carry, aim or tool in progress (set by the presenter: the pointer tools do it).</summary>
-    Public Property EndGestures As Action
+    ''' <summary>What the presenter does for every part: take a snapshot, end the gestures, put a new world on show.</summary>
+    Public Sub Connect(takeSnapshot As Action, endGestures As Action, present As Action(Of World))
+        _takeSnapshot = takeSnapshot
+        _endGestures = endGestures
+        _present = present
+    End Sub
+
+    ''' <summary>Copies the world's state for the tables and totals and tells the window.</summary>
+    Public Sub TakeSnapshot()
+        _takeSnapshot.Invoke()
+    End Sub
+
+    ''' <summary>Ends any carry, aim or tool in progress.</summary>
+    Public Sub EndGestures()
+        _endGestures.Invoke()
+    End Sub
+
+    ''' <summary>
+    ''' Puts a new world on show (a scene opened, a restart, an empty box): ends the gestures, drops
+    ''' the body being placed, and starts a new run with it.
+    ''' </summary>
+    Public Sub Present(w As World)
+        _present.Invoke(w)
+    End Sub
 
     ''' <summary>
     ''' Runs one of the teacher's actions. Anything the engine refuses becomes a message, never a
