@@ -84,7 +84,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim start = ClockSeconds()
         Dim t0 = World.Time
         If World.Solver.TimeStep.HasValue OrElse World.Links.Count > 0 OrElse World.DraggedBody IsNot Nothing Then
-            Return AdvanceOrFallBack(seconds, budget)
+            Return _time.Advance(seconds, budget)
         End If
         Dim target = t0 + seconds
         Dim shortest = seconds * MinPieceFraction
@@ -97,7 +97,7 @@ Partial Public NotInheritable Class SimulationPresenter
             If World.Time > t0 AndAlso spent + Math.Min(piece, left) * _costRate > budget Then Exit Do
             Dim before = World.Time
             Dim duration = If(piece >= left, ExactClock.DurationTo(World.Time, target), piece)
-            AdvanceOrFallBack(duration, Math.Max(0, budget - spent))
+            _time.Advance(duration, Math.Max(0, budget - spent))
             Dim cost = ClockSeconds() - start - spent
             If World.Time > before Then _costRate = cost / (World.Time - before)
             ' Short of the piece's end: the solver's own deadline passed (stop), or a checkpoint of a

@@ -29,6 +29,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _files As SceneFiles
     ''' <summary>The Scenes menu, the scene given at start, and Restart's start.</summary>
     Private ReadOnly _lessons As LessonBook
+    ''' <summary>Stepping, going back and the timeline: the recorded run.</summary>
+    Private ReadOnly _time As TimeMachine
     Private ReadOnly _colours As BodyColours
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
@@ -43,12 +45,18 @@ Partial Public NotInheritable Class SimulationPresenter
         If view Is Nothing Then Throw New ArgumentNullException(NameOf(view))
         _window = view
         _stage = New Stage(view)
-        _stage.Connect(AddressOf TakeSnapshot, AddressOf EndGestures, AddressOf Present)
+        _stage.Connect(AddressOf TakeSnapshot, AddressOf EndGestures, AddressOf Present, Function() _dragged IsNot Nothing)
         _graphs = New GraphRecorder(_stage)
         _export = New ExportWriter(_stage, _graphs)
         _momentum = New MomentumViews(_stage, Function() MomentumRoomPixels)
         _files = New SceneFiles(_stage, store)
         _lessons = New LessonBook(_stage, _files)
+        _time = New TimeMachine(_stage, Function() FrameBudgetSeconds,
+                                Sub(r)
+                                    _graphs.GraphCollision(r)
+                                    _momentum.NoteImpulses(r)
+                                End Sub,
+                                AddressOf WorldTaken)
         _colours = New BodyColours(colourSeed)
         Attach(If(world, Scenarios.Demo()))
     End Sub
@@ -206,23 +214,6 @@ Partial Public NotInheritable Class SimulationPresenter
         CheckMessage()
         Budget.AddOtherWork(ClockSeconds() - frameStart - advancing)
     End Sub
-
-    ''' <summary>
-    ''' Advances by up to <paramref name="seconds"/> within <paramref name="wallSeconds"/> of wall-clock
-    ''' time; returns the simulated seconds done. A scene the event solver cannot yet move (a chain of
-    ''' links) is handed to the Verlet solver, with a message, and the frame carries on with it.
-    ''' </summary>
-    Private Function AdvanceOrFallBack(seconds As Double, wallSeconds As Double) As Double
-        Try
-            Return AdvanceOnTimeline(seconds, wallSeconds)
-        Catch ex As UnsupportedSceneException
-            World.Solver = Recording(SolverFactory.Create("verlet"))
-            ShowMessage(OneLine(ex.Message) & " This scene now runs with the Verlet solver (fixed time step " &
-                        Units.Sig(World.Solver.TimeStep.GetValueOrDefault() * 1000) & " ms), which is not exact.")
-            Trace?.Invoke("solver verlet: " & OneLine(ex.Message))
-            Return AdvanceOnTimeline(seconds, wallSeconds)
-        End Try
-    End Function
 
     Private Sub Fail(text As String)
         _stage.IsPaused = True
@@ -593,6 +584,22 @@ Partial Public NotInheritable Class SimulationPresenter
         Return Stage.OneLine(text)
     End Function
 
+    ''' <summary>
+    ''' A moment of the recorded run was put on show (going back, or replaying onto a checkpoint): a
+    ''' cue being aimed keeps aiming at the same body of the new world, Restart keeps the start it had
+    ''' (going back is not building), and a container of another size is shown in its boxes and the view.
+    ''' </summary>
+    Private Sub WorldTaken(w As World, resized As Boolean)
+        If _AimedBody IsNot Nothing Then _AimedBody = w.Find(_AimedBody.Id)
+        _lessons.FollowWorld(w)
+        If resized Then
+            Inputs.ContainerWidthText = Units.Input(w.Width)
+            Inputs.ContainerHeightText = Units.Input(w.Height)
+            FitView()
+            _window.ShowInputs()
+        End If
+    End Sub
+
     ''' <summary>Puts a new world on show: the gestures end, the body being placed is dropped, a new run starts with it.</summary>
     Private Sub Present(w As World)
         EndGestures()
@@ -602,7 +609,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Makes <paramref name="w"/> the world on show: solver, collision log, colours, view, tables.</summary>
     Private Sub Attach(w As World)
-        StartTimeline(w, SolverFactory.Create("auto"))
+        _time.StartTimeline(w, SolverFactory.Create("auto"))
         For Each b In w.Bodies
             ' A body without a colour in its file gets the same one every time: it follows from the id.
             If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
@@ -934,5 +941,86 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub Restart()
         _lessons.Restart()
     End Sub
+#End Region
+
+#Region "Stepping and going back in time (TimeMachine)"
+    ''' <summary>One frame of simulated time, s (what Step and Step back move by).</summary>
+    Public Const FrameSeconds As Double = TimeMachine.FrameSeconds
+    ''' <summary>The most frames a step to the next collision looks ahead (10 s of simulated time).</summary>
+    Public Const MaxFramesToCollision As Integer = TimeMachine.MaxFramesToCollision
+    ''' <summary>The timeline slider's positions.</summary>
+    Public Const TimelineSteps As Integer = TimeMachine.TimelineSteps
+    ''' <summary>Keys of the time controls, as the tutorial and the tooltips name them.</summary>
+    Public Const StepKey As String = TimeMachine.StepKey
+    ''' <summary>See <see cref="StepKey"/>.</summary>
+    Public Const StepBackKey As String = TimeMachine.StepBackKey
+    ''' <summary>See <see cref="StepKey"/>.</summary>
+    Public Const NextCollisionKey As String = TimeMachine.NextCollisionKey
+    ''' <summary>See <see cref="StepKey"/>.</summary>
+    Public Const PreviousCollisionKey As String = TimeMachine.PreviousCollisionKey
+    ''' <summary>Button captions of the time controls.</summary>
+    Public Const StepBackCaption As String = TimeMachine.StepBackCaption
+    ''' <summary>See <see cref="StepBackCaption"/>.</summary>
+    Public Const StepCaption As String = TimeMachine.StepCaption
+    ''' <summary>See <see cref="StepBackCaption"/>.</summary>
+    Public Const PreviousCollisionCaption As String = TimeMachine.PreviousCollisionCaption
+    ''' <summary>See <see cref="StepBackCaption"/>.</summary>
+    Public Const NextCollisionCaption As String = TimeMachine.NextCollisionCaption
+    ''' <summary>The time controls' keys, as the tutorial lists them beside the others.</summary>
+    Public Const TimeKeysText As String = TimeMachine.TimeKeysText
+
+    ''' <summary>The tutorial's page on the time controls.</summary>
+    Public Shared ReadOnly Property TimeTravelHelp As HelpTopic = TimeMachine.TimeTravelHelp
+
+    ''' <summary>The recorded run of the world on show.</summary>
+    Public ReadOnly Property Timeline As Timeline
+        Get
+            Return _time.Timeline
+        End Get
+    End Property
+
+    ''' <summary>Step: pauses, then moves one frame (1/60 s) on.</summary>
+    Public Sub StepFrame()
+        _time.StepFrame()
+    End Sub
+
+    ''' <summary>Step back: pauses, then goes one frame (1/60 s) back, or to the earliest moment kept.</summary>
+    Public Sub StepBackFrame()
+        _time.StepBackFrame()
+    End Sub
+
+    ''' <summary>Step to the next collision: pauses and runs on until the next collision (at most 10 s ahead).</summary>
+    Public Sub StepToNextCollision()
+        _time.StepToNextCollision()
+    End Sub
+
+    ''' <summary>Step back a collision: pauses and goes back to the last collision before now (just after it).</summary>
+    Public Sub StepToPreviousCollision()
+        _time.StepToPreviousCollision()
+    End Sub
+
+    ''' <summary>The timeline slider was moved to <paramref name="position"/> (0 to <see cref="TimelineSteps"/>).</summary>
+    Public Sub TimelineSliderMoved(position As Integer)
+        _time.TimelineSliderMoved(position)
+    End Sub
+
+    ''' <summary>Pauses and shows the run as it was at <paramref name="time"/> (s), within the timeline.</summary>
+    Public Sub RewindTo(time As Double)
+        _time.RewindTo(time)
+    End Sub
+
+    ''' <summary>Where the timeline slider's thumb belongs: the time on show within the timeline.</summary>
+    Public ReadOnly Property TimelinePosition As Integer
+        Get
+            Return _time.TimelinePosition
+        End Get
+    End Property
+
+    ''' <summary>"Timeline: t = 3.20 s (kept 0 – 12.0 s)": the slider's tip.</summary>
+    Public ReadOnly Property TimelineText As String
+        Get
+            Return _time.TimelineText
+        End Get
+    End Property
 #End Region
 End Class

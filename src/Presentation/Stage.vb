@@ -72,13 +72,22 @@ Friend NotInheritable Class Stage
     Private _takeSnapshot As Action
     Private _endGestures As Action
     Private _present As Action(Of World)
+    Private _carrying As Func(Of Boolean)
 
-    ''' <summary>What the presenter does for every part: take a snapshot, end the gestures, put a new world on show.</summary>
-    Public Sub Connect(takeSnapshot As Action, endGestures As Action, present As Action(Of World))
+    ''' <summary>What the presenter does for every part: take a snapshot, end the gestures, put a new world on show, say whether a hand carries a body.</summary>
+    Public Sub Connect(takeSnapshot As Action, endGestures As Action, present As Action(Of World), carrying As Func(Of Boolean))
         _takeSnapshot = takeSnapshot
         _endGestures = endGestures
         _present = present
+        _carrying = carrying
     End Sub
+
+    ''' <summary>Whether the teacher is carrying a body with the mouse now.</summary>
+    Public ReadOnly Property IsCarrying As Boolean
+        Get
+            Return _carrying.Invoke()
+        End Get
+    End Property
 
     ''' <summary>Copies the world's state for the tables and totals and tells the window.</summary>
     Public Sub TakeSnapshot()

@@ -1,9 +1,26 @@
 Option Strict On
 
-' Time controls: step a frame, step to the next collision, step back a frame or a collision, and
-' scrub the timeline. The run is recorded as checkpoints (Timeline, TimelineSolver); going back
-' rebuilds the last checkpoint before the moment and replays forward to it, exactly.
-Partial Public NotInheritable Class SimulationPresenter
+''' <summary>
+''' Time controls: step a frame, step to the next collision, step back a frame or a collision, and
+''' scrub the timeline. The run is recorded as checkpoints (Timeline, TimelineSolver); going back
+''' rebuilds the last checkpoint before the moment and replays forward to it, exactly.
+''' </summary>
+Friend NotInheritable Class TimeMachine
+    Private ReadOnly _stage As Stage
+    Private ReadOnly _frameBudget As Func(Of Double)
+    Private ReadOnly _collided As Action(Of CollisionRecord)
+    Private ReadOnly _taken As Action(Of World, Boolean)
+
+    ''' <param name="frameBudget">the wall-clock seconds a frame may spend advancing, now</param>
+    ''' <param name="collided">told of every collision of the world on show (the graphs, the impulse marks)</param>
+    ''' <param name="taken">told when a checkpoint's world is put on show, and whether its container differs in size</param>
+    Public Sub New(stage As Stage, frameBudget As Func(Of Double), collided As Action(Of CollisionRecord), taken As Action(Of World, Boolean))
+        _stage = stage
+        _frameBudget = frameBudget
+        _collided = collided
+        _taken = taken
+    End Sub
+
     ''' <summary>One frame of simulated time, s (what Step and Step back move by).</summary>
     Public Const FrameSeconds As Double = 1.0 / 60.0
     ''' <summary>The most frames a step to the next collision looks ahead (10 s of simulated time).</summary>
@@ -58,7 +75,7 @@ Partial Public NotInheritable Class SimulationPresenter
     End Property
 
     ''' <summary>A new run starts (a scene opened, restarted or reset): an empty timeline, and the world records into it.</summary>
-    Private Sub StartTimeline(w As World, solver As ISolver)
+    Public Sub StartTimeline(w As World, solver As ISolver)
         _timeline = New Timeline()
         UseTimeline(w, solver, restartFirst:=True)
     End Sub
@@ -76,9 +93,9 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Function Describe(w As World) As Checkpoint
         Try
-            Return Timeline.Take(w, SolverName(w), Log.TotalSeen)
+            Return Timeline.Take(w, SolverName(w), _stage.Log.TotalSeen)
         Catch ex As Exception When TypeOf ex Is Scenes.SceneFormatException OrElse TypeOf ex Is ArgumentException OrElse TypeOf ex Is InvalidOperationException
-            Emit("checkpoint failed: " & OneLine(ex.Message))
+            _stage.Emit("checkpoint failed: " & Stage.OneLine(ex.Message))
             Return Nothing
         End Try
     End Function
@@ -89,9 +106,8 @@ Partial Public NotInheritable Class SimulationPresenter
     End Function
 
     Private Sub OnCollision(r As CollisionRecord)
-        Log.Record(r, World.DraggedBody)
-        _graphs.GraphCollision(r)
-        _momentum.NoteImpulses(r)
+        _stage.Log.Record(r, _stage.World.DraggedBody)
+        _collided(r)
         If _watchCollisions AndAlso Not _firstCollision.HasValue Then
             _firstCollision = r
             _beforeFirst = _lastCollisionTime
@@ -105,60 +121,69 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' stops at the next checkpoint and takes the world from it, so the run goes on as it was recorded.
     ''' </summary>
     Private Function AdvanceOnTimeline(seconds As Double, wallSeconds As Double) As Double
-        Dim start = World.Time
+        Dim start = _stage.World.Time
         Dim ahead = _timeline?.After(start)
         If ahead IsNot Nothing AndAlso start + seconds >= ahead.Time Then
-            World.AdvanceWithin(ExactClock.DurationTo(start, ahead.Time), wallSeconds)
-            If World.Time = ahead.Time Then Take(ahead)
-            Return World.Time - start
+            _stage.World.AdvanceWithin(ExactClock.DurationTo(start, ahead.Time), wallSeconds)
+            If _stage.World.Time = ahead.Time Then Take(ahead)
+            Return _stage.World.Time - start
         End If
         ' Past the recorded future a carried body restored from a checkpoint has no hand on it any more.
-        If ahead Is Nothing AndAlso World.DraggedBody IsNot Nothing AndAlso _dragged Is Nothing Then World.EndDrag(Vector.Zero)
-        Return World.AdvanceWithin(seconds, wallSeconds)
+        If ahead Is Nothing AndAlso _stage.World.DraggedBody IsNot Nothing AndAlso Not _stage.IsCarrying Then _stage.World.EndDrag(Vector.Zero)
+        Return _stage.World.AdvanceWithin(seconds, wallSeconds)
+    End Function
+
+    ''' <summary>
+    ''' Advances by up to <paramref name="seconds"/> within <paramref name="wallSeconds"/> of wall-clock
+    ''' time; returns the simulated seconds done. A scene the event solver cannot yet move (a chain of
+    ''' links) is handed to the Verlet solver, with a message, and the frame carries on with it.
+    ''' </summary>
+    Public Function Advance(seconds As Double, wallSeconds As Double) As Double
+        Try
+            Return AdvanceOnTimeline(seconds, wallSeconds)
+        Catch ex As UnsupportedSceneException
+            _stage.World.Solver = Recording(SolverFactory.Create("verlet"))
+            _stage.ShowMessage(Stage.OneLine(ex.Message) & " This scene now runs with the Verlet solver (fixed time step " &
+                        Units.Sig(_stage.World.Solver.TimeStep.GetValueOrDefault() * 1000) & " ms), which is not exact.")
+            _stage.Emit("solver verlet: " & Stage.OneLine(ex.Message))
+            Return AdvanceOnTimeline(seconds, wallSeconds)
+        End Try
     End Function
 
     ''' <summary>Puts the world of a checkpoint on show, with its clock and collision count.</summary>
     Private Sub Take(point As Checkpoint)
         Dim w = Timeline.Build(point)
         _lastCollisionTime = Nothing
-        Dim resized = w.Width <> World.Width OrElse w.Height <> World.Height
+        Dim resized = w.Width <> _stage.World.Width OrElse w.Height <> _stage.World.Height
         UseTimeline(w, SolverFactory.Create(point.SolverName), restartFirst:=False)
-        ' A cue being aimed while the run replays keeps aiming at the same body of the new world.
-        If _AimedBody IsNot Nothing Then _AimedBody = w.Find(_AimedBody.Id)
         _stage.World = w
-        Log.ContinueFrom(point.Collisions)
-        ' Going back is not building: Restart keeps the start it had.
-        _lessons.FollowWorld(w)
-        If resized Then
-            Inputs.ContainerWidthText = Units.Input(w.Width)
-            Inputs.ContainerHeightText = Units.Input(w.Height)
-            FitView()
-            _window.ShowInputs()
-        End If
+        _stage.Log.ContinueFrom(point.Collisions)
+        ' The other parts follow the new world (a cue being aimed, Restart's start, the view).
+        _taken(w, resized)
     End Sub
 
     ''' <summary>Pauses (if running) for a step, ending any gesture.</summary>
     Private Sub PauseForStep()
-        EndGestures()
-        If Not IsPaused Then
+        _stage.EndGestures()
+        If Not _stage.IsPaused Then
             _stage.IsPaused = True
-            Emit("paused t=" & Units.Num(World.Time, 3) & " s")
+            _stage.Emit("paused t=" & Units.Num(_stage.World.Time, 3) & " s")
         End If
     End Sub
 
     ''' <summary>Advances exactly <paramref name="seconds"/> of simulated time (following the recorded run where there is one).</summary>
     Private Sub AdvanceExactly(seconds As Double)
-        Dim target = World.Time + seconds
-        Do While World.Time < target
+        Dim target = _stage.World.Time + seconds
+        Do While _stage.World.Time < target
             ' Through the frame's own path, so a scene the event solver cannot move falls back to Verlet here too.
-            AdvanceOrFallBack(ExactClock.DurationTo(World.Time, target), FrameBudgetSeconds)
+            Advance(ExactClock.DurationTo(_stage.World.Time, target), _frameBudget())
         Loop
-        Log.EndFrame()
+        _stage.Log.EndFrame()
     End Sub
 
     ''' <summary>Step: pauses, then moves one frame (1/60 s) on.</summary>
     Public Sub StepFrame()
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
                 AdvanceExactly(FrameSeconds)
@@ -168,10 +193,10 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Step back: pauses, then goes one frame (1/60 s) back, or to the earliest moment kept.</summary>
     Public Sub StepBackFrame()
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
-                ShowMoment(World.Time - FrameSeconds)
+                ShowMoment(_stage.World.Time - FrameSeconds)
                 ShowStep("step back")
             End Sub)
     End Sub
@@ -183,52 +208,52 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <see cref="MaxFramesToCollision"/> frames ahead.
     ''' </summary>
     Public Sub StepToNextCollision()
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
-                TryCast(World.Solver, TimelineSolver)?.CheckpointIfChanged()
-                Dim before = Log.TotalSeen
+                TryCast(_stage.World.Solver, TimelineSolver)?.CheckpointIfChanged()
+                Dim before = _stage.Log.TotalSeen
                 _firstCollision = Nothing
                 _watchCollisions = True
                 Try
                     For k = 1 To MaxFramesToCollision
                         AdvanceExactly(FrameSeconds)
-                        If Log.TotalSeen > before Then Exit For
+                        If _stage.Log.TotalSeen > before Then Exit For
                     Next
                 Finally
                     _watchCollisions = False
                 End Try
                 If Not _firstCollision.HasValue Then
                     ShowStep("next collision: none")
-                    ShowMessage("No collision in the next " & Units.Quantity(MaxFramesToCollision * FrameSeconds, "s") & " of simulated time.")
+                    _stage.ShowMessage("No collision in the next " & Units.Quantity(MaxFramesToCollision * FrameSeconds, "s") & " of simulated time.")
                     Return
                 End If
                 Dim hit = _firstCollision.Value
                 ' The collision before it, to write the time with enough figures to tell the two apart.
                 Dim previousTime = If(_beforeFirst, LastCollisionBefore(hit.Time)?.Last.Time)
-                If SolverName(World) = "event" AndAlso hit.Time < World.Time Then ShowMoment(hit.Time)
+                If SolverName(_stage.World) = "event" AndAlso hit.Time < _stage.World.Time Then ShowMoment(hit.Time)
                 ShowStep("next collision")
-                ShowMessage(CollisionMessage(Log.TotalSeen, hit, previousTime))
+                _stage.ShowMessage(CollisionMessage(_stage.Log.TotalSeen, hit, previousTime))
             End Sub)
     End Sub
 
     ''' <summary>Step back a collision: pauses and goes back to the last collision before now (just after it).</summary>
     Public Sub StepToPreviousCollision()
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
-                TryCast(World.Solver, TimelineSolver)?.CheckpointIfChanged()
-                Dim now = World.Time
+                TryCast(_stage.World.Solver, TimelineSolver)?.CheckpointIfChanged()
+                Dim now = _stage.World.Time
                 Dim last = LastCollisionBefore(now)
                 If Not last.HasValue Then
                     ShowStep("previous collision: none")
-                    ShowMessage("There is no earlier collision in the recorded run.")
+                    _stage.ShowMessage("There is no earlier collision in the recorded run.")
                     Return
                 End If
                 Dim found = last.Value.Last
                 ShowMoment(found.Time)
                 ShowStep("previous collision")
-                ShowMessage(CollisionMessage(Log.TotalSeen, found, last.Value.Before?.Time))
+                _stage.ShowMessage(CollisionMessage(_stage.Log.TotalSeen, found, last.Value.Before?.Time))
             End Sub)
     End Sub
 
@@ -281,15 +306,15 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Pauses and shows the run as it was at <paramref name="time"/> (s), within the timeline.</summary>
     Public Sub RewindTo(time As Double)
         If Double.IsNaN(time) Then Return
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
                 ShowMoment(time)
                 ShowStep("rewound")
                 ' True while there is a recorded run ahead to replay: a change (a new g, a push) starts a
                 ' new run and forgets it, and a replay that reaches the latest moment has none left.
-                ShowMessage("Back at t = " & Units.Quantity(World.Time, "s") & " (kept: " & Units.Sig(_timeline.Earliest) & " to " & Units.Quantity(_timeline.Latest, "s") & "). Resume replays the run as it was; any change starts a new one from here.",
-                            Function() World.Time < _timeline.Latest)
+                _stage.ShowMessage("Back at t = " & Units.Quantity(_stage.World.Time, "s") & " (kept: " & Units.Sig(_timeline.Earliest) & " to " & Units.Quantity(_timeline.Latest, "s") & "). Resume replays the run as it was; any change starts a new one from here.",
+                            Function() _stage.World.Time < _timeline.Latest)
             End Sub)
     End Sub
 
@@ -299,14 +324,14 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' the mouse, which is not kept, so there it stops where the carry began.
     ''' </summary>
     Private Sub ShowMoment(time As Double)
-        TryCast(World.Solver, TimelineSolver)?.CheckpointIfChanged()
+        TryCast(_stage.World.Solver, TimelineSolver)?.CheckpointIfChanged()
         Dim t = Math.Max(_timeline.Earliest, Math.Min(_timeline.Latest, time))
         Dim point = _timeline.AtOrBefore(t)
         If point Is Nothing Then Return
         If point.IsCarrying Then t = point.Time
         Take(point)
-        World.Advance(ExactClock.DurationTo(World.Time, t))
-        Log.EndFrame()
+        _stage.World.Advance(ExactClock.DurationTo(_stage.World.Time, t))
+        _stage.Log.EndFrame()
     End Sub
 
     Private Shared Function PairName(r As CollisionRecord) As String
@@ -315,12 +340,12 @@ Partial Public NotInheritable Class SimulationPresenter
     End Function
 
     Private Sub ShowStep(what As String)
-        TakeSnapshot()
-        _window.ShowSettings()
-        Emit(what & " t=" & Units.Num(World.Time, 6) & " s, collisions " & Log.TotalSeen & ", timeline " & Units.Num(_timeline.Earliest, 6) & " to " & Units.Num(_timeline.Latest, 6) & " s, " & _timeline.Points.Count & " checkpoints")
-        If Trace Is Nothing Then Return
-        For Each b In World.Movables
-            Emit("state " & b.Id & " " & Exact(b.Position.X) & " " & Exact(b.Position.Y) & " " & Exact(b.Velocity.X) & " " & Exact(b.Velocity.Y))
+        _stage.TakeSnapshot()
+        _stage.Window.ShowSettings()
+        _stage.Emit(what & " t=" & Units.Num(_stage.World.Time, 6) & " s, collisions " & _stage.Log.TotalSeen & ", timeline " & Units.Num(_timeline.Earliest, 6) & " to " & Units.Num(_timeline.Latest, 6) & " s, " & _timeline.Points.Count & " checkpoints")
+        If Not _stage.Tracing Then Return
+        For Each b In _stage.World.Movables
+            _stage.Emit("state " & b.Id & " " & Exact(b.Position.X) & " " & Exact(b.Position.Y) & " " & Exact(b.Velocity.X) & " " & Exact(b.Velocity.Y))
         Next
     End Sub
 
@@ -334,14 +359,14 @@ Partial Public NotInheritable Class SimulationPresenter
         Get
             Dim span = _timeline.Latest - _timeline.Earliest
             If Not (span > 0) Then Return TimelineSteps
-            Return CInt(Math.Round(Math.Max(0, Math.Min(1, (World.Time - _timeline.Earliest) / span)) * TimelineSteps))
+            Return CInt(Math.Round(Math.Max(0, Math.Min(1, (_stage.World.Time - _timeline.Earliest) / span)) * TimelineSteps))
         End Get
     End Property
 
     ''' <summary>"Timeline: t = 3.20 s (kept 0 – 12.0 s)": the slider's tip.</summary>
     Public ReadOnly Property TimelineText As String
         Get
-            Return "Timeline: t = " & Units.Quantity(World.Time, "s") & " (kept " & Units.Sig(_timeline.Earliest) & " – " & Units.Quantity(_timeline.Latest, "s") & ")"
+            Return "Timeline: t = " & Units.Quantity(_stage.World.Time, "s") & " (kept " & Units.Sig(_timeline.Earliest) & " – " & Units.Quantity(_timeline.Latest, "s") & ")"
         End Get
     End Property
 End Class
