@@ -31,6 +31,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _lessons As LessonBook
     ''' <summary>Stepping, going back and the timeline: the recorded run.</summary>
     Private ReadOnly _time As TimeMachine
+    ''' <summary>How long a frame may spend advancing the world, and what it held back.</summary>
+    Private ReadOnly _pacer As FramePacer
     Private ReadOnly _colours As BodyColours
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
@@ -51,6 +53,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _momentum = New MomentumViews(_stage, Function() MomentumRoomPixels)
         _files = New SceneFiles(_stage, store)
         _lessons = New LessonBook(_stage, _files)
+        _pacer = New FramePacer(_stage, Function() Speed, Function(seconds, wall) _time.Advance(seconds, wall))
         _time = New TimeMachine(_stage, Function() FrameBudgetSeconds,
                                 Sub(r)
                                     _graphs.GraphCollision(r)
@@ -185,18 +188,18 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' </summary>
     Public Sub Tick(realSeconds As Double)
         If Not (realSeconds > 0) OrElse Double.IsInfinity(realSeconds) Then Return
-        Dim frameStart = ClockSeconds()
-        Budget.NextFrame()
+        Dim frameStart = _pacer.ClockSeconds()
+        _pacer.Budget.NextFrame()
         Dim advancing = 0.0 ' wall-clock s
         Dim dt = Math.Min(realSeconds, MaxFrameSeconds)
         If Not IsPaused Then
             Try
                 CarryTowardsCursor(dt)
                 Dim asked = dt * Speed
-                Dim advanceStart = ClockSeconds()
-                Dim done = AdvanceWithinBudget(asked)
-                advancing = ClockSeconds() - advanceStart
-                NoteAdvance(asked, done)
+                Dim advanceStart = _pacer.ClockSeconds()
+                Dim done = _pacer.AdvanceWithinBudget(asked)
+                advancing = _pacer.ClockSeconds() - advanceStart
+                _pacer.NoteAdvance(asked, done)
             Catch ex As ArgumentException
                 Fail("The simulation stopped: " & ex.Message)
             Catch ex As InvalidOperationException
@@ -212,7 +215,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _sinceSnapshot += realSeconds
         If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
         CheckMessage()
-        Budget.AddOtherWork(ClockSeconds() - frameStart - advancing)
+        _pacer.Budget.AddOtherWork(_pacer.ClockSeconds() - frameStart - advancing)
     End Sub
 
     Private Sub Fail(text As String)
@@ -1022,5 +1025,73 @@ Partial Public NotInheritable Class SimulationPresenter
             Return _time.TimelineText
         End Get
     End Property
+#End Region
+
+#Region "The frame budget (FramePacer)"
+    ''' <summary>The wall-clock time one piece of an advance is sized to take, s.</summary>
+    Public Const PieceSeconds As Double = FramePacer.PieceSeconds
+    ''' <summary>The shortest piece, as a fraction of the frame's simulated time.</summary>
+    Public Const MinPieceFraction As Double = FramePacer.MinPieceFraction
+    ''' <summary>The first piece a scene is advanced by, as a fraction of the frame's simulated time.</summary>
+    Public Const FirstPieceFraction As Double = FramePacer.FirstPieceFraction
+    ''' <summary>How far behind the wall clock time on screen may fall in one stretch of slow frames before the message says so, s.</summary>
+    Public Const SlowNoticeSeconds As Double = FramePacer.SlowNoticeSeconds
+    ''' <summary>How long a scene must keep up before the message that it cannot goes, s.</summary>
+    Public Const KeptUpSeconds As Double = FramePacer.KeptUpSeconds
+    ''' <summary>The message while a scene cannot keep up with the Speed slider.</summary>
+    Public Const SlowMessage As String = FramePacer.SlowMessage
+
+    ''' <summary>What is left of a 60 Hz frame for advancing the world, after the frame's measured other work.</summary>
+    Public ReadOnly Property Budget As FrameBudget
+        Get
+            Return _pacer.Budget
+        End Get
+    End Property
+
+    ''' <summary>Wall-clock seconds, from any start: what the budget is measured with (a test may give a clock of its own).</summary>
+    Public Property WallClock As Func(Of Double)
+        Get
+            Return _pacer.WallClock
+        End Get
+        Set(value As Func(Of Double))
+            _pacer.WallClock = value
+        End Set
+    End Property
+
+    ''' <summary>Wall-clock seconds one frame may spend advancing the world (see <see cref="FramePacer.FrameBudgetSeconds"/>).</summary>
+    Public Property FrameBudgetSeconds As Double
+        Get
+            Return _pacer.FrameBudgetSeconds
+        End Get
+        Set(value As Double)
+            _pacer.FrameBudgetSeconds = value
+        End Set
+    End Property
+
+    ''' <summary>Whether the last frame fell short of the chosen speed.</summary>
+    Public ReadOnly Property IsRunningSlow As Boolean
+        Get
+            Return _pacer.IsRunningSlow
+        End Get
+    End Property
+
+    ''' <summary>Frames that fell short of the chosen speed since the presenter started.</summary>
+    Public ReadOnly Property SlowedFrames As Long
+        Get
+            Return _pacer.SlowedFrames
+        End Get
+    End Property
+
+    ''' <summary>Simulated seconds the budget held back since the presenter started.</summary>
+    Public ReadOnly Property HeldBackSeconds As Double
+        Get
+            Return _pacer.HeldBackSeconds
+        End Get
+    End Property
+
+    ''' <summary>The window spent <paramref name="seconds"/> (s) of this frame outside <see cref="Tick"/>; the next frames' budget leaves room for it.</summary>
+    Public Sub NoteFrameWork(seconds As Double)
+        _pacer.NoteFrameWork(seconds)
+    End Sub
 #End Region
 End Class
