@@ -33,6 +33,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _time As TimeMachine
     ''' <summary>How long a frame may spend advancing the world, and what it held back.</summary>
     Private ReadOnly _pacer As FramePacer
+    ''' <summary>Values typed into the tables.</summary>
+    Private ReadOnly _editor As TableEditor
     Private ReadOnly _colours As BodyColours
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
@@ -53,6 +55,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _momentum = New MomentumViews(_stage, Function() MomentumRoomPixels)
         _files = New SceneFiles(_stage, store)
         _lessons = New LessonBook(_stage, _files)
+        _editor = New TableEditor(_stage, Function() Snapshot, Sub() _lessons.RememberStart())
         _pacer = New FramePacer(_stage, Function() Speed, Function(seconds, wall) _time.Advance(seconds, wall))
         _time = New TimeMachine(_stage, Function() FrameBudgetSeconds,
                                 Sub(r)
@@ -1093,5 +1096,37 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub NoteFrameWork(seconds As Double)
         _pacer.NoteFrameWork(seconds)
     End Sub
+#End Region
+
+#Region "Typing into the tables (TableEditor)"
+    ''' <summary>The largest speed that can be typed into a table, m/s.</summary>
+    Public Const MaxTypedSpeed As Double = TableEditor.MaxTypedSpeed
+    ''' <summary>The farthest from the origin a position can be typed, m.</summary>
+    Public Const MaxTypedPosition As Double = TableEditor.MaxTypedPosition
+
+    ''' <summary>What column <paramref name="column"/> of table <paramref name="table"/> holds, when it can be typed into.</summary>
+    Public Shared Function EditableQuantity(table As Integer, column As Integer) As TableQuantity
+        Return TableEditor.EditableQuantity(table, column)
+    End Function
+
+    ''' <summary>The column of table <paramref name="table"/> that holds <paramref name="quantity"/>, or −1.</summary>
+    Public Shared Function ColumnOf(table As Integer, quantity As TableQuantity) As Integer
+        Return TableEditor.ColumnOf(table, quantity)
+    End Function
+
+    ''' <summary>Whether the cell can be typed into: an editable column of a movable body's row.</summary>
+    Public Function CanEditCell(table As Integer, row As Integer, column As Integer) As Boolean
+        Return _editor.CanEditCell(table, row, column)
+    End Function
+
+    ''' <summary>The text an edit box opens with: the cell's value with more figures than the table shows.</summary>
+    Public Function CellEditText(table As Integer, row As Integer, column As Integer) As String
+        Return _editor.CellEditText(table, row, column)
+    End Function
+
+    ''' <summary>Sets the quantity of the cell to what was typed, checked as the Add panel checks its boxes; returns whether the world changed.</summary>
+    Public Function EditCell(table As Integer, row As Integer, column As Integer, text As String) As Boolean
+        Return _editor.EditCell(table, row, column, text)
+    End Function
 #End Region
 End Class
