@@ -35,7 +35,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _pacer As FramePacer
     ''' <summary>Values typed into the tables.</summary>
     Private ReadOnly _editor As TableEditor
-    Private ReadOnly _colours As BodyColours
+    ''' <summary>What the mouse does on the canvas: placing, deleting, carrying, the cue, and the ramp, link and corner tools.</summary>
+    Private ReadOnly _pointer As PointerTools
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
     Private _sinceSnapshot As Double
@@ -49,7 +50,8 @@ Partial Public NotInheritable Class SimulationPresenter
         If view Is Nothing Then Throw New ArgumentNullException(NameOf(view))
         _window = view
         _stage = New Stage(view)
-        _stage.Connect(AddressOf TakeSnapshot, AddressOf EndGestures, AddressOf Present, Function() _dragged IsNot Nothing)
+        _pointer = New PointerTools(_stage, Function() Me.View, Function() ScreenScale, Function() Speed, colourSeed)
+        _stage.Connect(AddressOf TakeSnapshot, AddressOf _pointer.EndGestures, AddressOf Present, Function() _pointer.DraggedBody IsNot Nothing)
         _graphs = New GraphRecorder(_stage)
         _export = New ExportWriter(_stage, _graphs)
         _momentum = New MomentumViews(_stage, Function() MomentumRoomPixels)
@@ -63,7 +65,6 @@ Partial Public NotInheritable Class SimulationPresenter
                                     _momentum.NoteImpulses(r)
                                 End Sub,
                                 AddressOf WorldTaken)
-        _colours = New BodyColours(colourSeed)
         Attach(If(world, Scenarios.Demo()))
     End Sub
 
@@ -136,7 +137,11 @@ Partial Public NotInheritable Class SimulationPresenter
     End Property
 
     ''' <summary>What a left click on a body does.</summary>
-    Public ReadOnly Property Mode As ClickMode = ClickMode.Move
+    Public ReadOnly Property Mode As ClickMode
+        Get
+            Return _pointer.Mode
+        End Get
+    End Property
 
     ''' <summary>Bigger text everywhere, for projectors.</summary>
     Public ReadOnly Property LargeFonts As Boolean
@@ -197,7 +202,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim dt = Math.Min(realSeconds, MaxFrameSeconds)
         If Not IsPaused Then
             Try
-                CarryTowardsCursor(dt)
+                _pointer.CarryTowardsCursor(dt)
                 Dim asked = dt * Speed
                 Dim advanceStart = _pacer.ClockSeconds()
                 Dim done = _pacer.AdvanceWithinBudget(asked)
@@ -223,7 +228,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Sub Fail(text As String)
         _stage.IsPaused = True
-        EndGestures()
+        _pointer.EndGestures()
         ShowMessage(text)
         TakeSnapshot()
         _window.ShowSettings()
@@ -279,11 +284,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Guarded(
             Sub()
                 _stage.IsPaused = Not _stage.IsPaused
-                ' A body carried across the change keeps following the cursor: while paused it is moved
-                ' directly, while running the engine carries it (balls that meet it bounce off).
-                If _dragged IsNot Nothing AndAlso Not _dragged.IsFixed Then
-                    If _stage.IsPaused Then World.EndDrag(Vector.Zero) Else World.BeginDrag(_dragged)
-                End If
+                _pointer.PauseChanged()
                 TakeSnapshot()
                 If _stage.IsPaused Then
                     Emit("paused t=" & Units.Num(World.Time, 3) & " s")
@@ -394,13 +395,11 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub Reset()
         Guarded(
             Sub()
-                EndGestures()
-                _Draft = Nothing
+                _pointer.Reset()
                 World.Clear()
                 World.Gravity = DefaultGravity
                 World.Restitution = DefaultRestitution
                 _SpeedIndex = SpeedSteps.RealTimeIndex
-                _Mode = ClickMode.Move
                 Log.Clear()
                 _momentum.ForgetMomentumViews()
                 Emit("reset: " & World.Bodies.Count & " bodies, g " & Units.Num(World.Gravity) & ", e " & Units.Num(World.Restitution) & ", speed " & SpeedSteps.Label(Speed))
@@ -412,18 +411,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Switches between moving and deleting.</summary>
     Public Sub ToggleDeleteMode()
-        Guarded(
-            Sub()
-                EndGestures()
-                _Mode = If(_Mode = ClickMode.Delete, ClickMode.Move, ClickMode.Delete)
-                Emit("mode " & If(_Mode = ClickMode.Delete, "delete", "move"))
-                If _Mode = ClickMode.Delete Then
-                    ShowMessage(DeleteModeMessage, Function() _Mode = ClickMode.Delete)
-                Else
-                    ShowMessage("")
-                End If
-                _window.ShowSettings()
-            End Sub)
+        _pointer.ToggleDeleteMode()
     End Sub
 
     ''' <summary>A text box changed: keeps what was typed, exactly.</summary>
@@ -473,7 +461,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 If h.WasClamped Then Inputs.ContainerHeightText = Units.Input(h.Value)
                 If w.WasClamped OrElse h.WasClamped Then _window.ShowInputs()
                 Emit("container " & Units.Num(w.Value) & " x " & Units.Num(h.Value) & " m")
-                ShowMessage(ClampNote(("container width", w, "m"), ("container height", h, "m")).TrimEnd())
+                ShowMessage(Stage.ClampNote(("container width", w, "m"), ("container height", h, "m")).TrimEnd())
                 TakeSnapshot()
                 _window.ShowSettings()
             End Sub)
@@ -527,8 +515,8 @@ Partial Public NotInheritable Class SimulationPresenter
         _window.ShowTheme()
     End Sub
 
-    ''' <summary>The message while Delete mode is on: short enough for the message area's first lines at any panel width.</summary>
-    Public Const DeleteModeMessage As String = "Delete mode: click a body or a link to remove it. Press Delete mode again to stop."
+    ''' <summary>The message while Delete mode is on.</summary>
+    Public Const DeleteModeMessage As String = PointerTools.DeleteModeMessage
 
     ''' <summary>"❚❚ Pause" or "▶ Resume".</summary>
     Public ReadOnly Property PauseText As String
@@ -540,7 +528,7 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>"Delete mode" or "Delete mode: ON".</summary>
     Public ReadOnly Property DeleteModeText As String
         Get
-            Return If(Mode = ClickMode.Delete, "Delete mode: ON", "Delete mode")
+            Return _pointer.DeleteModeText
         End Get
     End Property
 
@@ -566,7 +554,7 @@ Partial Public NotInheritable Class SimulationPresenter
         If Trace Is Nothing Then Return
         Dim problem = Placement.FindProblem(World)
         Emit("check scene " & If(problem, "ok"))
-        Dim texts As New List(Of String) From {Message, TotalsText, SpeedText, GravityText, RestitutionText, CueLabel}
+        Dim texts As New List(Of String) From {Message, TotalsText, SpeedText, GravityText, RestitutionText, _pointer.CueLabel}
         For t = 0 To Tables.Count - 1
             For i = 0 To Snapshot.RowCount(t) - 1
                 texts.AddRange(Snapshot.Cells(t, i))
@@ -596,7 +584,7 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' (going back is not building), and a container of another size is shown in its boxes and the view.
     ''' </summary>
     Private Sub WorldTaken(w As World, resized As Boolean)
-        If _AimedBody IsNot Nothing Then _AimedBody = w.Find(_AimedBody.Id)
+        _pointer.FollowWorld(w)
         _lessons.FollowWorld(w)
         If resized Then
             Inputs.ContainerWidthText = Units.Input(w.Width)
@@ -608,8 +596,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Puts a new world on show: the gestures end, the body being placed is dropped, a new run starts with it.</summary>
     Private Sub Present(w As World)
-        EndGestures()
-        _Draft = Nothing
+        _pointer.DropAll()
         Attach(w)
     End Sub
 
@@ -674,6 +661,12 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The graphs' names in the Graphs tab's chooser, in <see cref="GraphKind"/> order.</summary>
     Public Shared ReadOnly Property GraphNames As IReadOnlyList(Of String) = GraphRecorder.Names
+
+    ''' <summary>The tutorial's page on graphs and exports.</summary>
+    Public Shared ReadOnly Property GraphsHelp As HelpTopic = GraphRecorder.GraphsHelp
+
+    ''' <summary>The Maths used pages on the gas graphs.</summary>
+    Public Shared ReadOnly Property GraphsMaths As IReadOnlyList(Of HelpTopic) = GraphRecorder.GraphsMaths
 
     ''' <summary>Shows another graph.</summary>
     Public Sub ChooseGraph(kind As GraphKind)
@@ -1127,6 +1120,209 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Sets the quantity of the cell to what was typed, checked as the Add panel checks its boxes; returns whether the world changed.</summary>
     Public Function EditCell(table As Integer, row As Integer, column As Integer, text As String) As Boolean
         Return _editor.EditCell(table, row, column, text)
+    End Function
+#End Region
+
+#Region "The mouse on the canvas (PointerTools)"
+    ''' <summary>How near the first or the last corner a click finishes the polygon, in canvas pixels at 96 dpi.</summary>
+    Public Const CornerSnapPixels As Double = PointerTools.CornerSnapPixels
+
+    ''' <summary>The body waiting to be placed, or Nothing.</summary>
+    Public ReadOnly Property Draft As BodyDraft
+        Get
+            Return _pointer.Draft
+        End Get
+    End Property
+
+    ''' <summary>The body being carried with the right button, or Nothing.</summary>
+    Public ReadOnly Property DraggedBody As Shape
+        Get
+            Return _pointer.DraggedBody
+        End Get
+    End Property
+
+    ''' <summary>The movable body being aimed at with the cue, or Nothing.</summary>
+    Public ReadOnly Property AimedBody As Shape
+        Get
+            Return _pointer.AimedBody
+        End Get
+    End Property
+
+    ''' <summary>Where the cursor is while aiming, m.</summary>
+    Public ReadOnly Property AimCursor As Vector
+        Get
+            Return _pointer.AimCursor
+        End Get
+    End Property
+
+    ''' <summary>The impulse the cue will give when released, N·s (zero when not aiming).</summary>
+    Public ReadOnly Property CueImpulse As Vector
+        Get
+            Return _pointer.CueImpulse
+        End Get
+    End Property
+
+    ''' <summary>"J = 2.40 N·s   Δv = J/m = 1.20 m/s" while aiming, "" otherwise.</summary>
+    Public ReadOnly Property CueLabel As String
+        Get
+            Return _pointer.CueLabel
+        End Get
+    End Property
+
+    ''' <summary>Whether the body waiting to be placed could go where the cursor is now.</summary>
+    Public ReadOnly Property DraftFits As Boolean
+        Get
+            Return _pointer.DraftFits
+        End Get
+    End Property
+
+    ''' <summary>While a ramp is drawn: its first end, m.</summary>
+    Public ReadOnly Property RampStart As Vector?
+        Get
+            Return _pointer.RampStart
+        End Get
+    End Property
+
+    ''' <summary>Where the cursor is while a ramp, link or polygon is drawn, m.</summary>
+    Public ReadOnly Property ToolCursor As Vector?
+        Get
+            Return _pointer.ToolCursor
+        End Get
+    End Property
+
+    ''' <summary>The kind of link the link tool makes.</summary>
+    Public ReadOnly Property LinkToolKind As LinkKind
+        Get
+            Return _pointer.LinkToolKind
+        End Get
+    End Property
+
+    ''' <summary>While a link is made: the body clicked first, or Nothing.</summary>
+    Public ReadOnly Property LinkStart As Shape
+        Get
+            Return _pointer.LinkStart
+        End Get
+    End Property
+
+    ''' <summary>While a polygon is drawn by its corners: the corners so far; Nothing otherwise.</summary>
+    Public ReadOnly Property CornerDraft As CornerDraft
+        Get
+            Return _pointer.CornerDraft
+        End Get
+    End Property
+
+    ''' <summary>The polygon the corners and the cursor would make now, m: the preview.</summary>
+    Public ReadOnly Property CornerPreview As IReadOnlyList(Of Vector)
+        Get
+            Return _pointer.CornerPreview
+        End Get
+    End Property
+
+    ''' <summary>Whether the polygon of the preview could stand where it is.</summary>
+    Public ReadOnly Property CornerPreviewFits As Boolean
+        Get
+            Return _pointer.CornerPreviewFits
+        End Get
+    End Property
+
+    ''' <summary>Asks for a circle from the typed radius, mass and Fixed box; it then follows the cursor until a click.</summary>
+    Public Sub BeginAddCircle()
+        _pointer.BeginAddCircle()
+    End Sub
+
+    ''' <summary>Asks for a circle of the given radius (m) and mass (kg); it then follows the cursor until a click.</summary>
+    Public Sub BeginAddCircle(radiusText As String, massText As String, isFixed As Boolean)
+        _pointer.BeginAddCircle(radiusText, massText, isFixed)
+    End Sub
+
+    ''' <summary>Asks for a rectangle from the typed width, height, Fixed box and mass; it then follows the cursor until a click.</summary>
+    Public Sub BeginAddRectangle()
+        _pointer.BeginAddRectangle()
+    End Sub
+
+    ''' <summary>Asks for a fixed rectangle of the given width and height, m.</summary>
+    Public Sub BeginAddRectangle(widthText As String, heightText As String)
+        _pointer.BeginAddRectangle(widthText, heightText)
+    End Sub
+
+    ''' <summary>Asks for a rectangle of the given width and height (m): fixed, or a movable box of the given mass (kg).</summary>
+    Public Sub BeginAddRectangle(widthText As String, heightText As String, isFixed As Boolean, massText As String)
+        _pointer.BeginAddRectangle(widthText, heightText, isFixed, massText)
+    End Sub
+
+    ''' <summary>Drops the body waiting to be placed, or the ramp, link or polygon being drawn (Esc).</summary>
+    Public Sub CancelPlacement()
+        _pointer.CancelPlacement()
+    End Sub
+
+    ''' <summary>A mouse button went down on the canvas at (x, y) px.</summary>
+    Public Sub PointerDown(button As PointerButton, x As Double, y As Double)
+        _pointer.PointerDown(button, x, y)
+    End Sub
+
+    ''' <summary>The mouse moved over the canvas to (x, y) px.</summary>
+    Public Sub PointerMove(x As Double, y As Double)
+        _pointer.PointerMove(x, y)
+    End Sub
+
+    ''' <summary>A mouse button came up at (x, y) px.</summary>
+    Public Sub PointerUp(button As PointerButton, x As Double, y As Double)
+        _pointer.PointerUp(button, x, y)
+    End Sub
+
+    ''' <summary>The Fixed box of the rectangle tool was ticked or cleared.</summary>
+    Public Sub RectangleFixedChanged(isFixed As Boolean)
+        _pointer.RectangleFixedChanged(isFixed)
+    End Sub
+
+    ''' <summary>Asks for a regular polygon from the typed sides, radius, angle, mass and Fixed box.</summary>
+    Public Sub BeginAddPolygon()
+        _pointer.BeginAddPolygon()
+    End Sub
+
+    ''' <summary>Asks for a regular polygon of so many sides, corners so far from its centre, turned so many degrees, fixed or of so many kg.</summary>
+    Public Sub BeginAddPolygon(sidesText As String, sizeText As String, angleText As String, massText As String, isFixed As Boolean)
+        _pointer.BeginAddPolygon(sidesText, sizeText, angleText, massText, isFixed)
+    End Sub
+
+    ''' <summary>The ramp tool: the next left drag on the canvas draws a fixed line.</summary>
+    Public Sub BeginAddRamp()
+        _pointer.BeginAddRamp()
+    End Sub
+
+    ''' <summary>The link tool with the typed stiffness (springs only), N/m.</summary>
+    Public Sub BeginAddLink(kind As LinkKind)
+        _pointer.BeginAddLink(kind)
+    End Sub
+
+    ''' <summary>The link tool: the next two left clicks join two bodies, or a body and a fixed anchor.</summary>
+    Public Sub BeginAddLink(kind As LinkKind, stiffnessText As String)
+        _pointer.BeginAddLink(kind, stiffnessText)
+    End Sub
+
+    ''' <summary>Starts the corner tool with the typed mass and the circle's Fixed box.</summary>
+    Public Sub BeginAddCorners()
+        _pointer.BeginAddCorners()
+    End Sub
+
+    ''' <summary>Starts the corner tool: the next left clicks are the corners of a polygon.</summary>
+    Public Sub BeginAddCorners(massText As String, isFixed As Boolean)
+        _pointer.BeginAddCorners(massText, isFixed)
+    End Sub
+
+    ''' <summary>Finishes the polygon being drawn by its corners (Enter).</summary>
+    Public Sub FinishCorners()
+        _pointer.FinishCorners()
+    End Sub
+
+    ''' <summary>The topmost body under point <paramref name="p"/> (m), or Nothing.</summary>
+    Public Function BodyAt(p As Vector) As Shape
+        Return _pointer.BodyAt(p)
+    End Function
+
+    ''' <summary>The link whose line passes nearest <paramref name="p"/> (m), within a few pixels, or Nothing.</summary>
+    Public Function LinkAt(p As Vector) As Link
+        Return _pointer.LinkAt(p)
     End Function
 #End Region
 End Class

@@ -132,6 +132,18 @@ Friend NotInheritable Class Stage
         Return If(text, "").Replace(vbCr, " ").Replace(vbLf, " ").Trim()
     End Function
 
+    ''' <summary>
+    ''' "radius set to the maximum, 2.00 m. " for each value brought to a limit; "" when none was. A
+    ''' count (no unit: the sides of a polygon) is written as the whole number it is, "3", not "3.00".
+    ''' </summary>
+    Public Shared Function ClampNote(ParamArray fields As (Name As String, Input As NumberInput?, Unit As String)()) As String
+        Dim notes = fields.Where(Function(f) f.Input.HasValue AndAlso f.Input.Value.WasClamped).
+            Select(Function(f) f.Name & " set to the " & If(f.Input.Value.WasRaised, "minimum", "maximum") & ", " &
+                               If(f.Unit.Length = 0, f.Input.Value.Value.ToString("0", Globalization.CultureInfo.InvariantCulture), Units.Sig(f.Input.Value.Value) & " " & f.Unit)).ToList()
+        If notes.Count = 0 Then Return ""
+        Return String.Join(", ", notes) & ". "
+    End Function
+
     ''' <summary>"radius (m) is empty; mass (kg) 'x' is not a number.": what is wrong with each input that was refused.</summary>
     Public Shared Function Problems(ParamArray inputs As NumberInput()) As String
         Return String.Join("; ", inputs.Where(Function(i) Not i.IsValid).Select(Function(i) i.Problem)) & "."
