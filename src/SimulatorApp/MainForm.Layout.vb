@@ -72,8 +72,8 @@ Partial Friend NotInheritable Class MainForm
         Dim large = _presenter.LargeFonts
         Dim sideWidth = Math.Min(S(If(large, 470, 420)), Math.Max(S(380), CInt(w * 0.36)))
         Dim line = LineHeight(Font)
-        ' With large fonts the tables' rows are taller: the canvas leaves them a little more of the height.
-        Dim canvasHeight = CInt(h * If(large, 0.58, 0.62))
+        ' With large fonts the canvas grows a little (its labels grow), and leaves the tables, whose rows are taller too, room for several rows.
+        Dim canvasHeight = CInt(h * If(large, 0.64, 0.62))
         _canvas.SetBounds(0, 0, w - sideWidth, canvasHeight)
         ' The totals always have room for two lines: a total that grows (3141 collisions) never moves the tabs.
         _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), 2 * LineHeight(_totals.Font) + S(8))
