@@ -2,6 +2,23 @@ Option Strict On
 
 ''' <summary>The help windows' pages: the tutorial and the maths behind the simulator.</summary>
 Public Module HelpTexts
+    ''' <summary>The tutorial's page listing every key of the window.</summary>
+    Public ReadOnly Property KeysHelp As New HelpTopic("10. Keys, Undo and Redo",
+        "Wherever the focus is:" & vbLf &
+        "  " & SimulationPresenter.PauseKey & "  pause or resume" & vbLf &
+        "  " & SimulationPresenter.RestartKey & "  restart the scene" & vbLf &
+        "  " & SimulationPresenter.ResetKey & "  reset (remove every body)" & vbLf &
+        "  " & SimulationPresenter.ScenesKey & "  the Scenes menu (arrow keys and Enter choose)" & vbLf &
+        "  Esc  drop the body you are placing, or the ramp, link or polygon you are drawing; close the Tutorial, Maths used or graph window; close a menu" & vbLf &
+        "  Enter  finish a polygon drawn by its corners" & vbLf & "" & vbLf &
+        "Except while typing in a text box (which keeps these keys for its own text):" & vbLf &
+        "  " & SimulationPresenter.UndoKey & "  undo the last edit: a body added, deleted, carried or pushed, a velocity set with its arrow, a value typed into a table, a link, a ramp, the container's size, Reset. The scene goes back exactly as it was, clock included; gravity and restitution stay as set." & vbLf &
+        "  " & SimulationPresenter.RedoKey & " (or Ctrl+Shift+Z)  do it again" & vbLf &
+        "  " & SimulationPresenter.StepKey & "  one frame on;  " & SimulationPresenter.StepBackKey & "  one frame back (the arrows not while a slider has the focus: they move it)" & vbLf &
+        "  " & SimulationPresenter.NextCollisionKey & "  on to the next collision;  " & SimulationPresenter.PreviousCollisionKey & "  back to the last one" & vbLf & "" & vbLf &
+        "In a table: double-click a cell, or select a row and press F2, to type a value; Enter keeps it, Esc leaves it." & vbLf &
+        "Tab goes through the side panel's controls in reading order, and the panel scrolls to the one it reaches; Space presses a button or ticks a box.")
+
     ''' <summary>The tutorial: adding, removing and moving particles, the controls and the limits of the model.</summary>
     Public ReadOnly Property Tutorial As IReadOnlyList(Of HelpTopic) = {
         New HelpTopic("1. Adding particles",
@@ -15,7 +32,7 @@ Public Module HelpTexts
         New HelpTopic("5. Limits of the model",
             "Balls are perfectly smooth, rigid discs: they do not spin and there is no friction, so a ball rolling on a table never slows down except through collisions." & vbLf & "" & vbLf & "One coefficient of restitution e is used for every contact. Real pairs of materials each have their own." & vbLf & "" & vbLf & "Rectangles, boxes and polygons never rotate. Fixed balls and rectangles do not collide with each other, so you can build shapes from them." & vbLf & "" & vbLf & "There is no air resistance, and gravity is uniform (the same everywhere in the box)." & vbLf & "" & vbLf & "Collisions are instantaneous. Several balls touching at once are handled one pair at a time, in a definite order." & vbLf & "" & vbLf & "Numbers are shown to 3 significant figures (with a power of ten when very large or small); the simulation itself keeps full precision."),
         SimulationPresenter.LessonsHelp,
-        SimulationPresenter.GraphsHelp, SimulationPresenter.MomentumHelp, SimulationPresenter.TimeTravelHelp}
+        SimulationPresenter.GraphsHelp, SimulationPresenter.MomentumHelp, SimulationPresenter.TimeTravelHelp, KeysHelp}
 
     ''' <summary>The equations the engine uses, with their reasoning.</summary>
     Public ReadOnly Property Maths As IReadOnlyList(Of HelpTopic)

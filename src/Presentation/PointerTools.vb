@@ -12,13 +12,16 @@ Friend NotInheritable Class PointerTools
     Private ReadOnly _screenScale As Func(Of Double)
     Private ReadOnly _speed As Func(Of Double)
     Private ReadOnly _colours As BodyColours
+    Private ReadOnly _history As EditHistory
 
+    ''' <param name="history">where each edit is kept for Undo</param>
     ''' <param name="view">metres ↔ canvas pixels now</param>
     ''' <param name="screenScale">pixels per 96-dpi pixel of the window's screen</param>
     ''' <param name="speed">simulated seconds per real second now</param>
     ''' <param name="colourSeed">seed of the random colours of new bodies</param>
-    Public Sub New(stage As Stage, view As Func(Of ViewTransform), screenScale As Func(Of Double), speed As Func(Of Double), colourSeed As Integer)
+    Public Sub New(stage As Stage, history As EditHistory, view As Func(Of ViewTransform), screenScale As Func(Of Double), speed As Func(Of Double), colourSeed As Integer)
         _stage = stage
+        _history = history
         _view = view
         _screenScale = screenScale
         _speed = speed
@@ -359,10 +362,12 @@ Friend NotInheritable Class PointerTools
         End If
         Dim moved = place.Value.Length
         body = Draft.Build(p + place.Value)
+        Dim before = _history.Capture()
         _stage.World.Add(body)
         Dim kindName = Draft.KindName
         _Draft = Nothing
         _stage.Emit("placed " & kindName & " " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
+        _history.Commit("the " & kindName & " " & body.Id & " added", before)
         If clash IsNot Nothing AndAlso moved > Placement.Tolerance Then
             _stage.ShowMessage("Placed " & Units.Quantity(moved, "m") & " from the click, at the nearest free place: there it would have overlapped " & Describe(clash) & ".")
         Else
@@ -380,8 +385,10 @@ Friend NotInheritable Class PointerTools
     Private Sub Delete(body As Shape)
         If body Is _dragged Then EndCarry()
         If body Is AimedBody Then _AimedBody = Nothing
+        Dim before = _history.Capture()
         _stage.World.Remove(body)
         _stage.Emit("deleted " & body.Id)
+        _history.Commit(body.Id & " deleted", before)
         _stage.TakeSnapshot()
     End Sub
 
@@ -394,7 +401,9 @@ Friend NotInheritable Class PointerTools
             _stage.Emit("cue released without a pull")
             Return
         End If
+        Dim before = _history.Capture()
         _stage.World.ApplyImpulse(c, j)
+        _history.Commit("the push on " & c.Id, before)
         _stage.Emit("fired " & c.Id & " J " & Units.Pair(j, 3) & " N·s dv " & Units.Pair(j * c.InverseMass, 3) & " m/s v " & Units.Pair(c.Velocity, 3) & " m/s")
         ' The table, the totals and the arrow all show the new velocity at once, paused or not.
         _stage.TakeSnapshot()
@@ -407,7 +416,11 @@ Friend NotInheritable Class PointerTools
         End Get
     End Property
 
+    ''' <summary>The world before the carry in progress (for Undo), or Nothing.</summary>
+    Private _carryBefore As Checkpoint
+
     Private Sub BeginCarry(body As Shape, p As Vector)
+        _carryBefore = _history.Capture()
         _dragged = body
         _grabOffset = body.Position - p
         _carryGoal = body.Position
@@ -475,6 +488,8 @@ Friend NotInheritable Class PointerTools
         If _stage.World.DraggedBody IsNot Nothing Then _stage.World.EndDrag(Vector.Zero)
         If Not body.IsFixed AndAlso _stage.World.Bodies.Contains(body) Then _stage.World.SetVelocity(body, Vector.Zero)
         _stage.Emit("drag end " & body.Id & " at " & Units.Pair(body.CentreOfMass, 3))
+        If _stage.World.Bodies.Contains(body) Then _history.Commit(body.Id & " moved", _carryBefore)
+        _carryBefore = Nothing
         _stage.TakeSnapshot()
     End Sub
 
@@ -707,7 +722,9 @@ Friend NotInheritable Class PointerTools
         End If
         Dim moved = place.Value.Length
         If moved > 0 Then ramp = New Segment(a + place.Value, b + place.Value) With {.Color = ramp.Color}
+        Dim before = _history.Capture()
         _stage.World.Add(ramp)
+        _history.Commit("the ramp " & ramp.Id & " added", before)
         _Mode = ClickMode.Move
         _toolCursor = Nothing
         _stage.Emit("placed ramp " & ramp.Id & " from " & Units.Pair(ramp.StartPoint, 3) & " to " & Units.Pair(ramp.EndPoint, 3))
@@ -761,7 +778,9 @@ Friend NotInheritable Class PointerTools
         Else
             link = If(b Is Nothing, Link.CreateTie(_linkKind, a, anchor, length), Link.CreateTie(_linkKind, a, b, length))
         End If
+        Dim before = _history.Capture()
         _stage.World.Add(link)
+        _history.Commit("the " & name & " " & link.Id & " added", before)
         _Mode = ClickMode.Move
         _LinkStart = Nothing
         _toolCursor = Nothing
@@ -794,8 +813,10 @@ Friend NotInheritable Class PointerTools
     End Function
 
     Private Sub DeleteLink(link As Link)
+        Dim before = _history.Capture()
         _stage.World.Remove(link)
         _stage.Emit("deleted link " & link.Id)
+        _history.Commit("the link " & link.Id & " deleted", before)
         _stage.TakeSnapshot()
     End Sub
 
@@ -964,7 +985,9 @@ Friend NotInheritable Class PointerTools
         If moved > 0 Then body = d.Build(outline.Select(Function(v) v + place.Value).ToArray())
         Dim leftOut = d.LeftOut()
         Dim reordered = leftOut.Length = 0 AndAlso Not d.IsConvexAsClicked
+        Dim before = _history.Capture()
         _stage.World.Add(body)
+        _history.Commit("the polygon " & body.Id & " added", before)
         _Mode = ClickMode.Move
         _CornerDraft = Nothing
         _toolCursor = Nothing

@@ -37,6 +37,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _editor As TableEditor
     ''' <summary>What the mouse does on the canvas: placing, deleting, carrying, the cue, and the ramp, link and corner tools.</summary>
     Private ReadOnly _pointer As PointerTools
+    ''' <summary>Undo and redo of the edits.</summary>
+    Private ReadOnly _history As EditHistory
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
     Private _sinceSnapshot As Double
@@ -50,14 +52,15 @@ Partial Public NotInheritable Class SimulationPresenter
         If view Is Nothing Then Throw New ArgumentNullException(NameOf(view))
         _window = view
         _stage = New Stage(view)
-        _pointer = New PointerTools(_stage, Function() Me.View, Function() ScreenScale, Function() Speed, colourSeed)
+        _history = New EditHistory(_stage, Function() _time.Checkpoint(), AddressOf PutBack)
+        _pointer = New PointerTools(_stage, _history, Function() Me.View, Function() ScreenScale, Function() Speed, colourSeed)
         _stage.Connect(AddressOf TakeSnapshot, AddressOf _pointer.EndGestures, AddressOf Present, Function() _pointer.DraggedBody IsNot Nothing)
         _graphs = New GraphRecorder(_stage)
         _export = New ExportWriter(_stage, _graphs)
         _momentum = New MomentumViews(_stage, Function() MomentumRoomPixels)
         _files = New SceneFiles(_stage, store)
         _lessons = New LessonBook(_stage, _files)
-        _editor = New TableEditor(_stage, Function() Snapshot, Sub() _lessons.RememberStart())
+        _editor = New TableEditor(_stage, _history, Function() Snapshot, Sub() _lessons.RememberStart())
         _pacer = New FramePacer(_stage, Function() Speed, Function(seconds, wall) _time.Advance(seconds, wall))
         _time = New TimeMachine(_stage, Function() FrameBudgetSeconds,
                                 Sub(r)
@@ -396,6 +399,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Guarded(
             Sub()
                 _pointer.Reset()
+                Dim before = _history.Capture()
                 World.Clear()
                 World.Gravity = DefaultGravity
                 World.Restitution = DefaultRestitution
@@ -403,6 +407,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 Log.Clear()
                 _momentum.ForgetMomentumViews()
                 Emit("reset: " & World.Bodies.Count & " bodies, g " & Units.Num(World.Gravity) & ", e " & Units.Num(World.Restitution) & ", speed " & SpeedSteps.Label(Speed))
+                _history.Commit("Reset", before, withSettings:=True)
                 ShowMessage("")
                 TakeSnapshot()
                 _window.ShowSettings()
@@ -454,8 +459,10 @@ Partial Public NotInheritable Class SimulationPresenter
                     ShowMessage("The container cannot be " & Units.Sig(w.Value) & " m × " & Units.Sig(h.Value) & " m: " & refusal & " It keeps its size.")
                     Return
                 End If
+                Dim before = _history.Capture()
                 World.Resize(w.Value, h.Value)
                 SettleOverlaps()
+                _history.Commit("the container's new size", before)
                 FitView()
                 If w.WasClamped Then Inputs.ContainerWidthText = Units.Input(w.Value)
                 If h.WasClamped Then Inputs.ContainerHeightText = Units.Input(h.Value)
@@ -594,9 +601,21 @@ Partial Public NotInheritable Class SimulationPresenter
         End If
     End Sub
 
+    ''' <summary>Undo or Redo puts the world of <paramref name="point"/> back on show: the gestures end, and the run goes on from it (see <see cref="EditHistory"/>).</summary>
+    Private Sub PutBack(point As Checkpoint, withSettings As Boolean)
+        _pointer.DropAll()
+        _time.PutBack(point, withSettings)
+        ' Undoing is building: Restart comes back to what is on show now.
+        _lessons.RememberStart()
+        TakeSnapshot()
+        _window.ShowInputs()
+        _window.ShowSettings()
+    End Sub
+
     ''' <summary>Puts a new world on show: the gestures end, the body being placed is dropped, a new run starts with it.</summary>
     Private Sub Present(w As World)
         _pointer.DropAll()
+        _history.Clear()
         Attach(w)
     End Sub
 
@@ -1324,5 +1343,36 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Function LinkAt(p As Vector) As Link
         Return _pointer.LinkAt(p)
     End Function
+#End Region
+
+#Region "Undo and redo (EditHistory)"
+    ''' <summary>The undo key.</summary>
+    Public Const UndoKey As String = EditHistory.UndoKey
+    ''' <summary>The redo key.</summary>
+    Public Const RedoKey As String = EditHistory.RedoKey
+
+    ''' <summary>Whether there is an edit to undo.</summary>
+    Public ReadOnly Property CanUndo As Boolean
+        Get
+            Return _history.CanUndo
+        End Get
+    End Property
+
+    ''' <summary>Whether there is an undone edit to redo.</summary>
+    Public ReadOnly Property CanRedo As Boolean
+        Get
+            Return _history.CanRedo
+        End Get
+    End Property
+
+    ''' <summary>Undoes the last edit (add, delete, move, push, typed value, link, resize, Reset): the world exactly as it was before it.</summary>
+    Public Sub Undo()
+        Guarded(AddressOf _history.Undo)
+    End Sub
+
+    ''' <summary>Redoes the last edit undone: the world exactly as it was after it.</summary>
+    Public Sub Redo()
+        Guarded(AddressOf _history.Redo)
+    End Sub
 #End Region
 End Class

@@ -8,11 +8,13 @@ Friend NotInheritable Class TableEditor
     Private ReadOnly _stage As Stage
     Private ReadOnly _snapshot As Func(Of TableSnapshot)
     Private ReadOnly _built As Action
+    Private ReadOnly _history As EditHistory
 
     ''' <param name="snapshot">the tables as the window shows them now (rows are found by their place there)</param>
     ''' <param name="built">told after an edit: it is building, and Restart comes back to it</param>
-    Public Sub New(stage As Stage, snapshot As Func(Of TableSnapshot), built As Action)
+    Public Sub New(stage As Stage, history As EditHistory, snapshot As Func(Of TableSnapshot), built As Action)
         _stage = stage
+        _history = history
         _snapshot = snapshot
         _built = built
     End Sub
@@ -137,6 +139,7 @@ Friend NotInheritable Class TableEditor
         End If
         Dim value = read.Value
         _stage.EndGestures()
+        Dim before = _history.Capture()
         Select Case q
             Case TableQuantity.X, TableQuantity.Y
                 Dim now = ListedPoint(body, table)
@@ -163,6 +166,7 @@ Friend NotInheritable Class TableEditor
                 _stage.World.Replace(body, replacement)
         End Select
         _stage.Emit("edited " & body.Id & " " & label & " = " & value.ToString("R", Globalization.CultureInfo.InvariantCulture))
+        _history.Commit(body.Id & "'s " & label & " typed", before)
         Dim note = If(read.WasClamped, LabelOf(q) & " set to the " & If(read.WasRaised, "minimum", "maximum") & ", " & Units.Sig(value) & ". ", "")
         _stage.ShowMessage(note & body.Id & ": " & label & " is now " & Units.Sig(value) & ". Restart comes back to this.")
         _built()
@@ -207,7 +211,9 @@ Friend NotInheritable Class TableEditor
             _stage.ShowMessage("A size of " & said & " would put " & body.Id & " " & refusal & "; it keeps its size.")
             Return False
         End If
+        Dim before = _history.Capture()
         _stage.World.Replace(body, replacement)
+        _history.Commit(body.Id & "'s size typed", before)
         _stage.Emit("edited " & body.Id & " size (m) = " & width.Value.ToString("R", Globalization.CultureInfo.InvariantCulture) & " × " & height.Value.ToString("R", Globalization.CultureInfo.InvariantCulture))
         Dim note = If(width.WasClamped OrElse height.WasClamped, "A side was brought to its limit (" & Units.Sig(InputLimits.MinSide) & " to " & Units.Sig(InputLimits.MaxSide) & " m). ", "")
         _stage.ShowMessage(note & body.Id & ": its size is now " & said & ". Restart comes back to this.")

@@ -162,6 +162,33 @@ Friend NotInheritable Class TimeMachine
         _taken(w, resized)
     End Sub
 
+    ''' <summary>The world on show now as a checkpoint (every number to the last bit), or Nothing when it cannot be written down.</summary>
+    Public Function Checkpoint() As Checkpoint
+        Return Describe(_stage.World)
+    End Function
+
+    ''' <summary>
+    ''' Puts the world of <paramref name="point"/> on show as a change (Undo and Redo): exactly as it
+    ''' was, clock and collision count included, with the gravity and restitution set now (or its
+    ''' own, <paramref name="withSettings"/>: undoing Reset). Unlike
+    ''' going back in time it starts a new run from there: what was recorded after that moment is
+    ''' forgotten, as after any change.
+    ''' </summary>
+    Public Sub PutBack(point As Checkpoint, withSettings As Boolean)
+        Dim now = _stage.World
+        Dim w = Timeline.Build(point)
+        If Not withSettings Then
+            w.Gravity = now.Gravity
+            w.Restitution = now.Restitution
+        End If
+        _lastCollisionTime = Nothing
+        Dim resized = w.Width <> now.Width OrElse w.Height <> now.Height
+        UseTimeline(w, SolverFactory.Create(point.SolverName), restartFirst:=True)
+        _stage.World = w
+        _stage.Log.ContinueFrom(point.Collisions)
+        _taken(w, resized)
+    End Sub
+
     ''' <summary>Pauses (if running) for a step, ending any gesture.</summary>
     Private Sub PauseForStep()
         _stage.EndGestures()

@@ -186,6 +186,19 @@ Partial Friend NotInheritable Class MainForm
                 ShowLessonMenu()
                 Return True
         End Select
+        ' Undo and redo, except in a text box, which undoes its own typing.
+        If Not TypeOf ActiveControl Is TextBox Then
+            Select Case keyData
+                Case Keys.Control Or Keys.Z
+                    _trace?.Invoke("key undo")
+                    Act(Sub() _presenter.Undo())
+                    Return True
+                Case Keys.Control Or Keys.Y, Keys.Control Or Keys.Shift Or Keys.Z
+                    _trace?.Invoke("key redo")
+                    Act(Sub() _presenter.Redo())
+                    Return True
+            End Select
+        End If
         If ProcessTimeKey(keyData) Then Return True
         If ProcessCornerKey(keyData) Then Return True
         Return MyBase.ProcessCmdKey(msg, keyData)
