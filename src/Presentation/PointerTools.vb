@@ -13,15 +13,19 @@ Friend NotInheritable Class PointerTools
     Private ReadOnly _speed As Func(Of Double)
     Private ReadOnly _colours As BodyColours
     Private ReadOnly _history As EditHistory
+    Private ReadOnly _arrowSeconds As Func(Of Double)
 
     ''' <param name="history">where each edit is kept for Undo</param>
     ''' <param name="view">metres ↔ canvas pixels now</param>
     ''' <param name="screenScale">pixels per 96-dpi pixel of the window's screen</param>
     ''' <param name="speed">simulated seconds per real second now</param>
     ''' <param name="colourSeed">seed of the random colours of new bodies</param>
-    Public Sub New(stage As Stage, history As EditHistory, view As Func(Of ViewTransform), screenScale As Func(Of Double), speed As Func(Of Double), colourSeed As Integer)
+    ''' <param name="arrowSeconds">the seconds of travel a velocity arrow stands for now, or 0 when arrows are not drawn</param>
+    Public Sub New(stage As Stage, history As EditHistory, view As Func(Of ViewTransform), screenScale As Func(Of Double), speed As Func(Of Double), colourSeed As Integer,
+                   arrowSeconds As Func(Of Double))
         _stage = stage
         _history = history
+        _arrowSeconds = arrowSeconds
         _view = view
         _screenScale = screenScale
         _speed = speed
@@ -271,6 +275,12 @@ Friend NotInheritable Class PointerTools
                         End If
                         Return
                     End If
+                    ' While paused the tip of a velocity arrow can be dragged, to set the velocity.
+                    Dim tipOf = If(_stage.IsPaused AndAlso _dragged Is Nothing AndAlso Mode = ClickMode.Move, ArrowTipAt(p), Nothing)
+                    If tipOf IsNot Nothing Then
+                        BeginArrowDrag(tipOf, p)
+                        Return
+                    End If
                     If body IsNot Nothing AndAlso Not body.IsFixed AndAlso _dragged Is Nothing Then
                         _AimedBody = body
                         _aimCursor = p
@@ -293,6 +303,7 @@ Friend NotInheritable Class PointerTools
                     Draft.HasCentre = True
                 End If
                 If AimedBody IsNot Nothing Then _aimCursor = p
+                If _ArrowBody IsNot Nothing Then ArrowTo(p)
                 ToolMove(p)
                 If _dragged IsNot Nothing Then
                     _carryGoal = p + _grabOffset
@@ -307,6 +318,11 @@ Friend NotInheritable Class PointerTools
         _stage.Guarded(
             Sub()
                 Dim p = _view().ToWorld(x, y)
+                If button = PointerButton.Left AndAlso _ArrowBody IsNot Nothing Then
+                    If p.IsFinite Then ArrowTo(p)
+                    EndArrowDrag()
+                    Return
+                End If
                 If ToolUp(button, p) Then Return
                 If button = PointerButton.Left AndAlso AimedBody IsNot Nothing Then
                     If p.IsFinite Then _aimCursor = p
@@ -493,8 +509,80 @@ Friend NotInheritable Class PointerTools
         _stage.TakeSnapshot()
     End Sub
 
+    ''' <summary>How near the tip of a velocity arrow a press grabs it, in canvas pixels at 96 dpi.</summary>
+    Public Const ArrowGrabPixels As Double = 9
+
+    ''' <summary>The body whose velocity arrow is being dragged by its tip, or Nothing.</summary>
+    Public ReadOnly Property ArrowBody As Shape
+
+    ''' <summary>The world before the arrow drag in progress (for Undo).</summary>
+    Private _arrowBefore As Checkpoint
+    ''' <summary>The arrows' scale when the drag began, s: kept while dragging, so the tip stays under the cursor.</summary>
+    Private _arrowDragSeconds As Double
+    ''' <summary>The tip minus the cursor when the drag began, m: the tip does not jump to the cursor.</summary>
+    Private _arrowGrab As Vector
+
+    ''' <summary>"v = (1.20, −0.500) m/s   |v| = 1.30 m/s" while an arrow is dragged, "" otherwise: the velocity it sets, as the tables will show it.</summary>
+    Public ReadOnly Property ArrowLabel As String
+        Get
+            If ArrowBody Is Nothing Then Return ""
+            Dim v = ArrowBody.Velocity
+            Return "v = " & Units.SigPair(v) & " m/s   |v| = " & Units.Quantity(v.Length, "m/s")
+        End Get
+    End Property
+
+    ''' <summary>The movable body whose velocity arrow's tip is within reach of <paramref name="p"/> (m), or Nothing; an arrow too short to tell from its body is not grabbed.</summary>
+    Private Function ArrowTipAt(p As Vector) As Shape
+        Dim seconds = _arrowSeconds()
+        If Not (seconds > 0) Then Return Nothing
+        Dim view = _view()
+        Dim reach = ArrowGrabPixels * _screenScale()
+        Dim best As Shape = Nothing
+        For Each b In _stage.World.Movables
+            Dim tip = b.CentreOfMass + b.Velocity * seconds
+            Dim fromCentre = view.ToPixels((tip - b.CentreOfMass).Length)
+            If fromCentre < 2 * reach Then Continue For
+            Dim d = view.ToPixels((tip - p).Length)
+            If d <= reach Then
+                reach = d
+                best = b
+            End If
+        Next
+        Return best
+    End Function
+
+    Private Sub BeginArrowDrag(body As Shape, p As Vector)
+        _arrowBefore = _history.Capture()
+        _arrowDragSeconds = _arrowSeconds()
+        _arrowGrab = body.CentreOfMass + body.Velocity * _arrowDragSeconds - p
+        _ArrowBody = body
+        _stage.Emit("arrow drag " & body.Id)
+    End Sub
+
+    ''' <summary>The cursor is at <paramref name="p"/> (m), and the tip with it: the velocity is the arrow over the arrows' time.</summary>
+    Private Sub ArrowTo(p As Vector)
+        Dim body = ArrowBody
+        Dim v = (p + _arrowGrab - body.CentreOfMass) / _arrowDragSeconds
+        ' No faster than a typed speed may be.
+        If v.Length > TableEditor.MaxTypedSpeed Then v = v * (TableEditor.MaxTypedSpeed / v.Length)
+        _stage.World.SetVelocity(body, v)
+        _stage.TakeSnapshot()
+    End Sub
+
+    Private Sub EndArrowDrag()
+        Dim body = ArrowBody
+        _ArrowBody = Nothing
+        If body Is Nothing Then Return
+        Dim v = body.Velocity
+        _stage.Emit("arrow set " & body.Id & " v " & v.X.ToString("R", Globalization.CultureInfo.InvariantCulture) & " " & v.Y.ToString("R", Globalization.CultureInfo.InvariantCulture))
+        _history.Commit(body.Id & "'s velocity set with its arrow", _arrowBefore)
+        _arrowBefore = Nothing
+        _stage.TakeSnapshot()
+    End Sub
+
     ''' <summary>Ends any drag or aim in progress (before a reset, a mode change or a new scene).</summary>
     Public Sub EndGestures()
+        If _ArrowBody IsNot Nothing Then EndArrowDrag()
         _AimedBody = Nothing
         If _dragged IsNot Nothing Then EndCarry()
         CancelTool()

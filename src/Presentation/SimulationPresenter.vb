@@ -53,7 +53,8 @@ Partial Public NotInheritable Class SimulationPresenter
         _window = view
         _stage = New Stage(view)
         _history = New EditHistory(_stage, Function() _time.Checkpoint(), AddressOf PutBack)
-        _pointer = New PointerTools(_stage, _history, Function() Me.View, Function() ScreenScale, Function() Speed, colourSeed)
+        _pointer = New PointerTools(_stage, _history, Function() Me.View, Function() ScreenScale, Function() Speed, colourSeed,
+                                    Function() If(ShowArrows, Arrows.Seconds, 0.0))
         _stage.Connect(AddressOf TakeSnapshot, AddressOf _pointer.EndGestures, AddressOf Present, Function() _pointer.DraggedBody IsNot Nothing)
         _graphs = New GraphRecorder(_stage)
         _export = New ExportWriter(_stage, _graphs)
@@ -248,7 +249,8 @@ Partial Public NotInheritable Class SimulationPresenter
         _lessons.NoteBuilding()
         _Snapshot = TableSnapshot.Take(World, Log.TotalSeen)
         _graphs.SampleGraphs()
-        Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
+        ' While a velocity arrow is dragged its scale stays put, so its tip stays under the cursor.
+        If _pointer.ArrowBody Is Nothing Then Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
         _window.ShowState()
         CheckMessage()
     End Sub
@@ -1333,6 +1335,23 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub FinishCorners()
         _pointer.FinishCorners()
     End Sub
+
+    ''' <summary>How near the tip of a velocity arrow a press grabs it, in canvas pixels at 96 dpi.</summary>
+    Public Const ArrowGrabPixels As Double = PointerTools.ArrowGrabPixels
+
+    ''' <summary>The body whose velocity arrow is being dragged by its tip (while paused), or Nothing.</summary>
+    Public ReadOnly Property ArrowBody As Shape
+        Get
+            Return _pointer.ArrowBody
+        End Get
+    End Property
+
+    ''' <summary>"v = (1.20, −0.500) m/s   |v| = 1.30 m/s" while an arrow is dragged: the velocity it sets.</summary>
+    Public ReadOnly Property ArrowLabel As String
+        Get
+            Return _pointer.ArrowLabel
+        End Get
+    End Property
 
     ''' <summary>The topmost body under point <paramref name="p"/> (m), or Nothing.</summary>
     Public Function BodyAt(p As Vector) As Shape

@@ -140,6 +140,7 @@ Partial Friend NotInheritable Class ScenePainter
 
         DrawDraft(g, p, view, outline, theme, k)
         DrawCue(g, p, view, theme, k)
+        DrawArrowDrag(g, p, view, theme, k)
         g.ResetClip()
         DrawScaleBar(g, p, view, theme, height, k)
         DrawBanner(g, p, theme, width, height)
@@ -302,6 +303,23 @@ Partial Friend NotInheritable Class ScenePainter
         Dim bounds = g.VisibleClipBounds
         lx = Math.Max(bounds.Left + 2, Math.Min(lx, bounds.Right - sz.Width - 2))
         ly = Math.Max(bounds.Top + 2, Math.Min(ly, bounds.Bottom - sz.Height - 2))
+        g.FillRectangle(SolidOf(theme.Background, 220), lx - 2, ly - 2, sz.Width + 4, sz.Height + 4)
+        g.DrawString(label, _font, SolidOf(theme.Ink), lx, ly)
+    End Sub
+
+    ''' <summary>While a velocity arrow is dragged by its tip: a ring on the tip, and the velocity it sets beside it.</summary>
+    Private Sub DrawArrowDrag(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
+        Dim b = p.ArrowBody
+        If b Is Nothing Then Return
+        Dim tip = view.ToScreen(b.CentreOfMass + b.Velocity * p.Arrows.Seconds)
+        Dim r = 7 * k
+        g.DrawEllipse(PenOf(theme.Cue, 2 * k), CSng(tip.X) - r, CSng(tip.Y) - r, 2 * r, 2 * r)
+        Dim label = p.ArrowLabel
+        Dim sz = g.MeasureString(label, _font)
+        ' Beside the tip, kept on the canvas.
+        Dim bounds = g.VisibleClipBounds
+        Dim lx = Math.Max(bounds.Left + 2, Math.Min(CSng(tip.X) + 12 * k, bounds.Right - sz.Width - 2))
+        Dim ly = Math.Max(bounds.Top + 2, Math.Min(CSng(tip.Y) + 10 * k, bounds.Bottom - sz.Height - 2))
         g.FillRectangle(SolidOf(theme.Background, 220), lx - 2, ly - 2, sz.Width + 4, sz.Height + 4)
         g.DrawString(label, _font, SolidOf(theme.Ink), lx, ly)
     End Sub
