@@ -68,7 +68,7 @@ Partial Public NotInheritable Class SimulationPresenter
                                     _graphs.GraphCollision(r)
                                     _momentum.NoteImpulses(r)
                                 End Sub,
-                                AddressOf WorldTaken)
+                                AddressOf WorldTaken, AddressOf AfterJump)
         Attach(If(world, Scenarios.Demo()))
     End Sub
 
@@ -601,6 +601,11 @@ Partial Public NotInheritable Class SimulationPresenter
             FitView()
             _window.ShowInputs()
         End If
+    End Sub
+
+    ''' <summary>The moment on show was reached by a jump (a scrub, a step back): only the last instant's impulses are drawn.</summary>
+    Private Sub AfterJump()
+        _momentum.Impulses.KeepLatestInstant(World)
     End Sub
 
     ''' <summary>Undo or Redo puts the world of <paramref name="point"/> back on show: the gestures end, and the run goes on from it (see <see cref="EditHistory"/>).</summary>

@@ -10,15 +10,18 @@ Friend NotInheritable Class TimeMachine
     Private ReadOnly _frameBudget As Func(Of Double)
     Private ReadOnly _collided As Action(Of CollisionRecord)
     Private ReadOnly _taken As Action(Of World, Boolean)
+    Private ReadOnly _jumped As Action
 
     ''' <param name="frameBudget">the wall-clock seconds a frame may spend advancing, now</param>
     ''' <param name="collided">told of every collision of the world on show (the graphs, the impulse marks)</param>
     ''' <param name="taken">told when a checkpoint's world is put on show, and whether its container differs in size</param>
-    Public Sub New(stage As Stage, frameBudget As Func(Of Double), collided As Action(Of CollisionRecord), taken As Action(Of World, Boolean))
+    ''' <param name="jumped">told when the moment on show was reached by a jump (replayed at once), not by time running</param>
+    Public Sub New(stage As Stage, frameBudget As Func(Of Double), collided As Action(Of CollisionRecord), taken As Action(Of World, Boolean), jumped As Action)
         _stage = stage
         _frameBudget = frameBudget
         _collided = collided
         _taken = taken
+        _jumped = jumped
     End Sub
 
     ''' <summary>One frame of simulated time, s (what Step and Step back move by).</summary>
@@ -359,6 +362,7 @@ Friend NotInheritable Class TimeMachine
         Take(point)
         _stage.World.Advance(ExactClock.DurationTo(_stage.World.Time, t))
         _stage.Log.EndFrame()
+        _jumped()
     End Sub
 
     Private Shared Function PairName(r As CollisionRecord) As String

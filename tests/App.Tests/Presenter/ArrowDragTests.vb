@@ -64,3 +64,26 @@ Public Class ArrowDragTests
         h.P.PointerUp(PointerButton.Left, tip.X, tip.Y)
     End Sub
 End Class
+
+''' <summary>After a jump back in time, only the impulses of the last collision are drawn, not every collision replayed on the way.</summary>
+Public Class ImpulsesAfterAScrubTests
+    <Fact>
+    Public Sub AfterScrubbingBack_OnlyTheLastInstantsImpulsesAreShown()
+        Dim h As New PresenterHarness(New World(4, 3, 0.0, 1.0))
+        h.P.World.Add(New Circle(New Vector(1, 1.5), 0.2, 1.0, New Vector(7, 0.3), "a"))
+        h.P.World.Add(New Circle(New Vector(3, 1.2), 0.2, 1.0, New Vector(-5, 0.2), "b"))
+        h.P.SetShowImpulses(True)
+        For k = 1 To 240
+            h.P.Tick(1 / 60.0)
+        Next
+        Assert.True(h.P.Log.TotalSeen > 10, "the balls bounced about")
+        h.P.RewindTo(2.5)
+        h.P.Tick(1 / 60.0) ' paused: the frame places the marks, and ages none
+        Dim marks = h.P.Impulses.Marks
+        Assert.NotEmpty(marks)
+        Assert.True(marks.Select(Function(m) m.Time).Distinct().Count() = 1, "marks of " & marks.Select(Function(m) m.Time).Distinct().Count() & " instants")
+        Assert.True(marks.All(Function(m) m.Time <= h.P.World.Time), "a mark from after the moment on show")
+        Assert.True(marks.All(Function(m) h.P.World.Bodies.Any(Function(b) ReferenceEquals(b, m.Body))), "a mark of a body of the run before the jump")
+        Assert.True(marks.Count <= 2)
+    End Sub
+End Class
