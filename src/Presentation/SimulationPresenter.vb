@@ -42,6 +42,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
     Private _sinceSnapshot As Double
+    ''' <summary>The solver new scenes and Restart start with (see <see cref="ChooseSolver"/>).</summary>
+    Private _solverChoice As String = SolverChoice.Automatic
 
     ''' <param name="view">the window (or a test's recorder)</param>
     ''' <param name="store">reads and writes scene files; Nothing when this build has none</param>
@@ -628,7 +630,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Makes <paramref name="w"/> the world on show: solver, collision log, colours, view, tables.</summary>
     Private Sub Attach(w As World)
-        _time.StartTimeline(w, SolverFactory.Create("auto"))
+        _time.StartTimeline(w, SolverFactory.Create(_solverChoice))
         For Each b In w.Bodies
             ' A body without a colour in its file gets the same one every time: it follows from the id.
             If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
@@ -1397,6 +1399,43 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Redoes the last edit undone: the world exactly as it was after it.</summary>
     Public Sub Redo()
         Guarded(AddressOf _history.Redo)
+    End Sub
+#End Region
+
+#Region "Choosing the solver"
+    ''' <summary>The name of the solver moving the scene now ("event", "verlet", "euler").</summary>
+    Public ReadOnly Property SolverInUse As String
+        Get
+            Return _time.SolverInUse
+        End Get
+    End Property
+
+    ''' <summary>"Solver: exact ▾": the solver button's caption.</summary>
+    Public ReadOnly Property SolverText As String
+        Get
+            Return SolverChoice.ButtonCaption(SolverInUse)
+        End Get
+    End Property
+
+    ''' <summary>
+    ''' Moves the scene with the solver <paramref name="name"/> from now on (one of
+    ''' <see cref="SolverChoice.Names"/>), and starts every new scene and Restart with it: choose one and
+    ''' press Restart to run the same start again with it, and compare. Anything else is refused with a message.
+    ''' </summary>
+    Public Sub ChooseSolver(name As String)
+        If Not SolverChoice.Names.Contains(name) Then
+            ShowMessage("There is no solver called '" & name & "': choose one of " & String.Join(", ", SolverChoice.Names.Select(AddressOf SolverChoice.Title)) & ".")
+            Return
+        End If
+        Guarded(
+            Sub()
+                _solverChoice = name
+                _time.UseSolver(name)
+                Emit("solver " & name)
+                ShowMessage(SolverChoice.Title(name) & " from now: " & SolverChoice.ShortPurpose(name) & ". " & RestartCaption.TrimStart("↺"c, " "c) & " (" & RestartKey & ") runs the same start with it, to compare.")
+                TakeSnapshot()
+                _window.ShowSettings()
+            End Sub)
     End Sub
 #End Region
 End Class

@@ -103,6 +103,18 @@ Friend NotInheritable Class TimeMachine
         End Try
     End Function
 
+    ''' <summary>The name of the solver that moves the world on show ("event", "verlet", "euler").</summary>
+    Public ReadOnly Property SolverInUse As String
+        Get
+            Return SolverName(_stage.World)
+        End Get
+    End Property
+
+    ''' <summary>From now on the world on show moves with the solver <paramref name="name"/>: a change, so the run recorded ahead is forgotten.</summary>
+    Public Sub UseSolver(name As String)
+        _stage.World.Solver = Recording(SolverFactory.Create(name))
+    End Sub
+
     Private Shared Function SolverName(w As World) As String
         Dim s = TryCast(w.Solver, TimelineSolver)
         Return If(s IsNot Nothing, s.Inner.Name, w.Solver.Name)

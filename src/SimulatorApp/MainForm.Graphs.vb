@@ -18,6 +18,8 @@ Partial Friend NotInheritable Class MainForm
     Private _graphWindow As GraphWindow
     Private ReadOnly _export As New Button()
     Private ReadOnly _exportMenu As New ContextMenuStrip()
+    Private ReadOnly _solver As New Button()
+    Private ReadOnly _solverMenu As New ContextMenuStrip()
     Private _graphDrawnAt As Double = -1
 
     ''' <summary>The exported graph picture's size at 96 dpi, px (twice as many on a 192-dpi screen).</summary>
@@ -54,6 +56,9 @@ Partial Friend NotInheritable Class MainForm
         AddHeaderButton(_export, SimulationPresenter.ExportCaption, AddressOf ShowExportMenu)
         _tips.SetToolTip(_export, "Save the tables, the collision log or the graph as CSV, or the graph or the canvas as a picture")
         AddHandler _exportMenu.Closed, Sub(s, e) _trace?.Invoke("export menu closed")
+        AddHeaderButton(_solver, "Solver ▾", AddressOf ShowSolverMenu)
+        _tips.SetToolTip(_solver, "How the scene is moved on in time: choose another, then Restart, to compare")
+        AddHandler _solverMenu.Closed, Sub(s, e) _trace?.Invoke("solver menu closed")
     End Sub
 
     ''' <summary>Export left of Scenes on the tabs' header row, as tall as it; the graph page laid out and coloured.</summary>
@@ -61,8 +66,12 @@ Partial Friend NotInheritable Class MainForm
         Dim width = Math.Max(S(90), Measure(_export.Text, Font).Width + S(24))
         _export.SetBounds(_scenes.Left - S(6) - width, _scenes.Top, width, _scenes.Height)
         _export.BringToFront()
+        ' The solver's button left of Export, as wide as its caption ("Solver: Verlet (fixed step) ▾").
+        Dim solverWidth = Math.Max(S(90), SolverCaptions().Max(Function(c) Measure(c, Font).Width) + S(24))
+        _solver.SetBounds(_export.Left - S(6) - solverWidth, _export.Top, solverWidth, _export.Height)
+        _solver.BringToFront()
         Dim theme = _presenter.Theme
-        For Each b In _graphButtons.Concat({_export, _graphWindowButton})
+        For Each b In _graphButtons.Concat({_export, _graphWindowButton, _solver})
             b.Font = Font
             b.ForeColor = ScenePainter.Rgb(theme.PanelText)
             b.FlatStyle = If(theme.IsHighContrast, FlatStyle.Flat, FlatStyle.Standard)
@@ -71,6 +80,7 @@ Partial Friend NotInheritable Class MainForm
             b.UseVisualStyleBackColor = Not theme.IsHighContrast
         Next
         _export.BackColor = ScenePainter.Rgb(theme.Button)
+        _solver.BackColor = ScenePainter.Rgb(theme.Button)
         _graphWindowButton.BackColor = ScenePainter.Rgb(theme.Button)
         If _graphWindow IsNot Nothing Then
             _graphWindow.Font = Font
@@ -82,7 +92,7 @@ Partial Friend NotInheritable Class MainForm
         ' buttons keep their row and the tabs go under it.
         If _tabs.TabCount > 0 Then
             Dim lastTab = _tabs.GetTabRect(_tabs.TabCount - 1)
-            If _tabs.Left + lastTab.Right > _export.Left - S(4) AndAlso _tabs.Top < _export.Bottom Then
+            If _tabs.Left + lastTab.Right > _solver.Left - S(4) AndAlso _tabs.Top < _export.Bottom Then
                 Dim top = _export.Bottom + S(2)
                 _tabs.SetBounds(_tabs.Left, top, _tabs.Width, Math.Max(1, _tabs.Bottom - top))
             End If
@@ -90,7 +100,7 @@ Partial Friend NotInheritable Class MainForm
             Dim last = _tabs.GetTabRect(_tabs.TabCount - 1)
             _tabStripFill.SetBounds(_tabs.Left + last.Right + S(2), _tabs.Top, Math.Max(1, _tabs.Width - last.Right - S(2)), last.Bottom)
             _tabStripFill.BringToFront()
-            For Each b In {_export, _scenes, _restart}
+            For Each b In {_solver, _export, _scenes, _restart}
                 b.BringToFront()
             Next
         End If
@@ -125,7 +135,7 @@ Partial Friend NotInheritable Class MainForm
 
     ''' <summary>The graph tab's and Export's controls, by the names the --trace layout gives them.</summary>
     Private Function GraphControls() As IEnumerable(Of (Name As String, Control As Control))
-        Dim named As New List(Of (Name As String, Control As Control)) From {("export", _export)}
+        Dim named As New List(Of (Name As String, Control As Control)) From {("export", _export), ("solver", _solver)}
         ' The page's own controls only while it is on show: a hidden page has no place on the screen.
         If _tabs.SelectedTab IsNot _graphPage Then Return named
         For i = 0 To _graphButtons.Count - 1
@@ -261,7 +271,49 @@ Partial Friend NotInheritable Class MainForm
         End Using
     End Sub
 
+    ''' <summary>Every caption the solver's button can have: it is made wide enough for the longest, so it never moves.</summary>
+    Private Shared Function SolverCaptions() As IEnumerable(Of String)
+        Return SolverChoice.Names.Select(AddressOf SolverChoice.ButtonCaption)
+    End Function
+
+    ''' <summary>Drops the solver menu down under its button: each solver with a line on what it is for, the one in use ticked; kept on the screen.</summary>
+    Private Sub ShowSolverMenu()
+        For Each old In _solverMenu.Items.Cast(Of ToolStripItem)().ToList()
+            old.Dispose()
+        Next
+        _solverMenu.Items.Clear()
+        Dim theme = _presenter.Theme
+        Dim back = ScenePainter.Rgb(theme.Panel), fore = ScenePainter.Rgb(theme.PanelText)
+        _solverMenu.Font = Font
+        _solverMenu.Renderer = If(theme.IsHighContrast, New ToolStripProfessionalRenderer(New LessonMenuColours()), New ToolStripProfessionalRenderer())
+        _solverMenu.BackColor = back
+        _solverMenu.ForeColor = fore
+        _solverMenu.ShowItemToolTips = True
+        For Each solverName In SolverChoice.Names
+            Dim chosen = solverName
+            Dim item As New ToolStripMenuItem(SolverChoice.MenuLine(chosen)) With {.BackColor = back, .ForeColor = fore, .ToolTipText = SolverChoice.Purpose(chosen),
+                .Checked = (_presenter.SolverInUse = chosen)}
+            AddHandler item.Click, Sub(s, e) Act(Sub() _presenter.ChooseSolver(chosen))
+            _solverMenu.Items.Add(item)
+        Next
+        Dim area = Screen.FromControl(Me).WorkingArea
+        Dim size = _solverMenu.GetPreferredSize(Drawing.Size.Empty)
+        Dim at = _solver.PointToScreen(New Point(0, _solver.Height))
+        at.X = Math.Max(area.Left, Math.Min(at.X, area.Right - size.Width))
+        _solverMenu.Show(at)
+        If _trace IsNot Nothing Then
+            For i = 0 To _solverMenu.Items.Count - 1
+                Dim b = _solverMenu.Items(i).Bounds
+                Dim p = _solverMenu.PointToScreen(b.Location)
+                _trace("solver item " & i & " " & p.X & " " & p.Y & " " & b.Width & " " & b.Height & " " & SolverChoice.Names(i))
+            Next
+            TraceMenuBounds("solver menu", _solverMenu)
+            _trace("solver menu shown " & _solverMenu.Items.Count)
+        End If
+    End Sub
+
     Private Sub DisposeGraphControls()
+        _solverMenu.Dispose()
         _exportMenu.Dispose()
     End Sub
 End Class

@@ -582,6 +582,7 @@ Partial Friend NotInheritable Class MainForm
             _pause.Text = _presenter.PauseText
             _pause.ForeColor = ScenePainter.Rgb(If(_presenter.IsPaused, If(theme.IsHighContrast, &H69F0AE, &H1B5E20), theme.Alert))
             _deleteMode.Text = _presenter.DeleteModeText
+            _solver.Text = _presenter.SolverText
             _deleteMode.BackColor = ScenePainter.Rgb(If(_presenter.Mode = ClickMode.Delete, theme.AlertBack, theme.Button))
             Dim inputs = _presenter.Inputs
             _fixed.Checked = inputs.IsFixed

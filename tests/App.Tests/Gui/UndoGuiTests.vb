@@ -37,4 +37,29 @@ Public Class UndoGuiTests
             Assert.True(app.X.AppIsRunning)
         End Using
     End Sub
+
+    ''' <summary>The solver menu in the real window: on the screen, each line whole, Verlet chosen with the mouse moves the scene, and the button says so.</summary>
+    <GuiFact>
+    Public Sub TheSolverMenu_ChoosesVerlet_AndTheButtonSaysSo()
+        Using app As New AppDriver(New XSessionOptions With {.Screen = "1280x720x24"})
+            Dim from = app.Mark()
+            app.Click("solver")
+            app.WaitFor("^solver menu shown 3$", skip:=from)
+            Dim bounds = app.WaitFor("^solver menu at (-?\d+) (-?\d+) (\d+) (\d+) screen (\d+) (\d+) (fits|cut)$", skip:=from)
+            Assert.Equal("fits", bounds.Groups(7).Value)
+            Assert.True(CInt(bounds.Groups(1).Value) >= 0 AndAlso CInt(bounds.Groups(1).Value) + CInt(bounds.Groups(3).Value) <= CInt(bounds.Groups(5).Value), bounds.Value)
+            Dim item = app.WaitFor("^solver item 1 (-?\d+) (-?\d+) (\d+) (\d+) verlet$", skip:=from)
+            from = app.Mark()
+            app.ClickAt(CInt(item.Groups(1).Value) + CInt(item.Groups(3).Value) \ 3, CInt(item.Groups(2).Value) + CInt(item.Groups(4).Value) \ 2)
+            app.WaitFor("^solver verlet$", skip:=from)
+            app.WaitFor("^message: Verlet \(fixed step\) from now: ", skip:=from)
+            app.X.Shoot("solver-verlet")
+            ' Time runs on with it: the pause lists the bodies, and the button's caption fits.
+            from = app.Mark()
+            app.Click("pause")
+            app.WaitFor("^paused t=", skip:=from)
+            Assert.EndsWith(" fits", app.Lines().Last(Function(l) l.StartsWith("control solver ", StringComparison.Ordinal)), StringComparison.Ordinal)
+            Assert.True(app.X.AppIsRunning)
+        End Using
+    End Sub
 End Class
