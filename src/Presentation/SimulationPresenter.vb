@@ -39,6 +39,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _pointer As PointerTools
     ''' <summary>Undo and redo of the edits.</summary>
     Private ReadOnly _history As EditHistory
+    ''' <summary>Heat, cool, and balls added or removed at the gas's temperature.</summary>
+    Private ReadOnly _gas As GasControls
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
     Private _sinceSnapshot As Double
@@ -63,6 +65,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _momentum = New MomentumViews(_stage, Function() MomentumRoomPixels)
         _files = New SceneFiles(_stage, store)
         _lessons = New LessonBook(_stage, _files)
+        _gas = New GasControls(_stage, _history, colourSeed + 1)
         _editor = New TableEditor(_stage, _history, Function() Snapshot, Sub() _lessons.RememberStart())
         _pacer = New FramePacer(_stage, Function() Speed, Function(seconds, wall) _time.Advance(seconds, wall))
         _time = New TimeMachine(_stage, Function() FrameBudgetSeconds,
@@ -1436,6 +1439,40 @@ Partial Public NotInheritable Class SimulationPresenter
                 TakeSnapshot()
                 _window.ShowSettings()
             End Sub)
+    End Sub
+#End Region
+
+#Region "The gas controls (GasControls)"
+    ''' <summary>What one press of Heat multiplies the temperature by; Cool divides by it.</summary>
+    Public Const HeatFactor As Double = GasControls.HeatFactor
+    ''' <summary>Balls one press of Add or Remove adds or removes.</summary>
+    Public Const GasStep As Integer = GasControls.BallsPerPress
+
+    ''' <summary>The temperature now: the mean kinetic energy of the moving bodies, kT, J.</summary>
+    Public ReadOnly Property GasKT As Double
+        Get
+            Return _gas.KT
+        End Get
+    End Property
+
+    ''' <summary>Heats the gas: every speed × √1.25, so kT × 1.25.</summary>
+    Public Sub Heat()
+        Guarded(Sub() _gas.Heat(True))
+    End Sub
+
+    ''' <summary>Cools the gas: every speed ÷ √1.25, so kT ÷ 1.25.</summary>
+    Public Sub Cool()
+        Guarded(Sub() _gas.Heat(False))
+    End Sub
+
+    ''' <summary>Adds <paramref name="count"/> balls like the gas's, at its temperature, at free places.</summary>
+    Public Sub AddBalls(Optional count As Integer = GasControls.BallsPerPress)
+        Guarded(Sub() _gas.AddBalls(count))
+    End Sub
+
+    ''' <summary>Removes <paramref name="count"/> moving balls, chosen at random.</summary>
+    Public Sub RemoveBalls(Optional count As Integer = GasControls.BallsPerPress)
+        Guarded(Sub() _gas.RemoveBalls(count))
     End Sub
 #End Region
 End Class

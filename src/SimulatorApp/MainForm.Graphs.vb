@@ -15,6 +15,8 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _graphBox As New PictureBox()
     Private ReadOnly _graphButtons As New List(Of Button)
     Private ReadOnly _graphWindowButton As New Button()
+    ''' <summary>The gas controls beside the graph buttons: heat, cool, balls added and removed.</summary>
+    Private ReadOnly _gasButtons As New List(Of (Button As Button, Name As String))
     Private _graphWindow As GraphWindow
     Private ReadOnly _export As New Button()
     Private ReadOnly _exportMenu As New ContextMenuStrip()
@@ -44,6 +46,22 @@ Partial Friend NotInheritable Class MainForm
             _graphButtons.Add(b)
             _graphPage.Controls.Add(b)
         Next
+        For Each gas In {("Heat ▲", "gas-heat", "Heat the gas: every speed × √" & SimulationPresenter.HeatFactor.ToString(Globalization.CultureInfo.InvariantCulture) & ", so kT = mean KE × " & SimulationPresenter.HeatFactor.ToString(Globalization.CultureInfo.InvariantCulture), CType(Sub() _presenter.Heat(), Action)),
+                         ("Cool ▼", "gas-cool", "Cool the gas: kT = mean KE ÷ " & SimulationPresenter.HeatFactor.ToString(Globalization.CultureInfo.InvariantCulture), CType(Sub() _presenter.Cool(), Action)),
+                         ("+" & SimulationPresenter.GasStep & " balls", "gas-add", "Add balls like the gas's, at its temperature", CType(Sub() _presenter.AddBalls(), Action)),
+                         ("−" & SimulationPresenter.GasStep & " balls", "gas-remove", "Remove balls at random", CType(Sub() _presenter.RemoveBalls(), Action))}
+            Dim action = gas.Item4
+            Dim b As New Button With {.Text = gas.Item1, .UseMnemonic = False}
+            _tips.SetToolTip(b, gas.Item3)
+            AddHandler b.Click,
+                Sub(s, e)
+                    Act(action)
+                    _graphBox.Invalidate()
+                    _graphWindow?.Redraw()
+                End Sub
+            _gasButtons.Add((b, gas.Item2))
+            _graphPage.Controls.Add(b)
+        Next
         _graphWindowButton.Text = "⤢ Window"
         _graphWindowButton.UseMnemonic = False
         _tips.SetToolTip(_graphWindowButton, "The graph in a window of its own, large enough for a projector")
@@ -71,7 +89,7 @@ Partial Friend NotInheritable Class MainForm
         _solver.SetBounds(_export.Left - S(6) - solverWidth, _export.Top, solverWidth, _export.Height)
         _solver.BringToFront()
         Dim theme = _presenter.Theme
-        For Each b In _graphButtons.Concat({_export, _graphWindowButton, _solver})
+        For Each b In _graphButtons.Concat({_export, _graphWindowButton, _solver}).Concat(_gasButtons.Select(Function(g) g.Button))
             b.Font = Font
             b.ForeColor = ScenePainter.Rgb(theme.PanelText)
             b.FlatStyle = If(theme.IsHighContrast, FlatStyle.Flat, FlatStyle.Standard)
@@ -82,6 +100,9 @@ Partial Friend NotInheritable Class MainForm
         _export.BackColor = ScenePainter.Rgb(theme.Button)
         _solver.BackColor = ScenePainter.Rgb(theme.Button)
         _graphWindowButton.BackColor = ScenePainter.Rgb(theme.Button)
+        For Each g In _gasButtons
+            g.Button.BackColor = ScenePainter.Rgb(theme.Button)
+        Next
         If _graphWindow IsNot Nothing Then
             _graphWindow.Font = Font
             _graphWindow.Redraw()
@@ -115,21 +136,36 @@ Partial Friend NotInheritable Class MainForm
         Next
     End Sub
 
-    ''' <summary>The four buttons in a row at the top of the page, the graph under them.</summary>
+    ''' <summary>
+    ''' The graph buttons in a row at the top of the page, then the gas controls, then the window
+    ''' button at the right end; a second row when they do not fit in one. The graph under them.
+    ''' </summary>
     Private Sub ArrangeGraphPage()
         If _presenter Is Nothing Then Return
         Dim w = _graphPage.ClientSize.Width, h = _graphPage.ClientSize.Height
-        Dim rh = Math.Max(S(26), Math.Max(LineHeight(Font) + S(9), Font.Height + S(4)))
-        Dim x = S(4)
+        Dim rh = ButtonRowHeight()
+        Dim x = S(4), y = S(3)
+        Dim widthOf = Function(b As Button) Math.Max(S(60), Measure(b.Text, Font).Width + S(20))
         For Each b In _graphButtons
-            Dim bw = Math.Max(S(80), Measure(b.Text, Font).Width + S(24))
-            b.SetBounds(x, S(3), bw, rh)
-            x += bw + S(6)
+            b.SetBounds(x, y, widthOf(b), rh)
+            x += b.Width + S(6)
         Next
-        ' The window button at the right end of the row, or after the others when there is no room.
-        Dim ww = Math.Max(S(80), Measure(_graphWindowButton.Text, Font).Width + S(24))
-        _graphWindowButton.SetBounds(Math.Max(x + S(12), w - ww - S(4)), S(3), ww, rh)
-        _graphBox.SetBounds(0, rh + S(6), Math.Max(1, w), Math.Max(1, h - rh - S(6)))
+        Dim gasWidth = _gasButtons.Sum(Function(g) widthOf(g.Button) + S(6)) + widthOf(_graphWindowButton) + S(12)
+        If x + gasWidth > w Then
+            x = S(4)
+            y += rh + S(4)
+        Else
+            x += S(12)
+        End If
+        For Each g In _gasButtons
+            g.Button.SetBounds(x, y, widthOf(g.Button), rh)
+            x += g.Button.Width + S(6)
+        Next
+        ' The window button at the right end of the row.
+        Dim ww = widthOf(_graphWindowButton)
+        _graphWindowButton.SetBounds(Math.Max(x + S(6), w - ww - S(4)), y, ww, rh)
+        Dim top = y + rh + S(4)
+        _graphBox.SetBounds(0, top, Math.Max(1, w), Math.Max(1, h - top))
         _graphBox.Invalidate()
     End Sub
 
@@ -142,6 +178,9 @@ Partial Friend NotInheritable Class MainForm
             named.Add((GraphButtons(i).Name, _graphButtons(i)))
         Next
         named.Add(("graph-window", _graphWindowButton))
+        For Each g In _gasButtons
+            named.Add((g.Name, CType(g.Button, Control)))
+        Next
         named.Add(("graph", _graphBox))
         Return named
     End Function
