@@ -16,6 +16,7 @@ Public Module HelpTexts
         "  " & SimulationPresenter.RedoKey & " (or Ctrl+Shift+Z)  do it again" & vbLf &
         "  " & SimulationPresenter.StepKey & "  one frame on;  " & SimulationPresenter.StepBackKey & "  one frame back (the arrows not while a slider has the focus: they move it)" & vbLf &
         "  " & SimulationPresenter.NextCollisionKey & "  on to the next collision;  " & SimulationPresenter.PreviousCollisionKey & "  back to the last one" & vbLf & "" & vbLf &
+        "On the canvas: the mouse wheel zooms in and out about the pointer; drag with the middle button (the wheel pressed) to move the view; click a body with the middle button to follow it (the view keeps it in the middle; click it again, or an empty place, to stop). Ctrl+0 shows the whole box again." & vbLf & "" & vbLf &
         "In a table: double-click a cell, or select a row and press F2, to type a value; Enter keeps it, Esc leaves it." & vbLf &
         "Tab goes through the side panel's controls in reading order, and the panel scrolls to the one it reaches; Space presses a button or ticks a box.")
 

@@ -41,6 +41,10 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _history As EditHistory
     ''' <summary>Heat, cool, and balls added or removed at the gas's temperature.</summary>
     Private ReadOnly _gas As GasControls
+    ''' <summary>Zoom, pan and follow.</summary>
+    Private ReadOnly _camera As CameraView
+    ''' <summary>The whole container fitted in the canvas: what the camera zooms from.</summary>
+    Private _fitted As ViewTransform
     Private _canvasWidth As Integer = 800
     Private _canvasHeight As Integer = 500
     Private _sinceSnapshot As Double
@@ -66,6 +70,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _files = New SceneFiles(_stage, store)
         _lessons = New LessonBook(_stage, _files)
         _gas = New GasControls(_stage, _history, colourSeed + 1)
+        _camera = New CameraView(_stage)
         _editor = New TableEditor(_stage, _history, Function() Snapshot, Sub() _lessons.RememberStart())
         _pacer = New FramePacer(_stage, Function() Speed, Function(seconds, wall) _time.Advance(seconds, wall))
         _time = New TimeMachine(_stage, Function() FrameBudgetSeconds,
@@ -229,6 +234,8 @@ Partial Public NotInheritable Class SimulationPresenter
             _graphs.SampleGraphs()
         End If
         _momentum.FollowMomentumViews(realSeconds, Not IsPaused)
+        ' A followed body moves: the view moves with it (not written to the trace every frame).
+        If _camera.Followed IsNot Nothing Then ApplyCamera(announce:=False)
         _sinceSnapshot += realSeconds
         If _sinceSnapshot >= SnapshotSeconds AndAlso Not IsPaused Then TakeSnapshot()
         CheckMessage()
@@ -282,9 +289,17 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Sub FitView()
         ' The container sits above a strip kept free for the scale bar.
+        _fitted = ViewTransform.Fit(World.Width, World.Height, _canvasWidth, Math.Max(1, _canvasHeight - ScaleStripPixels), CInt(16 * ScreenScale))
+        ApplyCamera(announce:=True)
+    End Sub
+
+    ''' <summary>The view through the camera (zoom, pan, follow); with <paramref name="announce"/>, a new view is written to the trace.</summary>
+    Private Sub ApplyCamera(announce As Boolean)
         Dim before = _View
-        _View = ViewTransform.Fit(World.Width, World.Height, _canvasWidth, Math.Max(1, _canvasHeight - ScaleStripPixels), CInt(16 * ScreenScale))
-        If before Is Nothing OrElse before.Scale <> _View.Scale OrElse before.OffsetX <> _View.OffsetX OrElse before.OffsetY <> _View.OffsetY Then
+        ' A followed body that is gone (deleted, a new scene without it) is followed no more.
+        If _camera.Followed IsNot Nothing AndAlso Not World.Bodies.Any(Function(b) ReferenceEquals(b, _camera.Followed)) Then _camera.Follow(Nothing)
+        _View = _camera.Apply(_fitted)
+        If announce AndAlso (before Is Nothing OrElse before.Scale <> _View.Scale OrElse before.OffsetX <> _View.OffsetX OrElse before.OffsetY <> _View.OffsetY) Then
             Emit("view scale " & Units.Num(_View.Scale, 4) & " origin " & Units.Num(_View.OffsetX, 2) & " " & Units.Num(_View.OffsetY, 2))
         End If
     End Sub
@@ -599,6 +614,7 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' </summary>
     Private Sub WorldTaken(w As World, resized As Boolean)
         _pointer.FollowWorld(w)
+        _camera.FollowWorld(w)
         _lessons.FollowWorld(w)
         If resized Then
             Inputs.ContainerWidthText = Units.Input(w.Width)
@@ -628,6 +644,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Sub Present(w As World)
         _pointer.DropAll()
         _history.Clear()
+        _camera.Reset()
         Attach(w)
     End Sub
 
@@ -1286,18 +1303,39 @@ Partial Public NotInheritable Class SimulationPresenter
         _pointer.CancelPlacement()
     End Sub
 
-    ''' <summary>A mouse button went down on the canvas at (x, y) px.</summary>
+    ''' <summary>A mouse button went down on the canvas at (x, y) px (the middle button pans or follows; the others go to the pointer tools).</summary>
     Public Sub PointerDown(button As PointerButton, x As Double, y As Double)
+        If button = PointerButton.Middle Then
+            _camera.BeginPan(x, y, _fitted)
+            Return
+        End If
         _pointer.PointerDown(button, x, y)
     End Sub
 
     ''' <summary>The mouse moved over the canvas to (x, y) px.</summary>
     Public Sub PointerMove(x As Double, y As Double)
+        If _camera.IsPanning Then
+            If _camera.PanTo(x, y, _fitted) Then ApplyCamera(announce:=True)
+            Return
+        End If
         _pointer.PointerMove(x, y)
     End Sub
 
     ''' <summary>A mouse button came up at (x, y) px.</summary>
     Public Sub PointerUp(button As PointerButton, x As Double, y As Double)
+        If button = PointerButton.Middle Then
+            If Not _camera.IsPanning Then Return
+            Dim before = _camera.Followed
+            Dim p = View.ToWorld(x, y)
+            Dim body = If(p.IsFinite, BodyAt(p), Nothing)
+            Dim now = _camera.EndPan(body)
+            If now IsNot before Then
+                ' A click: follow the body under it, or stop following.
+                _camera.Follow(Nothing)
+                Follow(now)
+            End If
+            Return
+        End If
         _pointer.PointerUp(button, x, y)
     End Sub
 
@@ -1473,6 +1511,46 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Removes <paramref name="count"/> moving balls, chosen at random.</summary>
     Public Sub RemoveBalls(Optional count As Integer = GasControls.BallsPerPress)
         Guarded(Sub() _gas.RemoveBalls(count))
+    End Sub
+#End Region
+
+#Region "Zoom, pan and follow (CameraView)"
+    ''' <summary>How many times the fitted container the view is (1: the whole container).</summary>
+    Public ReadOnly Property Zoom As Double
+        Get
+            Return _camera.Zoom
+        End Get
+    End Property
+
+    ''' <summary>The body the view follows, or Nothing.</summary>
+    Public ReadOnly Property FollowedBody As Shape
+        Get
+            Return _camera.Followed
+        End Get
+    End Property
+
+    ''' <summary>The wheel turned <paramref name="notches"/> notches (away from the user: positive, zooms in) over the canvas at (x, y) px: zooms about that point.</summary>
+    Public Sub ZoomAt(notches As Double, x As Double, y As Double)
+        If _camera.ZoomAt(notches, x, y, _fitted) Then
+            ApplyCamera(announce:=True)
+            Emit("zoom " & Units.Num(_camera.Zoom, 3))
+        End If
+    End Sub
+
+    ''' <summary>Back to the whole container (Ctrl+0): zoom 1, nothing followed.</summary>
+    Public Sub ResetView()
+        _camera.Reset()
+        ApplyCamera(announce:=True)
+        Emit("zoom " & Units.Num(_camera.Zoom, 3))
+    End Sub
+
+    ''' <summary>Follows <paramref name="body"/> (Nothing: stops following).</summary>
+    Public Sub Follow(body As Shape)
+        _camera.Follow(body)
+        ApplyCamera(announce:=True)
+        Emit(If(body Is Nothing, "following nothing", "following " & body.Id))
+        ShowMessage(If(body Is Nothing, "", "The view follows " & body.Id & ". Click it with the middle button again, or on an empty place, to stop; Ctrl+0 shows the whole box."),
+                    Function() _camera.Followed IsNot Nothing)
     End Sub
 #End Region
 End Class

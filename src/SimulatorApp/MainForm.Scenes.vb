@@ -186,6 +186,11 @@ Partial Friend NotInheritable Class MainForm
                 ShowLessonMenu()
                 Return True
         End Select
+        If keyData = (Keys.Control Or Keys.D0) OrElse keyData = (Keys.Control Or Keys.NumPad0) Then
+            _trace?.Invoke("key whole view")
+            Act(Sub() _presenter.ResetView())
+            Return True
+        End If
         ' Undo and redo, except in a text box, which undoes its own typing.
         If Not TypeOf ActiveControl Is TextBox Then
             Select Case keyData

@@ -178,6 +178,8 @@ Partial Friend NotInheritable Class MainForm
         ' The wheel anywhere over the panel scrolls it (a long message scrolls within its own box).
         _wheel.Add(_message, Sub(delta, p) ScrollMessage(delta))
         _wheel.Add(_sideView, Sub(delta, p) _sideView.ScrollBy(-Math.Sign(delta) * 3 * LineHeight(Font)))
+        ' The wheel over the canvas zooms about the cursor.
+        _wheel.Add(_canvas, Sub(delta, p) Act(Sub() _presenter.ZoomAt(delta / 120.0, p.X, p.Y)))
         Application.AddMessageFilter(_wheel)
         Controls.Add(_sideView)
         _message.ScreenScale = _dpi.Scale
@@ -535,6 +537,7 @@ Partial Friend NotInheritable Class MainForm
         Select Case b
             Case MouseButtons.Left : Return PointerButton.Left
             Case MouseButtons.Right : Return PointerButton.Right
+            Case MouseButtons.Middle : Return PointerButton.Middle
             Case Else : Return PointerButton.None
         End Select
     End Function

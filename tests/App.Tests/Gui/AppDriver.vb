@@ -98,6 +98,12 @@ Public NotInheritable Class AppDriver
         Return (c.X + CInt(Math.Round(_originX + worldX * _scale)), c.Y + CInt(Math.Round(_originY - worldY * _scale)))
     End Function
 
+    ''' <summary>The model point (m) at a screen pixel of the canvas, by the last view the app printed.</summary>
+    Public Function ToWorld(screenX As Integer, screenY As Integer) As (X As Double, Y As Double)
+        Dim c = Control("canvas")
+        Return ((screenX - c.X - _originX) / _scale, (_originY - (screenY - c.Y)) / _scale)
+    End Function
+
     ''' <summary>Pixels per metre on the canvas.</summary>
     Public ReadOnly Property Scale As Double
         Get

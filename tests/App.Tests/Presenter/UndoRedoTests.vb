@@ -167,7 +167,7 @@ Public Class UndoRedoTests
         Dim page = HelpTexts.Tutorial.Single(Function(t) t.Title.StartsWith("10. Keys", StringComparison.Ordinal)).Text
         For Each key In {SimulationPresenter.PauseKey, SimulationPresenter.RestartKey, SimulationPresenter.ResetKey, SimulationPresenter.ScenesKey,
                          SimulationPresenter.UndoKey, SimulationPresenter.RedoKey, SimulationPresenter.StepKey, SimulationPresenter.StepBackKey,
-                         SimulationPresenter.NextCollisionKey, SimulationPresenter.PreviousCollisionKey, "Esc", "Enter", "F2", "Tab"}
+                         SimulationPresenter.NextCollisionKey, SimulationPresenter.PreviousCollisionKey, "Esc", "Enter", "F2", "Tab", "Ctrl+0", "wheel", "middle button"}
             Assert.Contains(key, page, StringComparison.Ordinal)
         Next
     End Sub
