@@ -289,7 +289,8 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Sub FitView()
         ' The container sits above a strip kept free for the scale bar.
-        _fitted = ViewTransform.Fit(World.Width, World.Height, _canvasWidth, Math.Max(1, _canvasHeight - ScaleStripPixels), CInt(16 * ScreenScale))
+        ' With a momentum view on, the momentum panel has a column of its own at the right: it never covers the container.
+        _fitted = ViewTransform.Fit(World.Width, World.Height, Math.Max(1, _canvasWidth - CInt(MomentumPanelPixels)), Math.Max(1, _canvasHeight - ScaleStripPixels), CInt(16 * ScreenScale))
         ApplyCamera(announce:=True)
     End Sub
 
@@ -796,6 +797,29 @@ Partial Public NotInheritable Class SimulationPresenter
         _window.ShowSettings()
     End Sub
 
+    ''' <summary>
+    ''' The width of the column at the right of the canvas that holds the momentum panel (the momenta
+    ''' diagram and the momentum arrows' key) while a momentum view is on, px; 0 otherwise. The
+    ''' container is fitted left of it, so the panel never covers the container's corner.
+    ''' </summary>
+    Public ReadOnly Property MomentumPanelPixels As Double
+        Get
+            If Not ShowsMomentumArrows Then Return 0
+            Dim room = MomentumRoomPixels
+            Dim text = 150 * ScreenScale * If(LargeFonts, 1.4, 1.0)
+            Return Math.Max(If(ShowMomentaDiagram, 1.25 * room, 0), 0.6 * room + text) + 28 * ScreenScale
+        End Get
+    End Property
+
+    ''' <summary>
+    ''' Where every label of the canvas goes (ids, CM, Σp, Δp), none over another, a body or the
+    ''' momentum panel (see <see cref="CanvasLabelLayout"/>), for a canvas of <paramref name="width"/>
+    ''' × <paramref name="height"/> px and labels the size <paramref name="measure"/> gives, px.
+    ''' </summary>
+    Public Function LayOutLabels(measure As Func(Of String, (Width As Double, Height As Double)), width As Integer, height As Integer) As IReadOnlyList(Of CanvasLabel)
+        Return CanvasLabelLayout.Lay(Me, measure, ScreenScale, width, height)
+    End Function
+
     ''' <summary>The longest a momentum arrow may be drawn, px: a fifth of the canvas's smaller side.</summary>
     Public ReadOnly Property MomentumRoomPixels As Double
         Get
@@ -887,26 +911,31 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The centre-of-mass marker and its velocity arrow on or off.</summary>
     Public Sub SetShowCentreOfMass(value As Boolean)
         _momentum.SetShowCentreOfMass(value)
+        FitView()
     End Sub
 
     ''' <summary>The total-momentum arrow on or off.</summary>
     Public Sub SetShowTotalMomentum(value As Boolean)
         _momentum.SetShowTotalMomentum(value)
+        FitView()
     End Sub
 
     ''' <summary>The momenta diagram on or off.</summary>
     Public Sub SetShowMomentaDiagram(value As Boolean)
         _momentum.SetShowMomentaDiagram(value)
+        FitView()
     End Sub
 
     ''' <summary>The impulse arrows on or off.</summary>
     Public Sub SetShowImpulses(value As Boolean)
         _momentum.SetShowImpulses(value)
+        FitView()
     End Sub
 
     ''' <summary>Path traces on or off.</summary>
     Public Sub SetShowTraces(value As Boolean)
         _momentum.SetShowTraces(value)
+        FitView()
     End Sub
 #End Region
 

@@ -91,7 +91,6 @@ Partial Friend NotInheritable Class ScenePainter
             g.DrawLine(rampFill, CSng(a.X), CSng(a.Y), CSng(b.X), CSng(b.Y))
         Next
 
-        Dim labels = Not busy AndAlso world.Circles.Count <= 60
         For Each c In world.Circles
             Dim s = view.ToScreen(c.Position)
             Dim rad = Math.Max(MinBallPx * k, CSng(view.ToPixels(c.Radius)))
@@ -104,21 +103,13 @@ Partial Friend NotInheritable Class ScenePainter
                 g.DrawLine(ink, CSng(s.X) - arm, CSng(s.Y) - arm, CSng(s.X) + arm, CSng(s.Y) + arm)
                 g.DrawLine(ink, CSng(s.X) - arm, CSng(s.Y) + arm, CSng(s.X) + arm, CSng(s.Y) - arm)
             End If
-            If labels Then DrawLabel(g, c.Id, CSng(s.X), CSng(s.Y), rad, theme)
         Next
-
-        If labels Then
-            For Each b In world.Bodies
-                If b.Kind = ShapeKind.Circle OrElse b.Kind = ShapeKind.Segment OrElse (b.IsFixed AndAlso b.Kind = ShapeKind.Rectangle) Then Continue For
-                Dim s = view.ToScreen(b.CentreOfMass)
-                Dim half = CSng(view.ToPixels(Math.Min(b.BoundsMax.X - b.BoundsMin.X, b.BoundsMax.Y - b.BoundsMin.Y) / 2))
-                DrawLabel(g, b.Id, CSng(s.X), CSng(s.Y), half, theme, b.IsFixed)
-            Next
-        End If
 
         DrawLinks(g, world, view, theme, k)
         If p.ShowArrows AndAlso Not busy Then DrawArrows(g, p, view, theme, k)
         DrawMomentumViews(g, p, view, theme, k, width, height)
+        ' Every label last, where the layout put it: over the links and arrows, never over a body or another label.
+        If Not busy Then DrawLabels(g, p, theme, width, height)
 
         Dim carried = p.DraggedBody
         If carried IsNot Nothing Then
@@ -146,17 +137,27 @@ Partial Friend NotInheritable Class ScenePainter
         DrawBanner(g, p, theme, width, height)
     End Sub
 
-    ''' <summary>The id inside the ball when it fits there, else just above and to the right of it, on a backing so it reads over anything.</summary>
-    Private Sub DrawLabel(g As Graphics, id As String, x As Single, y As Single, rad As Single, theme As Theme, Optional onFixedColour As Boolean = False)
-        Dim sz = g.MeasureString(id, _font)
-        If sz.Width < 2 * rad - 2 AndAlso sz.Height < 2 * rad Then
-            ' On the fixed colour (light grey in the dark theme) the canvas colour reads better than white.
-            g.DrawString(id, _font, SolidOf(If(onFixedColour, theme.Background, &HFFFFFF)), x - sz.Width / 2, y - sz.Height / 2)
-            Return
-        End If
-        Dim lx = x + rad * 0.7F, ly = y - rad * 0.7F - sz.Height
-        g.FillRectangle(SolidOf(theme.Background, 200), lx, ly, sz.Width, sz.Height)
-        g.DrawString(id, _font, SolidOf(theme.Ink), lx, ly)
+    ''' <summary>
+    ''' The labels where the layout placed them (see <see cref="CanvasLabelLayout"/>): an id inside its
+    ''' ball in white (the canvas colour on the fixed grey), every other label on a backing of the
+    ''' canvas colour, in ink, Σp in the momentum colour.
+    ''' </summary>
+    Private Sub DrawLabels(g As Graphics, p As SimulationPresenter, theme As Theme, width As Integer, height As Integer)
+        Dim measure = Function(text As String) As (Width As Double, Height As Double)
+                          Dim sz = g.MeasureString(text, _font)
+                          Return (sz.Width, sz.Height)
+                      End Function
+        For Each placed In p.LayOutLabels(measure, width, height)
+            Dim b = placed.Box
+            If placed.Inside Then
+                Dim onFixed = placed.Body IsNot Nothing AndAlso placed.Body.IsFixed AndAlso placed.Body.Kind <> ShapeKind.Circle
+                g.DrawString(placed.Text, _font, SolidOf(If(onFixed, theme.Background, &HFFFFFF)), CSng(b.X), CSng(b.Y))
+                Continue For
+            End If
+            Dim colour = If(placed.Kind = CanvasLabelKind.TotalMomentum, MomentumColour(theme), theme.Ink)
+            g.FillRectangle(SolidOf(theme.Background, 220), CSng(b.X), CSng(b.Y), CSng(b.Width), CSng(b.Height))
+            g.DrawString(placed.Text, _font, SolidOf(colour), CSng(b.X), CSng(b.Y))
+        Next
     End Sub
 
     ''' <summary>A list of model points as canvas points.</summary>
