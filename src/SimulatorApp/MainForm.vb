@@ -176,8 +176,18 @@ Partial Friend NotInheritable Class MainForm
         ' With --trace, where the controls are after the panel scrolls (GUI tests click them there).
         AddHandler _sideView.Scrolled, Sub(s, a) If IsHandleCreated Then TraceLayout()
         ' The wheel anywhere over the panel scrolls it (a long message scrolls within its own box).
-        _wheel.Add(_message, Sub(delta, p) ScrollMessage(delta))
-        _wheel.Add(_sideView, Sub(delta, p) _sideView.ScrollBy(-Math.Sign(delta) * 3 * LineHeight(Font)))
+        ' Each turn is acknowledged in the trace after its effect (the new layout, when the panel moved),
+        ' so a GUI test waits for the app to have handled its own turn, not for any layout line.
+        _wheel.Add(_message,
+            Sub(delta, p)
+                ScrollMessage(delta)
+                _trace?.Invoke("wheel side " & delta & " scrolled " & _sideView.Offset)
+            End Sub)
+        _wheel.Add(_sideView,
+            Sub(delta, p)
+                _sideView.ScrollBy(-Math.Sign(delta) * 3 * LineHeight(Font))
+                _trace?.Invoke("wheel side " & delta & " scrolled " & _sideView.Offset)
+            End Sub)
         ' The wheel over the canvas zooms about the cursor.
         _wheel.Add(_canvas, Sub(delta, p) Act(Sub() _presenter.ZoomAt(delta / 120.0, p.X, p.Y)))
         Application.AddMessageFilter(_wheel)

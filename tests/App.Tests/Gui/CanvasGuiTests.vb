@@ -37,6 +37,7 @@ Public Class CanvasGuiTests
             from = app.Mark()
             app.MoveTo(side.X + side.W \ 2, side.Y + side.H \ 2)
             app.X.XDo("click", "4")
+            app.WaitFor("^wheel side ", skip:=from)
             app.X.XDo("key", "ctrl+0")
             app.WaitFor("^key whole view$", skip:=from)
             app.WaitFor("^zoom 1\.000$", skip:=from)

@@ -172,15 +172,15 @@ Public Class LayoutGuiTests
             app.ReadLayout()
             Dim side = app.Control("side")
             Dim top = app.Control("arrows").Y
-            ' With large fonts at 720 px the panel scrolls: scroll it with the wheel.
+            ' With large fonts at 720 px the panel scrolls: scroll it with the wheel, over the panel, with
+            ' the keyboard's focus wherever it is (Mono would send the wheel to the focused control).
             from = app.Mark()
             app.MoveTo(side.X + side.W \ 2, side.Y + side.H \ 2)
             For k = 1 To 8
                 app.X.XDo("click", "5")
-                Thread.Sleep(100)
             Next
-            app.WaitFor("^ready$", skip:=from)
-            Thread.Sleep(300)
+            ' Each turn is acknowledged once the app has handled it: wait for all eight, not for time.
+            app.WaitForCount("^wheel side ", 8, from)
             app.ReadLayout()
             Dim scrolled = app.Control("arrows").Y
             Assert.True(scrolled < top - 50, $"the panel did not scroll ({top} → {scrolled})")
