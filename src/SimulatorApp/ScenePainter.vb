@@ -133,8 +133,8 @@ Partial Friend NotInheritable Class ScenePainter
         DrawCue(g, p, view, theme, k)
         DrawArrowDrag(g, p, view, theme, k)
         g.ResetClip()
-        DrawScaleBar(g, p, view, theme, height, k)
-        DrawBanner(g, p, theme, width, height)
+        Dim keyEnd = DrawScaleBar(g, p, view, theme, height, k)
+        DrawBanner(g, p, theme, width, height, keyEnd, k)
     End Sub
 
     ''' <summary>
@@ -325,11 +325,12 @@ Partial Friend NotInheritable Class ScenePainter
         g.DrawString(label, _font, SolidOf(theme.Ink), lx, ly)
     End Sub
 
-    ''' <summary>In the strip under the container: the scale bar, then the arrows' key (a round speed drawn at the arrows' scale).</summary>
-    Private Sub DrawScaleBar(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, height As Integer, k As Single)
+    ''' <summary>In the strip under the container: the scale bar, then the arrows' key (a round speed drawn at the arrows' scale); returns where they end on the right, px (0 when nothing was drawn).</summary>
+    Private Function DrawScaleBar(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, height As Integer, k As Single) As Single
         Dim bar = ScaleBar.Choose(view.Scale, 160 * k)
-        If bar.Pixels <= 0 Then Return
-        Dim x0 = CSng(Math.Max(16 * k, view.OffsetX)), y0 = height - p.ScaleStripPixels / 2.0F
+        If bar.Pixels <= 0 Then Return 0
+        ' Under the container's left edge, or the canvas's left margin when that edge is off to one side (zoomed in).
+        Dim x0 = CSng(If(view.OffsetX >= 16 * k AndAlso view.OffsetX <= g.VisibleClipBounds.Width / 3, view.OffsetX, 16 * k)), y0 = height - p.ScaleStripPixels / 2.0F
         Dim x1 = x0 + CSng(bar.Pixels)
         Dim pen = PenOf(theme.Ink, 3 * k)
         g.DrawLine(pen, x0, y0, x1, y0)
@@ -337,18 +338,22 @@ Partial Friend NotInheritable Class ScenePainter
         g.DrawLine(pen, x1, y0 - 6 * k, x1, y0 + 6 * k)
         Dim label = bar.Label
         g.DrawString(label, _font, SolidOf(theme.Ink), x1 + 8 * k, y0 - _font.Height / 2.0F)
-        If Not p.ShowArrows Then Return
+        Dim barEnd = x1 + 8 * k + g.MeasureString(label, _font).Width
+        If Not p.ShowArrows Then Return barEnd
         ' The key: "→ 2 m/s", the arrow as long as a 2 m/s ball's.
-        Dim keyX = x1 + 8 * k + g.MeasureString(label, _font).Width + 24 * k
+        Dim keyX = barEnd + 24 * k
         Dim pxPerMps = view.ToPixels(p.Arrows.Seconds)
         Dim speed = p.Arrows.LegendSpeed(view.Scale, 90 * k)
-        If speed <= 0 Then Return
+        If speed <= 0 Then Return barEnd
         Dim len = CSng(speed * pxPerMps)
         Arrow(g, PenOf(theme.Arrow, 3 * k), keyX, y0, keyX + len, y0, k)
-        g.DrawString("velocity " & Units.Quantity(speed, "m/s"), _font, SolidOf(theme.Ink), keyX + len + 6 * k, y0 - _font.Height / 2.0F)
-    End Sub
+        Dim keyText = "velocity " & Units.Quantity(speed, "m/s")
+        g.DrawString(keyText, _font, SolidOf(theme.Ink), keyX + len + 6 * k, y0 - _font.Height / 2.0F)
+        Return keyX + len + 6 * k + g.MeasureString(keyText, _font).Width
+    End Function
 
-    Private Sub DrawBanner(g As Graphics, p As SimulationPresenter, theme As Theme, width As Integer, height As Integer)
+    ''' <summary>The state in words (PAUSED, a tool's hint) in the strip, right of the scale bar and the key (which end at <paramref name="keyEnd"/> px): in the big font when it fits there, else the normal one, else on the canvas's top left.</summary>
+    Private Sub DrawBanner(g As Graphics, p As SimulationPresenter, theme As Theme, width As Integer, height As Integer, keyEnd As Single, k As Single)
         Dim text As String = Nothing
         Dim colour = theme.Ink
         If p.Mode = ClickMode.Delete Then
@@ -372,10 +377,20 @@ Partial Friend NotInheritable Class ScenePainter
             text = "no walls: balls can leave the box"
         End If
         If text Is Nothing Then Return
-        ' In the strip under the container, on the right (the scale bar and the arrows' key are on the left).
-        Dim sz = g.MeasureString(text, _bigFont)
-        Dim x = Math.Max(width * 0.5F, width - sz.Width - 16), y = height - p.ScaleStripPixels / 2.0F - sz.Height / 2
-        g.DrawString(text, _bigFont, SolidOf(colour), x, y)
+        ' In the strip under the container, on the right (the scale bar and the arrows' key are on the left),
+        ' never over the key nor cut by the canvas's edge.
+        For Each font In {_bigFont, _font}
+            Dim sz = g.MeasureString(text, font)
+            Dim x = width - sz.Width - 16 * k
+            If x >= keyEnd + 12 * k Then
+                g.DrawString(text, font, SolidOf(colour), x, height - p.ScaleStripPixels / 2.0F - sz.Height / 2)
+                Return
+            End If
+        Next
+        ' No room in the strip: on a backing at the canvas's top left.
+        Dim small = g.MeasureString(text, _font)
+        g.FillRectangle(SolidOf(theme.Background, 220), 6 * k, 6 * k, small.Width, small.Height)
+        g.DrawString(text, _font, SolidOf(colour), 6 * k, 6 * k)
     End Sub
 
     ''' <summary>An arrow as one polyline (shaft, then the two strokes of the head), so GDI+ strokes it in one call.</summary>
