@@ -8,38 +8,21 @@ Imports PhysicsEngine.Presentation
 ' and normal fonts the side panel fits a 1280 × 720 window without scrolling; when it cannot fit
 ' (large fonts on a small screen) it scrolls, and relaying it out keeps where it was scrolled to.
 Partial Friend NotInheritable Class MainForm
-    Private _rowY As Integer
-    Private _rowX As Integer
-    Private _rowWidth As Integer
     Private ReadOnly _logWidths As New Dictionary(Of Integer, Integer)
 
     ''' <summary>Pixels at 96 dpi to pixels on this screen.</summary>
     Private Function S(px As Double) As Integer
-        Dim f = If(_dpi IsNot Nothing, _dpi.Scale, 1.0)
-        Return CInt(Math.Round(px * f))
+        Return _kit.S(px)
     End Function
 
-    Private _measureBitmap As Bitmap
-    Private _measure As Graphics
-
-    ''' <summary>
-    ''' The size of text as it will be drawn, wrapped at <paramref name="width"/> px when given. It is
-    ''' measured at the DPI GDI+ draws points at: Mono's own measures (Font.Height, TextRenderer) use
-    ''' the DPI it reports, which under a desktop's Xft.dpi is not the one it draws with.
-    ''' </summary>
+    ''' <summary>The size of text as it will be drawn (see <see cref="WindowKit.Measure"/>).</summary>
     Private Function Measure(text As String, font As Font, Optional width As Integer = 0) As Size
-        If _measure Is Nothing Then
-            _measureBitmap = New Bitmap(1, 1)
-            _measureBitmap.SetResolution(CSng(_dpi.Graphics), CSng(_dpi.Graphics))
-            _measure = Graphics.FromImage(_measureBitmap)
-        End If
-        Dim sz = If(width > 0, _measure.MeasureString(If(text, ""), font, width), _measure.MeasureString(If(text, ""), font))
-        Return New Size(CInt(Math.Ceiling(sz.Width)), CInt(Math.Ceiling(sz.Height)))
+        Return _kit.Measure(text, font, width)
     End Function
 
     ''' <summary>The height of one line of text in <paramref name="font"/>, px.</summary>
     Private Function LineHeight(font As Font) As Integer
-        Return Measure("Ag", font).Height
+        Return _kit.LineHeight(font)
     End Function
 
     ''' <summary>Lines of text the message area shows at once; a longer message scrolls within it.</summary>
@@ -61,9 +44,9 @@ Partial Friend NotInheritable Class MainForm
         Return contentWidth - S(10) - S(8)
     End Function
 
-    ''' <summary>Height of a row of buttons: Mono centres a caption by the font height it reports, which a desktop's Xft.dpi can make larger than the text drawn.</summary>
+    ''' <summary>Height of a row of buttons (see <see cref="WindowKit.ButtonRowHeight"/>).</summary>
     Private Function ButtonRowHeight() As Integer
-        Return Math.Max(S(26), Math.Max(LineHeight(Font) + S(9), Font.Height + S(4)))
+        Return _kit.ButtonRowHeight()
     End Function
 
     Private Sub ArrangeControls()
@@ -83,8 +66,7 @@ Partial Friend NotInheritable Class MainForm
         Dim header = LineHeight(Font) + S(8)
         If _tabs.ItemSize.Height <> header Then _tabs.ItemSize = New Size(S(40), header)
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
-        PlaceLessonButtons(tabsTop, w - sideWidth)
-        PlaceGraphControls()
+        PlaceHeaderButtons(tabsTop, w - sideWidth)
         For Each list In _tables.Concat({_linkList})
             FitColumns(list, w - sideWidth - S(28))
         Next
@@ -105,118 +87,88 @@ Partial Friend NotInheritable Class MainForm
     Private Function ArrangeSide(width As Integer, large As Boolean, line As Integer) As Integer
         Dim rh = ButtonRowHeight()
         Dim sliderHeight = Math.Max(S(24), line + S(8))
-        _rowY = S(6)
-        _rowX = S(10)
-        _rowWidth = RowWidthFor(width)
+        _rows.Start(S(10), S(6), RowWidthFor(width))
         ' Labels and boxes two to a row when every label fits its share; one to a row otherwise (large fonts).
-        Dim fieldUsable = _rowWidth - 3 * S(6)
+        Dim fieldUsable = _rows.Width - 3 * S(6)
         Dim pairs = Not large AndAlso
-            {_radiusLabel, _widthLabel, _sidesLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
-            {_massLabel, _heightLabel, _angleLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
+            {_radiusLabel, _widthLabel, _sidesLabel}.All(Function(l) _rows.TextFits(l, CInt(fieldUsable * PanelRows.FieldShares(0)))) AndAlso
+            {_massLabel, _heightLabel, _angleLabel}.All(Function(l) _rows.TextFits(l, CInt(fieldUsable * PanelRows.FieldShares(2))))
 
-        Row(MessageHeight(), (_message, 1.0))
-        Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
-        Row(line + S(2), (_speedLabel, 1.0))
-        Row(sliderHeight, (_speed, 1.0))
-        Row(line + S(2), (_gravityLabel, 1.0))
-        Row(sliderHeight, (_gravity, 1.0))
+        _rows.Row(MessageHeight(), (_message, 1.0))
+        _rows.Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
+        _rows.Row(line + S(2), (_speedLabel, 1.0))
+        _rows.Row(sliderHeight, (_speed, 1.0))
+        _rows.Row(line + S(2), (_gravityLabel, 1.0))
+        _rows.Row(sliderHeight, (_gravity, 1.0))
         ' The four planets in one row when their names and values fit there, else in two.
-        Dim quarter = (_rowWidth - 3 * S(6)) \ 4
-        If pairs AndAlso _gravityMarks.All(Function(b) TextFits(b, quarter)) Then
-            Row(rh, (_gravityMarks(0), 0.25), (_gravityMarks(1), 0.25), (_gravityMarks(2), 0.25), (_gravityMarks(3), 0.25))
+        Dim quarter = (_rows.Width - 3 * S(6)) \ 4
+        If pairs AndAlso _gravityMarks.All(Function(b) _rows.TextFits(b, quarter)) Then
+            _rows.Row(rh, (_gravityMarks(0), 0.25), (_gravityMarks(1), 0.25), (_gravityMarks(2), 0.25), (_gravityMarks(3), 0.25))
         Else
-            Row(rh, (_gravityMarks(0), 0.5), (_gravityMarks(1), 0.5))
-            Row(rh, (_gravityMarks(2), 0.5), (_gravityMarks(3), 0.5))
+            _rows.Row(rh, (_gravityMarks(0), 0.5), (_gravityMarks(1), 0.5))
+            _rows.Row(rh, (_gravityMarks(2), 0.5), (_gravityMarks(3), 0.5))
         End If
-        Row(line + S(2), (_restitutionLabel, 1.0))
-        Row(sliderHeight, (_restitution, 1.0))
-        Gap()
-        Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
+        _rows.Row(line + S(2), (_restitutionLabel, 1.0))
+        _rows.Row(sliderHeight, (_restitution, 1.0))
+        _rows.Gap()
+        _rows.Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
         ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
-        Fields(rh, pairs, (_sidesLabel, _sides), (_angleLabel, _angle))
+        _rows.Fields(rh, pairs, (_sidesLabel, _sides), (_angleLabel, _angle))
         ' A polygon drawn by clicking its corners takes the mass and Fixed box too: its button sits beside the regular one's.
-        If pairs AndAlso FitRow(rh + S(2), _fixed, _addCircle, _addPolygon, _addCorners) Then
+        If pairs AndAlso _rows.FitRow(rh + S(2), _fixed, _addCircle, _addPolygon, _addCorners) Then
             ' One row: Fixed, Add circle, Add polygon, Add by corners.
         ElseIf pairs Then
-            Row(rh + S(2), (_fixed, 0.2), (_addCircle, 0.4), (_addPolygon, 0.4))
-            Row(rh + S(2), (Nothing, 0.2), (Nothing, 0.4), (_addCorners, 0.4))
+            _rows.Row(rh + S(2), (_fixed, 0.2), (_addCircle, 0.4), (_addPolygon, 0.4))
+            _rows.Row(rh + S(2), (Nothing, 0.2), (Nothing, 0.4), (_addCorners, 0.4))
         Else
-            Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
-            Row(rh + S(2), (Nothing, 0.35), (_addPolygon, 0.65))
-            Row(rh + S(2), (Nothing, 0.35), (_addCorners, 0.65))
+            _rows.Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_addPolygon, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_addCorners, 0.65))
         End If
-        Gap()
-        Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
+        _rows.Gap()
+        _rows.Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
         ' A ramp is a fixed obstacle too: its button sits beside the rectangle's.
         If pairs Then
-            Row(rh + S(2), (_rectFixed, 0.2), (_addRectangle, 0.4), (_addRamp, 0.4))
+            _rows.Row(rh + S(2), (_rectFixed, 0.2), (_addRectangle, 0.4), (_addRamp, 0.4))
         Else
-            Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
-            Row(rh + S(2), (Nothing, 0.35), (_addRamp, 0.65))
+            _rows.Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_addRamp, 0.65))
         End If
-        Gap()
+        _rows.Gap()
         ' The three links in one row after the spring's stiffness: a link is made by clicking its two ends.
         If pairs Then
-            Row(rh + S(2), (_stiffnessLabel, 0.2), (_stiffness, 0.14), (_addSpring, 0.22), (_addRod, 0.22), (_addString, 0.22))
+            _rows.Row(rh + S(2), (_stiffnessLabel, 0.2), (_stiffness, 0.14), (_addSpring, 0.22), (_addRod, 0.22), (_addString, 0.22))
         Else
-            Row(rh, (_stiffnessLabel, 0.55), (_stiffness, 0.45))
-            Row(rh + S(2), (_addSpring, 1 / 3), (_addRod, 1 / 3), (_addString, 1 / 3))
+            _rows.Row(rh, (_stiffnessLabel, 0.55), (_stiffness, 0.45))
+            _rows.Row(rh + S(2), (_addSpring, 1 / 3), (_addRod, 1 / 3), (_addString, 1 / 3))
         End If
-        Gap()
+        _rows.Gap()
         ' The container's size and its button on one row when they fit: "Container (m) [8] × [5] [Resize container]".
         _boxWidthLabel.Text = "Container (m)"
         _boxHeightLabel.Text = "×"
         _boxHeightLabel.TextAlign = ContentAlignment.MiddleCenter
-        If pairs AndAlso FitRow(rh + S(2), _boxWidthLabel, _boxWidth, _boxHeightLabel, _boxHeight, _resize) Then
+        If pairs AndAlso _rows.FitRow(rh + S(2), _boxWidthLabel, _boxWidth, _boxHeightLabel, _boxHeight, _resize) Then
             ' One row.
         Else
             _boxWidthLabel.Text = "Container w (m)"
             _boxHeightLabel.Text = "h (m)"
             _boxHeightLabel.TextAlign = ContentAlignment.MiddleLeft
-            Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
-            Row(rh + S(2), (Nothing, 0.35), (_resize, 0.65))
+            _rows.Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_resize, 0.65))
         End If
-        Gap()
+        _rows.Gap()
         If pairs Then
-            Row(rh, (_largeFonts, 0.36), (_highContrast, 0.4), (_arrows, 0.24))
-            Row(rh + S(2), (_tutorial, 0.24), (_maths, 0.28), (_open, 0.24), (_save, 0.24))
+            _rows.Row(rh, (_largeFonts, 0.36), (_highContrast, 0.4), (_arrows, 0.24))
+            _rows.Row(rh + S(2), (_tutorial, 0.24), (_maths, 0.28), (_open, 0.24), (_save, 0.24))
         Else
-            Row(rh, (_largeFonts, 0.5), (_highContrast, 0.5))
-            Row(rh, (_arrows, 1.0))
-            Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
-            Row(rh + S(2), (_open, 0.5), (_save, 0.5))
+            _rows.Row(rh, (_largeFonts, 0.5), (_highContrast, 0.5))
+            _rows.Row(rh, (_arrows, 1.0))
+            _rows.Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
+            _rows.Row(rh + S(2), (_open, 0.5), (_save, 0.5))
         End If
-        ArrangeTimeControls(line)
-        ArrangeMomentumControls(rh, pairs)
-        Return _rowY + S(4)
-    End Function
-
-    ''' <summary>
-    ''' One row of the side panel when every control's caption fits: each as wide as its caption needs
-    ''' (a text box as wide as five digits), and the width left over shared out in proportion. Returns
-    ''' False, placing nothing, when they do not fit.
-    ''' </summary>
-    Private Function FitRow(height As Integer, ParamArray controls As Control()) As Boolean
-        Dim needed = controls.Select(Function(c) NeededWidth(c)).ToArray()
-        Dim usable = _rowWidth - S(6) * (controls.Length - 1)
-        Dim total = needed.Sum()
-        If total > usable Then Return False
-        Row(height, controls.Select(Function(c, i) (c, needed(i) * (usable / total) / usable)).ToArray())
-        Return True
-    End Function
-
-    ''' <summary>The least width a control of the side panel needs for its caption (or, a text box, five digits), px.</summary>
-    Private Function NeededWidth(c As Control) As Integer
-        If TypeOf c Is TextBox Then Return Measure("00000", c.Font).Width + S(8)
-        Dim box = TryCast(c, ScaledCheckBox)
-        Return Measure(c.Text, c.Font).Width + If(box IsNot Nothing, box.CaptionOffset + S(2), S(10)) + S(2)
-    End Function
-
-    ''' <summary>Whether a control's caption fits in <paramref name="width"/> px (with a button's edges or a check box's box).</summary>
-    Private Function TextFits(c As Control, width As Integer) As Boolean
-        Dim box = TryCast(c, ScaledCheckBox)
-        Dim room = width - If(box IsNot Nothing, box.CaptionOffset + S(2), S(10))
-        Return Measure(c.Text, c.Font).Width <= room
+        _time.Arrange(_rows, line)
+        _momentumBoxes.Arrange(_rows, rh, pairs)
+        Return _rows.Y + S(4)
     End Function
 
     ''' <summary>Whether the totals line, with room for its numbers to grow, fits on one line this wide.</summary>
@@ -334,49 +286,6 @@ Partial Friend NotInheritable Class MainForm
         Next
     End Sub
 
-    ''' <summary>Shares of a row of two labelled boxes: label, box, label, box.</summary>
-    Private Shared ReadOnly FieldShares As Double() = {0.37, 0.15, 0.25, 0.23}
-
-    Private Sub Gap()
-        _rowY += S(4)
-    End Sub
-
-    ''' <summary>Two labelled text boxes side by side, or one above the other with large fonts.</summary>
-    Private Sub Fields(height As Integer, pairs As Boolean, ParamArray fields As (Label As Label, Box As TextBox)())
-        If pairs Then
-            Row(height, (fields(0).Label, FieldShares(0)), (fields(0).Box, FieldShares(1)), (fields(1).Label, FieldShares(2)), (fields(1).Box, FieldShares(3)))
-        Else
-            For Each f In fields
-                Row(height, (f.Label, 0.55), (f.Box, 0.45))
-            Next
-        End If
-    End Sub
-
-    ''' <summary>One row of the side panel: controls side by side, each with a share of the width.</summary>
-    Private Sub Row(height As Integer, ParamArray items As (Control As Control, Share As Double)())
-        Dim gap = S(6)
-        Dim usable = _rowWidth - gap * (items.Length - 1)
-        Dim x = _rowX
-        Dim tallest = height
-        For Each item In items
-            Dim width = CInt(usable * item.Share)
-            If item.Control IsNot Nothing Then
-                ' A text box is as tall as a line of its text and a little, or as Mono insists on making
-                ' it (from the DPI it reports, later, whatever it is given).
-                Dim box = TryCast(item.Control, TextBox)
-                Dim ctlHeight = If(box IsNot Nothing, Math.Min(height, Math.Max(LineHeight(box.Font) + S(8), box.PreferredHeight)), height)
-                item.Control.SetBounds(x, _rowY + (height - ctlHeight) \ 2, width, ctlHeight)
-                ' Mono keeps a one-line text box as tall as the DPI it reports asks: the row grows to hold it.
-                If item.Control.Height > height Then
-                    item.Control.Top = _rowY
-                    tallest = Math.Max(tallest, item.Control.Height)
-                End If
-            End If
-            x += width + gap
-        Next
-        _rowY += tallest + S(3)
-    End Sub
-
     ''' <summary>With --trace: every control's screen rectangle and the canvas transform, for GUI tests.</summary>
     Private Sub TraceLayout()
         If _trace Is Nothing Then Return
@@ -386,7 +295,7 @@ Partial Friend NotInheritable Class MainForm
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).
             Dim c = n.Control
             Dim captioned = TypeOf c Is Button OrElse TypeOf c Is CheckBox OrElse (TypeOf c Is Label AndAlso c IsNot _message AndAlso c IsNot _totals)
-            Dim fits = Not captioned OrElse TextFits(c, c.Width)
+            Dim fits = Not captioned OrElse _rows.TextFits(c, c.Width)
             _trace("control " & n.Name & " " & p.X & " " & p.Y & " " & c.Width & " " & c.Height & " " & If(fits, "fits", "cut"))
             ' The parts that must grow with the text: a check box's box, a slider's thumb.
             Dim check = TryCast(c, ScaledCheckBox)
@@ -403,7 +312,7 @@ Partial Friend NotInheritable Class MainForm
             _trace("control tab-" & _tabs.TabPages(i).Text.ToLowerInvariant().Replace(" "c, "-"c) & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & If(fits, " fits", " cut"))
         Next
         Dim client = PointToScreen(Point.Empty)
-        TraceCells()
+        _cells.TraceCells(_tabs.SelectedIndex)
         _trace("window " & client.X & " " & client.Y & " " & ClientSize.Width & " " & ClientSize.Height)
         Dim v = _presenter.View
         _trace("view scale " & Units.Num(v.Scale, 4) & " origin " & Units.Num(v.OffsetX, 2) & " " & Units.Num(v.OffsetY, 2))
@@ -427,10 +336,74 @@ Partial Friend NotInheritable Class MainForm
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _sideView)}
-        named.AddRange(LessonControls())
-        named.AddRange(GraphControls())
-        named.AddRange(MomentumControls())
-        named.AddRange(TimeControls())
+        named.Add(("scenes", _scenes))
+        named.Add(("restart", _restart))
+        named.Add(("export", _export))
+        named.Add(("solver", _solver))
+        named.AddRange(_graphs.Controls(_tabs.SelectedTab Is _graphs.Page))
+        named.AddRange(_momentumBoxes.Controls())
+        named.AddRange(_time.Controls())
         Return named
     End Function
+
+    ''' <summary>Tab goes through the side panel as it reads: row by row, left to right (the order the controls were made in is not that).</summary>
+    Private Sub OrderTabsByPlace()
+        ' A text box sits a few pixels lower than the buttons of its row (it is centred in it): controls
+        ' whose tops are that close are one row.
+        Dim byTop = _side.Controls.Cast(Of Control)().OrderBy(Function(c) c.Top).ToList()
+        Dim index = 0, first = 0
+        Do While first < byTop.Count
+            Dim last = first
+            Do While last + 1 < byTop.Count AndAlso byTop(last + 1).Top < byTop(first).Top + S(12)
+                last += 1
+            Loop
+            For Each c In byTop.Skip(first).Take(last - first + 1).OrderBy(Function(x) x.Left)
+                c.TabIndex = index
+                index += 1
+            Next
+            first = last + 1
+        Loop
+    End Sub
+
+    ''' <summary>
+    ''' The header row, right of the tabs (<paramref name="top"/> px down, ending <paramref name="right"/>
+    ''' px across): the solver, Export, Scenes and Restart, each as wide as its caption (the solver's
+    ''' as its longest, so it never moves), in the theme's colours. Where the tabs are shorter than
+    ''' the buttons they move down, so the buttons end level with them; where the tabs' headers would
+    ''' run under the buttons (a small screen, large fonts) the tabs go under the row.
+    ''' </summary>
+    Private Sub PlaceHeaderButtons(top As Integer, right As Integer)
+        Dim header = If(_tabs.TabCount > 0, _tabs.GetTabRect(0).Height, LineHeight(Font) + S(8))
+        Dim height = ButtonRowHeight()
+        Dim extra = Math.Max(0, height - header)
+        If extra > 0 Then _tabs.SetBounds(_tabs.Left, top + extra, _tabs.Width, Math.Max(1, _tabs.Height - extra))
+        Dim x = right - S(6)
+        For Each b In {_restart, _scenes, _export, _solver}
+            Dim captions = If(b Is _solver, SolverMenu.Captions(), {b.Text})
+            Dim width = Math.Max(S(90), captions.Max(Function(c) Measure(c, Font).Width) + S(24))
+            x -= width
+            b.SetBounds(x, top, width, height)
+            x -= S(6)
+        Next
+        Dim theme = _presenter.Theme
+        For Each b In {_solver, _export, _scenes, _restart}
+            b.Font = Font
+            WindowKit.Style(b, theme)
+        Next
+        _graphs.Restyle()
+        If _tabs.TabCount > 0 Then
+            Dim lastTab = _tabs.GetTabRect(_tabs.TabCount - 1)
+            If _tabs.Left + lastTab.Right > _solver.Left - S(4) AndAlso _tabs.Top < _export.Bottom Then
+                Dim below = _export.Bottom + S(2)
+                _tabs.SetBounds(_tabs.Left, below, _tabs.Width, Math.Max(1, _tabs.Bottom - below))
+            End If
+            ' The strip right of the last header, in the panel's colour (under the header buttons).
+            Dim last = _tabs.GetTabRect(_tabs.TabCount - 1)
+            _tabStripFill.SetBounds(_tabs.Left + last.Right + S(2), _tabs.Top, Math.Max(1, _tabs.Width - last.Right - S(2)), last.Bottom)
+            _tabStripFill.BringToFront()
+        End If
+        For Each b In {_solver, _export, _scenes, _restart}
+            b.BringToFront()
+        Next
+    End Sub
 End Class

@@ -92,6 +92,27 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _open As New Button()
     Private ReadOnly _save As New Button()
     Private ReadOnly _inputs As New Dictionary(Of InputField, TextBox)
+    ''' <summary>The header row's buttons, right of the tabs: the solver, Export, Scenes, Restart.</summary>
+    Private ReadOnly _solver As New Button()
+    Private ReadOnly _export As New Button()
+    Private ReadOnly _scenes As New Button()
+    Private ReadOnly _restart As New Button()
+
+    ''' <summary>What the window's parts share (the presenter, the trace, the screen's scale, text measures, tips).</summary>
+    Private ReadOnly _kit As WindowKit
+    ''' <summary>The side panel's rows.</summary>
+    Private ReadOnly _rows As PanelRows
+    ''' <summary>The player row: steps and the timeline.</summary>
+    Private _time As TimeControls
+    ''' <summary>The momentum views' check boxes.</summary>
+    Private _momentumBoxes As MomentumBoxes
+    ''' <summary>The edit box of the body tables.</summary>
+    Private _cells As TableCells
+    ''' <summary>The Graphs tab.</summary>
+    Private _graphs As GraphsPage
+    Private _lessonMenu As LessonMenu
+    Private _solverMenu As SolverMenu
+    Private _exportMenu As ExportMenu
 
     ''' <param name="trace">receives one line per action when the app runs with --trace; Nothing otherwise</param>
     ''' <param name="store">scene files; Nothing disables Open and Save</param>
@@ -100,6 +121,8 @@ Partial Friend NotInheritable Class MainForm
     Public Sub New(trace As Action(Of String), store As ISceneStore, Optional world As World = Nothing, Optional sceneFolder As String = Nothing)
         _trace = trace
         _dpi = ScreenDpi.Detect()
+        _kit = New WindowKit(Me, _dpi, trace, AddressOf Act)
+        _rows = New PanelRows(_kit)
         _painter = New ScenePainter(_dpi.FontScale)
         SuspendLayout()
         ' Sizes are computed here from the screen's DPI (see S), so the runtime must not scale them again.
@@ -111,6 +134,7 @@ Partial Friend NotInheritable Class MainForm
         ResumeLayout(False)
 
         _presenter = New SimulationPresenter(Me, store, world) With {.Trace = trace, .ScreenScale = _dpi.Scale, .SceneFolder = sceneFolder, .LessonFolder = sceneFolder}
+        _kit.Presenter = _presenter
         _trace?.Invoke("dpi " & Units.Num(_dpi.Screen, 0) & " (" & _dpi.Source & "), gdi+ " & Units.Num(_dpi.Graphics, 0) & ", scale " & Units.Num(_dpi.Scale, 2))
         ShowTheme()
         ShowSettings()
@@ -163,7 +187,21 @@ Partial Friend NotInheritable Class MainForm
         AddTab(LinkTable.Title, _linkList)
         SetUpTable(_logList, CollisionLogEntry.Headers, AddressOf OnRetrieveLog)
         AddTab(Captions.CollisionLog, _logList)
-        BuildGraphControls()
+        _graphs = New GraphsPage(_kit, AddressOf TraceShown)
+        _tabs.TabPages.Add(_graphs.Page)
+        ' The header row's buttons, right of the tabs, where there is room at every screen size: the
+        ' side panel has no row to spare on a 1024 × 768 projector.
+        AddHeaderButton(_solver, "Solver ▾", Sub() _solverMenu.Show())
+        AddHeaderButton(_export, SimulationPresenter.ExportCaption, Sub() _exportMenu.Show())
+        AddHeaderButton(_scenes, SimulationPresenter.ScenesCaption, Sub() _lessonMenu.Show())
+        AddHeaderButton(_restart, SimulationPresenter.RestartCaption, Sub() _presenter.Restart())
+        _solverMenu = New SolverMenu(_kit, _solver)
+        _exportMenu = New ExportMenu(_kit, _export, _canvas, _painter)
+        _lessonMenu = New LessonMenu(_kit, _scenes)
+        _kit.Tips.SetToolTip(_solver, "How the scene is moved on in time: choose another, then Restart, to compare")
+        _kit.Tips.SetToolTip(_export, "Save the tables, the collision log or the graph as CSV, or the graph or the canvas as a picture")
+        _kit.Tips.SetToolTip(_scenes, "Ready-made lesson scenes (" & SimulationPresenter.ScenesKey & ")")
+        _kit.Tips.SetToolTip(_restart, "Back to the scene as it was opened or last built (" & SimulationPresenter.RestartKey & ")")
         ' Mono leaves a details list's header unpainted when its tab comes back: repaint the list then.
         AddHandler _tabs.SelectedIndexChanged, AddressOf OnTabChanged
         ' The tabs' headers are drawn here: in the theme's colours (Mono leaves them light grey in high
@@ -199,7 +237,8 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_pause, "Pause", Sub() _presenter.TogglePause())
         AddButton(_reset, Captions.Reset, Sub() _presenter.Reset())
         AddButton(_deleteMode, "Delete mode", Sub() _presenter.ToggleDeleteMode())
-        BuildLessonControls()
+        _kit.Tips.SetToolTip(_pause, "Pause or resume (" & SimulationPresenter.PauseKey & ")")
+        _kit.Tips.SetToolTip(_reset, "Remove every body (" & SimulationPresenter.ResetKey & ")")
 
         AddLabel(_speedLabel, "")
         SetUpSlider(_speed, SpeedSteps.Values.Count - 1, 1, Sub() _presenter.SetSpeedIndex(_speed.Value))
@@ -257,9 +296,31 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_maths, Captions.MathsUsed, Sub() ShowHelp(Captions.MathsUsed, HelpTexts.Maths))
         AddButton(_open, Captions.OpenScene, AddressOf OnOpen)
         AddButton(_save, Captions.SaveScene, AddressOf OnSave)
-        BuildMomentumControls()
-        BuildEditingControls()
-        BuildTimeControls()
+        _momentumBoxes = New MomentumBoxes(_kit, _side)
+        _cells = New TableCells(_kit, Me, _tables)
+        _time = New TimeControls(_kit, _side)
+        ' Every control of the side panel says when it takes the focus, so a test can follow Tab; and
+        ' Tab to a control below the panel's visible part scrolls it into view.
+        For Each c As Control In _side.Controls
+            Dim control = c
+            AddHandler control.GotFocus,
+                Sub(s, e)
+                    _sideView.EnsureVisible(control)
+                    If _trace Is Nothing Then Return
+                    Dim p = control.PointToScreen(Point.Empty)
+                    Dim name = NamedControls().FirstOrDefault(Function(n) n.Control Is control).Name
+                    _trace("focus " & p.X & " " & p.Y & " " & control.GetType().Name & " " & If(name, "-"))
+                End Sub
+        Next
+    End Sub
+
+    ''' <summary>A button of the header row, right of the tabs (on the window, not the side panel).</summary>
+    Private Sub AddHeaderButton(button As Button, text As String, action As Action)
+        button.Text = text
+        button.UseMnemonic = False
+        AddHandler button.Click, Sub(s, e) Act(action)
+        Controls.Add(button)
+        button.BringToFront()
     End Sub
 
     Private Sub AddTab(title As String, list As BufferedListView)
@@ -363,12 +424,55 @@ Partial Friend NotInheritable Class MainForm
         TraceLayout()
     End Sub
 
+    ''' <summary>The keys of the window, wherever the focus is (a text box keeps its own Ctrl+Z and Ctrl+Y, and the time keys).</summary>
+    Protected Overrides Function ProcessCmdKey(ByRef msg As Message, keyData As Keys) As Boolean
+        Select Case keyData
+            Case Keys.Control Or Keys.P
+                _trace?.Invoke("key pause")
+                Act(Sub() _presenter.TogglePause())
+                Return True
+            Case Keys.Control Or Keys.R
+                _trace?.Invoke("key restart")
+                Act(Sub() _presenter.Restart())
+                Return True
+            Case Keys.Control Or Keys.Shift Or Keys.R
+                _trace?.Invoke("key reset")
+                Act(Sub() _presenter.Reset())
+                Return True
+            Case Keys.Control Or Keys.L
+                _trace?.Invoke("key scenes")
+                _lessonMenu.Show()
+                Return True
+        End Select
+        If keyData = (Keys.Control Or Keys.D0) OrElse keyData = (Keys.Control Or Keys.NumPad0) Then
+            _trace?.Invoke("key whole view")
+            Act(Sub() _presenter.ResetView())
+            Return True
+        End If
+        ' Undo and redo, except in a text box, which undoes its own typing.
+        If Not TypeOf ActiveControl Is TextBox Then
+            Select Case keyData
+                Case Keys.Control Or Keys.Z
+                    _trace?.Invoke("key undo")
+                    Act(Sub() _presenter.Undo())
+                    Return True
+                Case Keys.Control Or Keys.Y, Keys.Control Or Keys.Shift Or Keys.Z
+                    _trace?.Invoke("key redo")
+                    Act(Sub() _presenter.Redo())
+                    Return True
+            End Select
+        End If
+        If _time.ProcessKey(keyData, ActiveControl) Then Return True
+        If ProcessCornerKey(keyData) Then Return True
+        Return MyBase.ProcessCmdKey(msg, keyData)
+    End Function
+
     ''' <summary>
     ''' Enter finishes a polygon drawn by its corners, wherever the focus is (a focused button would
     ''' otherwise take Enter as a click); an open table edit box keeps its Enter.
     ''' </summary>
     Private Function ProcessCornerKey(keyData As Keys) As Boolean
-        If keyData <> Keys.Enter OrElse _presenter Is Nothing OrElse _presenter.Mode <> ClickMode.Corners OrElse _cellBox.Visible Then Return False
+        If keyData <> Keys.Enter OrElse _presenter Is Nothing OrElse _presenter.Mode <> ClickMode.Corners OrElse _cells.IsOpen Then Return False
         _trace?.Invoke("key finish corners")
         Act(Sub() _presenter.FinishCorners())
         Return True
@@ -395,7 +499,7 @@ Partial Friend NotInheritable Class MainForm
         _canvas.Invalidate()
         Dim refreshStart = _clock.Elapsed.TotalSeconds
         RefreshLog(now)
-        RefreshGraph(now)
+        _graphs.Refresh(now, _tabs.SelectedTab Is _graphs.Page)
         Dim refreshEnd = _clock.Elapsed.TotalSeconds
         ' The log and the graph are part of the frame too: the next frames' budget leaves room for them.
         _presenter.NoteFrameWork(refreshEnd - refreshStart)
@@ -433,9 +537,9 @@ Partial Friend NotInheritable Class MainForm
         Using ink As New SolidBrush(ScenePainter.Rgb(theme.PanelText)), format As New StringFormat() With {.Alignment = StringAlignment.Center, .LineAlignment = StringAlignment.Center, .FormatFlags = StringFormatFlags.NoWrap}
             e.Graphics.DrawString(_tabs.TabPages(e.Index).Text, Font, ink, New RectangleF(r.X, r.Y, r.Width, r.Height), format)
         End Using
-        ' The chosen tab is marked by a bar along its top, in the colour of velocity arrows.
+        ' The chosen tab is marked by a bar along its top, in the cue's colour (not a colour the canvas uses for physics).
         If chosen Then
-            Using bar As New SolidBrush(ScenePainter.Rgb(theme.Arrow))
+            Using bar As New SolidBrush(ScenePainter.Rgb(theme.Cue))
                 e.Graphics.FillRectangle(bar, r.X + 1, r.Y + 1, r.Width - 2, Math.Max(2, S(3)))
             End Using
         End If
@@ -614,7 +718,7 @@ Partial Friend NotInheritable Class MainForm
             _largeFonts.Checked = _presenter.LargeFonts
             _highContrast.Checked = _presenter.HighContrast
             _arrows.Checked = _presenter.ShowArrows
-            ShowMomentumSettings()
+            _momentumBoxes.Show()
         Finally
             _updating = False
         End Try
@@ -644,7 +748,7 @@ Partial Friend NotInheritable Class MainForm
 
     Public Sub ShowState() Implements ISimulationView.ShowState
         If _presenter Is Nothing Then Return
-        ShowTimeline()
+        _time.Show()
         Dim snap = _presenter.Snapshot
         ' Only the table on show is sized and repainted; the others when their tab is chosen.
         Dim shown = _tabs.SelectedIndex
@@ -748,11 +852,15 @@ Partial Friend NotInheritable Class MainForm
     Protected Overrides Sub Dispose(disposing As Boolean)
         If disposing Then
             _timer.Dispose()
-            DisposeLessonControls()
-            DisposeGraphControls()
+            _lessonMenu?.Dispose()
+            _solverMenu?.Dispose()
+            _exportMenu?.Dispose()
+            _graphs?.Dispose()
+            _momentumBoxes?.Dispose()
+            _cells?.Dispose()
+            _time?.Dispose()
             _painter.Dispose()
-            _measure?.Dispose()
-            _measureBitmap?.Dispose()
+            _kit.Dispose()
         End If
         MyBase.Dispose(disposing)
     End Sub
