@@ -8,9 +8,9 @@ Option Strict On
 ''' </summary>
 Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Gravity after a reset, m/s².</summary>
-    Public Const DefaultGravity As Double = 9.81
+    Public Const DefaultGravity As Double = WorldSettings.DefaultGravity
     ''' <summary>Restitution after a reset.</summary>
-    Public Const DefaultRestitution As Double = 1.0
+    Public Const DefaultRestitution As Double = WorldSettings.DefaultRestitution
     ''' <summary>The longest real time one frame may advance, s: after a stall the simulation slows rather than jumps.</summary>
     Public Const MaxFrameSeconds As Double = 0.1
     ''' <summary>Real time between snapshots of the tables while time runs, s (about ten a second: readable, and cheap).</summary>
@@ -43,6 +43,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Private ReadOnly _gas As GasControls
     ''' <summary>Zoom, pan and follow.</summary>
     Private ReadOnly _camera As CameraView
+    ''' <summary>Gravity, restitution, speed, the container and its walls.</summary>
+    Private ReadOnly _settings As WorldSettings
     ''' <summary>The whole container fitted in the canvas: what the camera zooms from.</summary>
     Private _fitted As ViewTransform
     Private _canvasWidth As Integer = 800
@@ -71,6 +73,7 @@ Partial Public NotInheritable Class SimulationPresenter
         _lessons = New LessonBook(_stage, _files)
         _gas = New GasControls(_stage, _history, colourSeed + 1)
         _camera = New CameraView(_stage)
+        _settings = New WorldSettings(_stage, _history, AddressOf FitView, Sub() _lessons.NoteBuilding())
         _editor = New TableEditor(_stage, _history, Function() Snapshot, Sub() _lessons.RememberStart())
         _pacer = New FramePacer(_stage, Function() Speed, Function(seconds, wall) _time.Advance(seconds, wall))
         _time = New TimeMachine(_stage, Function() FrameBudgetSeconds,
@@ -137,16 +140,6 @@ Partial Public NotInheritable Class SimulationPresenter
     Public ReadOnly Property IsPaused As Boolean
         Get
             Return _stage.IsPaused
-        End Get
-    End Property
-
-    ''' <summary>Position of the speed slider in <see cref="SpeedSteps.Values"/>.</summary>
-    Public ReadOnly Property SpeedIndex As Integer = SpeedSteps.RealTimeIndex
-
-    ''' <summary>Simulated seconds per real second.</summary>
-    Public ReadOnly Property Speed As Double
-        Get
-            Return SpeedSteps.Values(SpeedIndex)
         End Get
     End Property
 
@@ -329,94 +322,6 @@ Partial Public NotInheritable Class SimulationPresenter
             End Sub)
     End Sub
 
-    ''' <summary>The gravity slider: its steps (0 to 100 m/s² in hundredths).</summary>
-    Public Shared ReadOnly Property GravitySlider As New SliderScale(GravityMark.Minimum, GravityMark.Maximum, 10000)
-
-    ''' <summary>The restitution slider: 0 to 1 in hundredths.</summary>
-    Public Shared ReadOnly Property RestitutionSlider As New SliderScale(0.0, 1.0, 100)
-
-    ''' <summary>Where the gravity slider's thumb belongs.</summary>
-    Public ReadOnly Property GravityPosition As Integer
-        Get
-            Return GravitySlider.PositionOf(World.Gravity)
-        End Get
-    End Property
-
-    ''' <summary>Where the restitution slider's thumb belongs.</summary>
-    Public ReadOnly Property RestitutionPosition As Integer
-        Get
-            Return RestitutionSlider.PositionOf(World.Restitution)
-        End Get
-    End Property
-
-    ''' <summary>The gravity slider was moved to a position.</summary>
-    Public Sub GravitySliderMoved(position As Integer)
-        SetGravity(GravitySlider.ValueAt(position))
-    End Sub
-
-    ''' <summary>The restitution slider was moved to a position.</summary>
-    Public Sub RestitutionSliderMoved(position As Integer)
-        SetRestitution(RestitutionSlider.ValueAt(position))
-    End Sub
-
-    ''' <summary>Sets g, m/s², clamped to the slider's range.</summary>
-    Public Sub SetGravity(g As Double)
-        If Double.IsNaN(g) Then Return
-        Guarded(
-            Sub()
-                World.Gravity = Math.Max(GravityMark.Minimum, Math.Min(GravityMark.Maximum, g))
-                Emit("gravity " & Units.Num(World.Gravity))
-                TakeSnapshot()
-                _window.ShowSettings()
-            End Sub)
-    End Sub
-
-    ''' <summary>Sets e, clamped to [0, 1].</summary>
-    Public Sub SetRestitution(e As Double)
-        If Double.IsNaN(e) Then Return
-        Guarded(
-            Sub()
-                World.Restitution = Math.Max(0.0, Math.Min(1.0, e))
-                Emit("restitution " & Units.Num(World.Restitution))
-                _window.ShowSettings()
-                CheckMessage()
-            End Sub)
-    End Sub
-
-    ''' <summary>Moves the speed slider to position <paramref name="index"/> (clamped).</summary>
-    Public Sub SetSpeedIndex(index As Integer)
-        _SpeedIndex = Math.Max(0, Math.Min(SpeedSteps.Values.Count - 1, index))
-        Emit("speed " & SpeedSteps.Label(Speed))
-        _window.ShowSettings()
-    End Sub
-
-    ''' <summary>"Speed: 1× (real time)".</summary>
-    Public ReadOnly Property SpeedText As String
-        Get
-            Return "Speed: " & SpeedSteps.Label(Speed)
-        End Get
-    End Property
-
-    ''' <summary>"Gravity g = 9.81 m/s²".</summary>
-    Public ReadOnly Property GravityText As String
-        Get
-            Return "Gravity g = " & Units.Quantity(World.Gravity, "m/s²")
-        End Get
-    End Property
-
-    ''' <summary>"Restitution e = 0.90 (1 = elastic)".</summary>
-    Public ReadOnly Property RestitutionText As String
-        Get
-            Return "Restitution e = " & World.Restitution.ToString("0.00", Globalization.CultureInfo.InvariantCulture) & "  (1 = elastic)"
-        End Get
-    End Property
-
-    ''' <summary>The text of a gravity mark's button: "Moon 1.62".</summary>
-    Public Shared Function GravityMarkText(mark As GravityMark) As String
-        If mark Is Nothing Then Throw New ArgumentNullException(NameOf(mark))
-        Return mark.Name & " " & mark.Value.ToString("0.00", Globalization.CultureInfo.InvariantCulture)
-    End Function
-
     ''' <summary>Removes every body and sets e = 1, g = 9.81 m/s² and real-time speed. The container keeps its size.</summary>
     Public Sub Reset()
         Guarded(
@@ -424,9 +329,7 @@ Partial Public NotInheritable Class SimulationPresenter
                 _pointer.Reset()
                 Dim before = _history.Capture()
                 World.Clear()
-                World.Gravity = DefaultGravity
-                World.Restitution = DefaultRestitution
-                _SpeedIndex = SpeedSteps.RealTimeIndex
+                _settings.ToDefaults()
                 Log.Clear()
                 _momentum.ForgetMomentumViews()
                 Emit("reset: " & World.Bodies.Count & " bodies, g " & Units.Num(World.Gravity) & ", e " & Units.Num(World.Restitution) & ", speed " & SpeedSteps.Label(Speed))
@@ -452,75 +355,6 @@ Partial Public NotInheritable Class SimulationPresenter
         Inputs.IsFixed = isFixed
         Emit("fixed " & If(isFixed, "on", "off"))
         _window.ShowSettings()
-    End Sub
-
-    ''' <summary>Changes the container's size from the typed width and height (m).</summary>
-    Public Sub ResizeContainer()
-        ResizeContainer(Inputs.ContainerWidthText, Inputs.ContainerHeightText)
-    End Sub
-
-    ''' <summary>
-    ''' Changes the container's size to the width and height typed (m). A size whose walls would
-    ''' leave the balls no room (a ball wider than the box, or more balls than fit without
-    ''' overlapping) is refused with the reason, and nothing changes; otherwise balls left outside are
-    ''' brought in and overlaps pushed apart at once, so the scene stays sound even while paused.
-    ''' </summary>
-    Public Sub ResizeContainer(widthText As String, heightText As String)
-        Inputs.ContainerWidthText = widthText
-        Inputs.ContainerHeightText = heightText
-        Guarded(
-            Sub()
-                ' Brought to its limits and said, as every other box is.
-                Dim w = NumberInput.ReadPositive(widthText, "container width (m)", InputLimits.MaxContainer, InputLimits.MinContainer)
-                Dim h = NumberInput.ReadPositive(heightText, "container height (m)", InputLimits.MaxContainer, InputLimits.MinContainer)
-                If Not w.IsValid OrElse Not h.IsValid Then
-                    ShowMessage(InputLimits.ContainerMessage & " " & Problems(w, h))
-                    Return
-                End If
-                Dim refusal = ContainerRefusal(w.Value, h.Value)
-                If refusal IsNot Nothing Then
-                    ShowMessage("The container cannot be " & Units.Sig(w.Value) & " m × " & Units.Sig(h.Value) & " m: " & refusal & " It keeps its size.")
-                    Return
-                End If
-                Dim before = _history.Capture()
-                World.Resize(w.Value, h.Value)
-                SettleOverlaps()
-                _history.Commit("the container's new size", before)
-                FitView()
-                If w.WasClamped Then Inputs.ContainerWidthText = Units.Input(w.Value)
-                If h.WasClamped Then Inputs.ContainerHeightText = Units.Input(h.Value)
-                If w.WasClamped OrElse h.WasClamped Then _window.ShowInputs()
-                Emit("container " & Units.Num(w.Value) & " x " & Units.Num(h.Value) & " m")
-                ShowMessage(Stage.ClampNote(("container width", w, "m"), ("container height", h, "m")).TrimEnd())
-                TakeSnapshot()
-                _window.ShowSettings()
-            End Sub)
-    End Sub
-
-    ''' <summary>Why the world's balls could not live in a container of w × h m, or Nothing when they can.</summary>
-    Private Function ContainerRefusal(w As Double, h As Double) As String
-        If Not World.Walls Then Return Nothing
-        Dim widest = World.Circles.Where(Function(c) Not c.IsFixed).Select(Function(c) 2 * c.Radius).DefaultIfEmpty(0).Max()
-        If widest > Math.Min(w, h) Then Return "the widest ball is " & Units.Quantity(widest, "m") & " across and would not fit."
-        ' Try it on a copy first: the balls are brought in and pushed apart; if they still overlap, there is no room.
-        Dim trial As World
-        Try
-            trial = Scenes.SceneFile.Load(Scenes.SceneFile.Save(World))
-        Catch ex As Scenes.SceneFormatException
-            Return Nothing ' no copy to try it on: the resize itself settles the overlaps
-        End Try
-        trial.Resize(w, h)
-        If OverlapResolver.Resolve(trial) > Placement.Tolerance OrElse Placement.FindProblem(trial) IsNot Nothing Then
-            Dim balls = World.Circles.Where(Function(c) Not c.IsFixed).Count()
-            Return "its " & balls & " balls would not fit in it without overlapping. Remove some balls, or choose a larger size."
-        End If
-        Return Nothing
-    End Function
-
-    ''' <summary>Pushes overlapping balls apart now (after the container shrank), and tells the solver.</summary>
-    Private Sub SettleOverlaps()
-        OverlapResolver.Resolve(World)
-        World.Solver?.Invalidate(Nothing)
     End Sub
 
     ''' <summary>Bigger text, for projectors.</summary>
@@ -775,28 +609,6 @@ Partial Public NotInheritable Class SimulationPresenter
 #End Region
 
 #Region "Seeing momentum (MomentumViews), and the walls"
-    ''' <summary>
-    ''' The container's walls on (its sides reflect balls) or off (balls fly out through where they
-    ''' were). Turning them on brings every movable body back inside; a body too large for the box
-    ''' makes it refuse, with the reason. Restart goes back to the scene's own choice.
-    ''' </summary>
-    Public Sub SetWalls(value As Boolean)
-        Guarded(
-            Sub()
-                ' The start Restart goes back to is taken first, so it keeps the scene's own walls.
-                _lessons.NoteBuilding()
-                If value <> World.Walls Then
-                    World.Walls = value
-                    SettleOverlaps()
-                End If
-                Emit("walls " & If(World.Walls, "on", "off"))
-                ShowMessage(If(World.Walls, "Walls on: the sides reflect the balls; any ball outside was brought back in.",
-                               "No walls: balls fly out through the dashed outline."))
-                TakeSnapshot()
-            End Sub)
-        _window.ShowSettings()
-    End Sub
-
     ''' <summary>
     ''' The width of the column at the right of the canvas that holds the momentum panel (the momenta
     ''' diagram and the momentum arrows' key) while a momentum view is on, px; 0 otherwise. The
@@ -1580,6 +1392,108 @@ Partial Public NotInheritable Class SimulationPresenter
         Emit(If(body Is Nothing, "following nothing", "following " & body.Id))
         ShowMessage(If(body Is Nothing, "", "The view follows " & body.Id & ". Click it with the middle button again, or on an empty place, to stop; Ctrl+0 shows the whole box."),
                     Function() _camera.Followed IsNot Nothing)
+    End Sub
+#End Region
+
+#Region "The world's settings (WorldSettings)"
+    ''' <summary>Position of the speed slider in <see cref="SpeedSteps.Values"/>.</summary>
+    Public ReadOnly Property SpeedIndex As Integer
+        Get
+            Return _settings.SpeedIndex
+        End Get
+    End Property
+
+    ''' <summary>Simulated seconds per real second.</summary>
+    Public ReadOnly Property Speed As Double
+        Get
+            Return _settings.Speed
+        End Get
+    End Property
+
+    ''' <summary>The gravity slider: its steps (0 to 100 m/s² in hundredths).</summary>
+    Public Shared ReadOnly Property GravitySlider As SliderScale = WorldSettings.GravitySlider
+
+    ''' <summary>The restitution slider: 0 to 1 in hundredths.</summary>
+    Public Shared ReadOnly Property RestitutionSlider As SliderScale = WorldSettings.RestitutionSlider
+
+    ''' <summary>Where the gravity slider's thumb belongs.</summary>
+    Public ReadOnly Property GravityPosition As Integer
+        Get
+            Return _settings.GravityPosition
+        End Get
+    End Property
+
+    ''' <summary>Where the restitution slider's thumb belongs.</summary>
+    Public ReadOnly Property RestitutionPosition As Integer
+        Get
+            Return _settings.RestitutionPosition
+        End Get
+    End Property
+
+    ''' <summary>"Speed: 1× (real time)".</summary>
+    Public ReadOnly Property SpeedText As String
+        Get
+            Return _settings.SpeedText
+        End Get
+    End Property
+
+    ''' <summary>"Gravity g = 9.81 m/s²".</summary>
+    Public ReadOnly Property GravityText As String
+        Get
+            Return _settings.GravityText
+        End Get
+    End Property
+
+    ''' <summary>"Restitution e = 0.90  (1 = elastic)".</summary>
+    Public ReadOnly Property RestitutionText As String
+        Get
+            Return _settings.RestitutionText
+        End Get
+    End Property
+
+    ''' <summary>The text of a gravity mark's button: "Moon 1.62".</summary>
+    Public Shared Function GravityMarkText(mark As GravityMark) As String
+        Return WorldSettings.GravityMarkText(mark)
+    End Function
+
+    ''' <summary>The gravity slider was moved to a position.</summary>
+    Public Sub GravitySliderMoved(position As Integer)
+        _settings.GravitySliderMoved(position)
+    End Sub
+
+    ''' <summary>The restitution slider was moved to a position.</summary>
+    Public Sub RestitutionSliderMoved(position As Integer)
+        _settings.RestitutionSliderMoved(position)
+    End Sub
+
+    ''' <summary>Sets g, m/s², clamped to the slider's range.</summary>
+    Public Sub SetGravity(g As Double)
+        _settings.SetGravity(g)
+    End Sub
+
+    ''' <summary>Sets e, clamped to [0, 1].</summary>
+    Public Sub SetRestitution(e As Double)
+        _settings.SetRestitution(e)
+    End Sub
+
+    ''' <summary>Moves the speed slider to position <paramref name="index"/> (clamped).</summary>
+    Public Sub SetSpeedIndex(index As Integer)
+        _settings.SetSpeedIndex(index)
+    End Sub
+
+    ''' <summary>Changes the container's size from the typed width and height (m).</summary>
+    Public Sub ResizeContainer()
+        _settings.ResizeContainer()
+    End Sub
+
+    ''' <summary>Changes the container's size to the width and height typed (m); a size with no room for the balls is refused with the reason.</summary>
+    Public Sub ResizeContainer(widthText As String, heightText As String)
+        _settings.ResizeContainer(widthText, heightText)
+    End Sub
+
+    ''' <summary>The container's walls on or off (a body too large for the box makes it refuse, with the reason).</summary>
+    Public Sub SetWalls(value As Boolean)
+        _settings.SetWalls(value)
     End Sub
 #End Region
 End Class
