@@ -628,18 +628,9 @@ Partial Friend NotInheritable Class MainForm
         If colour >= 0 Then
             item.SubItems(1).BackColor = ScenePainter.Rgb(colour)
             ' Dark text on a light colour, white on a dark one: readable on every swatch.
-            item.SubItems(1).ForeColor = If(Luminance(colour) > 0.45, Color.Black, Color.White)
+            item.SubItems(1).ForeColor = If(BodyColours.Luminance(colour) > 0.45, Color.Black, Color.White)
         End If
         Return item
-    End Function
-
-    ''' <summary>Relative luminance of an &amp;HRRGGBB colour, 0 (black) to 1 (white), as the WCAG contrast rule reckons it.</summary>
-    Private Shared Function Luminance(rgb As Integer) As Double
-        Dim channel = Function(c As Integer) As Double
-                          Dim v = c / 255.0
-                          Return If(v <= 0.03928, v / 12.92, Math.Pow((v + 0.055) / 1.055, 2.4))
-                      End Function
-        Return 0.2126 * channel((rgb >> 16) And 255) + 0.7152 * channel((rgb >> 8) And 255) + 0.0722 * channel(rgb And 255)
     End Function
 
     Private Sub OnCanvasPaint(sender As Object, e As PaintEventArgs)

@@ -150,8 +150,10 @@ Partial Friend NotInheritable Class ScenePainter
         For Each placed In p.LayOutLabels(measure, width, height)
             Dim b = placed.Box
             If placed.Inside Then
+                ' Dark or light by the colour under it, so an id reads on a yellow ball as on a blue one.
                 Dim onFixed = placed.Body IsNot Nothing AndAlso placed.Body.IsFixed AndAlso placed.Body.Kind <> ShapeKind.Circle
-                g.DrawString(placed.Text, _font, SolidOf(If(onFixed, theme.Background, &HFFFFFF)), CSng(b.X), CSng(b.Y))
+                Dim under = If(onFixed, theme.Fixed, BodyColours.Parse(placed.Body?.Color, &H808080))
+                g.DrawString(placed.Text, _font, SolidOf(If(BodyColours.Luminance(under) > 0.45, &H101010, &HFFFFFF)), CSng(b.X), CSng(b.Y))
                 Continue For
             End If
             Dim colour = If(placed.Kind = CanvasLabelKind.TotalMomentum, MomentumColour(theme), theme.Ink)
