@@ -45,10 +45,11 @@ Friend NotInheritable Class GraphsPage
             Page.Controls.Add(b)
         Next
         Dim factor = SimulationPresenter.HeatFactor.ToString(Globalization.CultureInfo.InvariantCulture)
+        ' Short captions, so the gas controls share the graph buttons' row: their tips say what they do.
         For Each gas In {("Heat ▲", "gas-heat", "Heat the gas: every speed × √" & factor & ", so kT = mean KE × " & factor, CType(Sub() _kit.Presenter.Heat(), Action)),
                          ("Cool ▼", "gas-cool", "Cool the gas: kT = mean KE ÷ " & factor, CType(Sub() _kit.Presenter.Cool(), Action)),
-                         ("+" & SimulationPresenter.GasStep & " balls", "gas-add", "Add balls like the gas's, at its temperature", CType(Sub() _kit.Presenter.AddBalls(), Action)),
-                         ("−" & SimulationPresenter.GasStep & " balls", "gas-remove", "Remove balls at random", CType(Sub() _kit.Presenter.RemoveBalls(), Action))}
+                         ("+" & SimulationPresenter.GasStep, "gas-add", "Add " & SimulationPresenter.GasStep & " balls like the gas's, at its temperature", CType(Sub() _kit.Presenter.AddBalls(), Action)),
+                         ("−" & SimulationPresenter.GasStep, "gas-remove", "Remove " & SimulationPresenter.GasStep & " balls at random", CType(Sub() _kit.Presenter.RemoveBalls(), Action))}
             Dim action = gas.Item4
             Dim b As New Button With {.Text = gas.Item1, .UseMnemonic = False}
             _kit.Tips.SetToolTip(b, gas.Item3)
@@ -60,7 +61,7 @@ Friend NotInheritable Class GraphsPage
             _gasButtons.Add((b, gas.Item2))
             Page.Controls.Add(b)
         Next
-        _windowButton.Text = "⤢ Window"
+        _windowButton.Text = WindowCaption
         _windowButton.UseMnemonic = False
         _kit.Tips.SetToolTip(_windowButton, "The graph in a window of its own, large enough for a projector")
         AddHandler _windowButton.Click, Sub(s, e) ShowWindow()
@@ -69,6 +70,9 @@ Friend NotInheritable Class GraphsPage
         Page.Controls.Add(_box)
         AddHandler Page.Resize, Sub(s, e) Arrange()
     End Sub
+
+    ''' <summary>The window button's caption when there is room for it.</summary>
+    Private Const WindowCaption As String = "⤢ Window"
 
     ''' <summary>The tab page.</summary>
     Public ReadOnly Property Page As New TabPage("Graphs")
@@ -113,12 +117,18 @@ Friend NotInheritable Class GraphsPage
         Dim w = Page.ClientSize.Width, h = Page.ClientSize.Height
         Dim rh = _kit.ButtonRowHeight()
         Dim x = _kit.S(4), y = _kit.S(3)
-        Dim widthOf = Function(b As Button) Math.Max(_kit.S(60), _kit.Measure(b.Text, _kit.Font).Width + _kit.S(20))
+        Dim widthOf = Function(b As Button) Math.Max(_kit.S(44), _kit.Measure(b.Text, _kit.Font).Width + _kit.S(18))
         For Each b In _graphButtons
             b.SetBounds(x, y, widthOf(b), rh)
             x += b.Width + _kit.S(6)
         Next
+        ' One row when it all fits (the window button as just ⤢ when that is what makes it fit, its tip says the rest).
+        _windowButton.Text = WindowCaption
         Dim gasWidth = _gasButtons.Sum(Function(g) widthOf(g.Button) + _kit.S(6)) + widthOf(_windowButton) + _kit.S(12)
+        If x + gasWidth > w Then
+            _windowButton.Text = "⤢"
+            gasWidth = _gasButtons.Sum(Function(g) widthOf(g.Button) + _kit.S(6)) + widthOf(_windowButton) + _kit.S(12)
+        End If
         If x + gasWidth > w Then
             x = _kit.S(4)
             y += rh + _kit.S(4)
