@@ -78,6 +78,8 @@ Partial Friend NotInheritable Class MainForm
         Dim contentHeight = ArrangeSide(sideWidth, large, line)
         If contentHeight > _sideView.ClientSize.Height Then contentHeight = ArrangeSide(_sideView.ContentWidthFor(contentHeight), large, line)
         _sideView.SetContentHeight(contentHeight)
+        ' A label's words follow its new width (a long one drops its bracketed part where it would be cut).
+        _restitutionLabel.Text = Fitted(_restitutionLabel, _presenter.RestitutionText)
         OrderTabsByPlace()
         ShowState()
         ShowMessage(_presenter.Message)

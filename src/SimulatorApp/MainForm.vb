@@ -686,7 +686,7 @@ Partial Friend NotInheritable Class MainForm
             _gravity.Value = _presenter.GravityPosition
             _gravityLabel.Text = _presenter.GravityText
             _restitution.Value = _presenter.RestitutionPosition
-            _restitutionLabel.Text = _presenter.RestitutionText
+            _restitutionLabel.Text = Fitted(_restitutionLabel, _presenter.RestitutionText)
             _pause.Text = _presenter.PauseText
             _pause.ForeColor = ScenePainter.Rgb(If(_presenter.IsPaused, If(theme.IsHighContrast, &H69F0AE, &H1B5E20), theme.Alert))
             _deleteMode.Text = _presenter.DeleteModeText
@@ -716,6 +716,17 @@ Partial Friend NotInheritable Class MainForm
         TraceInputs()
         _canvas.Invalidate()
     End Sub
+
+    ''' <summary>
+    ''' <paramref name="text"/>, or, when it is wider than <paramref name="label"/>, the text without
+    ''' its last part in brackets ("Restitution e = 0.90" for "… (1 = elastic)", which stays in its tip).
+    ''' </summary>
+    Private Function Fitted(label As Label, text As String) As String
+        _kit.Tips.SetToolTip(label, text)
+        Dim bracket = text.LastIndexOf("  (", StringComparison.Ordinal)
+        If bracket < 0 OrElse label.Width <= 0 OrElse Measure(text, label.Font).Width <= label.Width - S(4) Then Return text
+        Return text.Substring(0, bracket)
+    End Function
 
     Public Sub ShowInputs() Implements ISimulationView.ShowInputs
         If _presenter Is Nothing Then Return
