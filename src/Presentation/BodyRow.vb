@@ -31,12 +31,26 @@ Public Structure BodyRow
     ''' <summary>The body's sizes by the names a scene file gives them, m: ("radius", r) for a circle; ("width", w), ("height", h) for a rectangle.</summary>
     Public Property SizeFields As IReadOnlyList(Of (Name As String, Metres As Double))
 
-    ''' <summary>The row of a body now. Sizes are the one thing read by kind of body.</summary>
+    ''' <summary>Whether the canvas fills the body with the theme's fixed colour rather than its own (fixed rectangles, polygons and ramps; a fixed ball keeps its colour, with a cross).</summary>
+    Public Property DrawnInFixedColour As Boolean
+
+    ''' <summary>The row of a body now, every number exact. Sizes are the one thing read by kind of body.</summary>
     Public Shared Function Capture(body As Shape) As BodyRow
+        Return Capture(body, 0, 0)
+    End Function
+
+    ''' <summary>
+    ''' The row of a body now, with a coordinate at rounding noise beside <paramref name="lengthScale"/>
+    ''' (m, the container's size) and a velocity component at noise beside <paramref name="speedScale"/>
+    ''' (m/s) shown as 0 (see <see cref="Units.NoiseFraction"/>).
+    ''' </summary>
+    Public Shared Function Capture(body As Shape, lengthScale As Double, speedScale As Double) As BodyRow
         If body Is Nothing Then Throw New ArgumentNullException(NameOf(body))
+        Dim clean = Function(v As Vector, scale As Double) New Vector(Units.AtNoise(v.X, scale), Units.AtNoise(v.Y, scale))
         Dim row As New BodyRow With {
             .Id = body.Id, .Colour = If(body.Color, ""), .IsFixed = body.IsFixed, .Area = body.Area,
-            .Position = body.Position, .Velocity = body.Velocity, .Mass = body.Mass, .Centre = body.CentreOfMass}
+            .Position = clean(body.Position, lengthScale), .Velocity = clean(body.Velocity, speedScale), .Mass = body.Mass,
+            .Centre = clean(body.CentreOfMass, lengthScale), .DrawnInFixedColour = body.IsFixed AndAlso body.Kind <> ShapeKind.Circle}
         Select Case body.Kind
             Case ShapeKind.Circle
                 Dim r = DirectCast(body, Circle).Radius

@@ -35,7 +35,7 @@ Public NotInheritable Class BodyTable
     Public Shared ReadOnly Property Circles As New BodyTable("Circles",
         {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Radius (m)", "Density (kg/m²)"},
         Function(b) TypeOf b Is Circle,
-        Function(r) {r.Id, r.Colour, Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
+        Function(r) {r.Id, ColourCell(r), Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
                      If(r.IsFixed, "fixed", Units.Sig(r.Mass)), Units.Sig(r.Size.X),
                      If(r.IsFixed, "—", Units.Sig(r.Mass / r.Area))})
@@ -44,7 +44,7 @@ Public NotInheritable Class BodyTable
     Public Shared ReadOnly Property Rectangles As New BodyTable("Rectangles",
         {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Width × height (m)", "Area (m²)"},
         Function(b) TypeOf b Is Rectangle,
-        Function(r) {r.Id, r.Colour, Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
+        Function(r) {r.Id, ColourCell(r), Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
                      If(r.IsFixed, "fixed", Units.Sig(r.Mass)), Units.Sig(r.Size.X) & " × " & Units.Sig(r.Size.Y), Units.Sig(r.Area)})
 
@@ -52,9 +52,17 @@ Public NotInheritable Class BodyTable
     Public Shared ReadOnly Property Bodies As New BodyTable("Bodies",
         {"Id", "Colour", "Kind", "Centre x (m)", "Centre y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Size (m)"},
         Function(b) True,
-        Function(r) {r.Id, r.Colour, r.KindLabel, Units.Sig(r.Centre.X), Units.Sig(r.Centre.Y),
+        Function(r) {r.Id, ColourCell(r), r.KindLabel, Units.Sig(r.Centre.X), Units.Sig(r.Centre.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
                      If(r.IsFixed, "fixed", Units.Sig(r.Mass)), r.SizeText})
+
+    ''' <summary>The colour cell of a body the canvas fills with the theme's fixed colour (its own colour is not what shows).</summary>
+    Public Const FixedColourCell As String = "fixed grey"
+
+    ''' <summary>The colour the body is drawn in: its own ("#e53935"), or <see cref="FixedColourCell"/>.</summary>
+    Public Shared Function ColourCell(row As BodyRow) As String
+        Return If(row.DrawnInFixedColour, FixedColourCell, row.Colour)
+    End Function
 
     ''' <summary>The tables, in the order of their tabs.</summary>
     Public Shared ReadOnly Property All As IReadOnlyList(Of BodyTable) = {Circles, Rectangles, Bodies}

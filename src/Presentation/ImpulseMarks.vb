@@ -89,6 +89,22 @@ Public NotInheritable Class ImpulseMarks
         Return Math.Max(0.0, Math.Min(1.0, 1 - mark.Age / Lifetime))
     End Function
 
+    ''' <summary>
+    ''' After a jump in time (a scrub of the timeline, a step back): only the marks of the latest
+    ''' instant stay. Replaying to the moment gives every collision on the way at once, with no real
+    ''' time between them to fade in; shown together they would pile up at each body. Marks of bodies
+    ''' not in <paramref name="world"/> (the run before the jump) go too.
+    ''' </summary>
+    Public Sub KeepLatestInstant(world As World)
+        If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
+        ' The very bodies on show: a body of the run before has the same id, not the same object.
+        Dim bodies = world.Bodies
+        _marks.RemoveAll(Function(m) Not bodies.Any(Function(b) ReferenceEquals(b, m.Body)))
+        If _marks.Count = 0 Then Return
+        Dim latest = _marks.Max(Function(m) m.Time)
+        _marks.RemoveAll(Function(m) m.Time < latest)
+    End Sub
+
     ''' <summary>Removes every mark.</summary>
     Public Sub Clear()
         _marks.Clear()

@@ -25,8 +25,8 @@ Public Structure NumberInput
     ''' <summary>
     ''' Reads a number that must be greater than 0: empty, non-numeric, zero or negative text is
     ''' refused; a value above <paramref name="maximum"/> or below <paramref name="minimum"/> is
-    ''' brought to that bound. Accepts the invariant form (0.5) and the current culture's (0,5 in
-    ''' many European locales).
+    ''' brought to that bound. Accepts a decimal point (0.5), the machine's own separator, and a
+    ''' decimal comma (0,5) on any machine (see <see cref="TryParse"/>).
     ''' </summary>
     ''' <param name="text">what was typed</param>
     ''' <param name="label">the field's name with its unit, for the message, e.g. "radius (m)"</param>
@@ -37,7 +37,7 @@ Public Structure NumberInput
         If t.Length = 0 Then Return Refuse(label & " is empty")
         Dim v As Double
         If t.Length > 40 Then Return Refuse(label & " is too long to be a number")
-        If Not TryParse(t, v) Then Return Refuse(label & " '" & t & "' is not a number")
+        If Not TryParse(t, v) Then Return Refuse(NotANumber(label, t))
         If Double.IsNaN(v) OrElse Double.IsInfinity(v) Then Return Refuse(label & " '" & t & "' is not a finite number")
         If v <= 0 Then Return Refuse(label & " must be greater than 0, not " & t)
         If v > maximum Then Return New NumberInput(True, maximum, True, "")
@@ -54,7 +54,7 @@ Public Structure NumberInput
         If t.Length = 0 Then Return Refuse(label & " is empty")
         Dim v As Double
         If t.Length > 40 Then Return Refuse(label & " is too long to be a number")
-        If Not TryParse(t, v) Then Return Refuse(label & " '" & t & "' is not a number")
+        If Not TryParse(t, v) Then Return Refuse(NotANumber(label, t))
         If Double.IsNaN(v) OrElse Double.IsInfinity(v) Then Return Refuse(label & " '" & t & "' is not a finite number")
         If v > limit Then Return New NumberInput(True, limit, True, "")
         If v < -limit Then Return New NumberInput(True, -limit, True, "", wasRaised:=True)
@@ -79,10 +79,33 @@ Public Structure NumberInput
         Return New NumberInput(False, 0, False, problem)
     End Function
 
-    ''' <summary>Parses invariant text first (what the app itself writes), then the current culture's.</summary>
+    ''' <summary>
+    ''' Parses a number typed with a decimal point (what the app itself writes) or with the machine's
+    ''' own decimal separator, and a decimal comma on any machine: "0,25" is 0.25 in every class. No
+    ''' thousands separators are read, so where the machine's separator is a point, "1,000" (which a
+    ''' reader could take for a thousand) is refused rather than read as 1.
+    ''' </summary>
     Public Shared Function TryParse(text As String, ByRef value As Double) As Boolean
         Const styles = NumberStyles.Float
+        If text Is Nothing Then Return False
         If Double.TryParse(text, styles, CultureInfo.InvariantCulture, value) Then Return True
-        Return Double.TryParse(text, styles, CultureInfo.CurrentCulture, value)
+        If Double.TryParse(text, styles, CultureInfo.CurrentCulture, value) Then Return True
+        Dim comma = text.IndexOf(","c)
+        If comma < 0 OrElse text.IndexOf(","c, comma + 1) >= 0 OrElse text.Contains("."c) OrElse LooksLikeThousands(text, comma) Then Return False
+        Return Double.TryParse(text.Replace(","c, "."c), styles, CultureInfo.InvariantCulture, value)
+    End Function
+
+    ''' <summary>"1,000" or "-12,500": a comma after one to three digits and before exactly three, as a thousands separator would stand.</summary>
+    Private Shared Function LooksLikeThousands(text As String, comma As Integer) As Boolean
+        Dim before = text.Substring(0, comma).Trim().TrimStart("-"c, "+"c)
+        Dim after = text.Substring(comma + 1).Trim()
+        Return before.Length >= 1 AndAlso before.Length <= 3 AndAlso before.All(AddressOf Char.IsDigit) AndAlso before <> "0" AndAlso
+               after.Length = 3 AndAlso after.All(AddressOf Char.IsDigit)
+    End Function
+
+    ''' <summary>"'1,000' is not a number", with a hint on how to write a decimal when the text has a comma.</summary>
+    Private Shared Function NotANumber(label As String, t As String) As String
+        Dim hint = If(t.Contains(","c), " (write a decimal as 0.25 or 0,25, with no separator between thousands)", "")
+        Return label & " '" & t & "' is not a number" & hint
     End Function
 End Structure

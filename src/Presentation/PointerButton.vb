@@ -8,4 +8,6 @@ Public Enum PointerButton
     Left
     ''' <summary>Drags a body.</summary>
     Right
+    ''' <summary>Pans the view (a drag), or follows a body (a click).</summary>
+    Middle
 End Enum

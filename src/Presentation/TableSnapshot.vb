@@ -63,20 +63,30 @@ Public NotInheritable Class TableSnapshot
         For t = 0 To tables.Count - 1
             rows(t) = New List(Of BodyRow)
         Next
+        ' Rounding noise is judged beside the scene's own scales: its size, and the fastest of its
+        ' bodies or the speed a fall across the box would give, whichever is more.
+        Dim lengthScale = Math.Max(world.Width, world.Height)
+        Dim speedScale = Math.Sqrt(Math.Max(1.0, Math.Abs(world.Gravity)) * lengthScale)
+        For Each b In world.Bodies
+            If Not b.IsFixed Then speedScale = Math.Max(speedScale, b.Velocity.Length)
+        Next
         Dim fastest = 0.0
         For Each b In world.Bodies
-            Dim row = BodyRow.Capture(b)
+            Dim row = BodyRow.Capture(b, lengthScale, speedScale)
             If Not b.IsFixed Then fastest = Math.Max(fastest, row.Velocity.Length)
             For t = 0 To tables.Count - 1
                 If tables(t).Lists(b) Then rows(t).Add(row)
             Next
         Next
         Dim links = world.Links.Select(AddressOf LinkRow.Capture).ToList()
-        Return New TableSnapshot(world.Time, TotalsOf(world, collisions), rows, links, fastest)
+        Return New TableSnapshot(world.Time, TotalsOf(world, collisions, speedScale), rows, links, fastest)
     End Function
 
-    Private Shared Function TotalsOf(world As World, collisions As Long) As IReadOnlyList(Of String)
-        Dim p = world.Momentum()
+    Private Shared Function TotalsOf(world As World, collisions As Long, speedScale As Double) As IReadOnlyList(Of String)
+        ' Σp at rounding noise beside the bodies' masses at the scene's speed is 0 (two equal balls meeting head-on).
+        Dim momentumScale = world.Movables.Sum(Function(b) b.Mass) * speedScale
+        Dim raw = world.Momentum()
+        Dim p = New Vector(Units.AtNoise(raw.X, momentumScale), Units.AtNoise(raw.Y, momentumScale))
         Dim ke = world.KineticEnergy()
         Dim pe = world.PotentialEnergy()
         Return {

@@ -18,6 +18,20 @@ Public Module Units
 
     Private ReadOnly Superscripts As String = "⁰¹²³⁴⁵⁶⁷⁸⁹"
 
+    ''' <summary>
+    ''' Below this fraction of the quantities it was worked out from, a value is rounding noise: a
+    ''' link's extension of 4.44×10⁻¹⁶ m beside its 2 m length, a momentum of 10⁻¹⁷ kg·m/s where every
+    ''' body moves at metres a second. Doubles carry about 16 figures and a step loses a few; a
+    ''' billionth is far below both that noise's reach into a real value and the 3 figures shown.
+    ''' </summary>
+    Public Const NoiseFraction As Double = 0.000000001
+
+    ''' <summary>0 when <paramref name="value"/> is rounding noise beside <paramref name="scale"/> (see <see cref="NoiseFraction"/>), else the value.</summary>
+    Public Function AtNoise(value As Double, scale As Double) As Double
+        If Math.Abs(value) <= NoiseFraction * Math.Abs(scale) Then Return 0
+        Return value
+    End Function
+
     ''' <summary>A value as it goes back into a text box: enough figures to read back the same size.</summary>
     Public Function Input(value As Double) As String
         ' Four significant figures, not fixed decimals: 0.0004 m must not come back as "0".
@@ -65,6 +79,20 @@ Public Module Units
         End If
         If text.Trim("0"c, "."c).Length = 0 Then Return "0"
         Return sign & text
+    End Function
+
+    ''' <summary>
+    ''' <paramref name="value"/> with as many significant figures as it takes to tell it from
+    ''' <paramref name="other"/> (at least <paramref name="figures"/>, at most 15): the times of two
+    ''' collisions 10⁻⁶ s apart read differently. Equal values are written with <paramref name="figures"/>.
+    ''' </summary>
+    Public Function SigApart(value As Double, other As Double?, Optional figures As Integer = 4) As String
+        If Not other.HasValue OrElse other.Value = value Then Return Sig(value, figures)
+        For f = figures To 15
+            Dim text = Sig(value, f)
+            If text <> Sig(other.Value, f) Then Return text
+        Next
+        Return Sig(value, 15)
     End Function
 
     ''' <summary>A value and its unit, joined so that they never part: "18.6 J", "−3.00 kg·m/s".</summary>

@@ -22,11 +22,21 @@ Friend NotInheritable Class GraphWindow
         Text = "Graph — " & MainForm.Title
         Me.Font = font
         StartPosition = FormStartPosition.Manual
+        KeyPreview = True
         Me.Bounds = bounds
         AddHandler _box.Paint, Sub(s, e) GraphPainter.Paint(e.Graphics, _presenter.CurrentGraph(), _presenter.Theme, Me.Font, _box.ClientSize.Width, _box.ClientSize.Height, _scale)
         AddHandler _box.Resize, Sub(s, e) _box.Invalidate()
         Controls.Add(_box)
     End Sub
+
+    ''' <summary>Esc closes the window, as it closes every other secondary window.</summary>
+    Protected Overrides Function ProcessCmdKey(ByRef msg As Message, keyData As Keys) As Boolean
+        If keyData = Keys.Escape Then
+            Close()
+            Return True
+        End If
+        Return MyBase.ProcessCmdKey(msg, keyData)
+    End Function
 
     ''' <summary>Draws the graph again (time went on, or another graph was chosen).</summary>
     Public Sub Redraw()

@@ -8,50 +8,45 @@ Imports PhysicsEngine.Presentation
 ' and normal fonts the side panel fits a 1280 × 720 window without scrolling; when it cannot fit
 ' (large fonts on a small screen) it scrolls, and relaying it out keeps where it was scrolled to.
 Partial Friend NotInheritable Class MainForm
-    Private _rowY As Integer
-    Private _rowX As Integer
-    Private _rowWidth As Integer
     Private ReadOnly _logWidths As New Dictionary(Of Integer, Integer)
 
     ''' <summary>Pixels at 96 dpi to pixels on this screen.</summary>
     Private Function S(px As Double) As Integer
-        Dim f = If(_dpi IsNot Nothing, _dpi.Scale, 1.0)
-        Return CInt(Math.Round(px * f))
+        Return _kit.S(px)
     End Function
 
-    Private _measureBitmap As Bitmap
-    Private _measure As Graphics
-
-    ''' <summary>
-    ''' The size of text as it will be drawn, wrapped at <paramref name="width"/> px when given. It is
-    ''' measured at the DPI GDI+ draws points at: Mono's own measures (Font.Height, TextRenderer) use
-    ''' the DPI it reports, which under a desktop's Xft.dpi is not the one it draws with.
-    ''' </summary>
+    ''' <summary>The size of text as it will be drawn (see <see cref="WindowKit.Measure"/>).</summary>
     Private Function Measure(text As String, font As Font, Optional width As Integer = 0) As Size
-        If _measure Is Nothing Then
-            _measureBitmap = New Bitmap(1, 1)
-            _measureBitmap.SetResolution(CSng(_dpi.Graphics), CSng(_dpi.Graphics))
-            _measure = Graphics.FromImage(_measureBitmap)
-        End If
-        Dim sz = If(width > 0, _measure.MeasureString(If(text, ""), font, width), _measure.MeasureString(If(text, ""), font))
-        Return New Size(CInt(Math.Ceiling(sz.Width)), CInt(Math.Ceiling(sz.Height)))
+        Return _kit.Measure(text, font, width)
     End Function
 
     ''' <summary>The height of one line of text in <paramref name="font"/>, px.</summary>
     Private Function LineHeight(font As Font) As Integer
-        Return Measure("Ag", font).Height
+        Return _kit.LineHeight(font)
     End Function
 
-    ''' <summary>The message box's height for its text at the panel's width: up to ten lines, never fewer than two.</summary>
+    ''' <summary>Lines of text the message area shows at once; a longer message scrolls within it.</summary>
+    Private Const MessageLines As Integer = 3
+
+    ''' <summary>The message area's height: <see cref="MessageLines"/> lines whatever it says, so the controls under it never move.</summary>
     Private Function MessageHeight() As Integer
-        Dim width = Math.Max(S(50), RowWidthFor(_side.Width) - S(12))
-        Dim measured = Measure(_message.Text, _message.Font, width).Height
-        Dim line = LineHeight(_message.Font)
-        Return Math.Min(10 * line, Math.Max(2 * line, measured)) + S(12)
+        Return MessageLines * LineHeight(_message.Font) + S(10)
     End Function
 
-    Private Function RowWidthFor(sideWidth As Integer) As Integer
-        Return sideWidth - S(10) - S(22) ' room for the vertical scroll bar
+    ''' <summary>The wheel over the message area scrolls a long message within it, and the panel when the message has no more to show that way.</summary>
+    Private Sub ScrollMessage(delta As Integer)
+        Dim pixels = -Math.Sign(delta) * 2 * LineHeight(_message.Font)
+        If Not _message.ScrollBy(pixels) Then _sideView.ScrollBy(-Math.Sign(delta) * 3 * LineHeight(Font))
+    End Sub
+
+    ''' <summary>The side panel's rows' width in a panel <paramref name="contentWidth"/> px wide.</summary>
+    Private Function RowWidthFor(contentWidth As Integer) As Integer
+        Return contentWidth - S(10) - S(8)
+    End Function
+
+    ''' <summary>Height of a row of buttons (see <see cref="WindowKit.ButtonRowHeight"/>).</summary>
+    Private Function ButtonRowHeight() As Integer
+        Return _kit.ButtonRowHeight()
     End Function
 
     Private Sub ArrangeControls()
@@ -60,109 +55,122 @@ Partial Friend NotInheritable Class MainForm
         Dim large = _presenter.LargeFonts
         Dim sideWidth = Math.Min(S(If(large, 470, 420)), Math.Max(S(380), CInt(w * 0.36)))
         Dim line = LineHeight(Font)
-        ' With large fonts the canvas takes more of the height (the tables less), so it grows too.
-        Dim canvasHeight = CInt(h * If(large, 0.68, 0.62))
+        ' With large fonts the canvas grows a little (its labels grow), and leaves the tables, whose rows are taller too, room for several rows.
+        Dim canvasHeight = CInt(h * If(large, 0.64, 0.62))
         _canvas.SetBounds(0, 0, w - sideWidth, canvasHeight)
-        Dim totalsLines = If(TotalsFitOnOneLine(w - sideWidth - S(20)), 1, 2)
-        _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), totalsLines * line + S(8))
+        ' The totals always have room for two lines: a total that grows (3141 collisions) never moves the tabs.
+        _totals.SetBounds(S(6), canvasHeight, w - sideWidth - S(12), 2 * LineHeight(_totals.Font) + S(8))
         Dim tabsTop = _totals.Bottom
+        ' Headers as tall as a line of text and a margin, as wide as their titles in bold (the chosen one is bold).
+        _tabs.Padding = New Point(S(8), S(3))
+        Dim header = LineHeight(Font) + S(8)
+        If _tabs.ItemSize.Height <> header Then _tabs.ItemSize = New Size(S(40), header)
         _tabs.SetBounds(0, tabsTop, w - sideWidth, h - tabsTop)
-        PlaceLessonButtons(tabsTop, w - sideWidth)
-        PlaceGraphControls()
+        PlaceHeaderButtons(tabsTop, w - sideWidth)
         For Each list In _tables.Concat({_linkList})
             FitColumns(list, w - sideWidth - S(28))
         Next
         FitLogColumns()
 
-        ' Keep the panel where it was scrolled to: rows are placed relative to its current scroll.
-        Dim scrolled = _side.AutoScrollPosition
-        _side.SuspendLayout()
-        _side.AutoScrollPosition = New Point(0, 0)
-        _side.SetBounds(w - sideWidth, 0, sideWidth, h)
-        ' Mono centres a button's caption by the font height it reports, which a desktop's Xft.dpi can
-        ' make larger than the text drawn: rows are tall enough for that too, so captions stay inside.
-        Dim rh = Math.Max(S(26), Math.Max(line + S(9), Font.Height + S(4)))
-        Dim sliderHeight = Math.Max(S(30), line + S(12))
-        _rowY = S(6)
-        _rowX = S(10)
-        _rowWidth = RowWidthFor(sideWidth)
-        ' Labels and boxes two to a row when every label fits its share; one to a row otherwise (large fonts).
-        Dim fieldUsable = _rowWidth - 3 * S(6)
-        Dim pairs = Not large AndAlso
-            {_radiusLabel, _widthLabel, _boxWidthLabel, _sidesLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(0)))) AndAlso
-            {_massLabel, _heightLabel, _boxHeightLabel, _angleLabel}.All(Function(l) TextFits(l, CInt(fieldUsable * FieldShares(2))))
-
-        Row(MessageHeight(), (_message, 1.0))
-        Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
-        Row(line + S(4), (_speedLabel, 1.0))
-        Row(sliderHeight, (_speed, 1.0))
-        Row(line + S(4), (_gravityLabel, 1.0))
-        Row(sliderHeight, (_gravity, 1.0))
-        ' The four planets in one row when their names and values fit there, else in two.
-        Dim quarter = (_rowWidth - 3 * S(6)) \ 4
-        If pairs AndAlso _gravityMarks.All(Function(b) TextFits(b, quarter)) Then
-            Row(rh, (_gravityMarks(0), 0.25), (_gravityMarks(1), 0.25), (_gravityMarks(2), 0.25), (_gravityMarks(3), 0.25))
-        Else
-            Row(rh, (_gravityMarks(0), 0.5), (_gravityMarks(1), 0.5))
-            Row(rh, (_gravityMarks(2), 0.5), (_gravityMarks(3), 0.5))
-        End If
-        Row(line + S(4), (_restitutionLabel, 1.0))
-        Row(sliderHeight, (_restitution, 1.0))
-        Gap()
-        Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
-        ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
-        Fields(rh, pairs, (_sidesLabel, _sides), (_angleLabel, _angle))
-        ' A polygon drawn by clicking its corners takes the mass and Fixed box too: its button sits under the regular one's.
-        If pairs Then
-            Row(rh + S(2), (_fixed, 0.2), (_addCircle, 0.4), (_addPolygon, 0.4))
-            Row(rh + S(2), (Nothing, 0.2), (Nothing, 0.4), (_addCorners, 0.4))
-        Else
-            Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
-            Row(rh + S(2), (Nothing, 0.35), (_addPolygon, 0.65))
-            Row(rh + S(2), (Nothing, 0.35), (_addCorners, 0.65))
-        End If
-        Gap()
-        Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
-        ' A ramp is a fixed obstacle too: its button sits beside the rectangle's.
-        If pairs Then
-            Row(rh + S(2), (_rectFixed, 0.2), (_addRectangle, 0.4), (_addRamp, 0.4))
-        Else
-            Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
-            Row(rh + S(2), (Nothing, 0.35), (_addRamp, 0.65))
-        End If
-        Gap()
-        ' The three links in one row after the spring's stiffness: a link is made by clicking its two ends.
-        If pairs Then
-            Row(rh + S(2), (_stiffnessLabel, 0.2), (_stiffness, 0.14), (_addSpring, 0.22), (_addRod, 0.22), (_addString, 0.22))
-        Else
-            Row(rh, (_stiffnessLabel, 0.55), (_stiffness, 0.45))
-            Row(rh + S(2), (_addSpring, 1 / 3), (_addRod, 1 / 3), (_addString, 1 / 3))
-        End If
-        Gap()
-        Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
-        Row(rh + S(2), (Nothing, 0.35), (_resize, 0.65))
-        Gap()
-        If pairs Then
-            Row(rh, (_largeFonts, 0.36), (_highContrast, 0.4), (_arrows, 0.24))
-            Row(rh + S(2), (_tutorial, 0.24), (_maths, 0.28), (_open, 0.24), (_save, 0.24))
-        Else
-            Row(rh, (_largeFonts, 0.5), (_highContrast, 0.5))
-            Row(rh, (_arrows, 1.0))
-            Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
-            Row(rh + S(2), (_open, 0.5), (_save, 0.5))
-        End If
-        ArrangeTimeControls(line)
-        ArrangeMomentumControls(rh, pairs)
+        _sideView.BarWidth = S(17)
+        _sideView.SetBounds(w - sideWidth, 0, sideWidth, h)
+        ' Laid out for the whole width; again with room for the scroll bar when the rows are taller than the panel.
+        Dim contentHeight = ArrangeSide(sideWidth, large, line)
+        If contentHeight > _sideView.ClientSize.Height Then contentHeight = ArrangeSide(_sideView.ContentWidthFor(contentHeight), large, line)
+        _sideView.SetContentHeight(contentHeight)
+        ' A label's words follow its new width (a long one drops its bracketed part where it would be cut).
+        _restitutionLabel.Text = Fitted(_restitutionLabel, _presenter.RestitutionText)
         OrderTabsByPlace()
-        _side.ResumeLayout(True)
-        _side.AutoScrollPosition = New Point(0, -scrolled.Y)
         ShowState()
+        ShowMessage(_presenter.Message)
     End Sub
 
-    ''' <summary>Whether a control's caption fits in <paramref name="width"/> px (with a button's edges or a check box's box).</summary>
-    Private Function TextFits(c As Control, width As Integer) As Boolean
-        Dim room = width - If(TypeOf c Is CheckBox, S(22), S(10))
-        Return Measure(c.Text, c.Font).Width <= room
+    ''' <summary>Places the side panel's rows for a content <paramref name="width"/> px wide; returns their height, px.</summary>
+    Private Function ArrangeSide(width As Integer, large As Boolean, line As Integer) As Integer
+        Dim rh = ButtonRowHeight()
+        Dim sliderHeight = Math.Max(S(24), line + S(8))
+        _rows.Start(S(10), S(6), RowWidthFor(width))
+        ' Labels and boxes two to a row when every label fits its share; one to a row otherwise (large fonts).
+        Dim fieldUsable = _rows.Width - 3 * S(6)
+        Dim pairs = Not large AndAlso
+            {_radiusLabel, _widthLabel, _sidesLabel}.All(Function(l) _rows.TextFits(l, CInt(fieldUsable * PanelRows.FieldShares(0)))) AndAlso
+            {_massLabel, _heightLabel, _angleLabel}.All(Function(l) _rows.TextFits(l, CInt(fieldUsable * PanelRows.FieldShares(2))))
+
+        _rows.Row(MessageHeight(), (_message, 1.0))
+        _rows.Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
+        _rows.Row(line + S(2), (_speedLabel, 1.0))
+        _rows.Row(sliderHeight, (_speed, 1.0))
+        _rows.Row(line + S(2), (_gravityLabel, 1.0))
+        _rows.Row(sliderHeight, (_gravity, 1.0))
+        ' The four planets in one row when their names and values fit there, else in two.
+        Dim quarter = (_rows.Width - 3 * S(6)) \ 4
+        If pairs AndAlso _gravityMarks.All(Function(b) _rows.TextFits(b, quarter)) Then
+            _rows.Row(rh, (_gravityMarks(0), 0.25), (_gravityMarks(1), 0.25), (_gravityMarks(2), 0.25), (_gravityMarks(3), 0.25))
+        Else
+            _rows.Row(rh, (_gravityMarks(0), 0.5), (_gravityMarks(1), 0.5))
+            _rows.Row(rh, (_gravityMarks(2), 0.5), (_gravityMarks(3), 0.5))
+        End If
+        _rows.Row(line + S(2), (_restitutionLabel, 1.0))
+        _rows.Row(sliderHeight, (_restitution, 1.0))
+        _rows.Gap()
+        _rows.Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
+        ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
+        _rows.Fields(rh, pairs, (_sidesLabel, _sides), (_angleLabel, _angle))
+        ' A polygon drawn by clicking its corners takes the mass and Fixed box too: its button sits beside the regular one's.
+        If pairs AndAlso _rows.FitRow(rh + S(2), _fixed, _addCircle, _addPolygon, _addCorners) Then
+            ' One row: Fixed, Add circle, Add polygon, Add by corners.
+        ElseIf pairs Then
+            _rows.Row(rh + S(2), (_fixed, 0.2), (_addCircle, 0.4), (_addPolygon, 0.4))
+            _rows.Row(rh + S(2), (Nothing, 0.2), (Nothing, 0.4), (_addCorners, 0.4))
+        Else
+            _rows.Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_addPolygon, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_addCorners, 0.65))
+        End If
+        _rows.Gap()
+        _rows.Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
+        ' A ramp is a fixed obstacle too: its button sits beside the rectangle's.
+        If pairs Then
+            _rows.Row(rh + S(2), (_rectFixed, 0.2), (_addRectangle, 0.4), (_addRamp, 0.4))
+        Else
+            _rows.Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_addRamp, 0.65))
+        End If
+        _rows.Gap()
+        ' The three links in one row after the spring's stiffness: a link is made by clicking its two ends.
+        If pairs Then
+            _rows.Row(rh + S(2), (_stiffnessLabel, 0.2), (_stiffness, 0.14), (_addSpring, 0.22), (_addRod, 0.22), (_addString, 0.22))
+        Else
+            _rows.Row(rh, (_stiffnessLabel, 0.55), (_stiffness, 0.45))
+            _rows.Row(rh + S(2), (_addSpring, 1 / 3), (_addRod, 1 / 3), (_addString, 1 / 3))
+        End If
+        _rows.Gap()
+        ' The container's size and its button on one row when they fit: "Container (m) [8] × [5] [Resize container]".
+        _boxWidthLabel.Text = "Container (m)"
+        _boxHeightLabel.Text = "×"
+        _boxHeightLabel.TextAlign = ContentAlignment.MiddleCenter
+        If pairs AndAlso _rows.FitRow(rh + S(2), _boxWidthLabel, _boxWidth, _boxHeightLabel, _boxHeight, _resize) Then
+            ' One row.
+        Else
+            _boxWidthLabel.Text = "Container w (m)"
+            _boxHeightLabel.Text = "h (m)"
+            _boxHeightLabel.TextAlign = ContentAlignment.MiddleLeft
+            _rows.Fields(rh, pairs, (_boxWidthLabel, _boxWidth), (_boxHeightLabel, _boxHeight))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_resize, 0.65))
+        End If
+        _rows.Gap()
+        If pairs Then
+            _rows.Row(rh, (_largeFonts, 0.36), (_highContrast, 0.4), (_arrows, 0.24))
+            _rows.Row(rh + S(2), (_tutorial, 0.24), (_maths, 0.28), (_open, 0.24), (_save, 0.24))
+        Else
+            _rows.Row(rh, (_largeFonts, 0.5), (_highContrast, 0.5))
+            _rows.Row(rh, (_arrows, 1.0))
+            _rows.Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
+            _rows.Row(rh + S(2), (_open, 0.5), (_save, 0.5))
+        End If
+        _time.Arrange(_rows, line)
+        _momentumBoxes.Arrange(_rows, rh, pairs)
+        Return _rows.Y + S(4)
     End Function
 
     ''' <summary>Whether the totals line, with room for its numbers to grow, fits on one line this wide.</summary>
@@ -173,15 +181,77 @@ Partial Friend NotInheritable Class MainForm
 
     ''' <summary>Each column as wide as its header, and the spare width shared out, so no header is clipped.</summary>
     Private Sub FitColumns(list As BufferedListView, available As Integer)
-        Dim widths(list.Columns.Count - 1) As Integer
-        ' Headers are wider than the numbers under them, except for the id and colour columns.
-        For i = 0 To widths.Length - 1
-            Dim sample = ColumnSample(list.Columns(i).Text, i)
-            widths(i) = Math.Max(Measure(list.Columns(i).Text, list.Font).Width, Measure(sample, list.Font).Width) + S(12)
-        Next
+        Dim widths = NeededColumnWidths(list)
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
         For i = 0 To widths.Length - 1
             list.Columns(i).Width = widths(i) + spare
+        Next
+        TraceColumns(list, widths)
+    End Sub
+
+    ''' <summary>
+    ''' Each column's least width, px: its header, a typical value, and what its rows hold now (a
+    ''' polygon's "12 sides, 1.23×10⁻³ × 0.500"), each with a margin.
+    ''' </summary>
+    Private Function NeededColumnWidths(list As BufferedListView) As Integer()
+        Dim widths(list.Columns.Count - 1) As Integer
+        Dim rows = ShownCells(list)
+        For i = 0 To widths.Length - 1
+            Dim sample = ColumnSample(list.Columns(i).Text, i)
+            Dim widest = Math.Max(Measure(list.Columns(i).Text, list.Font).Width, Measure(sample, list.Font).Width)
+            For Each rowCells In rows
+                If i < rowCells.Length Then widest = Math.Max(widest, Measure(rowCells(i), list.Font).Width)
+            Next
+            widths(i) = widest + S(12)
+        Next
+        Return widths
+    End Function
+
+    ''' <summary>The cells of the first rows a body or link table holds now (at most 40: enough to see how wide its values run).</summary>
+    Private Function ShownCells(list As BufferedListView) As List(Of String())
+        Dim snap = _presenter.Snapshot
+        Dim rows As New List(Of String())
+        Dim t = _tables.IndexOf(list)
+        If t >= 0 Then
+            For r = 0 To Math.Min(40, snap.RowCount(t)) - 1
+                rows.Add(snap.Cells(t, r))
+            Next
+        ElseIf list Is _linkList Then
+            For r = 0 To Math.Min(40, snap.LinkCount) - 1
+                rows.Add(snap.LinkCells(r))
+            Next
+        End If
+        Return rows
+    End Function
+
+    Private _columnsGrownAt As Double = -1
+
+    ''' <summary>
+    ''' While time runs or bodies change: a column of the table on show that its values have outgrown
+    ''' is widened (at most twice a second; columns only grow, so they do not jump about).
+    ''' </summary>
+    Private Sub GrowColumns(list As BufferedListView)
+        Dim now = _clock.Elapsed.TotalSeconds
+        If now - _columnsGrownAt < 0.5 Then Return
+        _columnsGrownAt = now
+        Dim widths = NeededColumnWidths(list)
+        Dim grew = False
+        For i = 0 To widths.Length - 1
+            If list.Columns(i).Width < widths(i) Then
+                list.Columns(i).Width = widths(i)
+                grew = True
+            End If
+        Next
+        If grew Then TraceColumns(list, widths)
+    End Sub
+
+    ''' <summary>With --trace: each column's width and the width its header and values need ("column Bodies 9 width 180 needs 150").</summary>
+    Private Sub TraceColumns(list As BufferedListView, needs As Integer())
+        If _trace Is Nothing Then Return
+        Dim t = _tables.IndexOf(list)
+        Dim name = If(t >= 0, SimulationPresenter.Tables(t).Title, LinkTable.Title)
+        For i = 0 To needs.Length - 1
+            _trace("column " & name & " " & i & " width " & list.Columns(i).Width & " needs " & needs(i))
         Next
     End Sub
 
@@ -218,49 +288,6 @@ Partial Friend NotInheritable Class MainForm
         Next
     End Sub
 
-    ''' <summary>Shares of a row of two labelled boxes: label, box, label, box.</summary>
-    Private Shared ReadOnly FieldShares As Double() = {0.37, 0.15, 0.25, 0.23}
-
-    Private Sub Gap()
-        _rowY += S(4)
-    End Sub
-
-    ''' <summary>Two labelled text boxes side by side, or one above the other with large fonts.</summary>
-    Private Sub Fields(height As Integer, pairs As Boolean, ParamArray fields As (Label As Label, Box As TextBox)())
-        If pairs Then
-            Row(height, (fields(0).Label, FieldShares(0)), (fields(0).Box, FieldShares(1)), (fields(1).Label, FieldShares(2)), (fields(1).Box, FieldShares(3)))
-        Else
-            For Each f In fields
-                Row(height, (f.Label, 0.55), (f.Box, 0.45))
-            Next
-        End If
-    End Sub
-
-    ''' <summary>One row of the side panel: controls side by side, each with a share of the width.</summary>
-    Private Sub Row(height As Integer, ParamArray items As (Control As Control, Share As Double)())
-        Dim gap = S(6)
-        Dim usable = _rowWidth - gap * (items.Length - 1)
-        Dim x = _rowX
-        Dim tallest = height
-        For Each item In items
-            Dim width = CInt(usable * item.Share)
-            If item.Control IsNot Nothing Then
-                ' A text box is as tall as a line of its text and a little, or as Mono insists on making
-                ' it (from the DPI it reports, later, whatever it is given).
-                Dim box = TryCast(item.Control, TextBox)
-                Dim ctlHeight = If(box IsNot Nothing, Math.Min(height, Math.Max(LineHeight(box.Font) + S(8), box.PreferredHeight)), height)
-                item.Control.SetBounds(x, _rowY + (height - ctlHeight) \ 2, width, ctlHeight)
-                ' Mono keeps a one-line text box as tall as the DPI it reports asks: the row grows to hold it.
-                If item.Control.Height > height Then
-                    item.Control.Top = _rowY
-                    tallest = Math.Max(tallest, item.Control.Height)
-                End If
-            End If
-            x += width + gap
-        Next
-        _rowY += tallest + S(3)
-    End Sub
-
     ''' <summary>With --trace: every control's screen rectangle and the canvas transform, for GUI tests.</summary>
     Private Sub TraceLayout()
         If _trace Is Nothing Then Return
@@ -270,17 +297,24 @@ Partial Friend NotInheritable Class MainForm
             ' Whether its caption fits (buttons, check boxes and one-line labels; 1 for the rest).
             Dim c = n.Control
             Dim captioned = TypeOf c Is Button OrElse TypeOf c Is CheckBox OrElse (TypeOf c Is Label AndAlso c IsNot _message AndAlso c IsNot _totals)
-            Dim fits = Not captioned OrElse TextFits(c, c.Width)
+            Dim fits = Not captioned OrElse _rows.TextFits(c, c.Width)
             _trace("control " & n.Name & " " & p.X & " " & p.Y & " " & c.Width & " " & c.Height & " " & If(fits, "fits", "cut"))
+            ' The parts that must grow with the text: a check box's box, a slider's thumb.
+            Dim check = TryCast(c, ScaledCheckBox)
+            If check IsNot Nothing Then _trace("part " & n.Name & " box " & check.BoxSize & " " & check.BoxSize)
+            Dim slider = TryCast(c, ScaledSlider)
+            If slider IsNot Nothing Then _trace("part " & n.Name & " thumb " & slider.ThumbWidth & " " & slider.ThumbHeight)
         Next
+        _trace("text line " & LineHeight(Font) & " px, scroll bar " & _sideView.BarWidth & " px, panel overflow " & _sideView.Overflow & " px, scrolled " & _sideView.Offset & " px")
         ' The tabs' headers, so tests can open a table as a teacher would: "tab-links", "tab-bodies".
         For i = 0 To _tabs.TabCount - 1
             Dim r = _tabs.GetTabRect(i)
             Dim p = _tabs.PointToScreen(r.Location)
-            _trace("control tab-" & _tabs.TabPages(i).Text.ToLowerInvariant().Replace(" "c, "-"c) & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & " fits")
+            Dim fits = Measure(_tabs.TabPages(i).Text, Font).Width <= r.Width
+            _trace("control tab-" & _tabs.TabPages(i).Text.ToLowerInvariant().Replace(" "c, "-"c) & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & If(fits, " fits", " cut"))
         Next
         Dim client = PointToScreen(Point.Empty)
-        TraceCells()
+        _cells.TraceCells(_tabs.SelectedIndex)
         _trace("window " & client.X & " " & client.Y & " " & ClientSize.Width & " " & ClientSize.Height)
         Dim v = _presenter.View
         _trace("view scale " & Units.Num(v.Scale, 4) & " origin " & Units.Num(v.OffsetX, 2) & " " & Units.Num(v.OffsetY, 2))
@@ -303,11 +337,75 @@ Partial Friend NotInheritable Class MainForm
             ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
-            ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _side)}
-        named.AddRange(LessonControls())
-        named.AddRange(GraphControls())
-        named.AddRange(MomentumControls())
-        named.AddRange(TimeControls())
+            ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _sideView)}
+        named.Add(("scenes", _scenes))
+        named.Add(("restart", _restart))
+        named.Add(("export", _export))
+        named.Add(("solver", _solver))
+        named.AddRange(_graphs.Controls(_tabs.SelectedTab Is _graphs.Page))
+        named.AddRange(_momentumBoxes.Controls())
+        named.AddRange(_time.Controls())
         Return named
     End Function
+
+    ''' <summary>Tab goes through the side panel as it reads: row by row, left to right (the order the controls were made in is not that).</summary>
+    Private Sub OrderTabsByPlace()
+        ' A text box sits a few pixels lower than the buttons of its row (it is centred in it): controls
+        ' whose tops are that close are one row.
+        Dim byTop = _side.Controls.Cast(Of Control)().OrderBy(Function(c) c.Top).ToList()
+        Dim index = 0, first = 0
+        Do While first < byTop.Count
+            Dim last = first
+            Do While last + 1 < byTop.Count AndAlso byTop(last + 1).Top < byTop(first).Top + S(12)
+                last += 1
+            Loop
+            For Each c In byTop.Skip(first).Take(last - first + 1).OrderBy(Function(x) x.Left)
+                c.TabIndex = index
+                index += 1
+            Next
+            first = last + 1
+        Loop
+    End Sub
+
+    ''' <summary>
+    ''' The header row, right of the tabs (<paramref name="top"/> px down, ending <paramref name="right"/>
+    ''' px across): the solver, Export, Scenes and Restart, each as wide as its caption (the solver's
+    ''' as its longest, so it never moves), in the theme's colours. Where the tabs are shorter than
+    ''' the buttons they move down, so the buttons end level with them; where the tabs' headers would
+    ''' run under the buttons (a small screen, large fonts) the tabs go under the row.
+    ''' </summary>
+    Private Sub PlaceHeaderButtons(top As Integer, right As Integer)
+        Dim header = If(_tabs.TabCount > 0, _tabs.GetTabRect(0).Height, LineHeight(Font) + S(8))
+        Dim height = ButtonRowHeight()
+        Dim extra = Math.Max(0, height - header)
+        If extra > 0 Then _tabs.SetBounds(_tabs.Left, top + extra, _tabs.Width, Math.Max(1, _tabs.Height - extra))
+        Dim x = right - S(6)
+        For Each b In {_restart, _scenes, _export, _solver}
+            Dim captions = If(b Is _solver, SolverMenu.Captions(), {b.Text})
+            Dim width = Math.Max(S(90), captions.Max(Function(c) Measure(c, Font).Width) + S(24))
+            x -= width
+            b.SetBounds(x, top, width, height)
+            x -= S(6)
+        Next
+        Dim theme = _presenter.Theme
+        For Each b In {_solver, _export, _scenes, _restart}
+            b.Font = Font
+            WindowKit.Style(b, theme)
+        Next
+        _graphs.Restyle()
+        If _tabs.TabCount > 0 Then
+            Dim lastTab = _tabs.GetTabRect(_tabs.TabCount - 1)
+            If _tabs.Left + lastTab.Right > _solver.Left - S(4) AndAlso _tabs.Top < _export.Bottom Then
+                Dim below = _export.Bottom + S(2)
+                _tabs.SetBounds(_tabs.Left, below, _tabs.Width, Math.Max(1, _tabs.Bottom - below))
+            End If
+            ' The strip right of the last header, in the panel's colour (under the header buttons).
+            Dim last = _tabs.GetTabRect(_tabs.TabCount - 1)
+            _tabStripFill.SetBounds(_tabs.Left + last.Right + S(2), _tabs.Top, Math.Max(1, _tabs.Width - last.Right - S(2)), last.Bottom)
+            _tabStripFill.BringToFront()
+        End If
+        For Each b In {_solver, _export, _scenes, _restart}
+            b.BringToFront()
+        Next
+    End Sub
 End Class

@@ -33,32 +33,39 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _canvas As New PictureBox()
     Private ReadOnly _totals As New Label()
     Private ReadOnly _tabs As New TabControl()
+    ''' <summary>Covers the strip beside the tabs' headers, which Mono paints light grey whatever the theme.</summary>
+    Private ReadOnly _tabStripFill As New Panel()
     Private ReadOnly _tables As New List(Of BufferedListView)
     Private ReadOnly _logList As New BufferedListView()
-    Private ReadOnly _side As New Panel()
-    Private ReadOnly _message As New Label()
+    ''' <summary>The side panel as it shows on screen: a window onto <see cref="_side"/>, which scrolls with its own bar and the wheel.</summary>
+    Private ReadOnly _sideView As New ScrollingPanel()
+    ''' <summary>The side panel's controls live here, at fixed places: only a scroll the teacher asks for moves them.</summary>
+    Private ReadOnly _side As Panel = _sideView.Content
+    ''' <summary>The message area: a fixed height on top of the panel, scrolling within itself when a message is longer.</summary>
+    Private ReadOnly _message As New MessageArea()
+    Private ReadOnly _wheel As New WheelRouter()
     Private ReadOnly _pause As New Button()
     Private ReadOnly _reset As New Button()
     Private ReadOnly _deleteMode As New Button()
     Private ReadOnly _speedLabel As New Label()
-    Private ReadOnly _speed As New TrackBar()
+    Private ReadOnly _speed As New ScaledSlider()
     Private ReadOnly _gravityLabel As New Label()
-    Private ReadOnly _gravity As New TrackBar()
+    Private ReadOnly _gravity As New ScaledSlider()
     Private ReadOnly _gravityMarks As New List(Of Button)
     Private ReadOnly _restitutionLabel As New Label()
-    Private ReadOnly _restitution As New TrackBar()
+    Private ReadOnly _restitution As New ScaledSlider()
     Private ReadOnly _radiusLabel As New Label()
     Private ReadOnly _radius As New TextBox()
     Private ReadOnly _massLabel As New Label()
     Private ReadOnly _mass As New TextBox()
-    Private ReadOnly _fixed As New CheckBox()
+    Private ReadOnly _fixed As New ScaledCheckBox()
     Private ReadOnly _addCircle As New Button()
     Private ReadOnly _widthLabel As New Label()
     Private ReadOnly _rectWidth As New TextBox()
     Private ReadOnly _heightLabel As New Label()
     Private ReadOnly _rectHeight As New TextBox()
     Private ReadOnly _addRectangle As New Button()
-    Private ReadOnly _rectFixed As New CheckBox()
+    Private ReadOnly _rectFixed As New ScaledCheckBox()
     Private ReadOnly _sidesLabel As New Label()
     Private ReadOnly _sides As New TextBox()
     Private ReadOnly _angleLabel As New Label()
@@ -77,14 +84,35 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _boxHeightLabel As New Label()
     Private ReadOnly _boxHeight As New TextBox()
     Private ReadOnly _resize As New Button()
-    Private ReadOnly _largeFonts As New CheckBox()
-    Private ReadOnly _highContrast As New CheckBox()
-    Private ReadOnly _arrows As New CheckBox()
+    Private ReadOnly _largeFonts As New ScaledCheckBox()
+    Private ReadOnly _highContrast As New ScaledCheckBox()
+    Private ReadOnly _arrows As New ScaledCheckBox()
     Private ReadOnly _tutorial As New Button()
     Private ReadOnly _maths As New Button()
     Private ReadOnly _open As New Button()
     Private ReadOnly _save As New Button()
     Private ReadOnly _inputs As New Dictionary(Of InputField, TextBox)
+    ''' <summary>The header row's buttons, right of the tabs: the solver, Export, Scenes, Restart.</summary>
+    Private ReadOnly _solver As New Button()
+    Private ReadOnly _export As New Button()
+    Private ReadOnly _scenes As New Button()
+    Private ReadOnly _restart As New Button()
+
+    ''' <summary>What the window's parts share (the presenter, the trace, the screen's scale, text measures, tips).</summary>
+    Private ReadOnly _kit As WindowKit
+    ''' <summary>The side panel's rows.</summary>
+    Private ReadOnly _rows As PanelRows
+    ''' <summary>The player row: steps and the timeline.</summary>
+    Private _time As TimeControls
+    ''' <summary>The momentum views' check boxes.</summary>
+    Private _momentumBoxes As MomentumBoxes
+    ''' <summary>The edit box of the body tables.</summary>
+    Private _cells As TableCells
+    ''' <summary>The Graphs tab.</summary>
+    Private _graphs As GraphsPage
+    Private _lessonMenu As LessonMenu
+    Private _solverMenu As SolverMenu
+    Private _exportMenu As ExportMenu
 
     ''' <param name="trace">receives one line per action when the app runs with --trace; Nothing otherwise</param>
     ''' <param name="store">scene files; Nothing disables Open and Save</param>
@@ -93,6 +121,8 @@ Partial Friend NotInheritable Class MainForm
     Public Sub New(trace As Action(Of String), store As ISceneStore, Optional world As World = Nothing, Optional sceneFolder As String = Nothing)
         _trace = trace
         _dpi = ScreenDpi.Detect()
+        _kit = New WindowKit(Me, _dpi, trace, AddressOf Act)
+        _rows = New PanelRows(_kit)
         _painter = New ScenePainter(_dpi.FontScale)
         SuspendLayout()
         ' Sizes are computed here from the screen's DPI (see S), so the runtime must not scale them again.
@@ -104,6 +134,7 @@ Partial Friend NotInheritable Class MainForm
         ResumeLayout(False)
 
         _presenter = New SimulationPresenter(Me, store, world) With {.Trace = trace, .ScreenScale = _dpi.Scale, .SceneFolder = sceneFolder, .LessonFolder = sceneFolder}
+        _kit.Presenter = _presenter
         _trace?.Invoke("dpi " & Units.Num(_dpi.Screen, 0) & " (" & _dpi.Source & "), gdi+ " & Units.Num(_dpi.Graphics, 0) & ", scale " & Units.Num(_dpi.Scale, 2))
         ShowTheme()
         ShowSettings()
@@ -156,24 +187,58 @@ Partial Friend NotInheritable Class MainForm
         AddTab(LinkTable.Title, _linkList)
         SetUpTable(_logList, CollisionLogEntry.Headers, AddressOf OnRetrieveLog)
         AddTab(Captions.CollisionLog, _logList)
-        BuildGraphControls()
+        _graphs = New GraphsPage(_kit, AddressOf TraceShown)
+        _tabs.TabPages.Add(_graphs.Page)
+        ' The header row's buttons, right of the tabs, where there is room at every screen size: the
+        ' side panel has no row to spare on a 1024 × 768 projector.
+        AddHeaderButton(_solver, "Solver ▾", Sub() _solverMenu.Show())
+        AddHeaderButton(_export, SimulationPresenter.ExportCaption, Sub() _exportMenu.Show())
+        AddHeaderButton(_scenes, SimulationPresenter.ScenesCaption, Sub() _lessonMenu.Show())
+        AddHeaderButton(_restart, SimulationPresenter.RestartCaption, Sub() _presenter.Restart())
+        _solverMenu = New SolverMenu(_kit, _solver)
+        _exportMenu = New ExportMenu(_kit, _export, _canvas, _painter)
+        _lessonMenu = New LessonMenu(_kit, _scenes)
+        _kit.Tips.SetToolTip(_solver, "How the scene is moved on in time: choose another, then Restart, to compare")
+        _kit.Tips.SetToolTip(_export, "Save the tables, the collision log or the graph as CSV, or the graph or the canvas as a picture")
+        _kit.Tips.SetToolTip(_scenes, "Ready-made lesson scenes (" & SimulationPresenter.ScenesKey & ")")
+        _kit.Tips.SetToolTip(_restart, "Back to the scene as it was opened or last built (" & SimulationPresenter.RestartKey & ")")
         ' Mono leaves a details list's header unpainted when its tab comes back: repaint the list then.
         AddHandler _tabs.SelectedIndexChanged, AddressOf OnTabChanged
+        ' The tabs' headers are drawn here: in the theme's colours (Mono leaves them light grey in high
+        ' contrast), and as tall as the text at any DPI (Mono keeps them 96-dpi high).
+        _tabs.DrawMode = TabDrawMode.OwnerDrawFixed
+        AddHandler _tabs.DrawItem, AddressOf OnDrawTab
+        Controls.Add(_tabStripFill)
         Controls.Add(_tabs)
 
-        _side.AutoScroll = True
         ' With --trace, where the controls are after the panel scrolls (GUI tests click them there).
-        AddHandler _side.Scroll, Sub(s, a) TraceLayout()
-        AddHandler _side.MouseWheel, Sub(s, a) BeginInvoke(New Action(AddressOf TraceLayout))
-        Controls.Add(_side)
-        _message.BorderStyle = BorderStyle.FixedSingle
-        _message.UseMnemonic = False
+        AddHandler _sideView.Scrolled, Sub(s, a) If IsHandleCreated Then TraceLayout()
+        ' The wheel anywhere over the panel scrolls it (a long message scrolls within its own box).
+        ' Each turn is acknowledged in the trace after its effect (the new layout, when the panel moved),
+        ' so a GUI test waits for the app to have handled its own turn, not for any layout line.
+        _wheel.Add(_message,
+            Sub(delta, p)
+                ScrollMessage(delta)
+                _trace?.Invoke("wheel side " & delta & " scrolled " & _sideView.Offset)
+            End Sub)
+        _wheel.Add(_sideView,
+            Sub(delta, p)
+                _sideView.ScrollBy(-Math.Sign(delta) * 3 * LineHeight(Font))
+                _trace?.Invoke("wheel side " & delta & " scrolled " & _sideView.Offset)
+            End Sub)
+        ' The wheel over the canvas zooms about the cursor.
+        _wheel.Add(_canvas, Sub(delta, p) Act(Sub() _presenter.ZoomAt(delta / 120.0, p.X, p.Y)))
+        Application.AddMessageFilter(_wheel)
+        Controls.Add(_sideView)
+        _message.ScreenScale = _dpi.Scale
+        _message.SetMeasure(Function(text, font, width) Measure(text, font, width))
         _side.Controls.Add(_message)
 
         AddButton(_pause, "Pause", Sub() _presenter.TogglePause())
         AddButton(_reset, Captions.Reset, Sub() _presenter.Reset())
         AddButton(_deleteMode, "Delete mode", Sub() _presenter.ToggleDeleteMode())
-        BuildLessonControls()
+        _kit.Tips.SetToolTip(_pause, "Pause or resume (" & SimulationPresenter.PauseKey & ")")
+        _kit.Tips.SetToolTip(_reset, "Remove every body (" & SimulationPresenter.ResetKey & ")")
 
         AddLabel(_speedLabel, "")
         SetUpSlider(_speed, SpeedSteps.Values.Count - 1, 1, Sub() _presenter.SetSpeedIndex(_speed.Value))
@@ -196,6 +261,7 @@ Partial Friend NotInheritable Class MainForm
         AddField(_radiusLabel, "Radius (m)", _radius, InputField.Radius)
         AddField(_massLabel, "Mass (kg)", _mass, InputField.Mass)
         _fixed.Text = Captions.Fixed
+        _fixed.ScreenScale = _dpi.Scale
         AddHandler _fixed.CheckedChanged, Sub(s, a) If Not _updating Then _presenter.FixedChanged(_fixed.Checked)
         _side.Controls.Add(_fixed)
         AddButton(_addCircle, Captions.AddCircle, Sub() _presenter.BeginAddCircle())
@@ -203,6 +269,7 @@ Partial Friend NotInheritable Class MainForm
         AddField(_widthLabel, "Rectangle w (m)", _rectWidth, InputField.RectangleWidth)
         AddField(_heightLabel, "h (m)", _rectHeight, InputField.RectangleHeight)
         _rectFixed.Text = Captions.Fixed
+        _rectFixed.ScreenScale = _dpi.Scale
         AddHandler _rectFixed.CheckedChanged, Sub(s, a) If Not _updating Then _presenter.RectangleFixedChanged(_rectFixed.Checked)
         _side.Controls.Add(_rectFixed)
         AddButton(_addRectangle, Captions.AddRectangle, Sub() _presenter.BeginAddRectangle())
@@ -229,9 +296,31 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_maths, Captions.MathsUsed, Sub() ShowHelp(Captions.MathsUsed, HelpTexts.Maths))
         AddButton(_open, Captions.OpenScene, AddressOf OnOpen)
         AddButton(_save, Captions.SaveScene, AddressOf OnSave)
-        BuildMomentumControls()
-        BuildEditingControls()
-        BuildTimeControls()
+        _momentumBoxes = New MomentumBoxes(_kit, _side)
+        _cells = New TableCells(_kit, Me, _tables)
+        _time = New TimeControls(_kit, _side)
+        ' Every control of the side panel says when it takes the focus, so a test can follow Tab; and
+        ' Tab to a control below the panel's visible part scrolls it into view.
+        For Each c As Control In _side.Controls
+            Dim control = c
+            AddHandler control.GotFocus,
+                Sub(s, e)
+                    _sideView.EnsureVisible(control)
+                    If _trace Is Nothing Then Return
+                    Dim p = control.PointToScreen(Point.Empty)
+                    Dim name = NamedControls().FirstOrDefault(Function(n) n.Control Is control).Name
+                    _trace("focus " & p.X & " " & p.Y & " " & control.GetType().Name & " " & If(name, "-"))
+                End Sub
+        Next
+    End Sub
+
+    ''' <summary>A button of the header row, right of the tabs (on the window, not the side panel).</summary>
+    Private Sub AddHeaderButton(button As Button, text As String, action As Action)
+        button.Text = text
+        button.UseMnemonic = False
+        AddHandler button.Click, Sub(s, e) Act(action)
+        Controls.Add(button)
+        button.BringToFront()
     End Sub
 
     Private Sub AddTab(title As String, list As BufferedListView)
@@ -278,18 +367,18 @@ Partial Friend NotInheritable Class MainForm
         _side.Controls.Add(button)
     End Sub
 
-    Private Sub AddCheck(box As CheckBox, text As String, action As Action)
+    Private Sub AddCheck(box As ScaledCheckBox, text As String, action As Action)
         box.Text = text
+        box.ScreenScale = _dpi.Scale
         AddHandler box.CheckedChanged, Sub(s, e) If Not _updating Then Act(action)
         _side.Controls.Add(box)
     End Sub
 
-    Private Sub SetUpSlider(slider As TrackBar, max As Integer, tick As Integer, action As Action)
+    Private Sub SetUpSlider(slider As ScaledSlider, max As Integer, tick As Integer, action As Action)
+        slider.ScreenScale = _dpi.Scale
         slider.Minimum = 0
         slider.Maximum = max
         slider.TickFrequency = Math.Max(1, tick)
-        slider.TickStyle = TickStyle.BottomRight
-        slider.AutoSize = False
         AddHandler slider.ValueChanged, Sub(s, e) If Not _updating Then Act(action)
         _side.Controls.Add(slider)
     End Sub
@@ -335,12 +424,55 @@ Partial Friend NotInheritable Class MainForm
         TraceLayout()
     End Sub
 
+    ''' <summary>The keys of the window, wherever the focus is (a text box keeps its own Ctrl+Z and Ctrl+Y, and the time keys).</summary>
+    Protected Overrides Function ProcessCmdKey(ByRef msg As Message, keyData As Keys) As Boolean
+        Select Case keyData
+            Case Keys.Control Or Keys.P
+                _trace?.Invoke("key pause")
+                Act(Sub() _presenter.TogglePause())
+                Return True
+            Case Keys.Control Or Keys.R
+                _trace?.Invoke("key restart")
+                Act(Sub() _presenter.Restart())
+                Return True
+            Case Keys.Control Or Keys.Shift Or Keys.R
+                _trace?.Invoke("key reset")
+                Act(Sub() _presenter.Reset())
+                Return True
+            Case Keys.Control Or Keys.L
+                _trace?.Invoke("key scenes")
+                _lessonMenu.Show()
+                Return True
+        End Select
+        If keyData = (Keys.Control Or Keys.D0) OrElse keyData = (Keys.Control Or Keys.NumPad0) Then
+            _trace?.Invoke("key whole view")
+            Act(Sub() _presenter.ResetView())
+            Return True
+        End If
+        ' Undo and redo, except in a text box, which undoes its own typing.
+        If Not TypeOf ActiveControl Is TextBox Then
+            Select Case keyData
+                Case Keys.Control Or Keys.Z
+                    _trace?.Invoke("key undo")
+                    Act(Sub() _presenter.Undo())
+                    Return True
+                Case Keys.Control Or Keys.Y, Keys.Control Or Keys.Shift Or Keys.Z
+                    _trace?.Invoke("key redo")
+                    Act(Sub() _presenter.Redo())
+                    Return True
+            End Select
+        End If
+        If _time.ProcessKey(keyData, ActiveControl) Then Return True
+        If ProcessCornerKey(keyData) Then Return True
+        Return MyBase.ProcessCmdKey(msg, keyData)
+    End Function
+
     ''' <summary>
     ''' Enter finishes a polygon drawn by its corners, wherever the focus is (a focused button would
     ''' otherwise take Enter as a click); an open table edit box keeps its Enter.
     ''' </summary>
     Private Function ProcessCornerKey(keyData As Keys) As Boolean
-        If keyData <> Keys.Enter OrElse _presenter Is Nothing OrElse _presenter.Mode <> ClickMode.Corners OrElse _cellBox.Visible Then Return False
+        If keyData <> Keys.Enter OrElse _presenter Is Nothing OrElse _presenter.Mode <> ClickMode.Corners OrElse _cells.IsOpen Then Return False
         _trace?.Invoke("key finish corners")
         Act(Sub() _presenter.FinishCorners())
         Return True
@@ -367,7 +499,7 @@ Partial Friend NotInheritable Class MainForm
         _canvas.Invalidate()
         Dim refreshStart = _clock.Elapsed.TotalSeconds
         RefreshLog(now)
-        RefreshGraph(now)
+        _graphs.Refresh(now, _tabs.SelectedTab Is _graphs.Page)
         Dim refreshEnd = _clock.Elapsed.TotalSeconds
         ' The log and the graph are part of the frame too: the next frames' budget leaves room for them.
         _presenter.NoteFrameWork(refreshEnd - refreshStart)
@@ -392,6 +524,27 @@ Partial Friend NotInheritable Class MainForm
         _logList.Invalidate()
     End Sub
 
+    ''' <summary>Draws one tab's header: the chosen tab in the canvas's colours, the others as buttons, the title in the panel's text colour.</summary>
+    Private Sub OnDrawTab(sender As Object, e As DrawItemEventArgs)
+        If _presenter Is Nothing OrElse e.Index < 0 OrElse e.Index >= _tabs.TabCount Then Return
+        Dim theme = _presenter.Theme
+        Dim chosen = e.Index = _tabs.SelectedIndex
+        Dim r = e.Bounds
+        Using back As New SolidBrush(ScenePainter.Rgb(If(chosen, theme.Field, theme.Button))), edge As New Pen(ScenePainter.Rgb(theme.PanelText), CSng(Math.Max(1, S(1))))
+            e.Graphics.FillRectangle(back, r)
+            If theme.IsHighContrast OrElse chosen Then e.Graphics.DrawRectangle(edge, r.X, r.Y, r.Width - 1, r.Height - 1)
+        End Using
+        Using ink As New SolidBrush(ScenePainter.Rgb(theme.PanelText)), format As New StringFormat() With {.Alignment = StringAlignment.Center, .LineAlignment = StringAlignment.Center, .FormatFlags = StringFormatFlags.NoWrap}
+            e.Graphics.DrawString(_tabs.TabPages(e.Index).Text, Font, ink, New RectangleF(r.X, r.Y, r.Width, r.Height), format)
+        End Using
+        ' The chosen tab is marked by a bar along its top, in the cue's colour (not a colour the canvas uses for physics).
+        If chosen Then
+            Using bar As New SolidBrush(ScenePainter.Rgb(theme.Cue))
+                e.Graphics.FillRectangle(bar, r.X + 1, r.Y + 1, r.Width - 2, Math.Max(2, S(3)))
+            End Using
+        End If
+    End Sub
+
     Private Sub OnTabChanged(sender As Object, e As EventArgs)
         Dim page = _tabs.SelectedTab
         If page Is Nothing OrElse page.Controls.Count = 0 Then Return
@@ -407,6 +560,9 @@ Partial Friend NotInheritable Class MainForm
         Dim t = _tables.IndexOf(list)
         If t >= 0 Then list.VirtualListSize = _presenter.Snapshot.RowCount(t)
         If list Is _linkList Then list.VirtualListSize = _presenter.Snapshot.LinkCount
+        ' Values that grew while the table was behind another tab get their room now.
+        _columnsGrownAt = -1
+        If t >= 0 OrElse list Is _linkList Then GrowColumns(list)
         If list.Columns.Count > 0 Then
             Dim first = list.Columns(0)
             first.Width += 1
@@ -467,10 +623,12 @@ Partial Friend NotInheritable Class MainForm
             s.BackColor = ScenePainter.Rgb(theme.Panel)
             s.ForeColor = ScenePainter.Rgb(theme.PanelText)
         Next
-        Dim colour = BodyColours.Parse(cells(1), -1)
+        ' The colour the canvas draws the body in: its own, or the theme's fixed grey.
+        Dim colour = If(cells(1) = BodyTable.FixedColourCell, theme.Fixed, BodyColours.Parse(cells(1), -1))
         If colour >= 0 Then
             item.SubItems(1).BackColor = ScenePainter.Rgb(colour)
-            item.SubItems(1).ForeColor = Color.White
+            ' Dark text on a light colour, white on a dark one: readable on every swatch.
+            item.SubItems(1).ForeColor = If(BodyColours.Luminance(colour) > 0.45, Color.Black, Color.White)
         End If
         Return item
     End Function
@@ -484,6 +642,7 @@ Partial Friend NotInheritable Class MainForm
         Select Case b
             Case MouseButtons.Left : Return PointerButton.Left
             Case MouseButtons.Right : Return PointerButton.Right
+            Case MouseButtons.Middle : Return PointerButton.Middle
             Case Else : Return PointerButton.None
         End Select
     End Function
@@ -505,15 +664,16 @@ Partial Friend NotInheritable Class MainForm
         ' No message: a quiet reminder of what the mouse does, in grey rather than highlighted.
         Dim quiet = String.IsNullOrEmpty(text)
         Dim theme = _presenter.Theme
-        _message.Text = If(quiet, SimulationPresenter.MouseHint, text)
+        Dim shown = If(quiet, SimulationPresenter.MouseHint, text)
+        If _message.Text <> shown Then _message.Text = shown
         _message.BackColor = ScenePainter.Rgb(If(quiet, theme.Panel, theme.MessageBack))
         _message.ForeColor = ScenePainter.Rgb(If(quiet, theme.HintText, theme.MessageText))
-        ' A longer message makes the box taller (the panel below moves down), so it is never cut off.
-        If IsHandleCreated AndAlso MessageHeight() <> _message.Height Then
-            ArrangeControls()
-            TraceLayout()
-        End If
-        _trace?.Invoke("message shown " & _message.Height & " px, needs " & MessageHeight() & " px")
+        ' The area keeps its height whatever the message, so nothing under it moves; a message longer
+        ' than the area scrolls within it (the wheel over it).
+        _message.Invalidate()
+        _trace?.Invoke("message shown " & _message.Height & " px, needs " & _message.Needs & " px" & If(_message.Scrolls, ", scrolls", ""))
+        ' With --trace, the layout after every message: GUI tests check that no control moved.
+        If IsHandleCreated AndAlso _trace IsNot Nothing Then TraceLayout()
     End Sub
 
     Public Sub ShowSettings() Implements ISimulationView.ShowSettings
@@ -526,10 +686,11 @@ Partial Friend NotInheritable Class MainForm
             _gravity.Value = _presenter.GravityPosition
             _gravityLabel.Text = _presenter.GravityText
             _restitution.Value = _presenter.RestitutionPosition
-            _restitutionLabel.Text = _presenter.RestitutionText
+            _restitutionLabel.Text = Fitted(_restitutionLabel, _presenter.RestitutionText)
             _pause.Text = _presenter.PauseText
             _pause.ForeColor = ScenePainter.Rgb(If(_presenter.IsPaused, If(theme.IsHighContrast, &H69F0AE, &H1B5E20), theme.Alert))
             _deleteMode.Text = _presenter.DeleteModeText
+            _solver.Text = _presenter.SolverText
             _deleteMode.BackColor = ScenePainter.Rgb(If(_presenter.Mode = ClickMode.Delete, theme.AlertBack, theme.Button))
             Dim inputs = _presenter.Inputs
             _fixed.Checked = inputs.IsFixed
@@ -548,13 +709,24 @@ Partial Friend NotInheritable Class MainForm
             _largeFonts.Checked = _presenter.LargeFonts
             _highContrast.Checked = _presenter.HighContrast
             _arrows.Checked = _presenter.ShowArrows
-            ShowMomentumSettings()
+            _momentumBoxes.Show()
         Finally
             _updating = False
         End Try
         TraceInputs()
         _canvas.Invalidate()
     End Sub
+
+    ''' <summary>
+    ''' <paramref name="text"/>, or, when it is wider than <paramref name="label"/>, the text without
+    ''' its last part in brackets ("Restitution e = 0.90" for "… (1 = elastic)", which stays in its tip).
+    ''' </summary>
+    Private Function Fitted(label As Label, text As String) As String
+        _kit.Tips.SetToolTip(label, text)
+        Dim bracket = text.LastIndexOf("  (", StringComparison.Ordinal)
+        If bracket < 0 OrElse label.Width <= 0 OrElse Measure(text, label.Font).Width <= label.Width - S(4) Then Return text
+        Return text.Substring(0, bracket)
+    End Function
 
     Public Sub ShowInputs() Implements ISimulationView.ShowInputs
         If _presenter Is Nothing Then Return
@@ -578,25 +750,22 @@ Partial Friend NotInheritable Class MainForm
 
     Public Sub ShowState() Implements ISimulationView.ShowState
         If _presenter Is Nothing Then Return
-        ShowTimeline()
+        _time.Show()
         Dim snap = _presenter.Snapshot
         ' Only the table on show is sized and repainted; the others when their tab is chosen.
         Dim shown = _tabs.SelectedIndex
         If shown >= 0 AndAlso shown < _tables.Count Then
             Dim list = _tables(shown)
             If list.VirtualListSize <> snap.RowCount(shown) Then list.VirtualListSize = snap.RowCount(shown)
+            GrowColumns(list)
             list.Invalidate()
         ElseIf shown = _tables.Count Then
             If _linkList.VirtualListSize <> snap.LinkCount Then _linkList.VirtualListSize = snap.LinkCount
+            GrowColumns(_linkList)
             _linkList.Invalidate()
         End If
+        ' Two lines are kept for the totals whatever their length, so their growing never moves the tables.
         Dim totals = WrapTotals(snap.Totals, _totals.Width - S(8))
-        ' Totals that grew past one line (3141 collisions, 5.00×10⁵ J) get the second line the layout gave them no room for.
-        If totals.Contains(Environment.NewLine) AndAlso _totals.Height < 2 * LineHeight(_totals.Font) AndAlso IsHandleCreated Then
-            ArrangeControls()
-            TraceLayout()
-            Return
-        End If
         If totals <> _totals.Text Then _totals.Text = totals
         If _presenter.IsPaused Then _trace?.Invoke("totals " & totals.Replace(Environment.NewLine, " / "))
         _canvas.Invalidate()
@@ -653,6 +822,7 @@ Partial Friend NotInheritable Class MainForm
         _totals.BackColor = panel
         _totals.ForeColor = text
         _side.BackColor = panel
+        _sideView.BackColor = panel
         For Each c As Control In _side.Controls
             c.ForeColor = text
             If TypeOf c Is Button Then
@@ -662,12 +832,15 @@ Partial Friend NotInheritable Class MainForm
                 b.FlatAppearance.BorderColor = text
                 b.FlatAppearance.BorderSize = If(theme.IsHighContrast, 2, 1)
                 b.UseVisualStyleBackColor = Not theme.IsHighContrast
-            ElseIf TypeOf c Is TextBox Then
+            ElseIf TypeOf c Is TextBox AndAlso c IsNot _message Then
                 c.BackColor = ScenePainter.Rgb(theme.Field)
             ElseIf c IsNot _message Then
                 c.BackColor = panel
             End If
         Next
+        ' Mono paints the strip beside the tabs' headers in the tab control's own colour.
+        _tabs.BackColor = panel
+        _tabStripFill.BackColor = panel
         For Each page As TabPage In _tabs.TabPages
             page.BackColor = panel
             page.ForeColor = text
@@ -681,11 +854,15 @@ Partial Friend NotInheritable Class MainForm
     Protected Overrides Sub Dispose(disposing As Boolean)
         If disposing Then
             _timer.Dispose()
-            DisposeLessonControls()
-            DisposeGraphControls()
+            _lessonMenu?.Dispose()
+            _solverMenu?.Dispose()
+            _exportMenu?.Dispose()
+            _graphs?.Dispose()
+            _momentumBoxes?.Dispose()
+            _cells?.Dispose()
+            _time?.Dispose()
             _painter.Dispose()
-            _measure?.Dispose()
-            _measureBitmap?.Dispose()
+            _kit.Dispose()
         End If
         MyBase.Dispose(disposing)
     End Sub

@@ -82,9 +82,6 @@ Partial Friend NotInheritable Class ScenePainter
                 ' An outline in ink under the body's colour, so a pale ball's impulse still reads.
                 Arrow(g, FadedPen(theme.Ink, alpha, 6 * k), ax, ay, ax + CSng(m.Impulse.X) * ppu, ay - CSng(m.Impulse.Y) * ppu, k)
                 Arrow(g, FadedPen(colour, alpha, 3 * k), ax, ay, ax + CSng(m.Impulse.X) * ppu, ay - CSng(m.Impulse.Y) * ppu, k)
-                If alpha > 128 AndAlso p.Impulses.Marks.Count <= 8 Then
-                    DrawTag(g, "Δp", ax + CSng(m.Impulse.X) * ppu + 4 * k, ay - CSng(m.Impulse.Y) * ppu - _font.Height / 2.0F, theme, theme.Ink)
-                End If
             Next
         End If
         Dim summary = p.Momentum
@@ -95,7 +92,6 @@ Partial Friend NotInheritable Class ScenePainter
                 Dim pm = summary.Momentum
                 Dim tipX = cx + CSng(pm.X) * ppu, tipY = cy - CSng(pm.Y) * ppu
                 Arrow(g, PenOf(MomentumColour(theme), 5 * k), cx, cy, tipX, tipY, k)
-                DrawTag(g, "Σp", tipX + 4 * k, tipY - 4 * k - _font.Height, theme, MomentumColour(theme))
             End If
             If p.ShowCentreOfMass Then
                 ' Its velocity at the velocity arrows' scale, so it compares with theirs.
@@ -108,17 +104,9 @@ Partial Friend NotInheritable Class ScenePainter
                 g.FillPie(SolidOf(theme.Ink), cx - r, cy - r, 2 * r, 2 * r, 0, 90)
                 g.FillPie(SolidOf(theme.Ink), cx - r, cy - r, 2 * r, 2 * r, 180, 90)
                 g.DrawEllipse(PenOf(theme.Ink, 2 * k), cx - r, cy - r, 2 * r, 2 * r)
-                DrawTag(g, "CM", cx + r + 3 * k, cy + r, theme, theme.Ink)
             End If
         End If
         If p.ShowsMomentumArrows Then DrawMomentumPanel(g, p, theme, k, width, height)
-    End Sub
-
-    ''' <summary>A short label on a backing of the canvas colour, so it reads over anything.</summary>
-    Private Sub DrawTag(g As Graphics, text As String, x As Single, y As Single, theme As Theme, colour As Integer)
-        Dim sz = g.MeasureString(text, _font)
-        g.FillRectangle(SolidOf(theme.Background), x, y, sz.Width, sz.Height)
-        g.DrawString(text, _font, SolidOf(colour), x, y)
     End Sub
 
     ''' <summary>
@@ -133,11 +121,12 @@ Partial Friend NotInheritable Class ScenePainter
         Dim keyValue = p.MomentumArrows.LegendMomentum(room * 0.6)
         Dim keyText = Units.Quantity(keyValue, "kg·m/s")
         Dim title = If(p.ShowMomentaDiagram, "Momenta", "Momentum")
-        Dim textWidth = Math.Max(g.MeasureString(title, _font).Width, g.MeasureString(keyText, _font).Width + CSng(keyValue * ppu) + 6 * k)
-        Dim diagramSide = If(p.ShowMomentaDiagram, 1.25F * room, 0.0F)
-        Dim w = Math.Max(diagramSide, textWidth) + 2 * pad
+        ' In its own column right of the container (see MomentumPanelPixels), as wide as the column.
+        Dim column = CSng(p.MomentumPanelPixels)
+        Dim w = Math.Max(20 * k, column - 12 * k)
+        Dim diagramSide = If(p.ShowMomentaDiagram, Math.Min(1.25F * room, w - 2 * pad), 0.0F)
         Dim h = line + diagramSide + line + 3 * pad
-        Dim x0 = width - w - 6 * k, y0 = 6 * k
+        Dim x0 = width - column + 6 * k, y0 = 6 * k
         ' Opaque: a see-through panel costs a gas about a millisecond a frame in software (libgdiplus).
         g.FillRectangle(SolidOf(theme.Background), x0, y0, w, h)
         g.DrawRectangle(PenOf(theme.Grid, k), x0, y0, w, h)

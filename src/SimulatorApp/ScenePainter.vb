@@ -91,7 +91,6 @@ Partial Friend NotInheritable Class ScenePainter
             g.DrawLine(rampFill, CSng(a.X), CSng(a.Y), CSng(b.X), CSng(b.Y))
         Next
 
-        Dim labels = Not busy AndAlso world.Circles.Count <= 60
         For Each c In world.Circles
             Dim s = view.ToScreen(c.Position)
             Dim rad = Math.Max(MinBallPx * k, CSng(view.ToPixels(c.Radius)))
@@ -104,21 +103,13 @@ Partial Friend NotInheritable Class ScenePainter
                 g.DrawLine(ink, CSng(s.X) - arm, CSng(s.Y) - arm, CSng(s.X) + arm, CSng(s.Y) + arm)
                 g.DrawLine(ink, CSng(s.X) - arm, CSng(s.Y) + arm, CSng(s.X) + arm, CSng(s.Y) - arm)
             End If
-            If labels Then DrawLabel(g, c.Id, CSng(s.X), CSng(s.Y), rad, theme)
         Next
-
-        If labels Then
-            For Each b In world.Bodies
-                If b.Kind = ShapeKind.Circle OrElse b.Kind = ShapeKind.Segment OrElse (b.IsFixed AndAlso b.Kind = ShapeKind.Rectangle) Then Continue For
-                Dim s = view.ToScreen(b.CentreOfMass)
-                Dim half = CSng(view.ToPixels(Math.Min(b.BoundsMax.X - b.BoundsMin.X, b.BoundsMax.Y - b.BoundsMin.Y) / 2))
-                DrawLabel(g, b.Id, CSng(s.X), CSng(s.Y), half, theme, b.IsFixed)
-            Next
-        End If
 
         DrawLinks(g, world, view, theme, k)
         If p.ShowArrows AndAlso Not busy Then DrawArrows(g, p, view, theme, k)
         DrawMomentumViews(g, p, view, theme, k, width, height)
+        ' Every label last, where the layout put it: over the links and arrows, never over a body or another label.
+        If Not busy Then DrawLabels(g, p, theme, width, height)
 
         Dim carried = p.DraggedBody
         If carried IsNot Nothing Then
@@ -140,22 +131,35 @@ Partial Friend NotInheritable Class ScenePainter
 
         DrawDraft(g, p, view, outline, theme, k)
         DrawCue(g, p, view, theme, k)
+        DrawArrowDrag(g, p, view, theme, k)
         g.ResetClip()
-        DrawScaleBar(g, p, view, theme, height, k)
-        DrawBanner(g, p, theme, width, height)
+        Dim keyEnd = DrawScaleBar(g, p, view, theme, height, k)
+        DrawBanner(g, p, theme, width, height, keyEnd, k)
     End Sub
 
-    ''' <summary>The id inside the ball when it fits there, else just above and to the right of it, on a backing so it reads over anything.</summary>
-    Private Sub DrawLabel(g As Graphics, id As String, x As Single, y As Single, rad As Single, theme As Theme, Optional onFixedColour As Boolean = False)
-        Dim sz = g.MeasureString(id, _font)
-        If sz.Width < 2 * rad - 2 AndAlso sz.Height < 2 * rad Then
-            ' On the fixed colour (light grey in the dark theme) the canvas colour reads better than white.
-            g.DrawString(id, _font, SolidOf(If(onFixedColour, theme.Background, &HFFFFFF)), x - sz.Width / 2, y - sz.Height / 2)
-            Return
-        End If
-        Dim lx = x + rad * 0.7F, ly = y - rad * 0.7F - sz.Height
-        g.FillRectangle(SolidOf(theme.Background, 200), lx, ly, sz.Width, sz.Height)
-        g.DrawString(id, _font, SolidOf(theme.Ink), lx, ly)
+    ''' <summary>
+    ''' The labels where the layout placed them (see <see cref="CanvasLabelLayout"/>): an id inside its
+    ''' ball in white (the canvas colour on the fixed grey), every other label on a backing of the
+    ''' canvas colour, in ink, Σp in the momentum colour.
+    ''' </summary>
+    Private Sub DrawLabels(g As Graphics, p As SimulationPresenter, theme As Theme, width As Integer, height As Integer)
+        Dim measure = Function(text As String) As (Width As Double, Height As Double)
+                          Dim sz = g.MeasureString(text, _font)
+                          Return (sz.Width, sz.Height)
+                      End Function
+        For Each placed In p.LayOutLabels(measure, width, height)
+            Dim b = placed.Box
+            If placed.Inside Then
+                ' Dark or light by the colour under it, so an id reads on a yellow ball as on a blue one.
+                Dim onFixed = placed.Body IsNot Nothing AndAlso placed.Body.IsFixed AndAlso placed.Body.Kind <> ShapeKind.Circle
+                Dim under = If(onFixed, theme.Fixed, BodyColours.Parse(placed.Body?.Color, &H808080))
+                g.DrawString(placed.Text, _font, SolidOf(If(BodyColours.Luminance(under) > 0.45, &H101010, &HFFFFFF)), CSng(b.X), CSng(b.Y))
+                Continue For
+            End If
+            Dim colour = If(placed.Kind = CanvasLabelKind.TotalMomentum, MomentumColour(theme), theme.Ink)
+            g.FillRectangle(SolidOf(theme.Background, 220), CSng(b.X), CSng(b.Y), CSng(b.Width), CSng(b.Height))
+            g.DrawString(placed.Text, _font, SolidOf(colour), CSng(b.X), CSng(b.Y))
+        Next
     End Sub
 
     ''' <summary>A list of model points as canvas points.</summary>
@@ -306,11 +310,29 @@ Partial Friend NotInheritable Class ScenePainter
         g.DrawString(label, _font, SolidOf(theme.Ink), lx, ly)
     End Sub
 
-    ''' <summary>In the strip under the container: the scale bar, then the arrows' key (a round speed drawn at the arrows' scale).</summary>
-    Private Sub DrawScaleBar(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, height As Integer, k As Single)
+    ''' <summary>While a velocity arrow is dragged by its tip: a ring on the tip, and the velocity it sets beside it.</summary>
+    Private Sub DrawArrowDrag(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
+        Dim b = p.ArrowBody
+        If b Is Nothing Then Return
+        Dim tip = view.ToScreen(b.CentreOfMass + b.Velocity * p.Arrows.Seconds)
+        Dim r = 7 * k
+        g.DrawEllipse(PenOf(theme.Cue, 2 * k), CSng(tip.X) - r, CSng(tip.Y) - r, 2 * r, 2 * r)
+        Dim label = p.ArrowLabel
+        Dim sz = g.MeasureString(label, _font)
+        ' Beside the tip, kept on the canvas.
+        Dim bounds = g.VisibleClipBounds
+        Dim lx = Math.Max(bounds.Left + 2, Math.Min(CSng(tip.X) + 12 * k, bounds.Right - sz.Width - 2))
+        Dim ly = Math.Max(bounds.Top + 2, Math.Min(CSng(tip.Y) + 10 * k, bounds.Bottom - sz.Height - 2))
+        g.FillRectangle(SolidOf(theme.Background, 220), lx - 2, ly - 2, sz.Width + 4, sz.Height + 4)
+        g.DrawString(label, _font, SolidOf(theme.Ink), lx, ly)
+    End Sub
+
+    ''' <summary>In the strip under the container: the scale bar, then the arrows' key (a round speed drawn at the arrows' scale); returns where they end on the right, px (0 when nothing was drawn).</summary>
+    Private Function DrawScaleBar(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, height As Integer, k As Single) As Single
         Dim bar = ScaleBar.Choose(view.Scale, 160 * k)
-        If bar.Pixels <= 0 Then Return
-        Dim x0 = CSng(Math.Max(16 * k, view.OffsetX)), y0 = height - p.ScaleStripPixels / 2.0F
+        If bar.Pixels <= 0 Then Return 0
+        ' Under the container's left edge, or the canvas's left margin when that edge is off to one side (zoomed in).
+        Dim x0 = CSng(If(view.OffsetX >= 16 * k AndAlso view.OffsetX <= g.VisibleClipBounds.Width / 3, view.OffsetX, 16 * k)), y0 = height - p.ScaleStripPixels / 2.0F
         Dim x1 = x0 + CSng(bar.Pixels)
         Dim pen = PenOf(theme.Ink, 3 * k)
         g.DrawLine(pen, x0, y0, x1, y0)
@@ -318,18 +340,22 @@ Partial Friend NotInheritable Class ScenePainter
         g.DrawLine(pen, x1, y0 - 6 * k, x1, y0 + 6 * k)
         Dim label = bar.Label
         g.DrawString(label, _font, SolidOf(theme.Ink), x1 + 8 * k, y0 - _font.Height / 2.0F)
-        If Not p.ShowArrows Then Return
+        Dim barEnd = x1 + 8 * k + g.MeasureString(label, _font).Width
+        If Not p.ShowArrows Then Return barEnd
         ' The key: "→ 2 m/s", the arrow as long as a 2 m/s ball's.
-        Dim keyX = x1 + 8 * k + g.MeasureString(label, _font).Width + 24 * k
+        Dim keyX = barEnd + 24 * k
         Dim pxPerMps = view.ToPixels(p.Arrows.Seconds)
         Dim speed = p.Arrows.LegendSpeed(view.Scale, 90 * k)
-        If speed <= 0 Then Return
+        If speed <= 0 Then Return barEnd
         Dim len = CSng(speed * pxPerMps)
         Arrow(g, PenOf(theme.Arrow, 3 * k), keyX, y0, keyX + len, y0, k)
-        g.DrawString("velocity " & Units.Quantity(speed, "m/s"), _font, SolidOf(theme.Ink), keyX + len + 6 * k, y0 - _font.Height / 2.0F)
-    End Sub
+        Dim keyText = "velocity " & Units.Quantity(speed, "m/s")
+        g.DrawString(keyText, _font, SolidOf(theme.Ink), keyX + len + 6 * k, y0 - _font.Height / 2.0F)
+        Return keyX + len + 6 * k + g.MeasureString(keyText, _font).Width
+    End Function
 
-    Private Sub DrawBanner(g As Graphics, p As SimulationPresenter, theme As Theme, width As Integer, height As Integer)
+    ''' <summary>The state in words (PAUSED, a tool's hint) in the strip, right of the scale bar and the key (which end at <paramref name="keyEnd"/> px): in the big font when it fits there, else the normal one, else on the canvas's top left.</summary>
+    Private Sub DrawBanner(g As Graphics, p As SimulationPresenter, theme As Theme, width As Integer, height As Integer, keyEnd As Single, k As Single)
         Dim text As String = Nothing
         Dim colour = theme.Ink
         If p.Mode = ClickMode.Delete Then
@@ -353,10 +379,20 @@ Partial Friend NotInheritable Class ScenePainter
             text = "no walls: balls can leave the box"
         End If
         If text Is Nothing Then Return
-        ' In the strip under the container, on the right (the scale bar and the arrows' key are on the left).
-        Dim sz = g.MeasureString(text, _bigFont)
-        Dim x = Math.Max(width * 0.5F, width - sz.Width - 16), y = height - p.ScaleStripPixels / 2.0F - sz.Height / 2
-        g.DrawString(text, _bigFont, SolidOf(colour), x, y)
+        ' In the strip under the container, on the right (the scale bar and the arrows' key are on the left),
+        ' never over the key nor cut by the canvas's edge.
+        For Each font In {_bigFont, _font}
+            Dim sz = g.MeasureString(text, font)
+            Dim x = width - sz.Width - 16 * k
+            If x >= keyEnd + 12 * k Then
+                g.DrawString(text, font, SolidOf(colour), x, height - p.ScaleStripPixels / 2.0F - sz.Height / 2)
+                Return
+            End If
+        Next
+        ' No room in the strip: on a backing at the canvas's top left.
+        Dim small = g.MeasureString(text, _font)
+        g.FillRectangle(SolidOf(theme.Background, 220), 6 * k, 6 * k, small.Width, small.Height)
+        g.DrawString(text, _font, SolidOf(colour), 6 * k, 6 * k)
     End Sub
 
     ''' <summary>An arrow as one polyline (shaft, then the two strokes of the head), so GDI+ strokes it in one call.</summary>

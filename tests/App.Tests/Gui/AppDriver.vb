@@ -98,6 +98,12 @@ Public NotInheritable Class AppDriver
         Return (c.X + CInt(Math.Round(_originX + worldX * _scale)), c.Y + CInt(Math.Round(_originY - worldY * _scale)))
     End Function
 
+    ''' <summary>The model point (m) at a screen pixel of the canvas, by the last view the app printed.</summary>
+    Public Function ToWorld(screenX As Integer, screenY As Integer) As (X As Double, Y As Double)
+        Dim c = Control("canvas")
+        Return ((screenX - c.X - _originX) / _scale, (_originY - (screenY - c.Y)) / _scale)
+    End Function
+
     ''' <summary>Pixels per metre on the canvas.</summary>
     Public ReadOnly Property Scale As Double
         Get
@@ -132,7 +138,9 @@ Public NotInheritable Class AppDriver
             Dim from = Mark()
             MoveTo(side.X + side.W \ 2, side.Y + side.H \ 2)
             X.XDo("click", wheel)
-            WaitFor("^ready$", skip:=from)
+            ' The app acknowledges each turn once it has handled it (after the new layout, when the panel
+            ' moved): any other layout line (a message, a theme) says nothing about this turn.
+            WaitFor("^wheel side ", skip:=from)
             r = Control(name)
         Next
         Return r
@@ -312,6 +320,18 @@ Public NotInheritable Class AppDriver
             Thread.Sleep(100)
         Loop
     End Function
+
+    ''' <summary>Waits until <paramref name="count"/> stdout lines after the first <paramref name="skip"/> match the pattern (the app acknowledged that many actions).</summary>
+    Public Sub WaitForCount(pattern As String, count As Integer, skip As Integer)
+        Dim sw = Diagnostics.Stopwatch.StartNew()
+        Dim re As New Regex(pattern)
+        Do
+            Dim seen = Lines().Skip(skip).Count(Function(l) re.IsMatch(l))
+            If seen >= count Then Return
+            If sw.Elapsed.TotalSeconds > 8 Then Throw New TimeoutException($"{seen} of {count} trace lines matching /{pattern}/ within 8 s" & vbLf & X.AppOutput())
+            Thread.Sleep(100)
+        Loop
+    End Sub
 
     ''' <summary>How many stdout lines there are now (to wait only for what comes next).</summary>
     Public Function Mark() As Integer

@@ -1,4 +1,5 @@
 Option Strict On
+Imports System.Text.RegularExpressions
 Imports System.Threading
 Imports Xunit
 
@@ -271,14 +272,56 @@ Public Class ClassroomGuiTests
         End Try
     End Sub
 
-    <GuiFact>
-    Public Sub HelpButtons_OpenTheTutorialAndTheMathsWindows()
-        Using app As New AppDriver()
-            app.ClickAndWait("tutorial", "^help Tutorial$")
-            app.WaitForWindow("^Tutorial")
-            app.ClickAndWait("maths", "^help Maths used$")
-            app.WaitForWindow("^Maths used")
+    ''' <summary>
+    ''' The Tutorial, the Maths used and the graph's own window open from their buttons, every page
+    ''' title shows whole in the list (at 192 dpi with large fonts too), and Esc closes each of them.
+    ''' </summary>
+    <GuiTheory>
+    <InlineData(0, False)>
+    <InlineData(192, True)>
+    Public Sub HelpAndGraphWindows_OpenWithTitlesWhole_AndEscClosesEach(dpi As Integer, large As Boolean)
+        Using app As New AppDriver(New XSessionOptions With {.Screen = If(dpi > 0, "2560x1600x24", "1400x900x24"), .Dpi = dpi})
+            If large Then
+                Dim mark = app.Mark()
+                app.Click("large-fonts")
+                app.WaitFor("^large fonts on$", skip:=mark)
+                app.WaitFor("^ready$", skip:=mark)
+            End If
+            For Each help In {("tutorial", "Tutorial"), ("maths", "Maths used")}
+                Dim from = app.Mark()
+                app.ClickAndWait(help.Item1, "^help " & help.Item2 & "$")
+                Dim id = app.WaitForWindow("^" & help.Item2)
+                app.WaitFor("^help page ", skip:=from)
+                Dim titles = app.Lines().Skip(from).Select(Function(l) Regex.Match(l, "^help title (\d+) row (\d+) needs (\d+) width \d+ (.*)$")).Where(Function(m) m.Success).ToList()
+                Assert.True(titles.Count >= 7, help.Item2 & " lists no titles")
+                For Each t In titles
+                    Assert.True(CInt(t.Groups(2).Value) >= CInt(t.Groups(3).Value), $"'{t.Groups(4).Value}' needs {t.Groups(3).Value} px in the list and has {t.Groups(2).Value}")
+                Next
+                CloseWithEsc(app, id, "^help closed " & help.Item2 & " ")
+            Next
+            ' The graph's window.
+            Dim mark2 = app.Mark()
+            app.Click("tab-graphs")
+            app.WaitFor("^tab Graphs$", skip:=mark2)
+            app.WaitFor("^ready$", skip:=mark2)
+            app.ReadLayout()
+            mark2 = app.Mark()
+            app.Click("graph-window")
+            app.WaitFor("^graph window shown ", timeout:=TimeSpan.FromSeconds(15), skip:=mark2)
+            CloseWithEsc(app, app.WaitForWindow("^Graph "), "^graph window closed$")
             Assert.True(app.X.AppIsRunning)
         End Using
+    End Sub
+
+    ''' <summary>Clicks into the window <paramref name="id"/> (so it has the keyboard), presses Esc and waits for the trace line that it closed.</summary>
+    Private Shared Sub CloseWithEsc(app As AppDriver, id As String, closed As String)
+        Dim geometry = app.X.Tool("xdotool", "getwindowgeometry", id).StdOut
+        Dim m = Regex.Match(geometry, "Position: (-?\d+),(-?\d+).*Geometry: (\d+)x(\d+)", RegexOptions.Singleline)
+        Assert.True(m.Success, geometry)
+        Dim x = CInt(m.Groups(1).Value) + CInt(m.Groups(3).Value) * 2 \ 3, y = CInt(m.Groups(2).Value) + CInt(m.Groups(4).Value) \ 2
+        Dim from = app.Mark()
+        app.ClickAt(x, y)
+        app.X.XDo("key", "Escape")
+        app.WaitFor(closed, skip:=from)
     End Sub
 End Class

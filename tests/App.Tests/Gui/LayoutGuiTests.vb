@@ -11,35 +11,96 @@ Public Class LayoutGuiTests
     Private Shared ReadOnly LineBreak As String() = {" / "}
     Private Shared ReadOnly ItemGap As String() = {"     "}
 
+    Private Shared ReadOnly Sized As String() = {"canvas", "totals", "tabs", "side", "message", "graph"}
+
+    ''' <summary>The rectangles of the last layout the app printed, by control name (table cells left out: they follow the rows).</summary>
+    Private Shared Function Rects(app As AppDriver) As Dictionary(Of String, (X As Integer, Y As Integer, W As Integer, H As Integer))
+        Dim result As New Dictionary(Of String, (X As Integer, Y As Integer, W As Integer, H As Integer))(StringComparer.Ordinal)
+        For Each line In app.LastLayout()
+            Dim m = Regex.Match(line, "^control (\S+) (-?\d+) (-?\d+) (\d+) (\d+) (fits|cut)$")
+            If Not m.Success OrElse m.Groups(1).Value.StartsWith("cell-", StringComparison.Ordinal) Then Continue For
+            result(m.Groups(1).Value) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value), Int(m.Groups(4).Value), Int(m.Groups(5).Value))
+        Next
+        Return result
+    End Function
+
+    ''' <summary>The panel's scroll, px, at the last layout.</summary>
+    Private Shared Function Scrolled(app As AppDriver) As Integer
+        Return Int(app.LastMatch("^text line \d+ px, scroll bar \d+ px, panel overflow \d+ px, scrolled (\d+) px$").Groups(1).Value)
+    End Function
+
+    ''' <summary>
+    ''' The window on the screens a classroom has: small laptops, projectors at 1280 × 800 with large
+    ''' fonts and high contrast, 144- and 192-dpi screens. Every control is on the screen, its caption
+    ''' whole, at least as tall as a line of text (a check box's box and a slider's thumb grow with the
+    ''' text too); with normal fonts every control of the side panel shows without scrolling, and with
+    ''' large fonts any below the fold is reached with the wheel. Then messages of every length come
+    ''' and go while time runs (the totals changing): no control moves by a pixel.
+    ''' </summary>
     <GuiTheory>
-    <InlineData("1024x768x24", 0, "layout-1024x768")>
-    <InlineData("1280x720x24", 0, "layout-1280x720")>
-    <InlineData("2560x1600x24", 192, "layout-192dpi")>
-    Public Sub EveryControlIsOnScreen_WholeAndReadable(screen As String, dpi As Integer, shotName As String)
+    <InlineData("1024x768x24", 0, False, False, "layout-1024x768")>
+    <InlineData("1280x720x24", 0, False, False, "layout-1280x720")>
+    <InlineData("1024x768x24", 0, True, True, "layout-1024x768-large-contrast")>
+    <InlineData("1280x800x24", 0, True, True, "layout-1280x800-large-contrast")>
+    <InlineData("1920x1200x24", 144, False, False, "layout-144dpi")>
+    <InlineData("2560x1600x24", 192, False, False, "layout-192dpi")>
+    <InlineData("2560x1600x24", 192, True, True, "layout-192dpi-large-contrast")>
+    Public Sub EveryControlIsOnScreen_AsLargeAsItsText_AndNothingMovesWhenAMessageChanges(screen As String, dpi As Integer, large As Boolean, contrast As Boolean, shotName As String)
         Dim size = screen.Split("x"c)
         Dim screenW = Integer.Parse(size(0), CultureInfo.InvariantCulture), screenH = Integer.Parse(size(1), CultureInfo.InvariantCulture)
         Using app As New AppDriver(New XSessionOptions With {.Screen = screen, .Dpi = dpi})
+            If dpi > 0 Then app.WaitFor("^dpi " & dpi & " ")
+            For Each toggle In {(large, "large-fonts", "large fonts"), (contrast, "high-contrast", "high contrast")}
+                If Not toggle.Item1 Then Continue For
+                Dim mark = app.Mark()
+                app.Click(toggle.Item2)
+                app.WaitFor("^" & toggle.Item3 & " on$", skip:=mark)
+                app.WaitFor("^ready$", skip:=mark)
+            Next
             Dim window = app.LastMatch("^window (-?\d+) (-?\d+) (\d+) (\d+)$")
             Dim wx = Int(window.Groups(1).Value), wy = Int(window.Groups(2).Value), ww = Int(window.Groups(3).Value), wh = Int(window.Groups(4).Value)
             Assert.True(wx >= 0 AndAlso wy >= 0 AndAlso wx + ww <= screenW AndAlso wy + wh <= screenH, $"the window ({wx}, {wy}, {ww} × {wh}) does not fit the {screenW} × {screenH} screen")
+            Dim line = Int(app.LastMatch("^text line (\d+) px").Groups(1).Value)
+            Dim overflow = Int(app.LastMatch("panel overflow (\d+) px").Groups(1).Value)
+            If Not large Then Assert.True(overflow = 0, $"with normal fonts the side panel needs {overflow} px more than the {screen} screen has")
             Dim side = app.Control("side")
             Dim panel As New List(Of (Name As String, R As (X As Integer, Y As Integer, W As Integer, H As Integer)))
             Dim below As New List(Of String)
-            For Each line In app.LastLayout()
-                Dim m = Regex.Match(line, "^control (\S+) (-?\d+) (-?\d+) (\d+) (\d+) (fits|cut)$")
+            For Each line2 In app.LastLayout()
+                Dim m = Regex.Match(line2, "^control (\S+) (-?\d+) (-?\d+) (\d+) (\d+) (fits|cut)$")
                 Dim name = m.Groups(1).Value
                 Dim r = (X:=Int(m.Groups(2).Value), Y:=Int(m.Groups(3).Value), W:=Int(m.Groups(4).Value), H:=Int(m.Groups(5).Value))
-                ' A side panel too full for the screen scrolls: what is below its visible part is reached by scrolling (checked below).
-                If name <> "side" AndAlso r.X >= side.X AndAlso r.Y >= side.Y AndAlso r.Y + r.H > side.Y + side.H Then
+                ' A table's cells are where its columns put them: a wide table scrolls sideways, and the cells past its edge are hidden, not on the panel.
+                If name.StartsWith("cell-", StringComparison.Ordinal) Then Continue For
+                ' Scrolled out of the panel's visible part (above or below): reached by scrolling, checked below.
+                If name <> "side" AndAlso r.X >= side.X AndAlso (r.Y < side.Y OrElse r.Y + r.H > side.Y + side.H) Then
                     below.Add(name)
                     Continue For
                 End If
                 Assert.True(r.X >= wx AndAlso r.Y >= wy AndAlso r.X + r.W <= wx + ww AndAlso r.Y + r.H <= wy + wh, $"{name} at ({r.X}, {r.Y}, {r.W} × {r.H}) is outside the window")
                 Assert.True(m.Groups(6).Value = "fits", $"{name}'s caption is cut off ({r.W} px wide)")
+                ' Every control is at least as tall as a line of its text (a table's cells follow its rows).
+                If Not Sized.Contains(name) AndAlso Not name.StartsWith("cell-", StringComparison.Ordinal) Then
+                    Assert.True(r.H >= line, $"{name} is {r.H} px high, less than a line of text ({line} px)")
+                End If
                 If name <> "side" AndAlso r.X >= side.X Then
-                    ' On the side panel: in its visible part, with no scrolling needed.
                     Assert.True(r.Y >= side.Y AndAlso r.Y + r.H <= side.Y + side.H AndAlso r.X + r.W <= side.X + side.W, $"{name} is off the visible side panel")
                     panel.Add((name, r))
+                End If
+            Next
+            ' A check box's box and a slider's thumb grow with the text, not only the control around them.
+            Dim all = app.Lines()
+            Dim lastReady = Array.LastIndexOf(all, "ready")
+            Dim previousReady = Array.LastIndexOf(all, "ready", lastReady - 1)
+            Dim block = all.Skip(previousReady + 1).Take(lastReady - previousReady - 1)
+            Dim parts = block.Select(Function(l) Regex.Match(l, "^part (\S+) (box|thumb) (\d+) (\d+)$")).Where(Function(x) x.Success).ToList()
+            Assert.True(parts.Count >= 10, "the layout names no check box or slider parts")
+            For Each m In parts
+                Dim w = Int(m.Groups(3).Value), h = Int(m.Groups(4).Value)
+                If m.Groups(2).Value = "box" Then
+                    Assert.True(w >= 0.6 * line, $"{m.Groups(1).Value}'s box is {w} px, beside text {line} px high")
+                Else
+                    Assert.True(w >= 0.45 * line AndAlso h >= 0.6 * line, $"{m.Groups(1).Value}'s thumb is {w} × {h} px, beside text {line} px high")
                 End If
             Next
             For i = 0 To panel.Count - 1
@@ -49,29 +110,52 @@ Public Class LayoutGuiTests
                     Assert.True(apart, $"{panel(i).Name} and {panel(j).Name} overlap")
                 Next
             Next
-            If below.Count > 0 Then
-                ' Mono sends the mouse wheel to the focused control, which passes it to its panel: a box on
-                ' the panel takes the focus first (ticked and cleared again, so nothing changes).
-                app.ClickAndWait("fixed", "^inputs ")
-                app.ClickAndWait("fixed", "^inputs ")
-            End If
             For Each name In below
                 Dim r = app.ScrollIntoView(name)
                 side = app.Control("side")
                 Assert.True(r.Y >= side.Y AndAlso r.Y + r.H <= side.Y + side.H, $"{name} cannot be scrolled into view ({r.Y}, panel {side.Y} to {side.Y + side.H})")
                 Assert.True(app.LastLayout().Any(Function(l) l.StartsWith("control " & name & " ", StringComparison.Ordinal) AndAlso l.EndsWith(" fits", StringComparison.Ordinal)), $"{name}'s caption is cut off")
             Next
-            If dpi > 0 Then
-                app.WaitFor("^dpi " & dpi & " ")
-                Dim pause = app.Control("pause")
-                Assert.True(pause.H >= 2 * 26, $"at {dpi} dpi the buttons are {pause.H} px high: not scaled")
-            End If
+
+            ' Messages of every length, time running: every control stays where it was (the side panel's
+            ' controls where they were in the panel, whatever it is scrolled to).
+            Dim before = Rects(app)
+            Dim beforeScroll = Scrolled(app)
+            Dim longest = 0
+            For Each act In {"delete-mode", "delete-mode", "long", "delete-mode", "delete-mode"}
+                Dim mark = app.Mark()
+                If act = "long" Then
+                    app.TypeInto("box-width", "0.5.5.5.5.5.5.5.5.5.5.5.5.5.5.5.5.5.5.5")
+                    app.TypeInto("box-height", "4.4.4.4.4.4.4.4.4.4.4.4.4.4.4.4.4.4.4.4")
+                    mark = app.Mark()
+                    app.Click("resize")
+                Else
+                    app.Click(act)
+                End If
+                Dim shown = app.WaitFor("^message shown (\d+) px, needs (\d+) px", skip:=mark)
+                app.WaitFor("^ready$", skip:=mark)
+                longest = Math.Max(longest, Int(shown.Groups(2).Value))
+                Dim after = Rects(app)
+                Dim shift = Scrolled(app) - beforeScroll
+                For Each kv In before
+                    Dim now As (X As Integer, Y As Integer, W As Integer, H As Integer) = Nothing
+                    If Not after.TryGetValue(kv.Key, now) Then Continue For
+                    Dim onPanel = kv.Value.X >= side.X AndAlso kv.Key <> "side"
+                    Dim expectedY = kv.Value.Y - If(onPanel, shift, 0)
+                    Assert.True(now.X = kv.Value.X AndAlso now.Y = expectedY AndAlso now.W = kv.Value.W AndAlso now.H = kv.Value.H,
+                                $"{kv.Key} moved from ({kv.Value.X}, {expectedY}, {kv.Value.W} × {kv.Value.H}) to ({now.X}, {now.Y}, {now.W} × {now.H}) after '{act}'")
+                Next
+            Next
+            Dim area = before("message")
+            Assert.True(longest > area.H, $"the longest message needed {longest} px, no more than the area's {area.H} px: it did not test scrolling")
+            app.LastMatch("^message shown \d+ px, needs \d+ px, scrolls$")
+
             ' The totals line breaks only between its items, never inside "18.6 J".
             Dim from = app.Mark()
             app.ClickAndWait("pause", "^paused")
             Dim totals = app.WaitFor("^totals (.*)$", skip:=from).Groups(1).Value
-            For Each line In totals.Split(LineBreak, StringSplitOptions.None)
-                For Each item In line.Split(ItemGap, StringSplitOptions.RemoveEmptyEntries)
+            For Each totalsLine In totals.Split(LineBreak, StringSplitOptions.None)
+                For Each item In totalsLine.Split(ItemGap, StringSplitOptions.RemoveEmptyEntries)
                     Assert.DoesNotContain(" ", item, StringComparison.Ordinal)
                     Assert.Contains(item.Split(Presentation.Units.Nbsp)(0), TotalsItems)
                 Next
@@ -91,15 +175,15 @@ Public Class LayoutGuiTests
             app.ReadLayout()
             Dim side = app.Control("side")
             Dim top = app.Control("arrows").Y
-            ' With large fonts at 720 px the panel scrolls: scroll it with the wheel.
+            ' With large fonts at 720 px the panel scrolls: scroll it with the wheel, over the panel, with
+            ' the keyboard's focus wherever it is (Mono would send the wheel to the focused control).
             from = app.Mark()
             app.MoveTo(side.X + side.W \ 2, side.Y + side.H \ 2)
             For k = 1 To 8
                 app.X.XDo("click", "5")
-                Thread.Sleep(100)
             Next
-            app.WaitFor("^ready$", skip:=from)
-            Thread.Sleep(300)
+            ' Each turn is acknowledged once the app has handled it: wait for all eight, not for time.
+            app.WaitForCount("^wheel side ", 8, from)
             app.ReadLayout()
             Dim scrolled = app.Control("arrows").Y
             Assert.True(scrolled < top - 50, $"the panel did not scroll ({top} → {scrolled})")
@@ -113,6 +197,55 @@ Public Class LayoutGuiTests
             Next
             app.X.Shoot("scrolled-panel")
         End Using
+    End Sub
+
+    ''' <summary>
+    ''' The Bodies table with every kind of body (a 12-sided polygon of small sides, a ramp, boxes),
+    ''' with large fonts: every column is as wide as its header and its values need, the Size
+    ''' column too, and the tables have room for more than two rows.
+    ''' </summary>
+    <GuiFact>
+    Public Sub TheBodiesTable_GivesEveryColumnRoomForItsValues_WithLargeFonts()
+        Dim folder = IO.Path.Combine(IO.Path.GetTempPath(), "gui-columns-" & Guid.NewGuid().ToString("N"))
+        IO.Directory.CreateDirectory(folder)
+        Dim scene = IO.Path.Combine(folder, "kinds.json")
+        Dim corners = String.Join(", ", Enumerable.Range(0, 12).Select(Function(k) "[" & (4 + 0.0123 * Math.Cos(k * Math.PI / 6)).ToString("R", CultureInfo.InvariantCulture) & ", " &
+                                                                                          (3 + 0.0123 * Math.Sin(k * Math.PI / 6)).ToString("R", CultureInfo.InvariantCulture) & "]"))
+        IO.File.WriteAllText(scene, "{""format"":""physics-scene/1"",""world"":{""width"":8,""height"":5,""gravity"":0},""bodies"":[" &
+            "{""id"":""dodecagon"",""type"":""polygon"",""vertices"":[" & corners & "],""mass"":1.0}," &
+            "{""id"":""slope"",""type"":""segment"",""x1"":1,""y1"":0.5,""x2"":3.123456,""y2"":1.5}," &
+            "{""id"":""crate"",""type"":""rectangle"",""x"":5,""y"":0,""width"":1.23456,""height"":0.987654,""fixed"":false,""mass"":2.5,""vx"":-1.5}," &
+            "{""id"":""table"",""type"":""rectangle"",""x"":6.5,""y"":0,""width"":1,""height"":0.5,""fixed"":true}," &
+            "{""id"":""ball"",""type"":""circle"",""x"":2,""y"":3,""radius"":0.25,""mass"":1,""vx"":-12.345678}]}")
+        Try
+            Using app As New AppDriver(New XSessionOptions With {.Screen = "1280x800x24"}, scene)
+                app.WaitFor("^opened kinds.json: 5 bodies")
+                Dim from = app.Mark()
+                app.Click("large-fonts")
+                app.WaitFor("^large fonts on$", skip:=from)
+                app.WaitFor("^ready$", skip:=from)
+                from = app.Mark()
+                app.Click("tab-bodies")
+                app.WaitFor("^tab Bodies$", skip:=from)
+                app.WaitFor("^row Bodies 4: ", skip:=from)
+                Thread.Sleep(700)
+                Dim widths As New Dictionary(Of Integer, (Width As Integer, Needs As Integer))
+                For Each line In app.Lines()
+                    Dim m = Regex.Match(line, "^column Bodies (\d+) width (\d+) needs (\d+)$")
+                    If m.Success Then widths(Int(m.Groups(1).Value)) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value))
+                Next
+                Assert.Equal(10, widths.Count)
+                For Each kv In widths
+                    Assert.True(kv.Value.Width >= kv.Value.Needs, $"column {kv.Key} of the Bodies table is {kv.Value.Width} px wide; its header and values need {kv.Value.Needs} px")
+                Next
+                ' The Size column's widest value is the polygon's: "12 sides, 0.0246 × 0.0238" is longer than the typical value it started from.
+                Dim size = app.LastMatch("^row Bodies \d+: dodecagon \| .* \| (12 sides, [^|]+)$").Groups(1).Value
+                Assert.StartsWith("12 sides, ", size, StringComparison.Ordinal)
+                app.X.Shoot("bodies-table-large")
+            End Using
+        Finally
+            IO.Directory.Delete(folder, True)
+        End Try
     End Sub
 
     Private Shared Function Int(text As String) As Integer

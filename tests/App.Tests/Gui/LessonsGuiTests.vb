@@ -11,8 +11,11 @@ Imports Xunit
 ''' </summary>
 <Collection(RealWindow.Name)>
 Public Class LessonsGuiTests
-    ''' <summary>Drops the Scenes menu down (with the mouse, or its key) and returns where each lesson's item is on the screen, by file name.</summary>
-    Private Shared Function OpenMenu(app As AppDriver, Optional withKey As Boolean = False) As Dictionary(Of String, (X As Integer, Y As Integer, W As Integer, H As Integer))
+    ''' <summary>
+    ''' Drops the Scenes menu down (with the mouse, or its key) and returns, for each lesson's file, the
+    ''' topic that holds it and where that topic's item is on the screen. The menu must be on the screen.
+    ''' </summary>
+    Private Shared Function OpenMenu(app As AppDriver, Optional withKey As Boolean = False) As Dictionary(Of String, (Topic As Integer, X As Integer, Y As Integer, W As Integer, H As Integer))
         ' A click or key that reaches the window while a frame is being worked out can be lost on a
         ' loaded machine under Mono: it is given again (three times in all) if the menu does not come.
         Dim from = 0
@@ -31,23 +34,45 @@ Public Class LessonsGuiTests
             End Try
         Next
         Dim count = Integer.Parse(shown.Groups(1).Value, CultureInfo.InvariantCulture)
-        Dim items As New Dictionary(Of String, (X As Integer, Y As Integer, W As Integer, H As Integer))(StringComparer.Ordinal)
+        Dim topics As New Dictionary(Of Integer, (X As Integer, Y As Integer, W As Integer, H As Integer))
+        Dim items As New Dictionary(Of String, (Topic As Integer, X As Integer, Y As Integer, W As Integer, H As Integer))(StringComparer.Ordinal)
         For Each line In app.Lines().Skip(from)
-            Dim m = Regex.Match(line, "^lesson item (\d+) (-?\d+) (-?\d+) (\d+) (\d+) (\S+)$")
-            If m.Success Then items(m.Groups(6).Value) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value), Int(m.Groups(4).Value), Int(m.Groups(5).Value))
+            Dim m = Regex.Match(line, "^lesson topic (\d+) (-?\d+) (-?\d+) (\d+) (\d+) (.+)$")
+            If m.Success Then topics(Int(m.Groups(1).Value)) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value), Int(m.Groups(4).Value), Int(m.Groups(5).Value))
+            m = Regex.Match(line, "^lesson in (\d+) (\S+)$")
+            If m.Success Then
+                Dim t = topics(Int(m.Groups(1).Value))
+                items(m.Groups(2).Value) = (Int(m.Groups(1).Value), t.X, t.Y, t.W, t.H)
+            End If
         Next
         Assert.Equal(count, items.Count)
+        AssertOnScreen(app, app.WaitFor("^lesson menu at .*$", skip:=from).Value)
         Thread.Sleep(300)
         Return items
     End Function
 
-    ''' <summary>Opens a lesson from the menu with one click on its item, waits until it is on screen, and returns the message it shows.</summary>
+    ''' <summary>A menu's trace line ("lesson menu at X Y W H screen SW SH fits"): the whole menu on the screen, every line whole.</summary>
+    Private Shared Sub AssertOnScreen(app As AppDriver, line As String)
+        Dim m = Regex.Match(line, " at (-?\d+) (-?\d+) (\d+) (\d+) screen (\d+) (\d+) (fits|cut)$")
+        Assert.True(m.Success, line)
+        Dim x = Int(m.Groups(1).Value), y = Int(m.Groups(2).Value), w = Int(m.Groups(3).Value), h = Int(m.Groups(4).Value)
+        Assert.True(x >= 0 AndAlso y >= 0 AndAlso x + w <= Int(m.Groups(5).Value) AndAlso y + h <= Int(m.Groups(6).Value), "off the screen: " & line & vbLf & app.X.AppOutput())
+        Assert.True(m.Groups(7).Value = "fits", "a line is cut: " & line)
+    End Sub
+
+    ''' <summary>Opens a lesson from the menu: a click on its topic, one on the lesson; waits until it is on screen, and returns the message it shows.</summary>
     Private Shared Function OpenLesson(app As AppDriver, file As String) As String
         Dim items = OpenMenu(app)
         Assert.True(items.ContainsKey(file), file & " is not in the menu" & vbLf & app.X.AppOutput())
-        Dim r = items(file)
+        Dim topic = items(file)
         Dim from = app.Mark()
-        app.ClickAt(r.X + Math.Min(r.W \ 3, 150), r.Y + r.H \ 2)
+        app.ClickAt(topic.X + Math.Min(topic.W \ 3, 150), topic.Y + topic.H \ 2)
+        app.WaitFor("^lesson list shown " & topic.Topic & "$", skip:=from)
+        AssertOnScreen(app, app.WaitFor("^lesson list " & topic.Topic & " at .*$", skip:=from).Value)
+        Dim item = app.WaitFor("^lesson item \d+ (-?\d+) (-?\d+) (\d+) (\d+) " & Regex.Escape(file) & "$", skip:=from)
+        Thread.Sleep(300)
+        from = app.Mark()
+        app.ClickAt(Int(item.Groups(1).Value) + Math.Min(Int(item.Groups(3).Value) \ 3, 150), Int(item.Groups(2).Value) + Int(item.Groups(4).Value) \ 2)
         app.WaitFor("^lesson " & Regex.Escape(file) & ": ", skip:=from)
         ' The lesson's own message comes after the line that names it (Open's "Opened …" comes before).
         Dim lines = app.Lines()
@@ -160,14 +185,14 @@ Public Class LessonsGuiTests
             app.X.XDo("key", "ctrl+p")
             app.WaitFor("^resumed$", skip:=from)
             Assert.Equal("0.25", app.Inputs()("Radius"))
-            ' The menu without the mouse: its key, the arrow keys and Enter.
+            ' The menu without the mouse: its key, the arrow keys (down to the first topic, right into its
+            ' lessons, down to the second) and Enter.
             OpenMenu(app, withKey:=True)
             from = app.Mark()
-            app.X.XDo("key", "Down")
-            Thread.Sleep(200)
-            app.X.XDo("key", "Down")
-            Thread.Sleep(200)
-            app.X.XDo("key", "Return")
+            For Each key In {"Down", "Right", "Down", "Return"}
+                app.X.XDo("key", key)
+                Thread.Sleep(300)
+            Next
             app.WaitFor("^lesson head-on-inelastic.json: ", skip:=from)
             Assert.True(app.X.AppIsRunning, "the app died" & vbLf & app.X.AppOutput())
         End Using
@@ -190,8 +215,16 @@ Public Class LessonsGuiTests
             app.MoveTo(r.X + 60, r.Y + r.H \ 2) ' the item under the pointer is highlighted
             Thread.Sleep(300)
             ShootScreen(app, "lesson-menu-large-high-contrast")
-            app.X.XDo("key", "Escape")
-            app.WaitFor("^lesson menu closed$")
+            ' Esc closes the topic's list under the pointer, then the menu.
+            Dim mark = app.Mark()
+            For attempt = 1 To 3
+                app.X.XDo("key", "Escape")
+                Try
+                    app.WaitFor("^lesson menu closed$", TimeSpan.FromSeconds(2), mark)
+                    Exit For
+                Catch ex As TimeoutException When attempt < 3
+                End Try
+            Next
             For Each name In {"scenes", "restart"}
                 Dim last = app.Lines().Last(Function(l) l.StartsWith("control " & name & " ", StringComparison.Ordinal))
                 Assert.EndsWith(" fits", last, StringComparison.Ordinal)

@@ -19,14 +19,18 @@ Public Class MonkeyGuiTests
     ''' <summary>The CI run's seed.</summary>
     Public Const DefaultSeed As Integer = 20261124
 
-    Private Shared ReadOnly TextBoxes As String() = {"radius", "mass", "rect-width", "rect-height", "box-width", "box-height"}
+    Private Shared ReadOnly TextBoxes As String() = {"radius", "mass", "rect-width", "rect-height", "box-width", "box-height", "sides", "angle", "stiffness"}
     Private Shared ReadOnly Buttons As String() = {
         "pause", "pause", "delete-mode", "moon", "mars", "earth", "jupiter", "add-circle", "add-circle", "add-rectangle",
-        "resize", "fixed", "arrows", "high-contrast", "large-fonts", "reset"}
+        "resize", "fixed", "arrows", "high-contrast", "large-fonts", "reset", "add-polygon", "add-corners", "add-ramp", "rect-fixed",
+        "centre-of-mass", "impulses", "walls"}
+    ''' <summary>The tools that join two bodies (or a body and an anchor).</summary>
+    Private Shared ReadOnly LinkTools As String() = {"add-spring", "add-rod", "add-string"}
     ''' <summary>Three of the tables' tabs, by the names the app traces for their headers.</summary>
     Private Shared ReadOnly Tabs As String() = {"tab-circles", "tab-rectangles", "tab-collision-log"}
     Private Shared ReadOnly Sliders As String() = {"speed", "gravity", "restitution"}
-    Private Shared ReadOnly Keys As String() = {"Escape", "Escape", "BackSpace", "Left", "Right", "Up", "Down", "a", "1", "minus", "period", "comma", "e"}
+    Private Shared ReadOnly Keys As String() = {"Escape", "Escape", "BackSpace", "Left", "Right", "Up", "Down", "a", "1", "minus", "period", "comma", "e",
+        "ctrl+z", "ctrl+z", "ctrl+y", "Return", "ctrl+0"}
     Private Shared ReadOnly Texts As String() = {
         "0.3", "0.05", "1", "2", "7", "0.6", "3", "12", "1e-300", "1e300", "-1", "0", "", "abc", "é€ß", "1,5", "²µ§", "NaN", "∞",
         "0,25", "ñ", "1e5", "4.", ".5", "  2  ", "0x10", "½", "١٢", "10", "100"}
@@ -100,9 +104,17 @@ Public Class MonkeyGuiTests
                 Dim x = px(), y = py()
                 app.Drag(1, x, y, Math.Max(c.X, Math.Min(c.X + c.W - 1, x + rng.Next(-200, 200))), Math.Max(c.Y, Math.Min(c.Y + c.H - 1, y + rng.Next(-200, 200))), 4)
                 Return "cue"
-            Case < 58
+            Case < 50
                 app.Click(Buttons(rng.Next(Buttons.Length)))
                 Return "button"
+            Case < 58
+                ' A link between two places (bodies or an anchor), then a carry from its first end: a linked body carried.
+                Dim a = (px(), py()), b = (px(), py())
+                app.Click(LinkTools(rng.Next(LinkTools.Length)))
+                app.ClickAt(a.Item1, a.Item2)
+                app.ClickAt(b.Item1, b.Item2)
+                app.Drag(3, a.Item1, a.Item2, px(), py(), 6)
+                Return "link and carry"
             Case < 76
                 app.TypeInto(TextBoxes(rng.Next(TextBoxes.Length)), Texts(rng.Next(Texts.Length)), check:=False)
                 Return "text"

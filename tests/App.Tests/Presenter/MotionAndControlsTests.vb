@@ -148,8 +148,9 @@ Public Class MotionAndControlsTests
         h.P.ResizeContainer("1000", "5")
         Assert.Equal(InputLimits.MaxContainer, h.P.World.Width)
         Assert.Equal("100", h.P.Inputs.ContainerWidthText)
+        ' Below the least side it is brought to it, as every other box is.
         h.P.ResizeContainer("0.1", "5")
-        Assert.Equal(InputLimits.MaxContainer, h.P.World.Width)
+        Assert.Equal(InputLimits.MinContainer, h.P.World.Width)
     End Sub
 
     <Fact>

@@ -75,7 +75,7 @@ Public Class ShapeToolsTests
         Assert.Equal(CStr(InputLimits.MaxSides), h.P.Inputs.SidesText)
         Assert.Equal("2", h.P.Inputs.RadiusText)
         Assert.Equal("-360", h.P.Inputs.PolygonAngleText)
-        Assert.Contains("sides set to the maximum, 12.", h.View.LastMessage, StringComparison.Ordinal)
+        Assert.Contains("sides set to the maximum, 12,", h.View.LastMessage, StringComparison.Ordinal)
         Assert.Contains("radius set to the maximum, 2.00 m", h.View.LastMessage, StringComparison.Ordinal)
         Assert.Equal(1, h.View.InputsShown)
         ' A negative angle is a turn the other way, not a mistake.

@@ -1,9 +1,17 @@
 Option Strict On
 
-' The Graphs tab: the series recorded as time runs (energies, momentum), the wall pressure gauge,
-' and the speed histogram with the 2D Maxwell–Boltzmann curve, each built as a GraphPlot the window
-' draws. Recording starts again when a scene is opened, restarted or reset, or the container changes.
-Partial Public NotInheritable Class SimulationPresenter
+''' <summary>
+''' The Graphs tab: the series recorded as time runs (energies, momentum), the wall pressure gauge,
+''' and the speed histogram with the 2D Maxwell–Boltzmann curve, each built as a GraphPlot the window
+''' draws. Recording starts again when a scene is opened, restarted or reset, or the container changes.
+''' </summary>
+Friend NotInheritable Class GraphRecorder
+    Private ReadOnly _stage As Stage
+
+    Public Sub New(stage As Stage)
+        _stage = stage
+    End Sub
+
     ''' <summary>Kinetic energy's colour on the graphs (red).</summary>
     Public Const KineticColour As Integer = &HE53935
     ''' <summary>Potential energy's colour on the graphs (green).</summary>
@@ -27,7 +35,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public ReadOnly Property Pressure As WallPressure
 
     ''' <summary>The graphs' names in the Graphs tab's chooser, in <see cref="GraphKind"/> order.</summary>
-    Public Shared ReadOnly Property GraphNames As IReadOnlyList(Of String) = {
+    Public Shared ReadOnly Property Names As IReadOnlyList(Of String) = {
         "Energy: KE, PE and total against time",
         "Momentum: px and py against time",
         "Speed histogram with Maxwell–Boltzmann",
@@ -37,7 +45,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub ChooseGraph(kind As GraphKind)
         If kind < GraphKind.Energy OrElse kind > GraphKind.Pressure Then Return
         _Graph = kind
-        Emit("graph " & kind.ToString())
+        _stage.Emit("graph " & kind.ToString())
     End Sub
 
     ''' <summary>
@@ -45,8 +53,8 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' with every snapshot. A new world, a time earlier than the last sample, or a gas whose count or
     ''' container changed starts the recording again.
     ''' </summary>
-    Private Sub SampleGraphs()
-        Dim w = World
+    Public Sub SampleGraphs()
+        Dim w = _stage.World
         If w IsNot _graphWorld Then
             _graphWorld = w
             Series.Clear()
@@ -71,8 +79,8 @@ Partial Public NotInheritable Class SimulationPresenter
     Public ReadOnly Property PressureStart As Double
 
     ''' <summary>Takes one collision for the pressure gauge (walls only; not while a body is carried).</summary>
-    Private Sub GraphCollision(record As CollisionRecord)
-        If World.DraggedBody IsNot Nothing Then Return
+    Public Sub GraphCollision(record As CollisionRecord)
+        If _stage.World.DraggedBody IsNot Nothing Then Return
         _Pressure?.Collided(record)
     End Sub
 
@@ -80,7 +88,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Function CurrentGraph() As GraphPlot
         Select Case Graph
             Case GraphKind.Momentum : Return MomentumGraph()
-            Case GraphKind.SpeedHistogram : Return HistogramGraph(GasState.Read(World))
+            Case GraphKind.SpeedHistogram : Return HistogramGraph(GasState.Read(_stage.World))
             Case GraphKind.Pressure : Return PressureGraph()
             Case Else : Return EnergyGraph()
         End Select
@@ -168,7 +176,7 @@ Partial Public NotInheritable Class SimulationPresenter
             g.EmptyText = "Run time: a reading every " & Units.Quantity(If(gauge?.ReadingSeconds, 1.0), "s") & " of simulated time."
             Return g
         End If
-        Dim gas = GasState.Read(World)
+        Dim gas = GasState.Read(_stage.World)
         Dim err = gauge.StandardError
         g.Notes.Add("measured over " & Units.Quantity(gauge.MeasuredSeconds, "s") & ": " & Units.Quantity(gauge.Average, "N/m") &
                     If(Double.IsNaN(err), "", " ± " & Units.Sig(err, 2)) & "   N·k·T/A = " & Units.Quantity(gauge.AverageIdeal, "N/m"))
@@ -176,4 +184,23 @@ Partial Public NotInheritable Class SimulationPresenter
                     ": hard discs Z(η)·N·k·T/A = " & Units.Quantity(gas.HardDiscPressure, "N/m"))
         Return g
     End Function
+
+    ''' <summary>The tutorial's page on graphs and exports.</summary>
+    Public Shared ReadOnly Property GraphsHelp As New HelpTopic("7. Graphs and data out",
+        "The Graphs tab (beside the collision log) draws one graph: Energy (KE, PE and their sum against time), Momentum (px and py against time), Speeds (how many bodies have each speed, with the 2D Maxwell–Boltzmann curve for the gas's temperature) and Pressure (the push of the walls, measured from their impulses, beside the ideal gas law N·k·T/A). ⤢ Window shows the graph in a large window of its own for a projector." & vbLf & "" & vbLf &
+        "The graphs show the run since the scene was opened, restarted or reset. A long run is kept whole at a coarser spacing, so memory never grows." & vbLf & "" & vbLf &
+        "Export ▾ (beside Scenes) saves the Bodies table, the collision log or the graph's data as a CSV file a spreadsheet opens as it is, or the graph or the canvas as a PNG picture for a worksheet or a slide.")
+
+    ''' <summary>The Maths used pages on the gas graphs.</summary>
+    Public Shared ReadOnly Property GraphsMaths As IReadOnlyList(Of HelpTopic) = {
+        New HelpTopic("Speeds in a gas: the 2D Maxwell–Boltzmann curve",
+            "In a gas at temperature T each velocity component is spread like a normal distribution with variance kT/m. The bodies with speeds between v and v + dv lie in a ring of circumference 2πv in the (vₓ, v_y) plane, so the fraction per m/s is" & vbLf & "" & vbLf &
+            "  f(v) = (m v / kT) · exp(−m v² / 2kT)" & vbLf & "" & vbLf &
+            "Its area is 1, it peaks at v = √(kT/m), and its mean is √(πkT / 2m). A body moving in a plane (and not spinning) has two degrees of freedom, ½kT each, so its mean kinetic energy is kT: the app reads kT = ΣKE / N, in joules. The curve on the histogram is N f(v) Δv, the count a bin of width Δv should hold. With unequal masses it is the average of every body's own curve at the same kT (heavy bodies are slower, with the same mean energy)."),
+        New HelpTopic("Pressure and the ideal gas law in 2D",
+            "In two dimensions pressure is force per metre of wall (N/m) and volume is area (m²). The app measures it like a gauge: every bounce gives the wall an impulse |Δp| = m |v after − v before|, and" & vbLf & "" & vbLf &
+            "  P = Σ|Δp| / (perimeter × time)" & vbLf & "" & vbLf &
+            "From the speeds: a body with velocity component vₓ hits the right wall of a box L wide every 2L/vₓ, with impulse 2mvₓ: an average force mvₓ²/L. N bodies on a wall H long give P = N m⟨vₓ²⟩ / (L H), and ⟨vₓ²⟩ = kT/m, so" & vbLf & "" & vbLf &
+            "  P A = N k T" & vbLf & "" & vbLf &
+            "with A the area the gas has (the box less the fixed bodies). Real balls take up room: at packing fraction η (the balls' area over A) hard discs press harder, by about Z = (1 + η²/8)/(1 − η)² (Henderson). The lesson's gas has η ≈ 0.1 and presses about 23 % harder than N·k·T/A; a gas of small balls follows the ideal law.")}
 End Class

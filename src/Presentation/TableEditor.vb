@@ -1,8 +1,24 @@
 Option Strict On
 
-' Typing values into the tables: a movable body's x, y, vx, vy, mass and (for a circle) radius,
-' checked as the Add panel checks what is typed there. This is the precise way to set a velocity.
-Partial Public NotInheritable Class SimulationPresenter
+''' <summary>
+''' Typing values into the tables: a movable body's x, y, vx, vy, mass and (for a circle) radius,
+''' checked as the Add panel checks what is typed there. This is the precise way to set a velocity.
+''' </summary>
+Friend NotInheritable Class TableEditor
+    Private ReadOnly _stage As Stage
+    Private ReadOnly _snapshot As Func(Of TableSnapshot)
+    Private ReadOnly _built As Action
+    Private ReadOnly _history As EditHistory
+
+    ''' <param name="snapshot">the tables as the window shows them now (rows are found by their place there)</param>
+    ''' <param name="built">told after an edit: it is building, and Restart comes back to it</param>
+    Public Sub New(stage As Stage, history As EditHistory, snapshot As Func(Of TableSnapshot), built As Action)
+        _stage = stage
+        _history = history
+        _snapshot = snapshot
+        _built = built
+    End Sub
+
     ''' <summary>The largest speed that can be typed into a table, m/s (larger is set to it, and the message says so).</summary>
     Public Const MaxTypedSpeed As Double = 1000.0
     ''' <summary>The farthest from the origin a position can be typed, m (only a box without walls lets a body go beyond the container).</summary>
@@ -10,10 +26,10 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>What may stand between a typed width and height: "0.8 × 0.5", "0.8 x 0.5", "0.8*0.5", "0.8 0.5".</summary>
     Private Shared ReadOnly SizeSeparators As Char() = {"×"c, "x"c, "X"c, "*"c, " "c}
 
-    ''' <summary>What column <paramref name="column"/> of table <paramref name="table"/> (an index into <see cref="Tables"/>) holds, when it can be typed into.</summary>
+    ''' <summary>What column <paramref name="column"/> of table <paramref name="table"/> (an index into <see cref="BodyTable.All"/>) holds, when it can be typed into.</summary>
     Public Shared Function EditableQuantity(table As Integer, column As Integer) As TableQuantity
-        If table < 0 OrElse table >= Tables.Count Then Return TableQuantity.None
-        Dim headers = Tables(table).Headers
+        If table < 0 OrElse table >= BodyTable.All.Count Then Return TableQuantity.None
+        Dim headers = BodyTable.All(table).Headers
         If column < 0 OrElse column >= headers.Count Then Return TableQuantity.None
         Select Case headers(column)
             Case "x (m)", "Centre x (m)" : Return TableQuantity.X
@@ -29,8 +45,8 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The column of table <paramref name="table"/> that holds <paramref name="quantity"/>, or −1.</summary>
     Public Shared Function ColumnOf(table As Integer, quantity As TableQuantity) As Integer
-        If table < 0 OrElse table >= Tables.Count OrElse quantity = TableQuantity.None Then Return -1
-        For c = 0 To Tables(table).Headers.Count - 1
+        If table < 0 OrElse table >= BodyTable.All.Count OrElse quantity = TableQuantity.None Then Return -1
+        For c = 0 To BodyTable.All(table).Headers.Count - 1
             If EditableQuantity(table, c) = quantity Then Return c
         Next
         Return -1
@@ -38,8 +54,8 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The body listed in row <paramref name="row"/> of table <paramref name="table"/> of the last snapshot, or Nothing.</summary>
     Private Function BodyInRow(table As Integer, row As Integer) As Shape
-        If table < 0 OrElse table >= Tables.Count OrElse row < 0 OrElse row >= Snapshot.RowCount(table) Then Return Nothing
-        Return World.Find(Snapshot.Row(table, row).Id)
+        If table < 0 OrElse table >= BodyTable.All.Count OrElse row < 0 OrElse row >= _snapshot().RowCount(table) Then Return Nothing
+        Return _stage.World.Find(_snapshot().Row(table, row).Id)
     End Function
 
     ''' <summary>Whether the cell can be typed into: an editable column of a movable body's row.</summary>
@@ -77,7 +93,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The point a table lists a body by: Circles and Rectangles its reference point (centre, lower-left corner), Bodies its centre of mass.</summary>
     Private Shared Function ListedPoint(body As Shape, table As Integer) As Vector
-        Return If(Tables(table) Is BodyTable.Bodies, body.CentreOfMass, body.Position)
+        Return If(BodyTable.All(table) Is BodyTable.Bodies, body.CentreOfMass, body.Position)
     End Function
 
     ''' <summary>
@@ -91,16 +107,16 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim body = BodyInRow(table, row)
         Dim q = EditableQuantity(table, column)
         If body Is Nothing OrElse q = TableQuantity.None Then
-            ShowMessage("That cell cannot be typed into: the position, velocity, mass and size of a moving body can.")
+            _stage.ShowMessage("That cell cannot be typed into: the position, velocity, mass and size of a moving body can.")
             Return False
         End If
         If body.IsFixed Then
-            ShowMessage(body.Id & " is fixed: it has no velocity or mass. Carry it with the right mouse button to move it.")
+            _stage.ShowMessage(body.Id & " is fixed: it has no velocity or mass. Carry it with the right mouse button to move it.")
             Return False
         End If
         If q = TableQuantity.Radius AndAlso body.Kind <> ShapeKind.Circle Then Return False
         Dim changed = False
-        Guarded(Sub() changed = ApplyEdit(body, table, q, text))
+        _stage.Guarded(Sub() changed = ApplyEdit(body, table, q, text))
         Return changed
     End Function
 
@@ -118,41 +134,43 @@ Partial Public NotInheritable Class SimulationPresenter
             Case Else : read = NumberInput.ReadPositive(text, label, InputLimits.MaxRadius, InputLimits.MinRadius)
         End Select
         If Not read.IsValid Then
-            ShowMessage(AskingMessage(body, q) & " " & Problems(read))
+            _stage.ShowMessage(AskingMessage(body, q) & " " & Stage.Problems(read))
             Return False
         End If
         Dim value = read.Value
-        EndGestures()
+        _stage.EndGestures()
+        Dim before = _history.Capture()
         Select Case q
             Case TableQuantity.X, TableQuantity.Y
                 Dim now = ListedPoint(body, table)
                 Dim offset = If(q = TableQuantity.X, New Vector(value - now.X, 0), New Vector(0, value - now.Y))
                 Dim refusal = PlacementRefusal(body, body, offset)
                 If refusal IsNot Nothing Then
-                    ShowMessage(label & " = " & Units.Sig(value) & " would put " & body.Id & " " & refusal & "; it stays where it was.")
+                    _stage.ShowMessage(label & " = " & Units.Sig(value) & " would put " & body.Id & " " & refusal & "; it stays where it was.")
                     Return False
                 End If
-                World.SetPosition(body, body.Position + offset)
+                _stage.World.SetPosition(body, body.Position + offset)
             Case TableQuantity.Vx
-                World.SetVelocity(body, New Vector(value, body.Velocity.Y))
+                _stage.World.SetVelocity(body, New Vector(value, body.Velocity.Y))
             Case TableQuantity.Vy
-                World.SetVelocity(body, New Vector(body.Velocity.X, value))
+                _stage.World.SetVelocity(body, New Vector(body.Velocity.X, value))
             Case Else
                 Dim replacement = Rebuilt(body, If(q = TableQuantity.Mass, value, body.Mass), If(q = TableQuantity.Radius, value, 0))
                 If q = TableQuantity.Radius Then
                     Dim refusal = PlacementRefusal(replacement, body, Vector.Zero)
                     If refusal IsNot Nothing Then
-                        ShowMessage(label & " = " & Units.Sig(value) & " would put " & body.Id & " " & refusal & "; it keeps its size.")
+                        _stage.ShowMessage(label & " = " & Units.Sig(value) & " would put " & body.Id & " " & refusal & "; it keeps its size.")
                         Return False
                     End If
                 End If
-                World.Replace(body, replacement)
+                _stage.World.Replace(body, replacement)
         End Select
-        Emit("edited " & body.Id & " " & label & " = " & value.ToString("R", Globalization.CultureInfo.InvariantCulture))
+        _stage.Emit("edited " & body.Id & " " & label & " = " & value.ToString("R", Globalization.CultureInfo.InvariantCulture))
+        _history.Commit(body.Id & "'s " & label & " typed", before)
         Dim note = If(read.WasClamped, LabelOf(q) & " set to the " & If(read.WasRaised, "minimum", "maximum") & ", " & Units.Sig(value) & ". ", "")
-        ShowMessage(note & body.Id & ": " & label & " is now " & Units.Sig(value) & ". Restart comes back to this.")
-        RememberStart()
-        TakeSnapshot()
+        _stage.ShowMessage(note & body.Id & ": " & label & " is now " & Units.Sig(value) & ". Restart comes back to this.")
+        _built()
+        _stage.TakeSnapshot()
         Return True
     End Function
 
@@ -166,16 +184,16 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim asking = If(body.Kind = ShapeKind.Rectangle, InputLimits.BoxMessage, InputLimits.PolygonMessage)
         Dim parts = If(text, "").Split(SizeSeparators, StringSplitOptions.RemoveEmptyEntries)
         If parts.Length <> 2 Then
-            ShowMessage(asking & " Type the width and the height in metres, as 0.8 × 0.5, not '" & OneLine(text) & "'.")
+            _stage.ShowMessage(asking & " Type the width and the height in metres, as 0.8 × 0.5, not '" & Stage.OneLine(text) & "'.")
             Return False
         End If
         Dim width = NumberInput.ReadPositive(parts(0), "width (m)", InputLimits.MaxSide, InputLimits.MinSide)
         Dim height = NumberInput.ReadPositive(parts(1), "height (m)", InputLimits.MaxSide, InputLimits.MinSide)
         If Not width.IsValid OrElse Not height.IsValid Then
-            ShowMessage(asking & " " & Problems(width, height))
+            _stage.ShowMessage(asking & " " & Stage.Problems(width, height))
             Return False
         End If
-        EndGestures()
+        _stage.EndGestures()
         Dim centre = body.CentreOfMass
         Dim replacement As Shape
         If body.Kind = ShapeKind.Rectangle Then
@@ -190,15 +208,17 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim said = Units.Sig(width.Value) & " × " & Units.Sig(height.Value) & " m"
         Dim refusal = PlacementRefusal(replacement, body, Vector.Zero)
         If refusal IsNot Nothing Then
-            ShowMessage("A size of " & said & " would put " & body.Id & " " & refusal & "; it keeps its size.")
+            _stage.ShowMessage("A size of " & said & " would put " & body.Id & " " & refusal & "; it keeps its size.")
             Return False
         End If
-        World.Replace(body, replacement)
-        Emit("edited " & body.Id & " size (m) = " & width.Value.ToString("R", Globalization.CultureInfo.InvariantCulture) & " × " & height.Value.ToString("R", Globalization.CultureInfo.InvariantCulture))
+        Dim before = _history.Capture()
+        _stage.World.Replace(body, replacement)
+        _history.Commit(body.Id & "'s size typed", before)
+        _stage.Emit("edited " & body.Id & " size (m) = " & width.Value.ToString("R", Globalization.CultureInfo.InvariantCulture) & " × " & height.Value.ToString("R", Globalization.CultureInfo.InvariantCulture))
         Dim note = If(width.WasClamped OrElse height.WasClamped, "A side was brought to its limit (" & Units.Sig(InputLimits.MinSide) & " to " & Units.Sig(InputLimits.MaxSide) & " m). ", "")
-        ShowMessage(note & body.Id & ": its size is now " & said & ". Restart comes back to this.")
-        RememberStart()
-        TakeSnapshot()
+        _stage.ShowMessage(note & body.Id & ": its size is now " & said & ". Restart comes back to this.")
+        _built()
+        _stage.TakeSnapshot()
         Return True
     End Function
 
@@ -232,10 +252,10 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' it collides with), or Nothing when it can.
     ''' </summary>
     Private Function PlacementRefusal(candidate As Shape, original As Shape, offset As Vector) As String
-        If Not Placement.IsInside(World, candidate, offset) Then
-            Return "outside the container (0 to " & Units.Sig(World.Width) & " m across, 0 to " & Units.Sig(World.Height) & " m up)"
+        If Not Placement.IsInside(_stage.World, candidate, offset) Then
+            Return "outside the container (0 to " & Units.Sig(_stage.World.Width) & " m across, 0 to " & Units.Sig(_stage.World.Height) & " m up)"
         End If
-        For Each other In World.Bodies
+        For Each other In _stage.World.Bodies
             If other Is original OrElse Not Placement.Collide(candidate, other) Then Continue For
             If Placement.OverlapDepth(candidate, offset, other) > Placement.Tolerance Then Return "into " & other.Id
         Next

@@ -1,7 +1,17 @@
 Option Strict On
 
-' Opening and saving scene files (physics-scene/1) through the ISceneStore.
-Partial Public NotInheritable Class SimulationPresenter
+''' <summary>Opening and saving scene files (physics-scene/1) through the <see cref="ISceneStore"/>.</summary>
+Friend NotInheritable Class SceneFiles
+    Private ReadOnly _stage As Stage
+
+    Public Sub New(stage As Stage, store As ISceneStore)
+        _stage = stage
+        SceneStore = store
+    End Sub
+
+    ''' <summary>Reads and writes scene files; Nothing disables Open and Save with a message.</summary>
+    Public Property SceneStore As ISceneStore
+
     ''' <summary>True when Open and Save can work (a scene store is present).</summary>
     Public ReadOnly Property CanOpenAndSave As Boolean
         Get
@@ -15,50 +25,53 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Opens the scene file at <paramref name="path"/>; on any problem shows a message and keeps the current scene.</summary>
     Public Sub OpenScene(path As String)
         If SceneStore Is Nothing Then
-            ShowMessage("Opening scene files is not available in this build.")
+            _stage.ShowMessage("Opening scene files is not available in this build.")
             Return
         End If
         Dim loaded As World
         Try
             loaded = SceneStore.Load(path)
         Catch ex As Exception When IsFileProblem(ex)
-            ShowMessage("Could not open " & SafeName(path) & ": " & Reason(ex, path))
+            _stage.ShowMessage("Could not open " & SafeName(path) & ": " & Reason(ex, path))
             Return
         End Try
         Dim tooMuch = SceneLimits.Problem(loaded)
         If tooMuch IsNot Nothing Then
-            ShowMessage("Could not open " & SafeName(path) & ": " & tooMuch & ". The scene on screen is kept.")
+            _stage.ShowMessage("Could not open " & SafeName(path) & ": " & tooMuch & ". The scene on screen is kept.")
             Return
         End If
         Remember(path)
-        Guarded(
+        _stage.Guarded(
             Sub()
-                EndGestures()
-                _Draft = Nothing
-                Attach(loaded)
-                Emit("opened " & SafeName(path) & ": " & loaded.Bodies.Count & " bodies")
-                ShowMessage("Opened " & SafeName(path) & "." & If(loaded.Walls, "", " This scene has no walls: balls can leave the box."))
-                TakeSnapshot()
-                _window.ShowInputs()
-                _window.ShowSettings()
+                _stage.Present(loaded)
+                _stage.Emit("opened " & SafeName(path) & ": " & loaded.Bodies.Count & " bodies")
+                _stage.ShowMessage("Opened " & SafeName(path) & "." & If(loaded.Walls, "", " This scene has no walls: balls can leave the box."))
+                _stage.TakeSnapshot()
+                _stage.Window.ShowInputs()
+                _stage.Window.ShowSettings()
             End Sub)
     End Sub
 
     ''' <summary>Saves the scene to <paramref name="path"/>; on any problem shows a message naming the file and why.</summary>
     Public Sub SaveScene(path As String)
         If SceneStore Is Nothing Then
-            ShowMessage("Saving scene files is not available in this build.")
+            _stage.ShowMessage("Saving scene files is not available in this build.")
+            Return
+        End If
+        Dim missing = FolderCheck.MissingFolder(path)
+        If missing IsNot Nothing Then
+            _stage.ShowMessage("Could not save " & SafeName(path) & ": " & missing & ".")
             Return
         End If
         Try
-            SceneStore.Save(World, path)
+            SceneStore.Save(_stage.World, path)
         Catch ex As Exception When IsFileProblem(ex)
-            ShowMessage("Could not save " & SafeName(path) & ": " & Reason(ex, path))
+            _stage.ShowMessage("Could not save " & SafeName(path) & ": " & Reason(ex, path))
             Return
         End Try
         Remember(path)
-        Emit("saved " & SafeName(path) & ": " & World.Bodies.Count & " bodies")
-        ShowMessage("Saved " & SafeName(path) & ".")
+        _stage.Emit("saved " & SafeName(path) & ": " & _stage.World.Bodies.Count & " bodies")
+        _stage.ShowMessage("Saved " & SafeName(path) & ".")
     End Sub
 
     Private Sub Remember(path As String)
@@ -75,7 +88,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Return Not (TypeOf ex Is NullReferenceException OrElse TypeOf ex Is OutOfMemoryException OrElse TypeOf ex Is StackOverflowException)
     End Function
 
-    Private Shared Function SafeName(path As String) As String
+    Public Shared Function SafeName(path As String) As String
         If String.IsNullOrEmpty(path) Then Return "(no file)"
         Try
             Return IO.Path.GetFileName(path)
@@ -86,7 +99,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The exception's one-line message without a leading "path: " (the file is already named).</summary>
     Private Shared Function Reason(ex As Exception, path As String) As String
-        Dim text = OneLine(ex.Message)
+        Dim text = Stage.OneLine(ex.Message)
         For Each prefix In {path, TryFullPath(path)}
             If Not String.IsNullOrEmpty(prefix) AndAlso text.StartsWith(prefix & ": ", StringComparison.Ordinal) Then Return text.Substring(prefix.Length + 2)
         Next

@@ -1,15 +1,25 @@
 Option Strict On
 Imports System.IO
 
-' The Export menu: the Bodies table, the collision log and the graph's series as CSV a spreadsheet
-' opens as it is (see Csv), and pictures the window draws (graph, canvas) as PNG. Every file is
-' written whole or not at all (WholeFile); a failure is a message naming the file and the reason.
-Partial Public NotInheritable Class SimulationPresenter
+''' <summary>
+''' The Export menu: the Bodies table, the collision log and the graph's series as CSV a spreadsheet
+''' opens as it is (see Csv), and pictures the window draws (graph, canvas) as PNG. Every file is
+''' written whole or not at all (WholeFile); a failure is a message naming the file and the reason.
+''' </summary>
+Friend NotInheritable Class ExportWriter
+    Private ReadOnly _stage As Stage
+    Private ReadOnly _graphs As GraphRecorder
+
+    Public Sub New(stage As Stage, graphs As GraphRecorder)
+        _stage = stage
+        _graphs = graphs
+    End Sub
+
     ''' <summary>The Export button's caption.</summary>
     Public Const ExportCaption As String = "Export ▾"
 
     ''' <summary>The Export menu's items, in <see cref="ExportKind"/> order.</summary>
-    Public Shared ReadOnly Property ExportNames As IReadOnlyList(Of String) = {
+    Public Shared ReadOnly Property Names As IReadOnlyList(Of String) = {
         "Bodies table (CSV)…", "Collision log (CSV)…", "Graph series (CSV)…", "Graph picture (PNG)…", "Canvas picture (PNG)…"}
 
     ''' <summary>The file name the Save dialog suggests for an export.</summary>
@@ -24,7 +34,7 @@ Partial Public NotInheritable Class SimulationPresenter
     End Function
 
     Private Function GraphSlug() As String
-        Select Case Graph
+        Select Case _graphs.Graph
             Case GraphKind.Momentum : Return "momentum"
             Case GraphKind.SpeedHistogram : Return "speeds"
             Case GraphKind.Pressure : Return "pressure"
@@ -37,7 +47,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Dim header = {"id", "kind", "colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "speed (m/s)", "mass (kg)",
                       "radius (m)", "width (m)", "height (m)", "area (m²)"}
         Dim rows As New List(Of IEnumerable(Of String))
-        For Each b In World.Bodies
+        For Each b In _stage.World.Bodies
             Dim r = BodyRow.Capture(b)
             Dim size = Function(name As String) As String
                            Dim f = r.SizeFields.Where(Function(s) s.Name = name).ToList()
@@ -55,8 +65,8 @@ Partial Public NotInheritable Class SimulationPresenter
                       "b speed before (m/s)", "b speed after (m/s)", "px before (kg·m/s)", "py before (kg·m/s)",
                       "px after (kg·m/s)", "py after (kg·m/s)", "KE before (J)", "KE after (J)", "note"}
         Dim rows As New List(Of IEnumerable(Of String))
-        For i = Log.Count - 1 To 0 Step -1
-            Dim e = Log(i)
+        For i = _stage.Log.Count - 1 To 0 Step -1
+            Dim e = _stage.Log(i)
             If e.SkippedCount > 0 Then
                 rows.Add({Csv.Number(e.Time), "", "", "", e.SkippedCount.ToString(Globalization.CultureInfo.InvariantCulture), "", "", "", "", "", "", "", "", "", "",
                           "more collisions, counted but not listed"})
@@ -78,10 +88,10 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' bins with the counts and the Maxwell–Boltzmann expectation. The pressure: its readings.
     ''' </summary>
     Public Function SeriesCsv() As String
-        Select Case Graph
+        Select Case _graphs.Graph
             Case GraphKind.SpeedHistogram
-                Dim gas = GasState.Read(World)
-                Dim plot = HistogramGraph(gas)
+                Dim gas = GasState.Read(_stage.World)
+                Dim plot = GraphRecorder.HistogramGraph(gas)
                 Dim rows As New List(Of IEnumerable(Of String))
                 If plot.Bars IsNot Nothing Then
                     Dim expected = If(gas.KT > 0, MaxwellBoltzmann2D.ExpectedCounts(plot.Bars.Edges, gas.Masses, gas.KT), Nothing)
@@ -92,11 +102,11 @@ Partial Public NotInheritable Class SimulationPresenter
                 End If
                 Return Csv.Document(HistogramHeader, rows)
             Case GraphKind.Pressure
-                Dim readings = If(Pressure?.Readings, New List(Of PressureReading)())
+                Dim readings = If(_graphs.Pressure?.Readings, New List(Of PressureReading)())
                 Return Csv.Document(PressureHeader,
                                     readings.Select(Function(r) CType({Csv.Number(r.Time), Csv.Number(r.Measured), Csv.Number(r.Ideal)}, IEnumerable(Of String))))
             Case Else
-                Return Csv.Document(SeriesHeader, Series.Samples.Select(Function(s) CType({Csv.Number(s.Time), Csv.Number(s.Kinetic), Csv.Number(s.Potential), Csv.Number(s.Total),
+                Return Csv.Document(SeriesHeader, _graphs.Series.Samples.Select(Function(s) CType({Csv.Number(s.Time), Csv.Number(s.Kinetic), Csv.Number(s.Potential), Csv.Number(s.Total),
                                     Csv.Number(s.Momentum.X), Csv.Number(s.Momentum.Y), Csv.Number(s.CentreOfMass.X), Csv.Number(s.CentreOfMass.Y)}, IEnumerable(Of String))))
         End Select
     End Function
@@ -132,18 +142,24 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Sub Export(kind As ExportKind, path As String, write As Action(Of Stream), what As String)
         If String.IsNullOrEmpty(path) Then Return
         Dim name = IO.Path.GetFileName(path)
+        Dim missing = FolderCheck.MissingFolder(path)
+        If missing IsNot Nothing Then
+            _stage.Emit("export failed " & kind.ToString() & " " & path)
+            _stage.ShowMessage("Could not export " & name & ": " & missing & ".")
+            Return
+        End If
         Try
             WholeFile.Write(path, write)
-            Emit("exported " & kind.ToString() & " " & path & " " & what)
-            ShowMessage("Exported " & ExportNames(kind).TrimEnd("…"c) & " to " & name & " (" & what & ").")
+            _stage.Emit("exported " & kind.ToString() & " " & path & " " & what)
+            _stage.ShowMessage("Exported " & Names(kind).TrimEnd("…"c) & " to " & name & " (" & what & ").")
         Catch ex As IOException
-            Emit("export failed " & kind.ToString() & " " & path)
-            ShowMessage("Could not export " & name & ": " & OneLine(ex.Message))
+            _stage.Emit("export failed " & kind.ToString() & " " & path)
+            _stage.ShowMessage("Could not export " & name & ": " & Stage.OneLine(ex.Message))
         Catch ex As ArgumentException
-            ShowMessage("Could not export " & name & ": " & OneLine(ex.Message))
+            _stage.ShowMessage("Could not export " & name & ": " & Stage.OneLine(ex.Message))
         Catch ex As Runtime.InteropServices.ExternalException
             ' GDI+ failing to encode a picture.
-            ShowMessage("Could not export " & name & ": the picture could not be made (" & OneLine(ex.Message) & "); nothing was written")
+            _stage.ShowMessage("Could not export " & name & ": the picture could not be made (" & Stage.OneLine(ex.Message) & "); nothing was written")
         End Try
     End Sub
 End Class

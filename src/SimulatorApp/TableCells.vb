@@ -3,10 +3,17 @@ Imports System.Drawing
 Imports System.Windows.Forms
 Imports PhysicsEngine.Presentation
 
-' Typing a value into a body table: a double click on a cell (or F2 on a row) opens an edit box
-' over the cell; Enter applies it, Esc or clicking elsewhere cancels. What may be typed, and what a
-' value does, is the presenter's (SimulationPresenter.Editing).
-Partial Friend NotInheritable Class MainForm
+''' <summary>
+''' Typing a value into a body table: a double click on a cell (or F2 on a row) opens an edit box
+''' over the cell; Enter applies it, Esc or clicking elsewhere cancels. What may be typed, and what a
+''' value does, is the presenter's (its TableEditor).
+''' </summary>
+Friend NotInheritable Class TableCells
+    Implements IDisposable
+
+    Private ReadOnly _kit As WindowKit
+    Private ReadOnly _host As Control
+    Private ReadOnly _tables As List(Of BufferedListView)
     Private ReadOnly _cellBox As New TextBox() With {.Visible = False, .BorderStyle = BorderStyle.FixedSingle}
     Private _editTable As Integer = -1
     Private _editRow As Integer = -1
@@ -15,7 +22,12 @@ Partial Friend NotInheritable Class MainForm
     ''' <summary>The quantity F2 opens: the one typed last (at first vx, the usual thing to set precisely).</summary>
     Private _lastQuantity As TableQuantity = TableQuantity.Vx
 
-    Private Sub BuildEditingControls()
+    ''' <param name="host">the window: the edit box is put on it, over the list (Mono paints a list view over any control inside it)</param>
+    ''' <param name="tables">the body tables' lists, in tab order</param>
+    Public Sub New(kit As WindowKit, host As Control, tables As List(Of BufferedListView))
+        _kit = kit
+        _host = host
+        _tables = tables
         For Each list In _tables
             Dim table = _tables.IndexOf(list)
             AddHandler list.MouseDoubleClick, Sub(s, e) OnCellDoubleClick(table, e.X, e.Y)
@@ -74,32 +86,32 @@ Partial Friend NotInheritable Class MainForm
     ''' <summary>Opens the edit box over a cell the teacher may type into; says why not otherwise.</summary>
     Private Sub OpenCellBox(table As Integer, row As Integer, column As Integer)
         CloseCellBox(False)
-        If Not _presenter.CanEditCell(table, row, column) Then
+        If Not _kit.Presenter.CanEditCell(table, row, column) Then
             ' The presenter gives the reason (a fixed body, a column that is worked out from others).
-            Act(Sub() _presenter.EditCell(table, row, column, Nothing))
-            _trace?.Invoke("edit refused " & SimulationPresenter.Tables(table).Title & " " & row & " " & column)
+            _kit.Act(Sub() _kit.Presenter.EditCell(table, row, column, Nothing))
+            _kit.Emit("edit refused " & SimulationPresenter.Tables(table).Title & " " & row & " " & column)
             Return
         End If
         _editTable = table
         _editRow = row
         _editColumn = column
-        _editOpening = _presenter.CellEditText(table, row, column)
+        _editOpening = _kit.Presenter.CellEditText(table, row, column)
         Dim list = _tables(table)
         ' On the form, over the list: Mono paints a list view over any control placed inside it.
-        If _cellBox.Parent IsNot Me Then Controls.Add(_cellBox)
+        If _cellBox.Parent IsNot _host Then _host.Controls.Add(_cellBox)
         Dim r = CellBounds(table, row, column)
-        Dim at = PointToClient(list.PointToScreen(r.Location))
+        Dim at = _host.PointToClient(list.PointToScreen(r.Location))
         _cellBox.Font = list.Font
-        _cellBox.BackColor = ScenePainter.Rgb(_presenter.Theme.Field)
-        _cellBox.ForeColor = ScenePainter.Rgb(_presenter.Theme.PanelText)
-        _cellBox.SetBounds(at.X, at.Y, Math.Max(r.Width, S(70)), Math.Max(r.Height, _cellBox.PreferredHeight))
+        _cellBox.BackColor = ScenePainter.Rgb(_kit.Presenter.Theme.Field)
+        _cellBox.ForeColor = ScenePainter.Rgb(_kit.Presenter.Theme.PanelText)
+        _cellBox.SetBounds(at.X, at.Y, Math.Max(r.Width, _kit.S(70)), Math.Max(r.Height, _cellBox.PreferredHeight))
         _cellBox.Text = _editOpening
         _cellBox.Visible = True
         _cellBox.BringToFront()
         _cellBox.Focus()
         _cellBox.SelectAll()
         Dim p = list.PointToScreen(r.Location)
-        _trace?.Invoke("edit open " & SimulationPresenter.Tables(table).Title & " " & row & " " & list.Columns(column).Text & " [" & _editOpening & "] at " & p.X & " " & p.Y)
+        _kit.Emit("edit open " & SimulationPresenter.Tables(table).Title & " " & row & " " & list.Columns(column).Text & " [" & _editOpening & "] at " & p.X & " " & p.Y)
     End Sub
 
     Private Sub OnCellBoxKey(sender As Object, e As KeyEventArgs)
@@ -124,18 +136,24 @@ Partial Friend NotInheritable Class MainForm
         Dim list = _tables(table)
         If apply AndAlso text.Trim() <> _editOpening Then
             _lastQuantity = SimulationPresenter.EditableQuantity(table, column)
-            Act(Sub() _presenter.EditCell(table, row, column, text))
-            _trace?.Invoke("edit applied [" & text & "]")
+            _kit.Act(Sub() _kit.Presenter.EditCell(table, row, column, text))
+            _kit.Emit("edit applied [" & text & "]")
         Else
-            _trace?.Invoke("edit cancelled")
+            _kit.Emit("edit cancelled")
         End If
         If list.CanFocus Then list.Focus()
     End Sub
 
-    ''' <summary>With --trace: where the editable cells of the first rows of the table on show are (GUI tests double-click them there).</summary>
-    Private Sub TraceCells()
-        If _trace Is Nothing Then Return
-        Dim table = _tabs.SelectedIndex
+    ''' <summary>Whether the edit box is open (it keeps Enter for itself).</summary>
+    Public ReadOnly Property IsOpen As Boolean
+        Get
+            Return _cellBox.Visible
+        End Get
+    End Property
+
+    ''' <summary>With --trace: where the editable cells of the first rows of table <paramref name="table"/> (the one on show) are (GUI tests double-click them there).</summary>
+    Public Sub TraceCells(table As Integer)
+        If _kit.Trace Is Nothing Then Return
         If table < 0 OrElse table >= _tables.Count Then Return
         Dim list = _tables(table)
         If Not list.IsHandleCreated OrElse list.VirtualListSize = 0 Then Return
@@ -146,8 +164,13 @@ Partial Friend NotInheritable Class MainForm
                 If q = TableQuantity.None Then Continue For
                 Dim r = CellBounds(table, index, c)
                 Dim p = list.PointToScreen(r.Location)
-                _trace("control cell-" & name & "-" & index & "-" & q.ToString().ToLowerInvariant() & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & " fits")
+                _kit.Emit("control cell-" & name & "-" & index & "-" & q.ToString().ToLowerInvariant() & " " & p.X & " " & p.Y & " " & r.Width & " " & r.Height & " fits")
             Next
         Next
+    End Sub
+
+    ''' <summary>Its controls (the window disposes them too, with the panel; a second time does nothing).</summary>
+    Public Sub Dispose() Implements IDisposable.Dispose
+        _cellBox.Dispose()
     End Sub
 End Class

@@ -1,8 +1,22 @@
 Option Strict On
 
-' The frame budget: how long a frame may spend advancing the world, how the advance keeps to it,
-' and how much simulated time it held back (see FrameBudget).
-Partial Public NotInheritable Class SimulationPresenter
+''' <summary>
+''' The frame budget: how long a frame may spend advancing the world, how the advance keeps to it,
+''' and how much simulated time it held back (see FrameBudget).
+''' </summary>
+Friend NotInheritable Class FramePacer
+    Private ReadOnly _stage As Stage
+    Private ReadOnly _speed As Func(Of Double)
+    Private ReadOnly _advance As Func(Of Double, Double, Double)
+
+    ''' <param name="speed">simulated seconds per real second now (the Speed slider)</param>
+    ''' <param name="advance">advances the world on show by up to so many simulated seconds within so many wall-clock seconds; returns the seconds done</param>
+    Public Sub New(stage As Stage, speed As Func(Of Double), advance As Func(Of Double, Double, Double))
+        _stage = stage
+        _speed = speed
+        _advance = advance
+    End Sub
+
     ''' <summary>
     ''' The wall-clock time one piece of an advance is sized to take, s (see <see cref="AdvanceWithinBudget"/>):
     ''' the clock is read between pieces, so a frame overruns its budget by about this much at most,
@@ -56,12 +70,12 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' </summary>
     Public ReadOnly Property HeldBackSeconds As Double
 
-    Private Function ClockSeconds() As Double
+    Public Function ClockSeconds() As Double
         Return WallClock.Invoke()
     End Function
 
     ''' <summary>
-    ''' The window spent <paramref name="seconds"/> (s) of this frame outside <see cref="Tick"/>:
+    ''' The window spent <paramref name="seconds"/> (s) of this frame outside the presenter's Tick:
     ''' painting the canvas, refreshing the log or a graph. The next frames' budget leaves room for it.
     ''' </summary>
     Public Sub NoteFrameWork(seconds As Double)
@@ -79,32 +93,32 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' carry aims at the frame's end) gets one advance with the budget as its deadline, which it
     ''' checks itself.
     ''' </summary>
-    Private Function AdvanceWithinBudget(seconds As Double) As Double
+    Public Function AdvanceWithinBudget(seconds As Double) As Double
         Dim budget = FrameBudgetSeconds
         Dim start = ClockSeconds()
-        Dim t0 = World.Time
-        If World.Solver.TimeStep.HasValue OrElse World.Links.Count > 0 OrElse World.DraggedBody IsNot Nothing Then
-            Return AdvanceOrFallBack(seconds, budget)
+        Dim t0 = _stage.World.Time
+        If _stage.World.Solver.TimeStep.HasValue OrElse _stage.World.Links.Count > 0 OrElse _stage.World.DraggedBody IsNot Nothing Then
+            Return _advance(seconds, budget)
         End If
         Dim target = t0 + seconds
         Dim shortest = seconds * MinPieceFraction
-        Do While World.Time < target
+        Do While _stage.World.Time < target
             Dim spent = ClockSeconds() - start
-            Dim left = target - World.Time
+            Dim left = target - _stage.World.Time
             ' Before any piece has been timed, an eighth of the frame finds out what the scene costs.
             Dim piece = If(_costRate > 0, Math.Max(shortest, PieceSeconds / _costRate), seconds * FirstPieceFraction)
             ' The first piece always runs: every frame moves the world.
-            If World.Time > t0 AndAlso spent + Math.Min(piece, left) * _costRate > budget Then Exit Do
-            Dim before = World.Time
-            Dim duration = If(piece >= left, ExactClock.DurationTo(World.Time, target), piece)
-            AdvanceOrFallBack(duration, Math.Max(0, budget - spent))
+            If _stage.World.Time > t0 AndAlso spent + Math.Min(piece, left) * _costRate > budget Then Exit Do
+            Dim before = _stage.World.Time
+            Dim duration = If(piece >= left, ExactClock.DurationTo(_stage.World.Time, target), piece)
+            _advance(duration, Math.Max(0, budget - spent))
             Dim cost = ClockSeconds() - start - spent
-            If World.Time > before Then _costRate = cost / (World.Time - before)
+            If _stage.World.Time > before Then _costRate = cost / (_stage.World.Time - before)
             ' Short of the piece's end: the solver's own deadline passed (stop), or a checkpoint of a
             ' replayed run lay inside the piece (go on from it).
-            If World.Time <= before OrElse cost + spent >= budget Then Exit Do
+            If _stage.World.Time <= before OrElse cost + spent >= budget Then Exit Do
         Loop
-        Return World.Time - t0
+        Return _stage.World.Time - t0
     End Function
 
     ''' <summary>Wall-clock seconds per simulated second of the last piece advanced (0 before the first).</summary>
@@ -115,21 +129,24 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' fallen <see cref="SlowNoticeSeconds"/> behind in one stretch of slow frames (once per stretch:
     ''' a burst of slow frames does not repeat the message).
     ''' </summary>
-    Private Sub NoteAdvance(asked As Double, done As Double)
+    Public Sub NoteAdvance(asked As Double, done As Double)
         Dim slow = done < asked * (1 - 1.0E-9)
         If slow Then
             _SlowedFrames += 1
             _HeldBackSeconds += asked - done
-            _streakBehind += (asked - done) / Speed
+            _streakBehind += (asked - done) / _speed()
+            _keptUpSeconds = 0
         Else
             _streakBehind = 0
             _streakNoticed = False
+            _keptUpSeconds += asked / _speed()
         End If
-        If slow AndAlso Not _IsRunningSlow Then Trace?.Invoke("running slow")
+        If slow AndAlso Not _IsRunningSlow Then _stage.Emit("running slow")
         _IsRunningSlow = slow
         If slow AndAlso Not _streakNoticed AndAlso _streakBehind >= SlowNoticeSeconds Then
             _streakNoticed = True
-            If Message <> SlowMessage Then ShowMessage(SlowMessage)
+            ' True until the scene has kept up for a while (the balls of a peg board all at rest).
+            If _stage.Message <> SlowMessage Then _stage.ShowMessage(SlowMessage, Function() _keptUpSeconds < KeptUpSeconds)
         End If
     End Sub
 
@@ -142,6 +159,12 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Real seconds time on screen has fallen behind in the current stretch of slow frames.</summary>
     Private _streakBehind As Double
+    ''' <summary>Real seconds the scene has kept up with the Speed slider since its last slow frame.</summary>
+    Private _keptUpSeconds As Double
+
+    ''' <summary>How long a scene must keep up before the message that it cannot goes, s: long enough not to flicker on and off.</summary>
+    Public Const KeptUpSeconds As Double = 1.0
+
     ''' <summary>Whether the current stretch of slow frames has been told.</summary>
     Private _streakNoticed As Boolean
 

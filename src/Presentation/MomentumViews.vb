@@ -1,9 +1,19 @@
 Option Strict On
 
-' Seeing momentum: the centre of mass and its velocity, the total momentum Σp, the momenta
-' diagram, the impulses Δp at collisions and fading path traces, each switched on and off; and
-' the container's walls on and off.
-Partial Public NotInheritable Class SimulationPresenter
+''' <summary>
+''' Seeing momentum: the centre of mass and its velocity, the total momentum Σp, the momenta
+''' diagram, the impulses Δp at collisions and fading path traces, each switched on and off.
+''' </summary>
+Friend NotInheritable Class MomentumViews
+    Private ReadOnly _stage As Stage
+    Private ReadOnly _room As Func(Of Double)
+
+    ''' <param name="room">the longest a momentum arrow may be drawn now, px (it follows the canvas's size)</param>
+    Public Sub New(stage As Stage, room As Func(Of Double))
+        _stage = stage
+        _room = room
+    End Sub
+
     ''' <summary>The tutorial's page on the momentum views, the walls toggle and typing into the tables.</summary>
     Public Shared ReadOnly Property MomentumHelp As New HelpTopic("8. Seeing momentum, walls, typing values",
         "Under the view options, six boxes: """ & MomentumCaptions.CentreOfMass & """ marks the centre of mass of the moving bodies (a quartered disc, CM) with its velocity arrow. """ &
@@ -47,13 +57,13 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The centre of mass, total mass and total momentum of the movable bodies now.</summary>
     Public ReadOnly Property Momentum As MomentumSummary
         Get
-            Return MomentumSummary.Measure(World)
+            Return MomentumSummary.Measure(_stage.World)
         End Get
     End Property
 
     ''' <summary>The momenta diagram of the movable bodies now.</summary>
     Public Function Momenta() As MomentaDiagram
-        Return New MomentaDiagram(World)
+        Return New MomentaDiagram(_stage.World)
     End Function
 
     ''' <summary>Whether any momentum view needs the momentum scale (and its key) drawn.</summary>
@@ -66,69 +76,47 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The centre-of-mass marker and its velocity arrow on or off.</summary>
     Public Sub SetShowCentreOfMass(value As Boolean)
         _ShowCentreOfMass = value
-        Emit("centre of mass " & If(value, "on", "off"))
+        _stage.Emit("centre of mass " & If(value, "on", "off"))
         EmitMomentumViews()
-        _window.ShowSettings()
+        _stage.Window.ShowSettings()
     End Sub
 
     ''' <summary>The total-momentum arrow on or off.</summary>
     Public Sub SetShowTotalMomentum(value As Boolean)
         _ShowTotalMomentum = value
-        Emit("total momentum " & If(value, "on", "off"))
+        _stage.Emit("total momentum " & If(value, "on", "off"))
         EmitMomentumViews()
-        _window.ShowSettings()
+        _stage.Window.ShowSettings()
     End Sub
 
     ''' <summary>The momenta diagram on or off.</summary>
     Public Sub SetShowMomentaDiagram(value As Boolean)
         _ShowMomentaDiagram = value
-        Emit("momenta diagram " & If(value, "on", "off"))
+        _stage.Emit("momenta diagram " & If(value, "on", "off"))
         EmitMomentumViews()
-        _window.ShowSettings()
+        _stage.Window.ShowSettings()
     End Sub
 
     ''' <summary>The impulse arrows on or off (turning them off forgets those on show).</summary>
     Public Sub SetShowImpulses(value As Boolean)
         _ShowImpulses = value
         If Not value Then Impulses.Clear()
-        Emit("impulses " & If(value, "on", "off"))
-        _window.ShowSettings()
+        _stage.Emit("impulses " & If(value, "on", "off"))
+        _stage.Window.ShowSettings()
     End Sub
 
     ''' <summary>Path traces on or off (turning them off forgets them; on again starts afresh).</summary>
     Public Sub SetShowTraces(value As Boolean)
         _ShowTraces = value
         Traces.Clear()
-        If value Then Traces.Sample(World)
-        Emit("traces " & If(value, "on", "off"))
-        _window.ShowSettings()
+        If value Then Traces.Sample(_stage.World)
+        _stage.Emit("traces " & If(value, "on", "off"))
+        _stage.Window.ShowSettings()
     End Sub
 
-    ''' <summary>
-    ''' The container's walls on (its sides reflect balls) or off (balls fly out through where they
-    ''' were). Turning them on brings every movable body back inside; a body too large for the box
-    ''' makes it refuse, with the reason. Restart goes back to the scene's own choice.
-    ''' </summary>
-    Public Sub SetWalls(value As Boolean)
-        Guarded(
-            Sub()
-                ' The start Restart goes back to is taken first, so it keeps the scene's own walls.
-                NoteBuilding()
-                If value <> World.Walls Then
-                    World.Walls = value
-                    SettleOverlaps()
-                End If
-                Emit("walls " & If(World.Walls, "on", "off"))
-                ShowMessage(If(World.Walls, "Walls on: the sides reflect the balls; any ball outside was brought back in.",
-                               "No walls: balls fly out through the dashed outline."))
-                TakeSnapshot()
-            End Sub)
-        _window.ShowSettings()
-    End Sub
-
-    ''' <summary>Once per frame (from <see cref="Tick"/>): traces and impulse marks follow the world.</summary>
-    Private Sub FollowMomentumViews(realSeconds As Double, ran As Boolean)
-        If ShowTraces AndAlso ran Then Traces.Follow(World, realSeconds)
+    ''' <summary>Once per frame (from the presenter's Tick): traces and impulse marks follow the world.</summary>
+    Public Sub FollowMomentumViews(realSeconds As Double, ran As Boolean)
+        If ShowTraces AndAlso ran Then Traces.Follow(_stage.World, realSeconds)
         If ShowImpulses Then
             EmitNewImpulses()
             ' Paused, a mark stays: the teacher can stop time to look at it.
@@ -141,55 +129,48 @@ Partial Public NotInheritable Class SimulationPresenter
             For Each m In Impulses.Marks
                 longest = Math.Max(longest, m.Impulse.Length)
             Next
-            MomentumArrows.Update(longest, MomentumRoomPixels)
+            MomentumArrows.Update(longest, _room())
         End If
     End Sub
 
-    ''' <summary>The longest a momentum arrow may be drawn, px: a fifth of the canvas's smaller side.</summary>
-    Public ReadOnly Property MomentumRoomPixels As Double
-        Get
-            Return 0.2 * Math.Min(_canvasWidth, Math.Max(1, _canvasHeight - ScaleStripPixels))
-        End Get
-    End Property
-
     ''' <summary>A collision from the engine: its impulses are noted while they are shown.</summary>
-    Private Sub NoteImpulses(record As CollisionRecord)
+    Public Sub NoteImpulses(record As CollisionRecord)
         If ShowImpulses Then Impulses.Record(record)
     End Sub
 
     ''' <summary>A new scene, a restart or a reset: the traces and impulses of the old one go.</summary>
-    Private Sub ForgetMomentumViews()
+    Public Sub ForgetMomentumViews()
         Traces.Clear()
         Impulses.Clear()
     End Sub
 
     ''' <summary>Places the marks of this frame's collisions and, with a trace, lists the first few (GUI tests check them against the bodies).</summary>
     Private Sub EmitNewImpulses()
-        Dim fresh = If(Trace Is Nothing, 0, Impulses.Marks.Where(Function(m) Not m.IsLocated).Count())
-        Impulses.Locate(World)
+        Dim fresh = If(Not _stage.Tracing, 0, Impulses.Marks.Where(Function(m) Not m.IsLocated).Count())
+        Impulses.Locate(_stage.World)
         If fresh = 0 Then Return
         Dim marks = Impulses.Marks
         For i = marks.Count - fresh To Math.Min(marks.Count, marks.Count - fresh + 8) - 1
             Dim m = marks(i)
-            Emit("impulse " & m.Body.Id & " Δp " & Units.Pair(m.Impulse, 4) & " kg·m/s at " & Units.Pair(m.At, 3) & " m against " &
+            _stage.Emit("impulse " & m.Body.Id & " Δp " & Units.Pair(m.Impulse, 4) & " kg·m/s at " & Units.Pair(m.At, 3) & " m against " &
                  If(m.Other IsNot Nothing, m.Other.Id, "wall:" & m.Wall.ToString().ToLowerInvariant()) & " t=" & Units.Num(m.Time, 4))
         Next
     End Sub
 
     ''' <summary>With a trace: the centre of mass, its velocity and Σp as the views show them (GUI tests compare these with the bodies).</summary>
-    Private Sub EmitMomentumViews()
-        If Trace Is Nothing Then Return
+    Public Sub EmitMomentumViews()
+        If Not _stage.Tracing Then Return
         Dim s = Momentum
         If Not s.HasBodies Then
-            Emit("momentum views: no movable bodies")
+            _stage.Emit("momentum views: no movable bodies")
             Return
         End If
-        Emit("centre of mass at " & Units.Pair(s.CentreOfMass, 4) & " m v " & Units.Pair(s.Velocity, 4) & " m/s total mass " & Units.Num(s.Mass, 4) &
+        _stage.Emit("centre of mass at " & Units.Pair(s.CentreOfMass, 4) & " m v " & Units.Pair(s.Velocity, 4) & " m/s total mass " & Units.Num(s.Mass, 4) &
              " kg Σp " & Units.Pair(s.Momentum, 4) & " kg·m/s")
         If ShowTraces Then
             For Each b In Traces.Bodies.Take(8)
                 Dim pts = Traces.Points(b)
-                If pts.Count > 0 Then Emit("trace " & b.Id & " " & pts.Count & " points, newest " & Units.Pair(pts(pts.Count - 1), 3) & " m")
+                If pts.Count > 0 Then _stage.Emit("trace " & b.Id & " " & pts.Count & " points, newest " & Units.Pair(pts(pts.Count - 1), 3) & " m")
             Next
         End If
     End Sub

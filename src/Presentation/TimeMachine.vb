@@ -1,9 +1,29 @@
 Option Strict On
 
-' Time controls: step a frame, step to the next collision, step back a frame or a collision, and
-' scrub the timeline. The run is recorded as checkpoints (Timeline, TimelineSolver); going back
-' rebuilds the last checkpoint before the moment and replays forward to it, exactly.
-Partial Public NotInheritable Class SimulationPresenter
+''' <summary>
+''' Time controls: step a frame, step to the next collision, step back a frame or a collision, and
+''' scrub the timeline. The run is recorded as checkpoints (Timeline, TimelineSolver); going back
+''' rebuilds the last checkpoint before the moment and replays forward to it, exactly.
+''' </summary>
+Friend NotInheritable Class TimeMachine
+    Private ReadOnly _stage As Stage
+    Private ReadOnly _frameBudget As Func(Of Double)
+    Private ReadOnly _collided As Action(Of CollisionRecord)
+    Private ReadOnly _taken As Action(Of World, Boolean)
+    Private ReadOnly _jumped As Action
+
+    ''' <param name="frameBudget">the wall-clock seconds a frame may spend advancing, now</param>
+    ''' <param name="collided">told of every collision of the world on show (the graphs, the impulse marks)</param>
+    ''' <param name="taken">told when a checkpoint's world is put on show, and whether its container differs in size</param>
+    ''' <param name="jumped">told when the moment on show was reached by a jump (replayed at once), not by time running</param>
+    Public Sub New(stage As Stage, frameBudget As Func(Of Double), collided As Action(Of CollisionRecord), taken As Action(Of World, Boolean), jumped As Action)
+        _stage = stage
+        _frameBudget = frameBudget
+        _collided = collided
+        _taken = taken
+        _jumped = jumped
+    End Sub
+
     ''' <summary>One frame of simulated time, s (what Step and Step back move by).</summary>
     Public Const FrameSeconds As Double = 1.0 / 60.0
     ''' <summary>The most frames a step to the next collision looks ahead (10 s of simulated time).</summary>
@@ -45,6 +65,10 @@ Partial Public NotInheritable Class SimulationPresenter
     Private _timeline As Timeline
     Private _firstCollision As CollisionRecord?
     Private _watchCollisions As Boolean
+    ''' <summary>The time of the last collision the world on show reported, s (Nothing after going back in time, when it is not known).</summary>
+    Private _lastCollisionTime As Double?
+    ''' <summary>While stepping to the next collision: the time of the collision before it, s, when known.</summary>
+    Private _beforeFirst As Double?
 
     ''' <summary>The recorded run of the world on show.</summary>
     Public ReadOnly Property Timeline As Timeline
@@ -54,7 +78,7 @@ Partial Public NotInheritable Class SimulationPresenter
     End Property
 
     ''' <summary>A new run starts (a scene opened, restarted or reset): an empty timeline, and the world records into it.</summary>
-    Private Sub StartTimeline(w As World, solver As ISolver)
+    Public Sub StartTimeline(w As World, solver As ISolver)
         _timeline = New Timeline()
         UseTimeline(w, solver, restartFirst:=True)
     End Sub
@@ -72,12 +96,24 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private Function Describe(w As World) As Checkpoint
         Try
-            Return Timeline.Take(w, SolverName(w), Log.TotalSeen)
+            Return Timeline.Take(w, SolverName(w), _stage.Log.TotalSeen)
         Catch ex As Exception When TypeOf ex Is Scenes.SceneFormatException OrElse TypeOf ex Is ArgumentException OrElse TypeOf ex Is InvalidOperationException
-            Emit("checkpoint failed: " & OneLine(ex.Message))
+            _stage.Emit("checkpoint failed: " & Stage.OneLine(ex.Message))
             Return Nothing
         End Try
     End Function
+
+    ''' <summary>The name of the solver that moves the world on show ("event", "verlet", "euler").</summary>
+    Public ReadOnly Property SolverInUse As String
+        Get
+            Return SolverName(_stage.World)
+        End Get
+    End Property
+
+    ''' <summary>From now on the world on show moves with the solver <paramref name="name"/>: a change, so the run recorded ahead is forgotten.</summary>
+    Public Sub UseSolver(name As String)
+        _stage.World.Solver = Recording(SolverFactory.Create(name))
+    End Sub
 
     Private Shared Function SolverName(w As World) As String
         Dim s = TryCast(w.Solver, TimelineSolver)
@@ -85,10 +121,13 @@ Partial Public NotInheritable Class SimulationPresenter
     End Function
 
     Private Sub OnCollision(r As CollisionRecord)
-        Log.Record(r, World.DraggedBody)
-        GraphCollision(r)
-        NoteImpulses(r)
-        If _watchCollisions AndAlso Not _firstCollision.HasValue Then _firstCollision = r
+        _stage.Log.Record(r, _stage.World.DraggedBody)
+        _collided(r)
+        If _watchCollisions AndAlso Not _firstCollision.HasValue Then
+            _firstCollision = r
+            _beforeFirst = _lastCollisionTime
+        End If
+        _lastCollisionTime = r.Time
     End Sub
 
     ''' <summary>
@@ -97,62 +136,96 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' stops at the next checkpoint and takes the world from it, so the run goes on as it was recorded.
     ''' </summary>
     Private Function AdvanceOnTimeline(seconds As Double, wallSeconds As Double) As Double
-        Dim start = World.Time
+        Dim start = _stage.World.Time
         Dim ahead = _timeline?.After(start)
         If ahead IsNot Nothing AndAlso start + seconds >= ahead.Time Then
-            World.AdvanceWithin(ExactClock.DurationTo(start, ahead.Time), wallSeconds)
-            If World.Time = ahead.Time Then Take(ahead)
-            Return World.Time - start
+            _stage.World.AdvanceWithin(ExactClock.DurationTo(start, ahead.Time), wallSeconds)
+            If _stage.World.Time = ahead.Time Then Take(ahead)
+            Return _stage.World.Time - start
         End If
         ' Past the recorded future a carried body restored from a checkpoint has no hand on it any more.
-        If ahead Is Nothing AndAlso World.DraggedBody IsNot Nothing AndAlso _dragged Is Nothing Then World.EndDrag(Vector.Zero)
-        Return World.AdvanceWithin(seconds, wallSeconds)
+        If ahead Is Nothing AndAlso _stage.World.DraggedBody IsNot Nothing AndAlso Not _stage.IsCarrying Then _stage.World.EndDrag(Vector.Zero)
+        Return _stage.World.AdvanceWithin(seconds, wallSeconds)
+    End Function
+
+    ''' <summary>
+    ''' Advances by up to <paramref name="seconds"/> within <paramref name="wallSeconds"/> of wall-clock
+    ''' time; returns the simulated seconds done. A scene the event solver cannot yet move (a chain of
+    ''' links) is handed to the Verlet solver, with a message, and the frame carries on with it.
+    ''' </summary>
+    Public Function Advance(seconds As Double, wallSeconds As Double) As Double
+        Try
+            Return AdvanceOnTimeline(seconds, wallSeconds)
+        Catch ex As UnsupportedSceneException
+            _stage.World.Solver = Recording(SolverFactory.Create("verlet"))
+            _stage.ShowMessage(Stage.OneLine(ex.Message) & " This scene now runs with the Verlet solver (fixed time step " &
+                        Units.Sig(_stage.World.Solver.TimeStep.GetValueOrDefault() * 1000) & " ms), which is not exact.")
+            _stage.Emit("solver verlet: " & Stage.OneLine(ex.Message))
+            Return AdvanceOnTimeline(seconds, wallSeconds)
+        End Try
     End Function
 
     ''' <summary>Puts the world of a checkpoint on show, with its clock and collision count.</summary>
     Private Sub Take(point As Checkpoint)
         Dim w = Timeline.Build(point)
-        Dim resized = w.Width <> World.Width OrElse w.Height <> World.Height
+        _lastCollisionTime = Nothing
+        Dim resized = w.Width <> _stage.World.Width OrElse w.Height <> _stage.World.Height
         UseTimeline(w, SolverFactory.Create(point.SolverName), restartFirst:=False)
-        ' A cue being aimed while the run replays keeps aiming at the same body of the new world.
-        If _AimedBody IsNot Nothing Then _AimedBody = w.Find(_AimedBody.Id)
-        _World = w
-        Log.ContinueFrom(point.Collisions)
-        ' Going back is not building: Restart keeps the start it had.
-        _startBodies = w.Bodies.ToArray()
-        _startWidth = w.Width
-        _startHeight = w.Height
-        _startLinks = w.Links.Count
-        If resized Then
-            Inputs.ContainerWidthText = Units.Input(w.Width)
-            Inputs.ContainerHeightText = Units.Input(w.Height)
-            FitView()
-            _window.ShowInputs()
+        _stage.World = w
+        _stage.Log.ContinueFrom(point.Collisions)
+        ' The other parts follow the new world (a cue being aimed, Restart's start, the view).
+        _taken(w, resized)
+    End Sub
+
+    ''' <summary>The world on show now as a checkpoint (every number to the last bit), or Nothing when it cannot be written down.</summary>
+    Public Function Checkpoint() As Checkpoint
+        Return Describe(_stage.World)
+    End Function
+
+    ''' <summary>
+    ''' Puts the world of <paramref name="point"/> on show as a change (Undo and Redo): exactly as it
+    ''' was, clock and collision count included, with the gravity and restitution set now (or its
+    ''' own, <paramref name="withSettings"/>: undoing Reset). Unlike
+    ''' going back in time it starts a new run from there: what was recorded after that moment is
+    ''' forgotten, as after any change.
+    ''' </summary>
+    Public Sub PutBack(point As Checkpoint, withSettings As Boolean)
+        Dim now = _stage.World
+        Dim w = Timeline.Build(point)
+        If Not withSettings Then
+            w.Gravity = now.Gravity
+            w.Restitution = now.Restitution
         End If
+        _lastCollisionTime = Nothing
+        Dim resized = w.Width <> now.Width OrElse w.Height <> now.Height
+        UseTimeline(w, SolverFactory.Create(point.SolverName), restartFirst:=True)
+        _stage.World = w
+        _stage.Log.ContinueFrom(point.Collisions)
+        _taken(w, resized)
     End Sub
 
     ''' <summary>Pauses (if running) for a step, ending any gesture.</summary>
     Private Sub PauseForStep()
-        EndGestures()
-        If Not IsPaused Then
-            _IsPaused = True
-            Emit("paused t=" & Units.Num(World.Time, 3) & " s")
+        _stage.EndGestures()
+        If Not _stage.IsPaused Then
+            _stage.IsPaused = True
+            _stage.Emit("paused t=" & Units.Num(_stage.World.Time, 3) & " s")
         End If
     End Sub
 
     ''' <summary>Advances exactly <paramref name="seconds"/> of simulated time (following the recorded run where there is one).</summary>
     Private Sub AdvanceExactly(seconds As Double)
-        Dim target = World.Time + seconds
-        Do While World.Time < target
+        Dim target = _stage.World.Time + seconds
+        Do While _stage.World.Time < target
             ' Through the frame's own path, so a scene the event solver cannot move falls back to Verlet here too.
-            AdvanceOrFallBack(ExactClock.DurationTo(World.Time, target), FrameBudgetSeconds)
+            Advance(ExactClock.DurationTo(_stage.World.Time, target), _frameBudget())
         Loop
-        Log.EndFrame()
+        _stage.Log.EndFrame()
     End Sub
 
     ''' <summary>Step: pauses, then moves one frame (1/60 s) on.</summary>
     Public Sub StepFrame()
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
                 AdvanceExactly(FrameSeconds)
@@ -162,10 +235,10 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Step back: pauses, then goes one frame (1/60 s) back, or to the earliest moment kept.</summary>
     Public Sub StepBackFrame()
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
-                ShowMoment(World.Time - FrameSeconds)
+                ShowMoment(_stage.World.Time - FrameSeconds)
                 ShowStep("step back")
             End Sub)
     End Sub
@@ -177,69 +250,91 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <see cref="MaxFramesToCollision"/> frames ahead.
     ''' </summary>
     Public Sub StepToNextCollision()
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
-                TryCast(World.Solver, TimelineSolver)?.CheckpointIfChanged()
-                Dim before = Log.TotalSeen
+                TryCast(_stage.World.Solver, TimelineSolver)?.CheckpointIfChanged()
+                Dim before = _stage.Log.TotalSeen
                 _firstCollision = Nothing
                 _watchCollisions = True
                 Try
                     For k = 1 To MaxFramesToCollision
                         AdvanceExactly(FrameSeconds)
-                        If Log.TotalSeen > before Then Exit For
+                        If _stage.Log.TotalSeen > before Then Exit For
                     Next
                 Finally
                     _watchCollisions = False
                 End Try
                 If Not _firstCollision.HasValue Then
                     ShowStep("next collision: none")
-                    ShowMessage("No collision in the next " & Units.Quantity(MaxFramesToCollision * FrameSeconds, "s") & " of simulated time.")
+                    _stage.ShowMessage("No collision in the next " & Units.Quantity(MaxFramesToCollision * FrameSeconds, "s") & " of simulated time.")
                     Return
                 End If
                 Dim hit = _firstCollision.Value
-                If SolverName(World) = "event" AndAlso hit.Time < World.Time Then ShowMoment(hit.Time)
+                ' The collision before it, to write the time with enough figures to tell the two apart.
+                Dim previousTime = If(_beforeFirst, LastCollisionBefore(hit.Time)?.Last.Time)
+                If SolverName(_stage.World) = "event" AndAlso hit.Time < _stage.World.Time Then ShowMoment(hit.Time)
                 ShowStep("next collision")
-                ShowMessage("Collision " & Log.TotalSeen & ": " & PairName(hit) & " at t = " & Units.Sig(hit.Time) & " s.")
+                _stage.ShowMessage(CollisionMessage(_stage.Log.TotalSeen, hit, previousTime))
             End Sub)
     End Sub
 
     ''' <summary>Step back a collision: pauses and goes back to the last collision before now (just after it).</summary>
     Public Sub StepToPreviousCollision()
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
-                TryCast(World.Solver, TimelineSolver)?.CheckpointIfChanged()
-                Dim now = World.Time
+                TryCast(_stage.World.Solver, TimelineSolver)?.CheckpointIfChanged()
+                Dim now = _stage.World.Time
                 Dim last = LastCollisionBefore(now)
                 If Not last.HasValue Then
                     ShowStep("previous collision: none")
-                    ShowMessage("There is no earlier collision in the recorded run.")
+                    _stage.ShowMessage("There is no earlier collision in the recorded run.")
                     Return
                 End If
-                Dim found = last.Value
+                Dim found = last.Value.Last
                 ShowMoment(found.Time)
                 ShowStep("previous collision")
-                ShowMessage("Collision " & Log.TotalSeen & ": " & PairName(found) & " at t = " & Units.Sig(found.Time) & " s.")
+                _stage.ShowMessage(CollisionMessage(_stage.Log.TotalSeen, found, last.Value.Before?.Time))
             End Sub)
     End Sub
 
-    ''' <summary>The last collision strictly before <paramref name="time"/>, found by replaying the recorded run on a copy, or Nothing.</summary>
-    Private Function LastCollisionBefore(time As Double) As CollisionRecord?
+    ''' <summary>
+    ''' The last collision strictly before <paramref name="time"/>, and the one before it when the same
+    ''' stretch between checkpoints holds it, found by replaying the recorded run on a copy; Nothing
+    ''' when there is none.
+    ''' </summary>
+    Private Function LastCollisionBefore(time As Double) As (Last As CollisionRecord, Before As CollisionRecord?)?
         Dim until = time
         Dim point = _timeline.Before(until)
         Do While point IsNot Nothing
             Dim last As CollisionRecord? = Nothing
+            Dim previous As CollisionRecord? = Nothing
             Dim probe = Timeline.Build(point)
             probe.Solver = SolverFactory.Create(point.SolverName)
             Dim limit = until
-            probe.CollisionListener = Sub(r) If r.Time < limit Then last = r
+            probe.CollisionListener =
+                Sub(r)
+                    If r.Time >= limit Then Return
+                    previous = last
+                    last = r
+                End Sub
             probe.Advance(ExactClock.DurationTo(probe.Time, until))
-            If last.HasValue Then Return last
+            If last.HasValue Then Return (last.Value, previous)
             until = point.Time
             point = _timeline.Before(until)
         Loop
         Return Nothing
+    End Function
+
+    ''' <summary>
+    ''' "Collision 908: red ↔ blue at t = 3.141593 s.": the time with enough figures to tell it from the
+    ''' collision before (<paramref name="before"/>, s, when known), and said when both were at the same instant.
+    ''' </summary>
+    Private Shared Function CollisionMessage(count As Long, hit As CollisionRecord, before As Double?) As String
+        Dim same = before.HasValue AndAlso before.Value = hit.Time
+        Return "Collision " & count & ": " & PairName(hit) & " at t = " & Units.SigApart(hit.Time, before) & " s" &
+               If(same, ", the same instant as the collision before it.", ".")
     End Function
 
     ''' <summary>The timeline slider was moved to <paramref name="position"/> (0 to <see cref="TimelineSteps"/>).</summary>
@@ -253,12 +348,15 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Pauses and shows the run as it was at <paramref name="time"/> (s), within the timeline.</summary>
     Public Sub RewindTo(time As Double)
         If Double.IsNaN(time) Then Return
-        Guarded(
+        _stage.Guarded(
             Sub()
                 PauseForStep()
                 ShowMoment(time)
                 ShowStep("rewound")
-                ShowMessage("Back at t = " & Units.Quantity(World.Time, "s") & " (kept: " & Units.Sig(_timeline.Earliest) & " to " & Units.Quantity(_timeline.Latest, "s") & "). Resume replays the run as it was; any change starts a new one from here.")
+                ' True while there is a recorded run ahead to replay: a change (a new g, a push) starts a
+                ' new run and forgets it, and a replay that reaches the latest moment has none left.
+                _stage.ShowMessage("Back at t = " & Units.Quantity(_stage.World.Time, "s") & " (kept: " & Units.Sig(_timeline.Earliest) & " to " & Units.Quantity(_timeline.Latest, "s") & "). Resume replays the run as it was; any change starts a new one from here.",
+                            Function() _stage.World.Time < _timeline.Latest)
             End Sub)
     End Sub
 
@@ -268,14 +366,15 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' the mouse, which is not kept, so there it stops where the carry began.
     ''' </summary>
     Private Sub ShowMoment(time As Double)
-        TryCast(World.Solver, TimelineSolver)?.CheckpointIfChanged()
+        TryCast(_stage.World.Solver, TimelineSolver)?.CheckpointIfChanged()
         Dim t = Math.Max(_timeline.Earliest, Math.Min(_timeline.Latest, time))
         Dim point = _timeline.AtOrBefore(t)
         If point Is Nothing Then Return
         If point.IsCarrying Then t = point.Time
         Take(point)
-        World.Advance(ExactClock.DurationTo(World.Time, t))
-        Log.EndFrame()
+        _stage.World.Advance(ExactClock.DurationTo(_stage.World.Time, t))
+        _stage.Log.EndFrame()
+        _jumped()
     End Sub
 
     Private Shared Function PairName(r As CollisionRecord) As String
@@ -284,12 +383,12 @@ Partial Public NotInheritable Class SimulationPresenter
     End Function
 
     Private Sub ShowStep(what As String)
-        TakeSnapshot()
-        _window.ShowSettings()
-        Emit(what & " t=" & Units.Num(World.Time, 6) & " s, collisions " & Log.TotalSeen & ", timeline " & Units.Num(_timeline.Earliest, 6) & " to " & Units.Num(_timeline.Latest, 6) & " s, " & _timeline.Points.Count & " checkpoints")
-        If Trace Is Nothing Then Return
-        For Each b In World.Movables
-            Emit("state " & b.Id & " " & Exact(b.Position.X) & " " & Exact(b.Position.Y) & " " & Exact(b.Velocity.X) & " " & Exact(b.Velocity.Y))
+        _stage.TakeSnapshot()
+        _stage.Window.ShowSettings()
+        _stage.Emit(what & " t=" & Units.Num(_stage.World.Time, 6) & " s, collisions " & _stage.Log.TotalSeen & ", timeline " & Units.Num(_timeline.Earliest, 6) & " to " & Units.Num(_timeline.Latest, 6) & " s, " & _timeline.Points.Count & " checkpoints")
+        If Not _stage.Tracing Then Return
+        For Each b In _stage.World.Movables
+            _stage.Emit("state " & b.Id & " " & Exact(b.Position.X) & " " & Exact(b.Position.Y) & " " & Exact(b.Velocity.X) & " " & Exact(b.Velocity.Y))
         Next
     End Sub
 
@@ -303,14 +402,14 @@ Partial Public NotInheritable Class SimulationPresenter
         Get
             Dim span = _timeline.Latest - _timeline.Earliest
             If Not (span > 0) Then Return TimelineSteps
-            Return CInt(Math.Round(Math.Max(0, Math.Min(1, (World.Time - _timeline.Earliest) / span)) * TimelineSteps))
+            Return CInt(Math.Round(Math.Max(0, Math.Min(1, (_stage.World.Time - _timeline.Earliest) / span)) * TimelineSteps))
         End Get
     End Property
 
     ''' <summary>"Timeline: t = 3.20 s (kept 0 – 12.0 s)": the slider's tip.</summary>
     Public ReadOnly Property TimelineText As String
         Get
-            Return "Timeline: t = " & Units.Quantity(World.Time, "s") & " (kept " & Units.Sig(_timeline.Earliest) & " – " & Units.Quantity(_timeline.Latest, "s") & ")"
+            Return "Timeline: t = " & Units.Quantity(_stage.World.Time, "s") & " (kept " & Units.Sig(_timeline.Earliest) & " – " & Units.Quantity(_timeline.Latest, "s") & ")"
         End Get
     End Property
 End Class

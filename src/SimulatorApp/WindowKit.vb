@@ -1,0 +1,145 @@
+Option Strict On
+Imports System.Drawing
+Imports System.Windows.Forms
+Imports PhysicsEngine.Presentation
+
+''' <summary>
+''' What the window's parts share, and all they see of one another: the presenter, the trace, the
+''' screen's scale and the measure of text at the DPI GDI+ draws at, the tooltips, the window's font,
+''' and how a teacher's action is run (then the canvas redrawn). Each part (the lesson, solver and
+''' export menus, the Graphs tab, the player row, the momentum boxes, the table's edit box, the side
+''' panel's rows) keeps its own controls and state and is handed this; <see cref="MainForm"/> builds them.
+''' </summary>
+Friend NotInheritable Class WindowKit
+    Implements IDisposable
+
+    Private ReadOnly _window As Form
+    Private ReadOnly _act As Action(Of Action)
+    Private _measureBitmap As Bitmap
+    Private _measure As Graphics
+
+    ''' <param name="window">the main window (its font, its screen)</param>
+    ''' <param name="act">runs a teacher's action and redraws the canvas</param>
+    Public Sub New(window As Form, dpi As ScreenDpi, trace As Action(Of String), act As Action(Of Action))
+        _window = window
+        Me.Dpi = dpi
+        Me.Trace = trace
+        _act = act
+    End Sub
+
+    ''' <summary>The presenter (set once it exists: it is made after the controls).</summary>
+    Public Property Presenter As SimulationPresenter
+
+    ''' <summary>The screen's DPI and scale.</summary>
+    Public ReadOnly Property Dpi As ScreenDpi
+
+    ''' <summary>Receives one line per action with --trace; Nothing otherwise.</summary>
+    Public ReadOnly Property Trace As Action(Of String)
+
+    ''' <summary>The tooltips of every control.</summary>
+    Public ReadOnly Property Tips As New ToolTip()
+
+    ''' <summary>The window's font now (large fonts change it).</summary>
+    Public ReadOnly Property Font As Font
+        Get
+            Return _window.Font
+        End Get
+    End Property
+
+    ''' <summary>The window (menus and dialogs open over it).</summary>
+    Public ReadOnly Property Window As Form
+        Get
+            Return _window
+        End Get
+    End Property
+
+    ''' <summary>Writes a line to the trace, if there is one.</summary>
+    Public Sub Emit(line As String)
+        Trace?.Invoke(line)
+    End Sub
+
+    ''' <summary>Runs a teacher's action, then redraws the canvas. The presenter turns failures into messages.</summary>
+    Public Sub Act(action As Action)
+        _act(action)
+    End Sub
+
+    ''' <summary>Pixels at 96 dpi to pixels on this screen.</summary>
+    Public Function S(px As Double) As Integer
+        Dim f = If(Dpi IsNot Nothing, Dpi.Scale, 1.0)
+        Return CInt(Math.Round(px * f))
+    End Function
+
+    ''' <summary>
+    ''' The size of text as it will be drawn, wrapped at <paramref name="width"/> px when given. It is
+    ''' measured at the DPI GDI+ draws points at: Mono's own measures (Font.Height, TextRenderer) use
+    ''' the DPI it reports, which under a desktop's Xft.dpi is not the one it draws with.
+    ''' </summary>
+    Public Function Measure(text As String, font As Font, Optional width As Integer = 0) As Size
+        If _measure Is Nothing Then
+            _measureBitmap = New Bitmap(1, 1)
+            _measureBitmap.SetResolution(CSng(Dpi.Graphics), CSng(Dpi.Graphics))
+            _measure = Graphics.FromImage(_measureBitmap)
+        End If
+        Dim sz = If(width > 0, _measure.MeasureString(If(text, ""), font, width), _measure.MeasureString(If(text, ""), font))
+        Return New Size(CInt(Math.Ceiling(sz.Width)), CInt(Math.Ceiling(sz.Height)))
+    End Function
+
+    ''' <summary>The height of one line of text in <paramref name="font"/>, px.</summary>
+    Public Function LineHeight(font As Font) As Integer
+        Return Measure("Ag", font).Height
+    End Function
+
+    ''' <summary>Height of a row of buttons: Mono centres a caption by the font height it reports, which a desktop's Xft.dpi can make larger than the text drawn.</summary>
+    Public Function ButtonRowHeight() As Integer
+        Return Math.Max(S(26), Math.Max(LineHeight(Font) + S(9), Font.Height + S(4)))
+    End Function
+
+    ''' <summary>A button in the theme's colours (flat with a thick edge in high contrast).</summary>
+    Public Shared Sub Style(b As Button, theme As Theme)
+        If b Is Nothing Then Throw New ArgumentNullException(NameOf(b))
+        If theme Is Nothing Then Throw New ArgumentNullException(NameOf(theme))
+        b.ForeColor = ScenePainter.Rgb(theme.PanelText)
+        b.BackColor = ScenePainter.Rgb(theme.Button)
+        b.FlatStyle = If(theme.IsHighContrast, FlatStyle.Flat, FlatStyle.Standard)
+        b.FlatAppearance.BorderColor = ScenePainter.Rgb(theme.PanelText)
+        b.FlatAppearance.BorderSize = If(theme.IsHighContrast, 2, 1)
+        b.UseVisualStyleBackColor = Not theme.IsHighContrast
+    End Sub
+
+    ''' <summary>A drop-down menu in the theme's colours and the window's font, emptied to be filled again.</summary>
+    Public Sub Prepare(menu As ContextMenuStrip, theme As Theme)
+        For Each old In menu.Items.Cast(Of ToolStripItem)().ToList()
+            old.Dispose()
+        Next
+        menu.Items.Clear()
+        menu.Font = Font
+        menu.Renderer = If(theme.IsHighContrast, New ToolStripProfessionalRenderer(New LessonMenuColours()), New ToolStripProfessionalRenderer())
+        menu.BackColor = ScenePainter.Rgb(theme.Panel)
+        menu.ForeColor = ScenePainter.Rgb(theme.PanelText)
+        menu.ShowItemToolTips = True
+    End Sub
+
+    ''' <summary>Where a menu of <paramref name="size"/> opens under <paramref name="button"/>, moved left and up as far as it takes to stay on the screen.</summary>
+    Public Function OnScreen(button As Control, size As Size) As Point
+        Dim area = Screen.FromControl(_window).WorkingArea
+        Dim at = button.PointToScreen(New Point(0, button.Height))
+        at.X = Math.Max(area.Left, Math.Min(at.X, area.Right - size.Width))
+        at.Y = Math.Max(area.Top, Math.Min(at.Y, area.Bottom - size.Height))
+        Return at
+    End Function
+
+    ''' <summary>With --trace: a drop-down's rectangle on the screen and the screen's, and whether every item's text fits ("menu … on screen").</summary>
+    Public Sub TraceMenuBounds(name As String, menu As ToolStrip)
+        If Trace Is Nothing Then Return
+        Dim r = New Drawing.Rectangle(menu.PointToScreen(Point.Empty), menu.Size)
+        Dim area = Screen.FromControl(_window).Bounds
+        Dim fits = menu.Items.Cast(Of ToolStripItem)().All(Function(i) Measure(i.Text, menu.Font).Width <= i.Bounds.Width)
+        Trace.Invoke(name & " at " & r.X & " " & r.Y & " " & r.Width & " " & r.Height & " screen " & area.Width & " " & area.Height & If(fits, " fits", " cut"))
+    End Sub
+
+    Public Sub Dispose() Implements IDisposable.Dispose
+        Tips.Dispose()
+        _measure?.Dispose()
+        _measureBitmap?.Dispose()
+    End Sub
+End Class
