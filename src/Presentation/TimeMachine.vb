@@ -150,19 +150,10 @@ Friend NotInheritable Class TimeMachine
 
     ''' <summary>
     ''' Advances by up to <paramref name="seconds"/> within <paramref name="wallSeconds"/> of wall-clock
-    ''' time; returns the simulated seconds done. A scene the event solver cannot yet move (a chain of
-    ''' links) is handed to the Verlet solver, with a message, and the frame carries on with it.
+    ''' time; returns the simulated seconds done.
     ''' </summary>
     Public Function Advance(seconds As Double, wallSeconds As Double) As Double
-        Try
-            Return AdvanceOnTimeline(seconds, wallSeconds)
-        Catch ex As UnsupportedSceneException
-            _stage.World.Solver = Recording(SolverFactory.Create("verlet"))
-            _stage.ShowMessage(Stage.OneLine(ex.Message) & " This scene now runs with the Verlet solver (fixed time step " &
-                        Units.Sig(_stage.World.Solver.TimeStep.GetValueOrDefault() * 1000) & " ms), which is not exact.")
-            _stage.Emit("solver verlet: " & Stage.OneLine(ex.Message))
-            Return AdvanceOnTimeline(seconds, wallSeconds)
-        End Try
+        Return AdvanceOnTimeline(seconds, wallSeconds)
     End Function
 
     ''' <summary>Puts the world of a checkpoint on show, with its clock and collision count.</summary>
@@ -217,7 +208,6 @@ Friend NotInheritable Class TimeMachine
     Private Sub AdvanceExactly(seconds As Double)
         Dim target = _stage.World.Time + seconds
         Do While _stage.World.Time < target
-            ' Through the frame's own path, so a scene the event solver cannot move falls back to Verlet here too.
             Advance(ExactClock.DurationTo(_stage.World.Time, target), _frameBudget())
         Loop
         _stage.Log.EndFrame()

@@ -121,6 +121,37 @@ Public Class PlacingAndCarryingTests
     End Sub
 
     <Fact>
+    Public Sub CarryingAPolygonOnAStringPastItsLength_ThenLettingGo_RunsOn()
+        ' The hand pulled a polygon on a string past the string's length; let go, the event solver could not get
+        ' past that state, and every frame after spun on it until the window gave up. The hand now keeps the
+        ' string at most taut, and the run goes on, frame after frame, with the string never longer than itself.
+        Dim w As New World(10, 10, 9.81, 0.5)
+        Dim p As New Polygon({New Vector(5, 3), New Vector(5.3, 3), New Vector(5.15, 3.3)}, 1, Vector.Zero, "p")
+        w.Add(p)
+        Dim s = Link.CreateTie(LinkKind.String, p, New Vector(5.15, 4.5), 1.5)
+        w.Add(s)
+        w.Solver = SolverFactory.Create("event")
+        Dim h As New PresenterHarness(w)
+        Dim a = h.Px(p.CentreOfMass.X, p.CentreOfMass.Y)
+        h.P.PointerDown(PointerButton.Right, a.X, a.Y)
+        For k = 1 To 30
+            Dim c = h.Px(5.15 + 0.2 * k, 3.1 - 0.1 * k)
+            h.P.PointerMove(c.X, c.Y)
+            h.P.Tick(1 / 60.0)
+            Assert.True(s.Distance <= 1.5 * (1 + 0.000000001), $"the string is {s.Distance} m long while carried")
+        Next
+        h.P.PointerUp(PointerButton.Right, a.X, a.Y)
+        For k = 1 To 60
+            Dim before = h.P.World.Time
+            h.P.Tick(1 / 60.0)
+            Assert.False(h.P.IsPaused, h.P.Message)
+            Assert.True(h.P.World.Time > before, $"no time passed from t = {before} s: {h.P.Message}")
+            Assert.True(s.Distance <= 1.5 * (1 + 0.000000001), $"the string is {s.Distance} m long at t = {h.P.World.Time} s")
+        Next
+        Assert.Equal("event", h.P.World.Solver.Name)
+    End Sub
+
+    <Fact>
     Public Sub CarryingABallIntoAnotherAgainstAWall_StopsInsteadOfSqueezingIt()
         ' Without the stop, the ball caught between the wall and the carried ball (infinitely heavy)
         ' bounces between them without end: tens of millions of collisions, and the carried ball
