@@ -379,6 +379,26 @@ Namespace EventDriven
         End Sub
 
         <Fact>
+        Public Sub TwoBallsOnAStretchedSpinningSpring_KeepTheirEnergy_To1e9_Over100Seconds()
+            ' g = 0: the pair spins about its centre of mass while the spring stretches and shortens. Kinetic plus
+            ' spring energy is the only energy there is, and nothing takes any away.
+            Dim w = EventWorld(0, 1.0)
+            Dim a As New Circle(New Vector(4, 5), 0.1, 1, New Vector(0, 1.5))
+            Dim b As New Circle(New Vector(6, 5), 0.1, 2, New Vector(0, -0.75))
+            w.Add(a)
+            w.Add(b)
+            w.Add(Link.CreateSpring(a, b, 20, 1.2))
+            Dim energy = w.KineticEnergy() + w.PotentialEnergy()
+            Dim worst = 0.0
+            For i = 1 To 100
+                w.Advance(1.0)
+                worst = Math.Max(worst, Math.Abs(w.KineticEnergy() + w.PotentialEnergy() - energy) / energy)
+            Next
+            Assert.True(worst <= 0.000000001, $"the energy drifted by {worst} of itself")
+            Assert.Equal(100.0, w.Time, 9)
+        End Sub
+
+        <Fact>
         Public Sub VerticalSpringThrownAboveItsAnchor_IsIntegratedFromThere()
             ' The closed form holds below the anchor; above it the spring is squashed the other way.
             Dim w = EventWorld()

@@ -12,8 +12,8 @@ Option Strict On
 Friend NotInheritable Class IntegratedMotion
     Inherits LinkedMotion
 
-    Private Const RelativeTolerance As Double = 0.00000000001
-    Private Const AbsoluteTolerance As Double = 0.000000000001
+    Private Const RelativeTolerance As Double = 0.000000000003
+    Private Const AbsoluteTolerance As Double = 0.0000000000003
     ' Steps kept from one start at most: far more than any advance needs, far less than the memory holds.
     Private Const MaxSteps As Integer = 2000000
 
