@@ -127,12 +127,12 @@ Friend Module Campaign
         Return New RunPlan(plan.Time, v.Sample, 0, plan.Cap)
     End Function
 
-    ''' <summary>Heavy, unsupported and unstable runs are noted, not failures (see <see cref="Invariants"/>).</summary>
+    ''' <summary>Heavy and unstable runs are noted, not failures (see <see cref="Invariants"/>).</summary>
     Friend Function IsNoted(invariant As String) As Boolean
-        Return invariant = Invariants.Heavy OrElse invariant = Invariants.Unsupported OrElse invariant = Invariants.Unstable
+        Return invariant = Invariants.Heavy OrElse invariant = Invariants.Unstable
     End Function
 
-    ''' <summary>How a line starts: FAIL, or HEAVY, UNSUPPORTED or UNSTABLE for a run that is noted.</summary>
+    ''' <summary>How a line starts: FAIL, or HEAVY or UNSTABLE for a run that is noted.</summary>
     Friend Function LinePrefix(invariant As String) As String
         If IsNoted(invariant) Then Return invariant.ToUpperInvariant() & " "
         Return "FAIL "

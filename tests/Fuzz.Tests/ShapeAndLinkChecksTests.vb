@@ -64,7 +64,7 @@ Public Class ShapeAndLinkChecksTests
     End Sub
 
     <Fact>
-    Public Sub ABallBalancedOnAPegTop_RestsThere_BreakingNoInvariant_AndUnsupportedIsNoFailure()
+    Public Sub ABallBalancedOnAPegTop_RestsThere_BreakingNoInvariant_AndARefusalIsAFailure()
         ' A ball balanced on top of a fixed peg beside a pendulum: the peg's push is straight up and matches its
         ' weight, so it rests there (an unstable balance, but one), and nothing is broken.
         Const Scene As String = "{""format"": ""physics-scene/1"", ""world"": {""width"": 10, ""height"": 10, ""gravity"": 9.81, ""restitution"": 0.5, ""walls"": true}," &
@@ -75,8 +75,8 @@ Public Class ShapeAndLinkChecksTests
         Dim outcome = SceneRunner.Run(Scene, "event", 1.0, 0.05, 60)
         Assert.True(outcome.Violations.Count = 0, String.Join("; ", outcome.Violations))
         Assert.True(outcome.Completed)
-        Assert.DoesNotContain(Invariants.Unsupported, Invariants.All)
-        Assert.Equal("UNSUPPORTED ", Campaign.LinePrefix(Invariants.Unsupported))
+        Assert.Contains(Invariants.SolverRefused, Invariants.All)
+        Assert.Equal("FAIL ", Campaign.LinePrefix(Invariants.SolverRefused))
         Assert.Equal("FAIL ", Campaign.LinePrefix(Invariants.Overlap))
     End Sub
 End Class

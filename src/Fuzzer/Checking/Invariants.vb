@@ -40,13 +40,10 @@ Namespace Checking
         ''' </summary>
         Friend Const Heavy As String = "heavy"
         ''' <summary>
-        ''' Not a failure: the solver refused the scene with <see cref="UnsupportedSceneException"/>, the plain
-        ''' sentence it gives for what it does not yet follow (docs/links.md: a box or polygon coming to rest on
-        ''' anything but the floor in a scene with links; rods or strings that hold a body in more ways than it
-        ''' can move), and put the world back exactly as it was before the advance, as it promises. A refusal that
-        ''' leaves the world changed is an <see cref="Crash"/>. The run stops there and is reported as unsupported.
+        ''' The solver refused the scene (<see cref="UnsupportedSceneException"/>): every solver takes every scene the
+        ''' reader takes, so a refusal is a failure. The run stops there.
         ''' </summary>
-        Friend Const Unsupported As String = "unsupported"
+        Friend Const SolverRefused As String = "solver-refused"
 
         ''' <summary>
         ''' Not a failure: a stepping-solver run that blew up (a thrown exception, or positions or velocities no
@@ -65,6 +62,6 @@ Namespace Checking
         Friend Const HeavyRepeatFraction As Double = 0.01
 
         ''' <summary>Every name, in the order reports list them.</summary>
-        Friend ReadOnly Property All As IReadOnlyList(Of String) = {NotFinite, Outside, CentreInside, Overlap, Energy, Sampling, WallTime, Crash, Refused}
+        Friend ReadOnly Property All As IReadOnlyList(Of String) = {NotFinite, Outside, CentreInside, Overlap, Energy, Sampling, WallTime, Crash, Refused, SolverRefused}
     End Module
 End Namespace
