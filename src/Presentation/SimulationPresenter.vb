@@ -467,7 +467,11 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Undo or Redo puts the world of <paramref name="point"/> back on show: the gestures end, and the run goes on from it (see <see cref="EditHistory"/>).</summary>
     Private Sub PutBack(point As Checkpoint, withSettings As Boolean)
         _pointer.DropAll()
+        Dim friction = World.Friction, staticFriction = World.StaticFriction
         _time.PutBack(point, withSettings)
+        ' Friction is a setting like gravity: it stays as set (unless the edit set it too: Reset).
+        If Not withSettings Then WorldSettings.KeepFriction(World, friction, staticFriction)
+        _settings.ShowFriction()
         ' Undoing is building: Restart comes back to what is on show now.
         _lessons.RememberStart()
         TakeSnapshot()
@@ -495,6 +499,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Log.Clear()
         Inputs.ContainerWidthText = Units.Input(w.Width)
         Inputs.ContainerHeightText = Units.Input(w.Height)
+        _settings.ShowFriction()
         FitView()
         _Snapshot = TableSnapshot.Take(w, 0)
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(w.Width, w.Height))
@@ -1489,6 +1494,26 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Changes the container's size to the width and height typed (m); a size with no room for the balls is refused with the reason.</summary>
     Public Sub ResizeContainer(widthText As String, heightText As String)
         _settings.ResizeContainer(widthText, heightText)
+    End Sub
+
+    ''' <summary>"Friction μk = 0.3, μs = 0.5", or "No friction (every surface is ice)".</summary>
+    Public ReadOnly Property FrictionText As String
+        Get
+            Return _settings.FrictionText
+        End Get
+    End Property
+
+    ''' <summary>Said where μ is set: balls take no friction (they would roll; nothing turns).</summary>
+    Public Const FrictionBallsNote As String = WorldSettings.BallsNote
+
+    ''' <summary>Sets the world's μk and μs from the friction boxes.</summary>
+    Public Sub SetFriction()
+        _settings.SetFriction()
+    End Sub
+
+    ''' <summary>Sets the world's μk and μs from typed text (an empty μs is μk); a negative value or μs below μk is refused, naming the box.</summary>
+    Public Sub SetFriction(kineticText As String, staticText As String)
+        _settings.SetFriction(kineticText, staticText)
     End Sub
 
     ''' <summary>The container's walls on or off (a body too large for the box makes it refuse, with the reason).</summary>
