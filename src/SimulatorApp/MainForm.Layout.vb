@@ -112,6 +112,11 @@ Partial Friend NotInheritable Class MainForm
         End If
         _rows.Row(line + S(2), (_restitutionLabel, 1.0))
         _rows.Row(sliderHeight, (_restitution, 1.0))
+        ' Friction's two boxes and their button on one row when they fit: "Friction μk [0.3] μs [0.5] [Set friction]".
+        If Not (pairs AndAlso _rows.FitRow(rh + S(2), _frictionLabel, _friction, _staticFrictionLabel, _staticFriction, _setFriction)) Then
+            _rows.Fields(rh, pairs, (_frictionLabel, _friction), (_staticFrictionLabel, _staticFriction))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_setFriction, 0.65))
+        End If
         _rows.Gap()
         _rows.Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
         ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
@@ -327,6 +332,8 @@ Partial Friend NotInheritable Class MainForm
             ("canvas", _canvas), ("totals", _totals), ("message", _message), ("pause", _pause), ("reset", _reset), ("delete-mode", _deleteMode),
             ("speed-label", _speedLabel), ("speed", _speed), ("gravity-label", _gravityLabel), ("gravity", _gravity),
             ("restitution-label", _restitutionLabel), ("restitution", _restitution),
+            ("friction-label", _frictionLabel), ("friction", _friction), ("static-friction-label", _staticFrictionLabel),
+            ("static-friction", _staticFriction), ("set-friction", _setFriction),
             ("radius-label", _radiusLabel), ("mass-label", _massLabel), ("rect-width-label", _widthLabel), ("rect-height-label", _heightLabel),
             ("box-width-label", _boxWidthLabel), ("box-height-label", _boxHeightLabel),
             ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),

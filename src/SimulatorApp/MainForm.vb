@@ -54,6 +54,11 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _gravityMarks As New List(Of Button)
     Private ReadOnly _restitutionLabel As New Label()
     Private ReadOnly _restitution As New ScaledSlider()
+    Private ReadOnly _frictionLabel As New Label()
+    Private ReadOnly _friction As New TextBox()
+    Private ReadOnly _staticFrictionLabel As New Label()
+    Private ReadOnly _staticFriction As New TextBox()
+    Private ReadOnly _setFriction As New Button()
     Private ReadOnly _radiusLabel As New Label()
     Private ReadOnly _radius As New TextBox()
     Private ReadOnly _massLabel As New Label()
@@ -257,6 +262,14 @@ Partial Friend NotInheritable Class MainForm
         Dim rs = SimulationPresenter.RestitutionSlider
         SetUpSlider(_restitution, rs.Steps, rs.PositionOf(0.1), Sub() _presenter.RestitutionSliderMoved(_restitution.Value))
         _restitution.LargeChange = rs.PositionOf(0.1)
+        AddField(_frictionLabel, "Friction μk", _friction, InputField.FrictionKinetic)
+        AddField(_staticFrictionLabel, "μs", _staticFriction, InputField.FrictionStatic)
+        AddButton(_setFriction, Captions.SetFriction, Sub() _presenter.SetFriction())
+        ' Where μ is set, the teacher learns that balls take no friction.
+        Dim frictionTip = "μk: sliding friction; μs: static friction (empty: the same as μk), of walls, ramps, fixed bodies, boxes and polygons. " & SimulationPresenter.FrictionBallsNote
+        For Each c In New Control() {_frictionLabel, _friction, _staticFrictionLabel, _staticFriction, _setFriction}
+            _kit.Tips.SetToolTip(c, frictionTip)
+        Next
 
         AddField(_radiusLabel, "Radius (m)", _radius, InputField.Radius)
         AddField(_massLabel, "Mass (kg)", _mass, InputField.Mass)
