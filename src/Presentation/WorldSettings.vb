@@ -137,7 +137,7 @@ Friend NotInheritable Class WorldSettings
     Public Const MaxFriction As Double = 10.0
 
     ''' <summary>Said wherever μ is set: why a ball slides on as if on ice.</summary>
-    Public Const BallsNote As String = "Balls take no friction: a real ball on a rough surface would roll, and nothing turns in this simulator."
+    Public Const BallsNote As String = "Balls take no friction: a real ball would roll, and nothing turns here."
 
     ''' <summary>"Friction μk = 0.3, μs = 0.5" (μs left out when it is the same as μk), or "No friction (every surface is ice)".</summary>
     Public ReadOnly Property FrictionText As String
@@ -211,7 +211,7 @@ Friend NotInheritable Class WorldSettings
                 If k.WasClamped OrElse s.WasClamped Then _stage.Window.ShowInputs()
                 _stage.Emit("friction " & Units.Num(_stage.World.Friction) & " static " & Units.Num(If(_stage.World.StaticFriction, _stage.World.Friction)))
                 Dim clamped = If(k.WasClamped OrElse s.WasClamped, "μ above " & Units.Input(MaxFriction) & " was brought to " & Units.Input(MaxFriction) & ". ", "")
-                _stage.ShowMessage(clamped & DescribeFriction(_stage.World) & " on walls, fixed bodies, ramps, boxes and polygons. " & BallsNote)
+                _stage.ShowMessage(clamped & DescribeFriction(_stage.World) & " on walls, ramps, boxes and polygons. " & BallsNote)
                 _stage.TakeSnapshot()
                 _stage.Window.ShowSettings()
             End Sub)
