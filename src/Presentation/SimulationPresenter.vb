@@ -159,6 +159,15 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Whether velocity arrows (with components) are drawn.</summary>
     Public ReadOnly Property ShowArrows As Boolean = True
 
+    ''' <summary>Whether the grid (1 m and 10 cm lines) is drawn under the bodies.</summary>
+    Public ReadOnly Property ShowGrid As Boolean
+
+    ''' <summary>The grid's lines to draw now (none while the grid is off): see <see cref="CanvasGrid.Lines"/>.</summary>
+    Public Function GridLines() As IReadOnlyList(Of GridLine)
+        If Not ShowGrid Then Return Array.Empty(Of GridLine)()
+        Return CanvasGrid.Lines(World.Width, World.Height, View, _canvasWidth, _canvasHeight, ScreenScale)
+    End Function
+
     ''' <summary>The colours in use.</summary>
     Public ReadOnly Property Theme As Theme
         Get
@@ -369,6 +378,13 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub SetHighContrast(value As Boolean)
         _HighContrast = value
         Emit("high contrast " & If(value, "on", "off"))
+        _window.ShowTheme()
+    End Sub
+
+    ''' <summary>The grid on or off: a line every metre and every 10 cm under the bodies, to read positions off the canvas.</summary>
+    Public Sub SetShowGrid(value As Boolean)
+        _ShowGrid = value
+        Emit("grid " & If(value, "on", "off"))
         _window.ShowTheme()
     End Sub
 

@@ -165,11 +165,15 @@ Partial Friend NotInheritable Class MainForm
         End If
         _rows.Gap()
         If pairs Then
-            _rows.Row(rh, (_largeFonts, 0.36), (_highContrast, 0.4), (_arrows, 0.24))
+            ' The four view boxes in one row when their captions fit there, else two to a row.
+            If Not _rows.FitRow(rh, _largeFonts, _highContrast, _arrows, _grid) Then
+                _rows.Row(rh, (_largeFonts, 0.5), (_highContrast, 0.5))
+                _rows.Row(rh, (_arrows, 0.5), (_grid, 0.5))
+            End If
             _rows.Row(rh + S(2), (_tutorial, 0.24), (_maths, 0.28), (_open, 0.24), (_save, 0.24))
         Else
             _rows.Row(rh, (_largeFonts, 0.5), (_highContrast, 0.5))
-            _rows.Row(rh, (_arrows, 1.0))
+            _rows.Row(rh, (_arrows, 0.5), (_grid, 0.5))
             _rows.Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
             _rows.Row(rh + S(2), (_open, 0.5), (_save, 0.5))
         End If
@@ -343,7 +347,7 @@ Partial Friend NotInheritable Class MainForm
             ("stiffness-label", _stiffnessLabel), ("stiffness", _stiffness),
             ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
-            ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
+            ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows), ("grid", _grid),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _sideView)}
         named.Add(("scenes", _scenes))
         named.Add(("restart", _restart))
