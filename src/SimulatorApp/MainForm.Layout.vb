@@ -75,7 +75,13 @@ Partial Friend NotInheritable Class MainForm
         _sideView.BarWidth = S(17)
         _sideView.SetBounds(w - sideWidth, 0, sideWidth, h)
         ' Laid out for the whole width; again with room for the scroll bar when the rows are taller than the panel.
+        ' At normal fonts the rows close up where the screen is too short for them with their usual spacing.
+        _rows.Compact = False
         Dim contentHeight = ArrangeSide(sideWidth, large, line)
+        If contentHeight > _sideView.ClientSize.Height AndAlso Not large Then
+            _rows.Compact = True
+            contentHeight = ArrangeSide(sideWidth, large, line)
+        End If
         If contentHeight > _sideView.ClientSize.Height Then contentHeight = ArrangeSide(_sideView.ContentWidthFor(contentHeight), large, line)
         _sideView.SetContentHeight(contentHeight)
         ' A label's words follow its new width (a long one drops its bracketed part where it would be cut).
