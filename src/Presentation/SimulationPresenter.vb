@@ -467,6 +467,8 @@ Partial Public NotInheritable Class SimulationPresenter
         _pointer.FollowWorld(w)
         _camera.FollowWorld(w)
         _lessons.FollowWorld(w)
+        ' Going back to before friction was set: the boxes show the friction of the moment on show.
+        If _settings.FollowFriction() AndAlso Not resized Then _window.ShowInputs()
         If resized Then
             Inputs.ContainerWidthText = Units.Input(w.Width)
             Inputs.ContainerHeightText = Units.Input(w.Height)

@@ -156,11 +156,26 @@ Friend NotInheritable Class WorldSettings
         Return text
     End Function
 
+    ''' <summary>The world's μk and μs the friction boxes were last given.</summary>
+    Private _shownFriction As (Kinetic As Double, [Static] As Double?)
+
     ''' <summary>The friction boxes show the world's μk and μs (a scene opened or restarted, an edit undone).</summary>
     Public Sub ShowFriction()
+        _shownFriction = (_stage.World.Friction, _stage.World.StaticFriction)
         _stage.Inputs.FrictionText = Units.Input(_stage.World.Friction)
         _stage.Inputs.StaticFrictionText = If(_stage.World.StaticFriction.HasValue, Units.Input(_stage.World.StaticFriction.Value), "")
     End Sub
+
+    ''' <summary>
+    ''' A moment of the run was put on show (going back): when its friction is not the one the boxes
+    ''' were given (the teacher set another since), the boxes show its own; otherwise what is typed in
+    ''' them stays. Returns whether they changed.
+    ''' </summary>
+    Public Function FollowFriction() As Boolean
+        If _stage.World.Friction = _shownFriction.Kinetic AndAlso Nullable.Equals(_stage.World.StaticFriction, _shownFriction.Static) Then Return False
+        ShowFriction()
+        Return True
+    End Function
 
     ''' <summary>Gives <paramref name="w"/> these μk and μs, touching it only when they differ (a change restarts the recorded run).</summary>
     Public Shared Sub KeepFriction(w As World, friction As Double, staticFriction As Double?)

@@ -122,3 +122,28 @@ Public Class FrictionSettingTests
         Assert.Equal(x0 + 4.0 / (2 * 0.5 * 9.81), crate.CentreOfMass.X, 6)
     End Sub
 End Class
+
+''' <summary>Going back in time to before friction was set shows that moment's friction, in the world and in the boxes.</summary>
+Public Class FrictionTimeTravelTests
+    <Fact>
+    Public Sub SteppingBackBeforeFrictionWasSet_BringsBackTheFrictionOfThatMoment()
+        Dim w As New World(8, 5, 9.81, 0.9)
+        w.Add(Rectangle.CreateMovable(New Vector(2, 0), 0.6, 0.5, 3.0, New Vector(2, 0), "crate"))
+        Dim h As New PresenterHarness(w)
+        For k = 1 To 6
+            h.P.Tick(1 / 60.0)
+        Next
+        h.P.TogglePause()
+        h.P.SetFriction("0.3", "0.5")
+        h.P.StepFrame()
+        h.P.StepFrame()
+        Assert.Equal(0.3, h.P.World.Friction)
+        ' Back past the moment friction was set: the scene is ice again, and the boxes say so.
+        For k = 1 To 4
+            h.P.StepBackFrame()
+        Next
+        Assert.Equal(0.0, h.P.World.Friction)
+        Assert.Equal("0", h.P.Inputs(InputField.FrictionKinetic))
+        Assert.Equal("", h.P.Inputs(InputField.FrictionStatic))
+    End Sub
+End Class
