@@ -11,7 +11,8 @@ Public NotInheritable Class BodyInputs
         {InputField.Radius, "0.25"}, {InputField.Mass, "1"},
         {InputField.RectangleWidth, "1"}, {InputField.RectangleHeight, "0.5"},
         {InputField.ContainerWidth, ""}, {InputField.ContainerHeight, ""},
-        {InputField.Sides, "5"}, {InputField.PolygonAngle, "0"}, {InputField.Stiffness, "20"}}
+        {InputField.Sides, "5"}, {InputField.PolygonAngle, "0"}, {InputField.Stiffness, "20"},
+        {InputField.FrictionKinetic, "0"}, {InputField.FrictionStatic, ""}}
 
     ''' <summary>The text of one box.</summary>
     Default Public Property Item(field As InputField) As String
@@ -117,6 +118,26 @@ Public NotInheritable Class BodyInputs
         End Get
         Set(value As String)
             Item(InputField.ContainerHeight) = value
+        End Set
+    End Property
+
+    ''' <summary>The world's μk (kinetic friction).</summary>
+    Public Property FrictionText As String
+        Get
+            Return Item(InputField.FrictionKinetic)
+        End Get
+        Set(value As String)
+            Item(InputField.FrictionKinetic) = value
+        End Set
+    End Property
+
+    ''' <summary>The world's μs (static friction); empty for the same as μk.</summary>
+    Public Property StaticFrictionText As String
+        Get
+            Return Item(InputField.FrictionStatic)
+        End Get
+        Set(value As String)
+            Item(InputField.FrictionStatic) = value
         End Set
     End Property
 End Class

@@ -24,11 +24,13 @@ Public Module Captions
     Public Const AddSpring As String = "+ Spring"
     Public Const AddRod As String = "+ Rod"
     Public Const AddString As String = "+ String"
+    Public Const SetFriction As String = "Set friction"
+    Public Const Grid As String = "Grid"
 
     ''' <summary>Every caption, with the changing ones (Pause/Resume, Delete mode) in their plain form.</summary>
     Public ReadOnly Property All As IReadOnlyList(Of String) = {
-        "Pause", "Resume", Reset, "Delete mode", AddCircle, AddRectangle, ResizeContainer, Fixed, LargeFonts, HighContrast, Arrows,
+        "Pause", "Resume", Reset, "Delete mode", AddCircle, AddRectangle, ResizeContainer, Fixed, LargeFonts, HighContrast, Arrows, Grid,
         Tutorial, MathsUsed, OpenScene, SaveScene, "Open", "Save", CollisionLog, "Circles", "Rectangles",
-        AddPolygon, AddByCorners, AddRamp, AddSpring, AddRod, AddString, "Bodies", "Links",
+        AddPolygon, AddByCorners, AddRamp, AddSpring, AddRod, AddString, SetFriction, "Bodies", "Links",
         "Moon", "Mars", "Earth", "Jupiter"}.Concat(MomentumCaptions.All).ToArray()
 End Module

@@ -5,7 +5,7 @@ Option Strict On
 ''' with its arrow, a value typed into a table, a link, a ramp, the container resized, Reset. Each
 ''' edit keeps the scene as it was just before and just after it, as checkpoints of the recorded run
 ''' (every number to the last bit), so Undo puts the world back exactly as it was before the edit,
-''' clock included, and Redo exactly as it was after. Gravity and restitution are settings, not
+''' clock included, and Redo exactly as it was after. Gravity, restitution and friction are settings, not
 ''' edits: they stay as they are set (except across Reset, which sets them too). Undo and Redo are changes like any other, so the run goes on
 ''' from what they put back. A new scene (opened, restarted) starts an empty history.
 ''' </summary>

@@ -20,4 +20,8 @@ Public Enum InputField
     PolygonAngle
     ''' <summary>A spring's stiffness k, N/m.</summary>
     Stiffness
+    ''' <summary>The world's coefficient of kinetic (sliding) friction μk.</summary>
+    FrictionKinetic
+    ''' <summary>The world's coefficient of static friction μs (empty: the same as μk).</summary>
+    FrictionStatic
 End Enum

@@ -30,7 +30,7 @@ Friend NotInheritable Class LessonBook
     ''' <summary>The tutorial's page on lessons, Restart and the keys.</summary>
     Public Shared ReadOnly Property LessonsHelp As New HelpTopic("6. Lesson scenes, Restart and keys",
         "Scenes (" & ScenesKey & ") lists ready-made lessons by topic (collisions, momentum, energy, gases, pendulums and springs, ramps and boxes): head-on collisions, a glancing blow, Newton's cradle, a pool break, a bouncing ball, π from collisions, an ideal gas, a settling pile and more. Point at a topic and click a lesson to open it; the message box says what it shows (the keys work too: arrows and Enter). The lessons are the scene files in the scenes folder beside the app; a file you save there appears under  & LessonTopics.More &  (its title comes from lessons.txt in that folder, else from the file's name)." & vbLf & "" & vbLf &
-        "Restart (" & RestartKey & ") puts every body back where it was, with its velocity, when the scene was opened or last built (a body added or deleted, a fixed body moved, the container resized), and sets the clock and the collision count to 0. Gravity, restitution and speed stay as you set them, so you can run the same start again on the Moon or with e = 0.5. Reset (" & ResetKey & ") still removes every body." & vbLf & "" & vbLf &
+        "Restart (" & RestartKey & ") puts every body back where it was, with its velocity, when the scene was opened or last built (a body added or deleted, a fixed body moved, the container resized), and sets the clock and the collision count to 0. Gravity, restitution, friction and speed stay as you set them, so you can run the same start again on the Moon, with e = 0.5 or on a rougher floor. Reset (" & ResetKey & ") still removes every body." & vbLf & "" & vbLf &
         "Keys: " & PauseKey & " pauses and resumes, " & RestartKey & " restarts, " & ResetKey & " resets, " & ScenesKey & " opens the Scenes menu, Esc drops a body you are placing; " & SimulationPresenter.TimeKeysText & "." & vbLf & "" & vbLf &
         "A scene file opened with the app (double-clicked, or given on the command line) opens at the start. A file that cannot be opened leaves an empty box and a message saying why.")
 
@@ -89,7 +89,7 @@ Friend NotInheritable Class LessonBook
 
     ''' <summary>
     ''' Puts the scene back as it was when it was opened or last built: every body where it was, with
-    ''' its velocity, the clock and the collision log at 0. Gravity, restitution and speed keep what
+    ''' its velocity, the clock and the collision log at 0. Gravity, restitution, friction and speed keep what
     ''' the teacher set, so the same start can be run again under other settings; what is typed in the
     ''' boxes stays.
     ''' </summary>
@@ -103,6 +103,7 @@ Friend NotInheritable Class LessonBook
                 Dim w = Scenes.SceneFile.Load(_start)
                 w.Gravity = _stage.World.Gravity
                 w.Restitution = _stage.World.Restitution
+                WorldSettings.KeepFriction(w, _stage.World.Friction, _stage.World.StaticFriction)
                 Dim typedWidth = _stage.Inputs.ContainerWidthText, typedHeight = _stage.Inputs.ContainerHeightText
                 _stage.Present(w)
                 _stage.Inputs.ContainerWidthText = typedWidth

@@ -159,6 +159,15 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Whether velocity arrows (with components) are drawn.</summary>
     Public ReadOnly Property ShowArrows As Boolean = True
 
+    ''' <summary>Whether the grid (1 m and 10 cm lines) is drawn under the bodies.</summary>
+    Public ReadOnly Property ShowGrid As Boolean
+
+    ''' <summary>The grid's lines to draw now (none while the grid is off): see <see cref="CanvasGrid.Lines"/>.</summary>
+    Public Function GridLines() As IReadOnlyList(Of GridLine)
+        If Not ShowGrid Then Return Array.Empty(Of GridLine)()
+        Return CanvasGrid.Lines(World.Width, World.Height, View, _canvasWidth, _canvasHeight, ScreenScale)
+    End Function
+
     ''' <summary>The colours in use.</summary>
     Public ReadOnly Property Theme As Theme
         Get
@@ -372,6 +381,13 @@ Partial Public NotInheritable Class SimulationPresenter
         _window.ShowTheme()
     End Sub
 
+    ''' <summary>The grid on or off: a line every metre and every 10 cm under the bodies, to read positions off the canvas.</summary>
+    Public Sub SetShowGrid(value As Boolean)
+        _ShowGrid = value
+        Emit("grid " & If(value, "on", "off"))
+        _window.ShowTheme()
+    End Sub
+
     ''' <summary>Velocity arrows on or off.</summary>
     Public Sub SetShowArrows(value As Boolean)
         _ShowArrows = value
@@ -451,6 +467,8 @@ Partial Public NotInheritable Class SimulationPresenter
         _pointer.FollowWorld(w)
         _camera.FollowWorld(w)
         _lessons.FollowWorld(w)
+        ' Going back to before friction was set: the boxes show the friction of the moment on show.
+        If _settings.FollowFriction() AndAlso Not resized Then _window.ShowInputs()
         If resized Then
             Inputs.ContainerWidthText = Units.Input(w.Width)
             Inputs.ContainerHeightText = Units.Input(w.Height)
@@ -467,7 +485,11 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Undo or Redo puts the world of <paramref name="point"/> back on show: the gestures end, and the run goes on from it (see <see cref="EditHistory"/>).</summary>
     Private Sub PutBack(point As Checkpoint, withSettings As Boolean)
         _pointer.DropAll()
+        Dim friction = World.Friction, staticFriction = World.StaticFriction
         _time.PutBack(point, withSettings)
+        ' Friction is a setting like gravity: it stays as set (unless the edit set it too: Reset).
+        If Not withSettings Then WorldSettings.KeepFriction(World, friction, staticFriction)
+        _settings.ShowFriction()
         ' Undoing is building: Restart comes back to what is on show now.
         _lessons.RememberStart()
         TakeSnapshot()
@@ -495,6 +517,7 @@ Partial Public NotInheritable Class SimulationPresenter
         Log.Clear()
         Inputs.ContainerWidthText = Units.Input(w.Width)
         Inputs.ContainerHeightText = Units.Input(w.Height)
+        _settings.ShowFriction()
         FitView()
         _Snapshot = TableSnapshot.Take(w, 0)
         Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(w.Width, w.Height))
@@ -1489,6 +1512,26 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Changes the container's size to the width and height typed (m); a size with no room for the balls is refused with the reason.</summary>
     Public Sub ResizeContainer(widthText As String, heightText As String)
         _settings.ResizeContainer(widthText, heightText)
+    End Sub
+
+    ''' <summary>"Friction μk = 0.3, μs = 0.5", or "No friction (every surface is ice)".</summary>
+    Public ReadOnly Property FrictionText As String
+        Get
+            Return _settings.FrictionText
+        End Get
+    End Property
+
+    ''' <summary>Said where μ is set: balls take no friction (they would roll; nothing turns).</summary>
+    Public Const FrictionBallsNote As String = WorldSettings.BallsNote
+
+    ''' <summary>Sets the world's μk and μs from the friction boxes.</summary>
+    Public Sub SetFriction()
+        _settings.SetFriction()
+    End Sub
+
+    ''' <summary>Sets the world's μk and μs from typed text (an empty μs is μk); a negative value or μs below μk is refused, naming the box.</summary>
+    Public Sub SetFriction(kineticText As String, staticText As String)
+        _settings.SetFriction(kineticText, staticText)
     End Sub
 
     ''' <summary>The container's walls on or off (a body too large for the box makes it refuse, with the reason).</summary>

@@ -1,7 +1,7 @@
 Option Strict On
 
 ''' <summary>
-''' The world's settings: gravity, restitution and the speed of time (with their sliders and the
+''' The world's settings: gravity, restitution, friction and the speed of time (with their sliders and the
 ''' planets' marks), the container's size and its walls. Each is checked and brought to its limits
 ''' here, and said in the message when it was.
 ''' </summary>
@@ -26,10 +26,12 @@ Friend NotInheritable Class WorldSettings
         _building = building
     End Sub
 
-    ''' <summary>Gravity, restitution and speed as after a reset: 9.81 m/s², e = 1, real time.</summary>
+    ''' <summary>Gravity, restitution, friction and speed as after a reset: 9.81 m/s², e = 1, no friction, real time.</summary>
     Public Sub ToDefaults()
         _stage.World.Gravity = DefaultGravity
         _stage.World.Restitution = DefaultRestitution
+        KeepFriction(_stage.World, 0, Nothing)
+        ShowFriction()
         _SpeedIndex = SpeedSteps.RealTimeIndex
     End Sub
 
@@ -129,6 +131,116 @@ Friend NotInheritable Class WorldSettings
     Public Shared Function GravityMarkText(mark As GravityMark) As String
         If mark Is Nothing Then Throw New ArgumentNullException(NameOf(mark))
         Return mark.Name & " " & mark.Value.ToString("0.00", Globalization.CultureInfo.InvariantCulture)
+    End Function
+
+    ''' <summary>The largest μ typed into the friction boxes: far rougher than rubber on concrete (about 1).</summary>
+    Public Const MaxFriction As Double = 10.0
+
+    ''' <summary>Said wherever μ is set: why a ball slides on as if on ice.</summary>
+    Public Const BallsNote As String = "Balls take no friction: a real ball would roll, and nothing turns here."
+
+    ''' <summary>"Friction μk = 0.3, μs = 0.5" (μs left out when it is the same as μk), or "No friction (every surface is ice)".</summary>
+    Public ReadOnly Property FrictionText As String
+        Get
+            Return DescribeFriction(_stage.World)
+        End Get
+    End Property
+
+    ''' <summary>The world's friction in words, as <see cref="FrictionText"/> shows it.</summary>
+    Public Shared Function DescribeFriction(w As World) As String
+        If w Is Nothing Then Throw New ArgumentNullException(NameOf(w))
+        Dim k = w.Friction, s = If(w.StaticFriction, w.Friction)
+        If k = 0 AndAlso s = 0 Then Return "No friction (every surface is ice)"
+        Dim text = "Friction μk = " & Units.Input(k)
+        If s <> k Then text &= ", μs = " & Units.Input(s)
+        Return text
+    End Function
+
+    ''' <summary>The world's μk and μs the friction boxes were last given.</summary>
+    Private _shownFriction As (Kinetic As Double, [Static] As Double?)
+
+    ''' <summary>The friction boxes show the world's μk and μs (a scene opened or restarted, an edit undone).</summary>
+    Public Sub ShowFriction()
+        _shownFriction = (_stage.World.Friction, _stage.World.StaticFriction)
+        _stage.Inputs.FrictionText = Units.Input(_stage.World.Friction)
+        _stage.Inputs.StaticFrictionText = If(_stage.World.StaticFriction.HasValue, Units.Input(_stage.World.StaticFriction.Value), "")
+    End Sub
+
+    ''' <summary>
+    ''' A moment of the run was put on show (going back): when its friction is not the one the boxes
+    ''' were given (the teacher set another since), the boxes show its own; otherwise what is typed in
+    ''' them stays. Returns whether they changed.
+    ''' </summary>
+    Public Function FollowFriction() As Boolean
+        If _stage.World.Friction = _shownFriction.Kinetic AndAlso Nullable.Equals(_stage.World.StaticFriction, _shownFriction.Static) Then Return False
+        ShowFriction()
+        Return True
+    End Function
+
+    ''' <summary>Gives <paramref name="w"/> these μk and μs, touching it only when they differ (a change restarts the recorded run).</summary>
+    Public Shared Sub KeepFriction(w As World, friction As Double, staticFriction As Double?)
+        If w Is Nothing Then Throw New ArgumentNullException(NameOf(w))
+        If w.Friction = friction AndAlso Nullable.Equals(w.StaticFriction, staticFriction) Then Return
+        w.StaticFriction = Nothing
+        w.Friction = friction
+        w.StaticFriction = staticFriction
+    End Sub
+
+    ''' <summary>Sets the world's friction from the typed μk and μs.</summary>
+    Public Sub SetFriction()
+        SetFriction(_stage.Inputs.FrictionText, _stage.Inputs.StaticFrictionText)
+    End Sub
+
+    ''' <summary>
+    ''' Sets the world's μk and μs (of every surface without its own: walls, fixed bodies, ramps,
+    ''' boxes, polygons) from the typed text, as a scene file's world.friction and
+    ''' world.static_friction. An empty μs is the same as μk. A negative or unreadable value, or μs
+    ''' below μk, is refused naming its box, and nothing changes; a value above
+    ''' <see cref="MaxFriction"/> is brought to it and said. Like gravity, friction is a setting, not
+    ''' an edit: Undo leaves it as set.
+    ''' </summary>
+    Public Sub SetFriction(kineticText As String, staticText As String)
+        _stage.Inputs.FrictionText = kineticText
+        _stage.Inputs.StaticFrictionText = staticText
+        _stage.Guarded(
+            Sub()
+                Dim hasStatic = If(staticText, "").Trim().Length > 0
+                Dim problems As New List(Of String)
+                Dim k = ReadCoefficient(kineticText, "friction μk", problems)
+                Dim s = If(hasStatic, ReadCoefficient(staticText, "static friction μs", problems), k)
+                If problems.Count > 0 Then
+                    _stage.ShowMessage("Friction is unchanged: " & String.Join("; ", problems) & ".")
+                    Return
+                End If
+                If s.Value < k.Value Then
+                    _stage.ShowMessage("Friction is unchanged: static friction μs (" & Units.Sig(s.Value) & ") must be at least friction μk (" & Units.Sig(k.Value) &
+                                       "): a surface grips at least as hard before it slides as while it slides.")
+                    Return
+                End If
+                ' μs to Nothing first, so that a μk above the old μs is not refused on the way.
+                _stage.World.StaticFriction = Nothing
+                _stage.World.Friction = k.Value
+                _stage.World.StaticFriction = If(hasStatic, s.Value, CType(Nothing, Double?))
+                If k.WasClamped Then _stage.Inputs.FrictionText = Units.Input(k.Value)
+                If hasStatic AndAlso s.WasClamped Then _stage.Inputs.StaticFrictionText = Units.Input(s.Value)
+                If k.WasClamped OrElse s.WasClamped Then _stage.Window.ShowInputs()
+                _stage.Emit("friction " & Units.Num(_stage.World.Friction) & " static " & Units.Num(If(_stage.World.StaticFriction, _stage.World.Friction)))
+                Dim clamped = If(k.WasClamped OrElse s.WasClamped, "μ above " & Units.Input(MaxFriction) & " was brought to " & Units.Input(MaxFriction) & ". ", "")
+                _stage.ShowMessage(clamped & DescribeFriction(_stage.World) & " on walls, ramps, boxes and polygons. " & BallsNote)
+                _stage.TakeSnapshot()
+                _stage.Window.ShowSettings()
+            End Sub)
+    End Sub
+
+    ''' <summary>A typed coefficient: a finite number ≥ 0 (above <see cref="MaxFriction"/> brought to it); what is wrong goes into <paramref name="problems"/>.</summary>
+    Private Shared Function ReadCoefficient(text As String, label As String, problems As List(Of String)) As NumberInput
+        Dim read = NumberInput.ReadFinite(text, label, MaxFriction)
+        If Not read.IsValid Then
+            problems.Add(read.Problem)
+        ElseIf read.Value < 0 Then
+            problems.Add(label & " must be 0 or more, not " & If(text, "").Trim())
+        End If
+        Return read
     End Function
 
     ''' <summary>Changes the container's size from the typed width and height (m).</summary>

@@ -75,7 +75,13 @@ Partial Friend NotInheritable Class MainForm
         _sideView.BarWidth = S(17)
         _sideView.SetBounds(w - sideWidth, 0, sideWidth, h)
         ' Laid out for the whole width; again with room for the scroll bar when the rows are taller than the panel.
+        ' At normal fonts the rows close up where the screen is too short for them with their usual spacing.
+        _rows.Compact = False
         Dim contentHeight = ArrangeSide(sideWidth, large, line)
+        If contentHeight > _sideView.ClientSize.Height AndAlso Not large Then
+            _rows.Compact = True
+            contentHeight = ArrangeSide(sideWidth, large, line)
+        End If
         If contentHeight > _sideView.ClientSize.Height Then contentHeight = ArrangeSide(_sideView.ContentWidthFor(contentHeight), large, line)
         _sideView.SetContentHeight(contentHeight)
         ' A label's words follow its new width (a long one drops its bracketed part where it would be cut).
@@ -112,6 +118,11 @@ Partial Friend NotInheritable Class MainForm
         End If
         _rows.Row(line + S(2), (_restitutionLabel, 1.0))
         _rows.Row(sliderHeight, (_restitution, 1.0))
+        ' Friction's two boxes and their button on one row when they fit: "Friction μk [0.3] μs [0.5] [Set friction]".
+        If Not (pairs AndAlso _rows.FitRow(rh + S(2), _frictionLabel, _friction, _staticFrictionLabel, _staticFriction, _setFriction)) Then
+            _rows.Fields(rh, pairs, (_frictionLabel, _friction), (_staticFrictionLabel, _staticFriction))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_setFriction, 0.65))
+        End If
         _rows.Gap()
         _rows.Fields(rh, pairs, (_radiusLabel, _radius), (_massLabel, _mass))
         ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
@@ -160,11 +171,15 @@ Partial Friend NotInheritable Class MainForm
         End If
         _rows.Gap()
         If pairs Then
-            _rows.Row(rh, (_largeFonts, 0.36), (_highContrast, 0.4), (_arrows, 0.24))
+            ' The four view boxes in one row when their captions fit there, else two to a row.
+            If Not _rows.FitRow(rh, _largeFonts, _highContrast, _arrows, _grid) Then
+                _rows.Row(rh, (_largeFonts, 0.5), (_highContrast, 0.5))
+                _rows.Row(rh, (_arrows, 0.5), (_grid, 0.5))
+            End If
             _rows.Row(rh + S(2), (_tutorial, 0.24), (_maths, 0.28), (_open, 0.24), (_save, 0.24))
         Else
             _rows.Row(rh, (_largeFonts, 0.5), (_highContrast, 0.5))
-            _rows.Row(rh, (_arrows, 1.0))
+            _rows.Row(rh, (_arrows, 0.5), (_grid, 0.5))
             _rows.Row(rh + S(2), (_tutorial, 0.5), (_maths, 0.5))
             _rows.Row(rh + S(2), (_open, 0.5), (_save, 0.5))
         End If
@@ -327,6 +342,8 @@ Partial Friend NotInheritable Class MainForm
             ("canvas", _canvas), ("totals", _totals), ("message", _message), ("pause", _pause), ("reset", _reset), ("delete-mode", _deleteMode),
             ("speed-label", _speedLabel), ("speed", _speed), ("gravity-label", _gravityLabel), ("gravity", _gravity),
             ("restitution-label", _restitutionLabel), ("restitution", _restitution),
+            ("friction-label", _frictionLabel), ("friction", _friction), ("static-friction-label", _staticFrictionLabel),
+            ("static-friction", _staticFriction), ("set-friction", _setFriction),
             ("radius-label", _radiusLabel), ("mass-label", _massLabel), ("rect-width-label", _widthLabel), ("rect-height-label", _heightLabel),
             ("box-width-label", _boxWidthLabel), ("box-height-label", _boxHeightLabel),
             ("moon", _gravityMarks(0)), ("mars", _gravityMarks(1)), ("earth", _gravityMarks(2)), ("jupiter", _gravityMarks(3)),
@@ -336,7 +353,7 @@ Partial Friend NotInheritable Class MainForm
             ("stiffness-label", _stiffnessLabel), ("stiffness", _stiffness),
             ("add-spring", _addSpring), ("add-rod", _addRod), ("add-string", _addString), ("add-ramp", _addRamp),
             ("box-width", _boxWidth), ("box-height", _boxHeight), ("resize", _resize),
-            ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows),
+            ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows), ("grid", _grid),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _sideView)}
         named.Add(("scenes", _scenes))
         named.Add(("restart", _restart))

@@ -30,9 +30,15 @@ Friend NotInheritable Class PanelRows
         _Width = width
     End Sub
 
+    ''' <summary>
+    ''' Rows closer together (1 px apart, groups too): on a screen too short for the panel at normal
+    ''' fonts (1280 × 720, 1024 × 768), so it fits without scrolling.
+    ''' </summary>
+    Public Property Compact As Boolean
+
     ''' <summary>A little space between groups of rows.</summary>
     Public Sub Gap()
-        _Y += _kit.S(4)
+        _Y += _kit.S(If(Compact, 1, 4))
     End Sub
 
     ''' <summary>One row: controls side by side, each with a share of the width (Nothing leaves its share empty).</summary>
@@ -57,7 +63,7 @@ Friend NotInheritable Class PanelRows
             End If
             x += w + gap
         Next
-        _Y += tallest + _kit.S(3)
+        _Y += tallest + _kit.S(If(Compact, 1, 3))
     End Sub
 
     ''' <summary>Two labelled text boxes side by side, or one above the other (<paramref name="pairs"/> False: large fonts).</summary>

@@ -52,6 +52,9 @@ Partial Friend NotInheritable Class ScenePainter
         ' Nothing of the scene is drawn over the strip that holds the scale bar and the arrows' key.
         g.SetClip(New RectangleF(0, 0, width, Math.Max(1, height - strip)))
 
+        ' The grid under everything else, the metre lines stronger than the 10 cm ones.
+        If p.ShowGrid Then DrawGrid(g, p, view, theme, k)
+
         ' The container: solid walls, or a faint dashed outline when balls may leave it.
         Dim tl = view.ToScreen(New Vector(0, world.Height))
         Dim cw = CSng(view.ToPixels(world.Width)), ch = CSng(view.ToPixels(world.Height))
@@ -136,6 +139,25 @@ Partial Friend NotInheritable Class ScenePainter
         Dim keyEnd = DrawScaleBar(g, p, view, theme, height, k)
         DrawBanner(g, p, theme, width, height, keyEnd, k)
     End Sub
+
+    ''' <summary>The grid's lines (see <see cref="CanvasGrid"/>): metre lines in the grid colour, 10 cm lines fainter.</summary>
+    Private Sub DrawGrid(g As Graphics, p As SimulationPresenter, view As ViewTransform, theme As Theme, k As Single)
+        Dim major = PenOf(theme.Grid, k * If(theme.IsHighContrast, 1.5F, 1.0F))
+        ' The minor lines halfway between the grid colour and the canvas: there, but quieter than the metres.
+        Dim minor = PenOf(Blend(theme.Grid, theme.Background), k)
+        For Each line In p.GridLines()
+            Dim a = view.ToScreen(line.Start), b = view.ToScreen(line.End)
+            g.DrawLine(If(line.Major, major, minor), CSng(a.X), CSng(a.Y), CSng(b.X), CSng(b.Y))
+        Next
+    End Sub
+
+    ''' <summary>The colour halfway between two &amp;HRRGGBB colours.</summary>
+    Private Shared Function Blend(a As Integer, b As Integer) As Integer
+        Dim r = (((a >> 16) And &HFF) + ((b >> 16) And &HFF)) \ 2
+        Dim gr = (((a >> 8) And &HFF) + ((b >> 8) And &HFF)) \ 2
+        Dim bl = ((a And &HFF) + (b And &HFF)) \ 2
+        Return (r << 16) Or (gr << 8) Or bl
+    End Function
 
     ''' <summary>
     ''' The labels where the layout placed them (see <see cref="CanvasLabelLayout"/>): an id inside its

@@ -198,7 +198,8 @@ Public NotInheritable Class AppDriver
     Private Shared ReadOnly InputKeys As New Dictionary(Of String, String)(StringComparer.Ordinal) From {
         {"radius", "Radius"}, {"mass", "Mass"}, {"rect-width", "RectangleWidth"}, {"rect-height", "RectangleHeight"},
         {"sides", "Sides"}, {"angle", "PolygonAngle"}, {"stiffness", "Stiffness"},
-        {"box-width", "ContainerWidth"}, {"box-height", "ContainerHeight"}}
+        {"box-width", "ContainerWidth"}, {"box-height", "ContainerHeight"},
+        {"friction", "FrictionKinetic"}, {"static-friction", "FrictionStatic"}}
 
     ''' <summary>
     ''' Replaces the text of a named text box, as a person would: click, select all, type. Unless told

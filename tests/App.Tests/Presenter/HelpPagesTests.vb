@@ -13,6 +13,8 @@ Public Class HelpPagesTests
     <InlineData("integrating", "Dormand–Prince")>
     <InlineData("Collision: the impulse", "j = −(1 + e) u")>
     <InlineData("Maxwell–Boltzmann", "f(v)")>
+    <InlineData("Friction", "s = v² / (2 μk g)")>
+    <InlineData("Friction", "tan θ ≤ μs")>
     Public Sub TheMathsWindow_HasAPageForEveryModel(titlePart As String, formula As String)
         Dim page = HelpTexts.Maths.SingleOrDefault(Function(t) t.Title.Contains(titlePart, StringComparison.Ordinal))
         Assert.True(page IsNot Nothing, "no Maths used page on " & titlePart)
