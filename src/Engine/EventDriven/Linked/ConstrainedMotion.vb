@@ -471,12 +471,7 @@ Friend NotInheritable Class ConstrainedMotion
     ''' <summary>The step holding <paramref name="time"/> (the last whose start is at or before it).</summary>
     Private Function StepAt(time As Double) As Integer
         ExtendTo(time)
-        Dim lo = 0, hi = _times.Count - 2
-        Do While lo < hi
-            Dim mid = (lo + hi + 1) \ 2
-            If _times(mid) <= time Then lo = mid Else hi = mid - 1
-        Loop
-        Return Math.Max(lo, 0)
+        Return QuinticSteps.StepHolding(_times, time)
     End Function
 
     ''' <summary>
@@ -492,13 +487,7 @@ Friend NotInheritable Class ConstrainedMotion
                 For axis = 0 To 1
                     Dim p0 = _states(i)(4 * k + axis), v0 = _states(i)(4 * k + 2 + axis) * h, a0 = _derivatives(i)(4 * k + 2 + axis) * h * h
                     Dim p1 = _states(i + 1)(4 * k + axis), v1 = _states(i + 1)(4 * k + 2 + axis) * h, a1 = _derivatives(i + 1)(4 * k + 2 + axis) * h * h
-                    Dim o = 6 * (2 * k + axis)
-                    c(o) = p0
-                    c(o + 1) = v0
-                    c(o + 2) = 0.5 * a0
-                    c(o + 3) = -10 * p0 - 6 * v0 - 1.5 * a0 + 10 * p1 - 4 * v1 + 0.5 * a1
-                    c(o + 4) = 15 * p0 + 8 * v0 + 1.5 * a0 - 15 * p1 + 7 * v1 - a1
-                    c(o + 5) = -6 * p0 - 3 * v0 - 0.5 * a0 + 6 * p1 - 3 * v1 + 0.5 * a1
+                    QuinticSteps.Fill(c, 6 * (2 * k + axis), p0, v0, a0, p1, v1, a1)
                 Next
             Next
             _quintics.Add(c)

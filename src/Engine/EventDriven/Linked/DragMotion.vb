@@ -101,12 +101,7 @@ Friend NotInheritable Class DragMotion
     ''' <summary>The step holding <paramref name="time"/> (the last whose start is at or before it).</summary>
     Private Function StepAt(time As Double) As Integer
         ExtendTo(time)
-        Dim lo = 0, hi = _times.Count - 2
-        Do While lo < hi
-            Dim mid = (lo + hi + 1) \ 2
-            If _times(mid) <= time Then lo = mid Else hi = mid - 1
-        Loop
-        Return Math.Max(lo, 0)
+        Return QuinticSteps.StepHolding(_times, time)
     End Function
 
     ''' <summary>The quintic's coefficients c₀…c₅ in s = (t − tⱼ)/h for coordinate <paramref name="axis"/> (0: x, 1: y) on step j.</summary>
@@ -114,10 +109,7 @@ Friend NotInheritable Class DragMotion
         Dim h = _times(j + 1) - _times(j)
         Dim p0 = _states(j)(axis), v0 = _states(j)(2 + axis) * h, a0 = _slopes(j)(2 + axis) * h * h
         Dim p1 = _states(j + 1)(axis), v1 = _states(j + 1)(2 + axis) * h, a1 = _slopes(j + 1)(2 + axis) * h * h
-        Return {p0, v0, 0.5 * a0,
-                -10 * p0 - 6 * v0 - 1.5 * a0 + 10 * p1 - 4 * v1 + 0.5 * a1,
-                15 * p0 + 8 * v0 + 1.5 * a0 - 15 * p1 + 7 * v1 - a1,
-                -6 * p0 - 3 * v0 - 0.5 * a0 + 6 * p1 - 3 * v1 + 0.5 * a1}
+        Return QuinticSteps.Coefficients(p0, v0, a0, p1, v1, a1)
     End Function
 
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
