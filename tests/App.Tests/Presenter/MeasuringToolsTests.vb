@@ -144,7 +144,7 @@ Public Class MeasuringToolsTests
         For i = 1 To passes.Count - 1
             Dim period = passes(i) - passes(i - 1)
             Assert.True(Math.Abs(period / small - 1) < 0.0003, $"period {period} s against 2π√(L/g) = {small} s")
-            Assert.True(Math.Abs(period / expected - 1) < 0.00002, $"period {period} s against {expected} s for θ0 = {theta0}")
+            Assert.True(Math.Abs(period / expected - 1) < 0.000001, $"period {period} s against {expected} s for θ0 = {theta0}")
         Next
         ' Its first pass is a quarter period after release, going one way only.
         Assert.Equal(expected / 4, passes(0), 3)
