@@ -6,6 +6,14 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>How near the cursor must be to a ramp or a polygon's face for the protractor to read it, in canvas pixels at 96 dpi.</summary>
     Public Const ProtractorPixels As Double = 8
 
+    ''' <summary>The tutorial's page on the measuring tools.</summary>
+    Public Shared ReadOnly Property MeasuringHelp As New HelpTopic("11. Measuring: tape, protractor, stopwatch",
+        "Measure ▾ (in the row above the tables) holds the measuring tools." & vbLf & "" & vbLf &
+        "Tape measure: press at one point of the canvas, drag to another and let go. The line shows its length in metres (three figures, more when the view is zoomed in far enough to resolve them) and its angle to the horizontal. It stays while time runs; a new drag replaces it; Esc, or Tape measure again, takes it away." & vbLf & "" & vbLf &
+        "Protractor: hold the cursor over a ramp or a face of a polygon. An arc at its lower end gives its angle to the horizontal, for example 30.0°." & vbLf & "" & vbLf &
+        "Stopwatch: start, stop, lap and reset. It counts simulated time: it stands still while paused, runs 4 times as fast at 4× speed, and follows the clock when you step or scrub back (never below where it was started). It reads in the canvas's top left corner." & vbLf & "" & vbLf &
+        "Time passes of a body…, then a click on the body: each time its centre crosses a line, in the direction of its first crossing, the time is noted and the period (the time since the last crossing) shown. The line is the tape's, when one is drawn (drag it down from a pendulum's pivot), otherwise the vertical line where the body is. The instant of a crossing is found between frames on the body's motion, not at the end of a frame, so a pendulum's period comes out to a part in 10⁵. Going back in time forgets the crossings after the moment shown; the stopwatch's Reset turns the timing off.")
+
     Private ReadOnly _tape As New TapeMeasure()
     Private _stopwatch As LabStopwatch
     ''' <summary>Whether the next left click on a body chooses it for the pass timer.</summary>
