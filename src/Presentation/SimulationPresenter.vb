@@ -264,6 +264,8 @@ Partial Public NotInheritable Class SimulationPresenter
         _lessons.NoteBuilding()
         _Snapshot = TableSnapshot.Take(World, Log.TotalSeen)
         _graphs.SampleGraphs()
+        ' A step, a scrub or an edit moves time too: the pass timer sees it.
+        FollowMeasures()
         ' While a velocity arrow is dragged its scale stays put, so its tip stays under the cursor.
         If _pointer.ArrowBody Is Nothing Then Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
         _window.ShowState()

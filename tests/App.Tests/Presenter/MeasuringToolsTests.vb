@@ -153,6 +153,22 @@ Public Class MeasuringToolsTests
     End Sub
 
     <Fact>
+    Public Sub StepByStep_ThePassesComeAtTheSameTimes_AndGoingBackForgetsThoseAfter()
+        Dim h As New PresenterHarness(Scenarios.Pendulum(1.0, 0.05, kind:=LinkKind.Rod))
+        h.P.SetPassLine(h.P.World.Find("bob"), New Vector(2.0, 3.5), New Vector(0, 1))
+        Do While h.P.PassTimer.Passes.Count < 2
+            h.P.StepFrame()
+            Assert.True(h.P.World.Time < 10, "the bob passes the line once a period")
+        Loop
+        Dim small = 2 * Math.PI * Math.Sqrt(1.0 / 9.81)
+        Assert.Equal(small * (1 + 0.05 * 0.05 / 16), h.P.PassTimer.Period, 5)
+        Dim first = h.P.PassTimer.Passes(0)
+        h.P.RewindTo(first + 0.1)
+        Assert.Single(h.P.PassTimer.Passes)
+        Assert.Equal(first, h.P.PassTimer.Passes(0))
+    End Sub
+
+    <Fact>
     Public Sub ThePassLine_ChosenByAClick_UsesTheTapesLine()
         Dim h As New PresenterHarness(Scenarios.Pendulum(1.0, 0.3, kind:=LinkKind.Rod))
         h.P.ToggleTapeMeasure()
