@@ -172,7 +172,14 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Function MeasurePointerMove(x As Double, y As Double) As Boolean
         Dim p = View.ToWorld(x, y)
         If Not p.IsFinite Then Return False
+        Dim before = _Protractor
         _Protractor = ProtractorReading.Near(World, p, ProtractorPixels * ScreenScale / View.Scale)
+        ' The trace says when the reading changes (not at every move).
+        If _Protractor Is Nothing Then
+            If before IsNot Nothing Then Emit("protractor none")
+        ElseIf before Is Nothing OrElse before.Lower <> _Protractor.Lower OrElse before.Upper <> _Protractor.Upper Then
+            Emit("protractor " & Units.Num(_Protractor.Degrees, 3) & " deg from " & Units.Pair(_Protractor.Lower, 3))
+        End If
         If Not _tape.IsDragging Then Return False
         _tape.MoveTo(p)
         Return True

@@ -29,7 +29,7 @@ Partial Friend NotInheritable Class ScenePainter
         Dim reading = p.Protractor
         If reading IsNot Nothing Then
             Dim lower = view.ToScreen(reading.Lower)
-            Dim radius = 28 * k
+            Dim radius = 40 * k
             Dim sweep = CSng(reading.Degrees)
             ' Screen angles run clockwise from +x: a face rising to the right is at −θ, to the left at 180 + θ.
             Dim startAngle = If(reading.RisesRight, -sweep, 180.0F)

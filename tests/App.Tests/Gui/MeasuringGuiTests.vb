@@ -70,6 +70,38 @@ Public Class MeasuringGuiTests
         End Try
     End Sub
 
+    ''' <summary>The protractor in the real window: over each ramp of the inclined plane, its angle (20° and 35°) at its lower end.</summary>
+    <GuiFact>
+    Public Sub TheProtractor_OverEachRamp_ReadsItsAngle()
+        Using app As New AppDriver(New XSessionOptions(), IO.Path.Combine("scenes", "inclined-plane.json"))
+            app.WaitFor("^opened inclined-plane.json: 4 bodies$")
+            app.ClickAndWait("pause", "^paused t=")
+            ' Three quarters up the gentle ramp (0.5, 0.25) to (4.73, 1.79), clear of its block.
+            Dim gentle = app.Screen(0.5 + 0.75 * 4.2286, 0.25 + 0.75 * 1.5391)
+            Dim from = app.Mark()
+            app.MoveTo(gentle.X - 20, gentle.Y - 40)
+            app.MoveTo(gentle.X, gentle.Y)
+            Dim reading = app.WaitFor("^protractor (\S+) deg from \((\S+), (\S+)\)$", skip:=from)
+            Assert.Equal(20.0, AppDriver.Dbl(reading.Groups(1).Value), 2)
+            Assert.Equal(0.5, AppDriver.Dbl(reading.Groups(2).Value), 3)
+            ' A quarter up the steep ramp, which rises to the left from (9.5, 0.25).
+            Dim steep = app.Screen(9.5 - 0.25 * 3.6862, 0.25 + 0.25 * 2.5811)
+            from = app.Mark()
+            app.MoveTo(steep.X + 20, steep.Y - 40)
+            app.WaitFor("^protractor none$", skip:=from)
+            app.MoveTo(steep.X, steep.Y)
+            reading = app.WaitFor("^protractor (\S+) deg from \((\S+), (\S+)\)$", skip:=from)
+            Assert.Equal(35.0, AppDriver.Dbl(reading.Groups(1).Value), 2)
+            Assert.Equal(9.5, AppDriver.Dbl(reading.Groups(2).Value), 3)
+            ' A frame later the arc is painted.
+            from = app.Mark()
+            app.Click("step")
+            app.WaitFor("^step t=", skip:=from)
+            app.X.Shoot("protractor-steep-ramp")
+            Assert.True(app.X.AppIsRunning)
+        End Using
+    End Sub
+
     ''' <summary>Drops the Measure menu down and clicks the item named <paramref name="name"/>.</summary>
     Private Shared Sub ChooseFromMenu(app As AppDriver, name As String)
         Dim from = app.Mark()
