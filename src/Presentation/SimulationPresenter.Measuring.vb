@@ -27,7 +27,7 @@ Partial Public NotInheritable Class SimulationPresenter
     End Property
 
     ''' <summary>The stopwatch, counting simulated time.</summary>
-    Public ReadOnly Property Stopwatch As LabStopwatch
+    Public ReadOnly Property LabStopwatch As LabStopwatch
         Get
             If _stopwatch Is Nothing Then _stopwatch = New LabStopwatch(Function() World.Time)
             Return _stopwatch
@@ -61,7 +61,7 @@ Partial Public NotInheritable Class SimulationPresenter
     Public ReadOnly Property StopwatchText As String
         Get
             Dim lines As New List(Of String)
-            If Stopwatch.IsRunning OrElse Stopwatch.Reading > 0 OrElse Stopwatch.Laps.Count > 0 Then lines.Add("Stopwatch " & Stopwatch.Text & If(Stopwatch.IsRunning, "", " (stopped)"))
+            If LabStopwatch.IsRunning OrElse LabStopwatch.Reading > 0 OrElse LabStopwatch.Laps.Count > 0 Then lines.Add("Stopwatch " & LabStopwatch.Text & If(LabStopwatch.IsRunning, "", " (stopped)"))
             If PassTimer IsNot Nothing Then
                 Dim passes = PassTimer.Passes
                 Dim text = "Passes of " & PassTimer.BodyId & ": " & passes.Count
@@ -95,11 +95,11 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The stopwatch's Start/Stop.</summary>
     Public Sub StopwatchStartStop()
-        If Stopwatch.IsRunning Then
-            Stopwatch.Stop()
-            Emit("stopwatch stopped " & Exact(Stopwatch.Reading) & " s")
+        If LabStopwatch.IsRunning Then
+            LabStopwatch.Stop()
+            Emit("stopwatch stopped " & Exact(LabStopwatch.Reading) & " s")
         Else
-            Stopwatch.Start()
+            LabStopwatch.Start()
             Emit("stopwatch started at t=" & Exact(World.Time) & " s")
         End If
         _window.ShowSettings()
@@ -107,14 +107,14 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>The stopwatch's Lap: notes the reading now.</summary>
     Public Sub StopwatchLap()
-        Stopwatch.Lap()
-        Emit("stopwatch lap " & Stopwatch.Laps.Count & " " & Exact(Stopwatch.Laps(Stopwatch.Laps.Count - 1)) & " s")
+        LabStopwatch.Lap()
+        Emit("stopwatch lap " & LabStopwatch.Laps.Count & " " & Exact(LabStopwatch.Laps(LabStopwatch.Laps.Count - 1)) & " s")
         _window.ShowSettings()
     End Sub
 
     ''' <summary>The stopwatch's Reset: zero, stopped, no laps, and no pass line.</summary>
     Public Sub StopwatchReset()
-        Stopwatch.Reset()
+        LabStopwatch.Reset()
         _PassTimer = Nothing
         _choosingPassBody = False
         Emit("stopwatch reset")

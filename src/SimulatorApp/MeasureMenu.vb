@@ -30,7 +30,7 @@ Friend NotInheritable Class MeasureMenu
         Dim entries As (Name As String, Text As String, Tip As String, Checked As Boolean, Action As Action)() = {
             ("tape", "Tape measure (drag between two points)", "The distance and the angle to the horizontal between two points; Esc ends it", p.Tape.IsOn, Sub() p.ToggleTapeMeasure()),
             ("passes", "Time passes of a body…", "Click a body: each pass of its centre through the tape's line, or a vertical line where it is, is timed, and the period shown", p.PassTimer IsNot Nothing, Sub() p.BeginPassLine()),
-            ("start-stop", If(p.Stopwatch.IsRunning, "Stopwatch: stop", "Stopwatch: start"), "Counts simulated time: it stands still while paused and follows the Speed slider", p.Stopwatch.IsRunning, Sub() p.StopwatchStartStop()),
+            ("start-stop", If(p.LabStopwatch.IsRunning, "Stopwatch: stop", "Stopwatch: start"), "Counts simulated time: it stands still while paused and follows the Speed slider", p.LabStopwatch.IsRunning, Sub() p.StopwatchStartStop()),
             ("lap", "Stopwatch: lap", "Notes the time now; the stopwatch runs on", False, Sub() p.StopwatchLap()),
             ("reset", "Stopwatch: reset", "Back to zero, and the pass timer off", False, Sub() p.StopwatchReset())}
         For Each e In entries

@@ -75,33 +75,33 @@ Public Class MeasuringToolsTests
     Public Sub TheStopwatch_CountsSimulatedTime_StandsStillWhenPaused_AndFollowsTheSpeedSlider()
         Dim h As New PresenterHarness()
         h.P.StopwatchStartStop()
-        Assert.True(h.P.Stopwatch.IsRunning)
+        Assert.True(h.P.LabStopwatch.IsRunning)
         For k = 1 To 30
             h.P.Tick(0.02)
         Next
-        Assert.Equal(0.6, h.P.Stopwatch.Reading, 9)
+        Assert.Equal(0.6, h.P.LabStopwatch.Reading, 9)
         h.P.StopwatchLap()
         ' Paused, real time passes but the stopwatch does not move.
         h.P.TogglePause()
         h.P.Tick(0.05)
-        Assert.Equal(0.6, h.P.Stopwatch.Reading, 9)
+        Assert.Equal(0.6, h.P.LabStopwatch.Reading, 9)
         h.P.TogglePause()
         ' 4× faster: 0.1 s of real time is 0.4 s on the stopwatch.
         h.P.SetSpeedIndex(12)
         For k = 1 To 5
             h.P.Tick(0.02)
         Next
-        Assert.Equal(1.0, h.P.Stopwatch.Reading, 9)
+        Assert.Equal(1.0, h.P.LabStopwatch.Reading, 9)
         h.P.StopwatchStartStop()
         h.P.Tick(0.05)
-        Assert.False(h.P.Stopwatch.IsRunning)
-        Assert.Equal(1.0, h.P.Stopwatch.Reading, 9)
-        Assert.Single(h.P.Stopwatch.Laps)
-        Assert.Equal(0.6, h.P.Stopwatch.Laps(0), 9)
+        Assert.False(h.P.LabStopwatch.IsRunning)
+        Assert.Equal(1.0, h.P.LabStopwatch.Reading, 9)
+        Assert.Single(h.P.LabStopwatch.Laps)
+        Assert.Equal(0.6, h.P.LabStopwatch.Laps(0), 9)
         Assert.Equal("Stopwatch 1.000 s (lap 1: 0.600 s) (stopped)", h.P.StopwatchText)
         h.P.StopwatchReset()
-        Assert.Equal(0.0, h.P.Stopwatch.Reading)
-        Assert.Empty(h.P.Stopwatch.Laps)
+        Assert.Equal(0.0, h.P.LabStopwatch.Reading)
+        Assert.Empty(h.P.LabStopwatch.Laps)
         Assert.Equal("", h.P.StopwatchText)
     End Sub
 
@@ -115,11 +115,11 @@ Public Class MeasuringToolsTests
         For k = 1 To 20
             h.P.Tick(0.05)
         Next
-        Assert.Equal(1.0, h.P.Stopwatch.Reading, 9)
+        Assert.Equal(1.0, h.P.LabStopwatch.Reading, 9)
         h.P.RewindTo(1.0)
-        Assert.Equal(0.5, h.P.Stopwatch.Reading, 9)
+        Assert.Equal(0.5, h.P.LabStopwatch.Reading, 9)
         h.P.RewindTo(0.2)
-        Assert.Equal(0.0, h.P.Stopwatch.Reading)
+        Assert.Equal(0.0, h.P.LabStopwatch.Reading)
     End Sub
 
     ''' <summary>
