@@ -43,6 +43,7 @@ Public NotInheritable Class ProtractorReading
         Dim best As ProtractorReading = Nothing
         Dim bestDistance = reach
         For Each b In w.Bodies
+            If b.Kind <> ShapeKind.Segment AndAlso b.Kind <> ShapeKind.Polygon Then Continue For
             Dim faces As New List(Of (A As Vector, B As Vector))
             If b.Kind = ShapeKind.Segment Then
                 Dim s = DirectCast(b, Segment)

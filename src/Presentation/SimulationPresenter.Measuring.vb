@@ -16,6 +16,8 @@ Partial Public NotInheritable Class SimulationPresenter
 
     Private ReadOnly _tape As New TapeMeasure()
     Private _stopwatch As LabStopwatch
+    ''' <summary>Where the cursor last was over the canvas, m (Nothing before it first moved there).</summary>
+    Private _cursor As Vector?
     ''' <summary>Whether the next left click on a body chooses it for the pass timer.</summary>
     Private _choosingPassBody As Boolean
 
@@ -172,18 +174,28 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Function MeasurePointerMove(x As Double, y As Double) As Boolean
         Dim p = View.ToWorld(x, y)
         If Not p.IsFinite Then Return False
+        _cursor = p
+        ReadProtractor()
+        If Not _tape.IsDragging Then Return False
+        _tape.MoveTo(p)
+        Return True
+    End Function
+
+    ''' <summary>
+    ''' The protractor reads the face under the cursor as it is now: after the cursor moves, and after each frame
+    ''' (a polygon's face moves with it). Nothing is read while a body is carried, whose faces run from the cursor.
+    ''' </summary>
+    Private Sub ReadProtractor()
         Dim before = _Protractor
-        _Protractor = ProtractorReading.Near(World, p, ProtractorPixels * ScreenScale / View.Scale)
+        _Protractor = If(_cursor.HasValue AndAlso World.DraggedBody Is Nothing,
+                         ProtractorReading.Near(World, _cursor.Value, ProtractorPixels * ScreenScale / View.Scale), Nothing)
         ' The trace says when the reading changes (not at every move).
         If _Protractor Is Nothing Then
             If before IsNot Nothing Then Emit("protractor none")
         ElseIf before Is Nothing OrElse before.Lower <> _Protractor.Lower OrElse before.Upper <> _Protractor.Upper Then
             Emit("protractor " & Units.Num(_Protractor.Degrees, 3) & " deg from " & Units.Pair(_Protractor.Lower, 3))
         End If
-        If Not _tape.IsDragging Then Return False
-        _tape.MoveTo(p)
-        Return True
-    End Function
+    End Sub
 
     ''' <summary>A mouse button came up at (x, y) px: True when the tape took it.</summary>
     Private Function MeasurePointerUp(button As PointerButton, x As Double, y As Double) As Boolean
@@ -213,6 +225,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>After a frame: the pass timer sees where its body is now.</summary>
     Private Sub FollowMeasures()
+        If _Protractor IsNot Nothing OrElse _cursor.HasValue Then ReadProtractor()
         Dim timer = PassTimer
         If timer Is Nothing Then Return
         Dim body = World.Find(timer.BodyId)
