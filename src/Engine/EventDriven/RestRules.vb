@@ -22,6 +22,8 @@ Friend NotInheritable Class RestRules
     ''' <summary>Whether each gathered normal is a wall's or a fixed body's (exact), rather than another body's.</summary>
     Private ReadOnly _normalExact As Boolean() = New Boolean(15) {}
     Private _nNormals As Integer
+    ''' <summary>Whether a cluster of still bodies is held by the contact forces (see <see cref="HeldOnSlope"/>).</summary>
+    Private ReadOnly _equilibrium As EquilibriumCheck
     ''' <summary>Scratch: bodies being woken, and one body's neighbours.</summary>
     Private _wake As Integer() = Array.Empty(Of Integer)()
     Private _settle As Integer() = Array.Empty(Of Integer)()
@@ -37,6 +39,7 @@ Friend NotInheritable Class RestRules
         _s = state
         _bodies = state.Bodies
         _slides = slides
+        _equilibrium = New EquilibriumCheck(state)
     End Sub
 
     ''' <summary>Forgets every body's history (after a rebuild); rest times survive while the body still sits still.</summary>
@@ -601,13 +604,26 @@ Friend NotInheritable Class RestRules
         ' Otherwise up = (0, 1) must lie between two of the normals (RestingFaces.HoldsUp, which is symmetric in
         ' its two normals and never holds for a normal paired with itself, so each pair is asked once).
         For a = 0 To _nNormals - 1
-            If _normalY(a) > If(_normalExact(a), RestingFaces.LevelCosine, 0.999) Then Return True
+            If _normalY(a) > If(_normalExact(a), RestingFaces.LevelCosine, 0.999) Then Return HeldOnSlope(i)
             Dim na = New Vector(_normalX(a), _normalY(a))
             For k = a + 1 To _nNormals - 1
-                If RestingFaces.HoldsUp(na, New Vector(_normalX(k), _normalY(k))) Then Return True
+                If RestingFaces.HoldsUp(na, New Vector(_normalX(k), _normalY(k))) Then Return HeldOnSlope(i)
             Next
         Next
         Return False
+    End Function
+
+    ''' <summary>
+    ''' Body i is held by its own contacts (<see cref="IsHeld"/>, just asked). When one of them is a slope of
+    ''' a fixed body (a peg's shoulder, a tilted face: neither level nor upright), that is not enough: the
+    ''' bodies it leans on with it may be pushed aside, as a frictionless arch of balls between two pegs is.
+    ''' Then it is held only if the contact forces hold its whole cluster of still bodies (<see cref="EquilibriumCheck"/>).
+    ''' </summary>
+    Private Function HeldOnSlope(i As Integer) As Boolean
+        For a = 0 To _nNormals - 1
+            If _normalExact(a) AndAlso _normalY(a) > 0 AndAlso _normalY(a) <= RestingFaces.LevelCosine Then Return _equilibrium.Holds(i)
+        Next
+        Return True
     End Function
 
     Private Sub AddNormal(x As Double, y As Double, Optional exact As Boolean = True)
