@@ -2,8 +2,9 @@ Option Strict On
 
 ''' <summary>
 ''' Whether a body may go to sleep where it is (docs/event-driven.md §6): only where the frictionless contact
-''' forces can hold it at rest. The body and the still bodies it touches (asleep, or resting with no speed),
-''' and the still bodies those touch, and so on, form its cluster; walls and fixed bodies hold without moving.
+''' forces can hold it at rest. The body and the still bodies it touches (resting or free with no speed at this
+''' instant), and the still bodies those touch, and so on, form its cluster; walls, fixed bodies and sleeping
+''' bodies hold without moving, as they do in the solver until something wakes them.
 ''' Each body of the cluster is pulled down by gravity, (0, −g), and each contact can only push, along its
 ''' normal. The complementarity solve of those forces (<see cref="ContactSolve"/>: every contact pushes and
 ''' never pulls, and one that pushes does not open) gives each body's acceleration; the cluster is held when
@@ -201,6 +202,10 @@ Friend NotInheritable Class EquilibriumCheck
             Dim pairGap = 1.0E-3 * Math.Max(b.Size(k).Scale, b.Size(j).Scale) + Math.Max(SolverState.SlopAt(p.X, p.Y), SolverState.SlopAt(pj.X, pj.Y))
             Dim c = ContactRules.OverlapWithBody(_s, k, j, p, pj)
             If c.Depth < -pairGap Then Continue For
+            If b.Mode(j) = BodyMode.Sleeping Then
+                AddFixed(slot, c.Normal)
+                Continue For
+            End If
             If Not slot.HasValue Then
                 _ownNormals.Add(c.Normal)
                 Continue For

@@ -314,7 +314,7 @@ Friend NotInheritable Class RestRules
         End If
         _bursts(i).Count += 1
         Dim limit2 = If(_bursts(i).Count > BurstCollisions, scale2, 0.0004 * scale2)
-        If speed2 < limit2 AndAlso IsHeld(i) Then Sleep(i)
+        If speed2 < limit2 AndAlso IsHeld(i, limit2) Then Sleep(i)
     End Sub
 
     ''' <summary>
@@ -563,10 +563,13 @@ Friend NotInheritable Class RestRules
     ''' <summary>
     ''' Whether body i is held against gravity by what it touches (within 10⁻³ r): the upward
     ''' vertical lies in the cone of its contact normals, so normal forces alone can balance its
-    ''' weight (one level support, or two on either side of the vertical, or a cage). Neighbours count
-    ''' whether asleep or not (a settling pile freezes as a whole); only nearby cells are searched.
+    ''' weight (one level support, or two on either side of the vertical, or a cage). A neighbour counts if it
+    ''' is asleep or moves slower than <paramref name="supportSpeed2"/> (m²/s², the speed below which body i
+    ''' itself may sleep; by default that of a body outside a burst): a settling pile freezes as a whole, but a
+    ''' body on its way elsewhere holds nothing, or what slept on it would hang in the air when it went. Only
+    ''' nearby cells are searched.
     ''' </summary>
-    Private Function IsHeld(i As Integer) As Boolean
+    Private Function IsHeld(i As Integer, Optional supportSpeed2 As Double = -1) As Boolean
         Dim b = _s.Bodies
         Dim p = b.PositionAt(i, _s.Now)
         Dim px = p.X, py = p.Y
@@ -594,6 +597,7 @@ Friend NotInheritable Class RestRules
         For q = 0 To count - 1
             Dim j = _neighbours(q)
             If b.Mode(j) = BodyMode.Rounding OrElse b.Mode(j) = BodyMode.Dragged Then Continue For
+            If b.Mode(j) <> BodyMode.Sleeping AndAlso Not Settling(j, If(supportSpeed2 < 0, 0.0004 * _s.G * b.Size(j).Scale, supportSpeed2)) Then Continue For
             Dim c = ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now))
             If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y, False)
         Next
@@ -621,9 +625,40 @@ Friend NotInheritable Class RestRules
     ''' </summary>
     Private Function HeldOnSlope(i As Integer) As Boolean
         For a = 0 To _nNormals - 1
-            If _normalExact(a) AndAlso _normalY(a) > 0 AndAlso _normalY(a) <= RestingFaces.LevelCosine Then Return _equilibrium.Holds(i)
+            If _normalExact(a) AndAlso _normalY(a) > 0 AndAlso _normalY(a) <= RestingFaces.LevelCosine Then
+                If _equilibrium.Holds(i) Then Return True
+                Return False
+            End If
         Next
         Return True
+    End Function
+
+    ''' <summary>
+    ''' After a cluster was found not held: its sleeping members that the contact forces do not hold fly again,
+    ''' so that what leant on them can move as the forces say rather than chatter against bodies that would give way.
+    ''' </summary>
+    Private Sub WakeUnheld()
+        Dim members = _equilibrium.Members
+        Dim accelerations = _equilibrium.Accelerations
+        Dim limit = _equilibrium.RestingAcceleration()
+        For k = 1 To members.Count - 1
+            Dim j = members(k)
+            If _bodies.Mode(j) <> BodyMode.Sleeping OrElse accelerations(k).Length <= limit Then Continue For
+            _s.Sync(j)
+            MakeFree(j)
+            _s.Changed(j)
+        Next
+    End Sub
+
+    ''' <summary>
+    ''' Whether body j, not asleep, is slow enough now to be settling with a pile (below the speed at which a
+    ''' body outside a burst may sleep): only such a body can hold another up. One faster than that is on its
+    ''' way somewhere, and what slept on it would be left hanging in the air when it goes.
+    ''' </summary>
+    Private Function Settling(j As Integer, speed2 As Double) As Boolean
+        Dim x, y, vx, vy As Double
+        _bodies.Motion(j).StateAt(_s.Now, x, y, vx, vy)
+        Return vx * vx + vy * vy < speed2
     End Function
 
     Private Sub AddNormal(x As Double, y As Double, Optional exact As Boolean = True)
