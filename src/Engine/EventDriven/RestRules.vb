@@ -22,6 +22,8 @@ Friend NotInheritable Class RestRules
     ''' <summary>Whether each gathered normal is a wall's or a fixed body's (exact), rather than another body's.</summary>
     Private ReadOnly _normalExact As Boolean() = New Boolean(15) {}
     Private _nNormals As Integer
+    ''' <summary>Whether a cluster of still bodies is held by the contact forces (see <see cref="HeldOnSlope"/>).</summary>
+    Private ReadOnly _equilibrium As EquilibriumCheck
     ''' <summary>Scratch: bodies being woken, and one body's neighbours.</summary>
     Private _wake As Integer() = Array.Empty(Of Integer)()
     Private _settle As Integer() = Array.Empty(Of Integer)()
@@ -37,6 +39,7 @@ Friend NotInheritable Class RestRules
         _s = state
         _bodies = state.Bodies
         _slides = slides
+        _equilibrium = New EquilibriumCheck(state)
     End Sub
 
     ''' <summary>Forgets every body's history (after a rebuild); rest times survive while the body still sits still.</summary>
@@ -311,7 +314,7 @@ Friend NotInheritable Class RestRules
         End If
         _bursts(i).Count += 1
         Dim limit2 = If(_bursts(i).Count > BurstCollisions, scale2, 0.0004 * scale2)
-        If speed2 < limit2 AndAlso IsHeld(i) Then Sleep(i)
+        If speed2 < limit2 AndAlso IsHeld(i, limit2) Then Sleep(i)
     End Sub
 
     ''' <summary>
@@ -560,10 +563,13 @@ Friend NotInheritable Class RestRules
     ''' <summary>
     ''' Whether body i is held against gravity by what it touches (within 10⁻³ r): the upward
     ''' vertical lies in the cone of its contact normals, so normal forces alone can balance its
-    ''' weight (one level support, or two on either side of the vertical, or a cage). Neighbours count
-    ''' whether asleep or not (a settling pile freezes as a whole); only nearby cells are searched.
+    ''' weight (one level support, or two on either side of the vertical, or a cage). A neighbour counts if it
+    ''' is asleep or moves slower than <paramref name="supportSpeed2"/> (m²/s², the speed below which body i
+    ''' itself may sleep; by default that of a body outside a burst): a settling pile freezes as a whole, but a
+    ''' body on its way elsewhere holds nothing, or what slept on it would hang in the air when it went. Only
+    ''' nearby cells are searched.
     ''' </summary>
-    Private Function IsHeld(i As Integer) As Boolean
+    Private Function IsHeld(i As Integer, Optional supportSpeed2 As Double = -1) As Boolean
         Dim b = _s.Bodies
         Dim p = b.PositionAt(i, _s.Now)
         Dim px = p.X, py = p.Y
@@ -591,6 +597,7 @@ Friend NotInheritable Class RestRules
         For q = 0 To count - 1
             Dim j = _neighbours(q)
             If b.Mode(j) = BodyMode.Rounding OrElse b.Mode(j) = BodyMode.Dragged Then Continue For
+            If b.Mode(j) <> BodyMode.Sleeping AndAlso Not Settling(j, If(supportSpeed2 < 0, 0.0004 * _s.G * b.Size(j).Scale, supportSpeed2)) Then Continue For
             Dim c = ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now))
             If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y, False)
         Next
@@ -601,13 +608,57 @@ Friend NotInheritable Class RestRules
         ' Otherwise up = (0, 1) must lie between two of the normals (RestingFaces.HoldsUp, which is symmetric in
         ' its two normals and never holds for a normal paired with itself, so each pair is asked once).
         For a = 0 To _nNormals - 1
-            If _normalY(a) > If(_normalExact(a), RestingFaces.LevelCosine, 0.999) Then Return True
+            If _normalY(a) > If(_normalExact(a), RestingFaces.LevelCosine, 0.999) Then Return HeldOnSlope(i)
             Dim na = New Vector(_normalX(a), _normalY(a))
             For k = a + 1 To _nNormals - 1
-                If RestingFaces.HoldsUp(na, New Vector(_normalX(k), _normalY(k))) Then Return True
+                If RestingFaces.HoldsUp(na, New Vector(_normalX(k), _normalY(k))) Then Return HeldOnSlope(i)
             Next
         Next
         Return False
+    End Function
+
+    ''' <summary>
+    ''' Body i is held by its own contacts (<see cref="IsHeld"/>, just asked). When one of them is a slope of
+    ''' a fixed body (a peg's shoulder, a tilted face: neither level nor upright), that is not enough: the
+    ''' bodies it leans on with it may be pushed aside, as a frictionless arch of balls between two pegs is.
+    ''' Then it is held only if the contact forces hold its whole cluster of still bodies (<see cref="EquilibriumCheck"/>).
+    ''' </summary>
+    Private Function HeldOnSlope(i As Integer) As Boolean
+        For a = 0 To _nNormals - 1
+            If _normalExact(a) AndAlso _normalY(a) > 0 AndAlso _normalY(a) <= RestingFaces.LevelCosine Then
+                If _equilibrium.Holds(i) Then Return True
+                Return False
+            End If
+        Next
+        Return True
+    End Function
+
+    ''' <summary>
+    ''' After a cluster was found not held: its sleeping members that the contact forces do not hold fly again,
+    ''' so that what leant on them can move as the forces say rather than chatter against bodies that would give way.
+    ''' </summary>
+    Private Sub WakeUnheld()
+        Dim members = _equilibrium.Members
+        Dim accelerations = _equilibrium.Accelerations
+        Dim limit = _equilibrium.RestingAcceleration()
+        For k = 1 To members.Count - 1
+            Dim j = members(k)
+            If _bodies.Mode(j) <> BodyMode.Sleeping OrElse accelerations(k).Length <= limit Then Continue For
+            _s.Sync(j)
+            MakeFree(j)
+            _s.Changed(j)
+        Next
+    End Sub
+
+    ''' <summary>
+    ''' Whether body j, not asleep, is slow enough now to be settling with a pile (below the speed at which a
+    ''' body outside a burst may sleep): only such a body can hold another up. One faster than that is on its
+    ''' way somewhere, and what slept on it would be left hanging in the air when it goes.
+    ''' </summary>
+    Private Function Settling(j As Integer, speed2 As Double) As Boolean
+        Dim x, y, vx, vy As Double
+        _bodies.Motion(j).StateAt(_s.Now, x, y, vx, vy)
+        Return vx * vx + vy * vy < speed2
     End Function
 
     Private Sub AddNormal(x As Double, y As Double, Optional exact As Boolean = True)

@@ -26,6 +26,22 @@ Public Class CaseSceneTests
         Next
     End Sub
 
+    ''' <summary>
+    ''' 60 frictionless balls (r = 4 cm, e = 0.5) dropped onto a row of fixed pegs (r = 5 cm, centres at
+    ''' y = 1 m, 0.3 m apart): each gap is 2.5 ball diameters wide, and nothing can stay above the pegs (a ball
+    ''' off a peg's centre slides off it; an arch of balls across a gap is pushed apart). Sleeping took each
+    ''' ball's own contacts as enough, and 13 balls were frozen above the pegs, leaning on their shoulders.
+    ''' </summary>
+    <Fact>
+    Public Sub BallsOnPegs_NoneStaysAbove()
+        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-ball-asleep-on-peg-top.json"))
+        EventSolverTestKit.UseEventSolver(w)
+        w.Advance(10)
+        Dim above = w.Movables.Where(Function(b) b.Position.Y > 1.0).Select(Function(b) $"{b.Id} at ({b.Position.X:0.####}, {b.Position.Y:0.####})").ToList()
+        Assert.True(above.Count = 0, $"{above.Count} balls above the pegs at t = 10 s: {String.Join(", ", above)}")
+        Assert.Equal(0.0, EventSolverTestKit.DeepestOverlap(w), 9)
+    End Sub
+
     Private Shared Function RepoRoot() As String
         For Each a In GetType(CaseSceneTests).Assembly.GetCustomAttributes(GetType(Reflection.AssemblyMetadataAttribute), False).Cast(Of Reflection.AssemblyMetadataAttribute)()
             If a.Key = "RepoRoot" Then Return a.Value
