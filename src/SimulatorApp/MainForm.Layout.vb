@@ -155,6 +155,7 @@ Partial Friend NotInheritable Class MainForm
             _rows.Row(rh, (_stiffnessLabel, 0.55), (_stiffness, 0.45))
             _rows.Row(rh + S(2), (_addSpring, 1 / 3), (_addRod, 1 / 3), (_addString, 1 / 3))
         End If
+        LayOutLiquidRow(rh, pairs)
         _rows.Gap()
         ' The container's size and its button on one row when they fit: "Container (m) [8] × [5] [Resize container]".
         _boxWidthLabel.Text = "Container (m)"
@@ -356,6 +357,7 @@ Partial Friend NotInheritable Class MainForm
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows), ("grid", _grid),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _sideView)}
         named.Add(("scenes", _scenes))
+        named.AddRange(LiquidControls())
         named.Add(("restart", _restart))
         named.Add(("export", _export))
         named.Add(("solver", _solver))

@@ -22,4 +22,14 @@ Partial Friend NotInheritable Class ScenePainter
             End If
         Next
     End Sub
+
+    ''' <summary>While a liquid is dragged out: the region it would fill, translucent, edged in its colour.</summary>
+    Private Sub DrawLiquidPreview(g As Graphics, p As SimulationPresenter, view As ViewTransform, k As Single)
+        If Not p.LiquidStart.HasValue OrElse Not p.ToolCursor.HasValue Then Return
+        Dim a = view.ToScreen(p.LiquidStart.Value), b = view.ToScreen(p.ToolCursor.Value)
+        Dim colour = If(p.LiquidToolDensity < LiquidLook.OilBelow, LiquidLook.Oil, LiquidLook.Water)
+        Dim x = CSng(Math.Min(a.X, b.X)), y = CSng(Math.Min(a.Y, b.Y)), w = CSng(Math.Abs(b.X - a.X)), h = CSng(Math.Abs(b.Y - a.Y))
+        g.FillRectangle(SolidOf(colour, LiquidLook.FillAlpha), x, y, w, h)
+        g.DrawRectangle(PenOf(colour, 2 * k), x, y, w, h)
+    End Sub
 End Class

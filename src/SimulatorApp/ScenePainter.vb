@@ -132,6 +132,7 @@ Partial Friend NotInheritable Class ScenePainter
         End If
 
         DrawToolPreview(g, p, view, theme, k)
+        DrawLiquidPreview(g, p, view, k)
         DrawCornerDraft(g, p, view, outline, theme, k)
 
         DrawDraft(g, p, view, outline, theme, k)
