@@ -26,6 +26,6 @@ Public Module LiquidLook
     ''' <summary>"ρ = 1000 kg/m²": the label drawn inside the liquid.</summary>
     Public Function Label(liquid As Liquid) As String
         If liquid Is Nothing Then Throw New ArgumentNullException(NameOf(liquid))
-        Return "ρ = " & Units.Quantity(liquid.Density, "kg/m²", 4)
+        Return "ρ = " & Units.Input(liquid.Density) & Units.Nbsp & "kg/m²"
     End Function
 End Module

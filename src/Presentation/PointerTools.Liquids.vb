@@ -47,7 +47,7 @@ Partial Friend NotInheritable Class PointerTools
                 EndGestures()
                 _Mode = ClickMode.Liquid
                 _liquidDensity = rho.Value
-                _stage.Emit("mode liquid density " & Units.Num(rho.Value, 3) & " kg/m²")
+                _stage.Emit("mode liquid density " & Units.Input(rho.Value) & " kg/m²")
                 _stage.ShowMessage(Stage.ClampNote(("liquid density", rho, "kg/m²")) & "Press at one corner of the liquid, drag to the opposite corner and let go (Esc cancels). Its top is its surface.")
                 _stage.Window.ShowSettings()
             End Sub)
@@ -92,7 +92,7 @@ Partial Friend NotInheritable Class PointerTools
         _history.Commit("the liquid " & liquid.Id & " added", before)
         _Mode = ClickMode.Move
         _toolCursor = Nothing
-        _stage.Emit("placed liquid " & liquid.Id & " density " & Units.Num(liquid.Density, 3) & " from " & Units.Pair(liquid.Min, 3) & " to " & Units.Pair(liquid.Max, 3))
+        _stage.Emit("placed liquid " & liquid.Id & " density " & Units.Input(liquid.Density) & " from " & Units.Pair(liquid.Min, 3) & " to " & Units.Pair(liquid.Max, 3))
         _stage.ShowMessage("")
         _stage.TakeSnapshot()
         _stage.Window.ShowSettings()

@@ -2,8 +2,12 @@ Option Strict On
 
 ' The liquid tool and the air's resistance, as the window's buttons and boxes reach them.
 Partial Public NotInheritable Class SimulationPresenter
-    ''' <summary>"Liquid ρ (kg/m²)": the liquid density box's label.</summary>
-    Public Const LiquidDensityCaption As String = "Liquid ρ (kg/m²)"
+    ''' <summary>The liquid button, which drops down water, oil or a typed density.</summary>
+    Public Const LiquidCaption As String = "Liquid ▾"
+    ''' <summary>Water's density, kg/m² (areal, as every density in this 2D world).</summary>
+    Public Const WaterDensity As Double = PointerTools.WaterDensity
+    ''' <summary>A cooking oil's density, kg/m².</summary>
+    Public Const OilDensity As Double = PointerTools.OilDensity
     ''' <summary>The liquid buttons' tip: what the tool does, in a short line.</summary>
     Public Const LiquidTip As String = "Drag a rectangle on the canvas to fill it with liquid of this density (water 1000, oil 900 kg/m²): bodies float in it at depth m/(ρ w), or sink."
 

@@ -141,12 +141,7 @@ Partial Friend NotInheritable Class MainForm
         _rows.Gap()
         _rows.Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
         ' A ramp is a fixed obstacle too: its button sits beside the rectangle's.
-        If pairs Then
-            _rows.Row(rh + S(2), (_rectFixed, 0.2), (_addRectangle, 0.4), (_addRamp, 0.4))
-        Else
-            _rows.Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
-            _rows.Row(rh + S(2), (Nothing, 0.35), (_addRamp, 0.65))
-        End If
+        LayOutRectangleRow(rh, pairs)
         _rows.Gap()
         ' The three links in one row after the spring's stiffness: a link is made by clicking its two ends.
         If pairs Then
@@ -155,7 +150,6 @@ Partial Friend NotInheritable Class MainForm
             _rows.Row(rh, (_stiffnessLabel, 0.55), (_stiffness, 0.45))
             _rows.Row(rh + S(2), (_addSpring, 1 / 3), (_addRod, 1 / 3), (_addString, 1 / 3))
         End If
-        LayOutLiquidRow(rh, pairs)
         _rows.Gap()
         ' The container's size and its button on one row when they fit: "Container (m) [8] × [5] [Resize container]".
         _boxWidthLabel.Text = "Container (m)"

@@ -2,34 +2,38 @@ Option Strict On
 Imports System.Windows.Forms
 Imports PhysicsEngine.Presentation
 
-' The liquid tool's row of the side panel: "Liquid ρ (kg/m²) [1000] [Water] [Oil] [Add liquid]".
+' The liquid tool's button, beside Add ramp: "Liquid ▾" drops down water, oil or a typed density.
 Partial Friend NotInheritable Class MainForm
-    Private ReadOnly _liquidLabel As New Label()
-    Private ReadOnly _liquidDensity As New TextBox()
-    Private ReadOnly _addWater As New Button()
-    Private ReadOnly _addOil As New Button()
     Private ReadOnly _addLiquid As New Button()
+    Private _liquidMenu As LiquidMenu
 
-    ''' <summary>Makes the liquid row's controls, with the tip that says what they do.</summary>
+    ''' <summary>Makes the liquid button and its menu, with the tip that says what it does.</summary>
     Private Sub SetUpLiquidControls()
-        AddField(_liquidLabel, SimulationPresenter.LiquidDensityCaption, _liquidDensity, InputField.LiquidDensity)
-        AddButton(_addWater, "Water", Sub() _presenter.BeginAddWater())
-        AddButton(_addOil, "Oil", Sub() _presenter.BeginAddOil())
-        AddButton(_addLiquid, "Add liquid", Sub() _presenter.BeginAddLiquid())
-        For Each c In New Control() {_liquidLabel, _liquidDensity, _addWater, _addOil, _addLiquid}
-            _kit.Tips.SetToolTip(c, SimulationPresenter.LiquidTip)
-        Next
+        _liquidMenu = New LiquidMenu(_kit, _addLiquid)
+        AddButton(_addLiquid, SimulationPresenter.LiquidCaption, Sub() _liquidMenu.Show())
+        _kit.Tips.SetToolTip(_addLiquid, SimulationPresenter.LiquidTip)
     End Sub
 
-    ''' <summary>Lays out the liquid row: one row when it fits, else the box on one and the three buttons on the next.</summary>
-    Private Sub LayOutLiquidRow(rh As Integer, pairs As Boolean)
-        If pairs AndAlso _rows.FitRow(rh + S(2), _liquidLabel, _liquidDensity, _addWater, _addOil, _addLiquid) Then Return
-        _rows.Row(rh, (_liquidLabel, 0.55), (_liquidDensity, 0.45))
-        _rows.Row(rh + S(2), (_addWater, 1 / 3), (_addOil, 1 / 3), (_addLiquid, 1 / 3))
+    ''' <summary>The rectangle's buttons with the ramp's and the liquid's: one row when they fit, else the liquid's on a row of its own.</summary>
+    Private Sub LayOutRectangleRow(rh As Integer, pairs As Boolean)
+        If pairs AndAlso _rows.FitRow(rh + S(2), _rectFixed, _addRectangle, _addRamp, _addLiquid) Then Return
+        If pairs Then
+            _rows.Row(rh + S(2), (_rectFixed, 0.2), (_addRectangle, 0.4), (_addRamp, 0.4))
+            _rows.Row(rh + S(2), (Nothing, 0.2), (Nothing, 0.4), (_addLiquid, 0.4))
+        Else
+            _rows.Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_addRamp, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (_addLiquid, 0.65))
+        End If
     End Sub
 
-    ''' <summary>The liquid row's controls by the names the --trace output gives them.</summary>
+    ''' <summary>The liquid button by the name the --trace output gives it.</summary>
     Private Function LiquidControls() As IEnumerable(Of (Name As String, Control As Control))
-        Return {("liquid-label", CType(_liquidLabel, Control)), ("liquid-density", _liquidDensity), ("add-water", _addWater), ("add-oil", _addOil), ("add-liquid", _addLiquid)}
+        Return {("add-liquid", CType(_addLiquid, Control))}
     End Function
+
+    ''' <summary>Closes the liquid menu with the window.</summary>
+    Private Sub DisposeLiquidMenu()
+        _liquidMenu?.Dispose()
+    End Sub
 End Class

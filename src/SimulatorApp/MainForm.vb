@@ -886,6 +886,7 @@ Partial Friend NotInheritable Class MainForm
             _timer.Dispose()
             _lessonMenu?.Dispose()
             _solverMenu?.Dispose()
+            DisposeLiquidMenu()
             _exportMenu?.Dispose()
             _graphs?.Dispose()
             _momentumBoxes?.Dispose()

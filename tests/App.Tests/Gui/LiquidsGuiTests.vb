@@ -32,4 +32,32 @@ Public Class LiquidsGuiTests
             Assert.True(app.X.AppIsRunning)
         End Using
     End Sub
+
+    <GuiFact>
+    Public Sub TheLiquidMenu_OilDraggedOutOnTheCanvas_IsAddedAndDrawnAmber()
+        Using app As New AppDriver(New XSessionOptions(), IO.Path.Combine("scenes", "floating-sinking.json"))
+            app.WaitFor("^opened floating-sinking.json: 3 bodies$")
+            app.ClickAndWait("pause", "^paused t=")
+            Dim from = app.Mark()
+            app.Click("add-liquid")
+            Dim oil = app.WaitFor("^liquid item 1 (-?\d+) (-?\d+) (\d+) (\d+)$", skip:=from)
+            app.ClickAt(CInt(oil.Groups(1).Value) + CInt(oil.Groups(3).Value) \ 2, CInt(oil.Groups(2).Value) + CInt(oil.Groups(4).Value) \ 2)
+            app.WaitFor("^mode liquid density 900 kg/m²$", skip:=from)
+            ' Above the water and clear of the boxes: a second liquid may not overlap the first.
+            Dim a = app.Screen(2.0, 2.6), b = app.Screen(3.4, 3.6)
+            app.Drag(1, a.X, a.Y, b.X, b.Y)
+            app.WaitFor("^placed liquid \S+ density 900 from ", skip:=from)
+            from = app.Mark()
+            app.Click("step")
+            app.WaitFor("^step t=", skip:=from)
+            Dim window = app.WaitFor("^window (-?\d+) (-?\d+) \d+ \d+$")
+            Dim wx = CInt(window.Groups(1).Value), wy = CInt(window.Groups(2).Value)
+            Dim shot = app.X.Shoot("oil-drawn")
+            Dim inOil = app.Screen(2.7, 3.1)
+            Dim p = shot.Pixel(inOil.X - wx, inOil.Y - wy)
+            ' Amber: red above blue.
+            Assert.True(((p >> 16) And &HFF) > (p And &HFF) + 40, $"oil is not amber: {p:X6}")
+            Assert.True(app.X.AppIsRunning)
+        End Using
+    End Sub
 End Class

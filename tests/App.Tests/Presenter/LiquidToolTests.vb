@@ -35,7 +35,7 @@ Public Class LiquidToolTests
         Assert.InRange(water.Surface, 2 - pixel, 2 + pixel)
         Assert.InRange(water.Width, 4 - 2 * pixel, 4 + 2 * pixel)
         Assert.Equal(ClickMode.Move, h.P.Mode)
-        Assert.Contains(h.TraceLines, Function(l) l.StartsWith("placed liquid " & water.Id & " density 1000", StringComparison.Ordinal))
+        Assert.Contains(h.TraceLines, Function(l) l.StartsWith("placed liquid " & water.Id & " density 1000 from ", StringComparison.Ordinal))
         Assert.Equal(LiquidLook.Water, LiquidLook.ColourOf(water))
         Assert.Equal("ρ = 1000" & Units.Nbsp & "kg/m²", LiquidLook.Label(water))
     End Sub
@@ -48,6 +48,7 @@ Public Class LiquidToolTests
         Dim oil = h.P.World.Liquids.Single()
         Assert.Equal(900.0, oil.Density)
         Assert.Equal(LiquidLook.Oil, LiquidLook.ColourOf(oil))
+        Assert.Equal("ρ = 900" & Units.Nbsp & "kg/m²", LiquidLook.Label(oil))
         h.P.BeginAddLiquid("1260")
         h.Drag(PointerButton.Left, 3, 3, 4.5, 4)
         Dim glycerol = h.P.World.Liquids(1)
