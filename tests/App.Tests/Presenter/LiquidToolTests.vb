@@ -151,4 +151,15 @@ Public Class LiquidToolTests
             IO.File.Delete(path)
         End Try
     End Sub
+
+    <Fact>
+    Public Sub TheTutorial_SaysHowToDrawALiquid_AndTheMathsPageGivesTheTextbookResults()
+        Dim adding = HelpTexts.Tutorial.Single(Function(t) t.Title = "1. Adding particles")
+        Assert.Contains(SimulationPresenter.LiquidCaption, adding.Text, StringComparison.Ordinal)
+        Assert.Contains("m/(ρ w)", adding.Text, StringComparison.Ordinal)
+        Dim maths = HelpTexts.Maths.Single(Function(t) t.Title.Contains("drag and buoyancy", StringComparison.Ordinal))
+        For Each formula In {"v_t = m g / b", "v_t = √(2 m g / (ρ C_d L))", "d = m / (ρ_l w)", "T = 2π √(m / (ρ_l g w))"}
+            Assert.Contains(formula, maths.Text, StringComparison.Ordinal)
+        Next
+    End Sub
 End Class
