@@ -3,7 +3,7 @@ Option Strict On
 ' The liquid tool and the air's resistance, as the window's buttons and boxes reach them.
 Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The liquid button, which drops down water, oil or a typed density.</summary>
-    Public Const LiquidCaption As String = "Liquid ▾"
+    Public Const LiquidCaption As String = Captions.Liquid
     ''' <summary>Water's density, kg/m² (areal, as every density in this 2D world).</summary>
     Public Const WaterDensity As Double = PointerTools.WaterDensity
     ''' <summary>A cooking oil's density, kg/m².</summary>
