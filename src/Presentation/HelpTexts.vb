@@ -9,7 +9,7 @@ Public Module HelpTexts
         "  " & SimulationPresenter.RestartKey & "  restart the scene" & vbLf &
         "  " & SimulationPresenter.ResetKey & "  reset (remove every body)" & vbLf &
         "  " & SimulationPresenter.ScenesKey & "  the Scenes menu (arrow keys and Enter choose)" & vbLf &
-        "  Esc  drop the body you are placing, or the ramp, link or polygon you are drawing; close the Tutorial, Maths used or graph window; close a menu" & vbLf &
+        "  Esc  drop the body you are placing, or the ramp, link or polygon you are drawing; end the tape measure or the choice of a body to time; close the Tutorial, Maths used or graph window; close a menu" & vbLf &
         "  Enter  finish a polygon drawn by its corners" & vbLf & "" & vbLf &
         "Except while typing in a text box (which keeps these keys for its own text):" & vbLf &
         "  " & SimulationPresenter.UndoKey & "  undo the last edit: a body added, deleted, carried or pushed, a velocity set with its arrow, a value typed into a table, a link, a ramp, the container's size, Reset. The scene goes back exactly as it was, clock included; gravity, restitution and friction stay as set." & vbLf &
@@ -33,7 +33,7 @@ Public Module HelpTexts
         New HelpTopic("5. Limits of the model",
             "Balls are perfectly smooth, rigid discs: they do not spin and take no friction (a real ball on a rough surface would roll), so a ball on a table never slows down except through collisions. Boxes, polygons, ramps, fixed rectangles and walls have friction once μk and μs are set, in the side panel or in the scene file." & vbLf & "" & vbLf & "One coefficient of restitution e is used for every contact. Real pairs of materials each have their own." & vbLf & "" & vbLf & "Rectangles, boxes and polygons never rotate. Fixed balls and rectangles do not collide with each other, so you can build shapes from them." & vbLf & "" & vbLf & "Air resistance (linear drag −b v and quadratic drag −½ ρ C_d L |v| v) and liquids (buoyancy and drag) can be written into a scene file, and such a scene moves as its file says. The window draws liquids and adds them (Liquid ▾); the air's density and a body's drag (C_d, b) are set in the scene file only. A body's own friction, written in its file, is kept but cannot be seen or changed in the window. Gravity is uniform (the same everywhere in the box)." & vbLf & "" & vbLf & "Collisions are instantaneous. Several balls touching at once are handled one pair at a time, in a definite order." & vbLf & "" & vbLf & "Numbers are shown to 3 significant figures (with a power of ten when very large or small); the simulation itself keeps full precision."),
         SimulationPresenter.LessonsHelp,
-        SimulationPresenter.GraphsHelp, SimulationPresenter.MomentumHelp, SimulationPresenter.TimeTravelHelp, KeysHelp}
+        SimulationPresenter.GraphsHelp, SimulationPresenter.MomentumHelp, SimulationPresenter.TimeTravelHelp, KeysHelp, SimulationPresenter.MeasuringHelp}
 
     ''' <summary>The equations the engine uses, with their reasoning.</summary>
     Public ReadOnly Property Maths As IReadOnlyList(Of HelpTopic)

@@ -234,6 +234,7 @@ Partial Public NotInheritable Class SimulationPresenter
             End Try
             Log.EndFrame()
             _graphs.SampleGraphs()
+            FollowMeasures()
         End If
         _momentum.FollowMomentumViews(realSeconds, Not IsPaused)
         ' A followed body moves: the view moves with it (not written to the trace every frame).
@@ -263,6 +264,8 @@ Partial Public NotInheritable Class SimulationPresenter
         _lessons.NoteBuilding()
         _Snapshot = TableSnapshot.Take(World, Log.TotalSeen)
         _graphs.SampleGraphs()
+        ' A step, a scrub or an edit moves time too: the pass timer sees it.
+        FollowMeasures()
         ' While a velocity arrow is dragged its scale stays put, so its tip stays under the cursor.
         If _pointer.ArrowBody Is Nothing Then Arrows.Update(Snapshot.FastestSpeed, 0.25 * Math.Min(World.Width, World.Height))
         _window.ShowState()
@@ -513,6 +516,7 @@ Partial Public NotInheritable Class SimulationPresenter
             If String.IsNullOrEmpty(b.Color) Then b.Color = BodyColours.ForId(b.Id)
         Next
         _momentum.ForgetMomentumViews()
+        ForgetMeasures()
         _stage.World = w
         Log.Clear()
         Inputs.ContainerWidthText = Units.Input(w.Width)
@@ -1164,6 +1168,7 @@ Partial Public NotInheritable Class SimulationPresenter
 
     ''' <summary>Drops the body waiting to be placed, or the ramp, link or polygon being drawn (Esc).</summary>
     Public Sub CancelPlacement()
+        If CancelMeasure() Then Return
         _pointer.CancelPlacement()
     End Sub
 
@@ -1173,6 +1178,7 @@ Partial Public NotInheritable Class SimulationPresenter
             _camera.BeginPan(x, y, _fitted)
             Return
         End If
+        If MeasurePointerDown(button, x, y) Then Return
         _pointer.PointerDown(button, x, y)
     End Sub
 
@@ -1182,6 +1188,7 @@ Partial Public NotInheritable Class SimulationPresenter
             If _camera.PanTo(x, y, _fitted) Then ApplyCamera(announce:=True)
             Return
         End If
+        If MeasurePointerMove(x, y) Then Return
         _pointer.PointerMove(x, y)
     End Sub
 
@@ -1200,6 +1207,7 @@ Partial Public NotInheritable Class SimulationPresenter
             End If
             Return
         End If
+        If MeasurePointerUp(button, x, y) Then Return
         _pointer.PointerUp(button, x, y)
     End Sub
 

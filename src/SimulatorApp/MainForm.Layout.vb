@@ -355,6 +355,7 @@ Partial Friend NotInheritable Class MainForm
         named.Add(("restart", _restart))
         named.Add(("export", _export))
         named.Add(("solver", _solver))
+        named.Add(("measure", _measure))
         named.AddRange(_graphs.Controls(_tabs.SelectedTab Is _graphs.Page))
         named.AddRange(_momentumBoxes.Controls())
         named.AddRange(_time.Controls())
@@ -393,7 +394,7 @@ Partial Friend NotInheritable Class MainForm
         Dim extra = Math.Max(0, height - header)
         If extra > 0 Then _tabs.SetBounds(_tabs.Left, top + extra, _tabs.Width, Math.Max(1, _tabs.Height - extra))
         Dim x = right - S(6)
-        For Each b In {_restart, _scenes, _export, _solver}
+        For Each b In {_restart, _scenes, _export, _solver, _measure}
             Dim captions = If(b Is _solver, SolverMenu.Captions(), {b.Text})
             Dim width = Math.Max(S(90), captions.Max(Function(c) Measure(c, Font).Width) + S(24))
             x -= width
@@ -401,14 +402,14 @@ Partial Friend NotInheritable Class MainForm
             x -= S(6)
         Next
         Dim theme = _presenter.Theme
-        For Each b In {_solver, _export, _scenes, _restart}
+        For Each b In {_solver, _export, _scenes, _restart, _measure}
             b.Font = Font
             WindowKit.Style(b, theme)
         Next
         _graphs.Restyle()
         If _tabs.TabCount > 0 Then
             Dim lastTab = _tabs.GetTabRect(_tabs.TabCount - 1)
-            If _tabs.Left + lastTab.Right > _solver.Left - S(4) AndAlso _tabs.Top < _export.Bottom Then
+            If _tabs.Left + lastTab.Right > _measure.Left - S(4) AndAlso _tabs.Top < _export.Bottom Then
                 Dim below = _export.Bottom + S(2)
                 _tabs.SetBounds(_tabs.Left, below, _tabs.Width, Math.Max(1, _tabs.Bottom - below))
             End If
@@ -417,7 +418,7 @@ Partial Friend NotInheritable Class MainForm
             _tabStripFill.SetBounds(_tabs.Left + last.Right + S(2), _tabs.Top, Math.Max(1, _tabs.Width - last.Right - S(2)), last.Bottom)
             _tabStripFill.BringToFront()
         End If
-        For Each b In {_solver, _export, _scenes, _restart}
+        For Each b In {_solver, _export, _scenes, _restart, _measure}
             b.BringToFront()
         Next
     End Sub

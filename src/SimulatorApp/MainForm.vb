@@ -103,6 +103,8 @@ Partial Friend NotInheritable Class MainForm
     Private ReadOnly _export As New Button()
     Private ReadOnly _scenes As New Button()
     Private ReadOnly _restart As New Button()
+    ''' <summary>The Measure button of the header row: the tape, the pass timer and the stopwatch.</summary>
+    Private ReadOnly _measure As New Button()
 
     ''' <summary>What the window's parts share (the presenter, the trace, the screen's scale, text measures, tips).</summary>
     Private ReadOnly _kit As WindowKit
@@ -119,6 +121,7 @@ Partial Friend NotInheritable Class MainForm
     Private _lessonMenu As LessonMenu
     Private _solverMenu As SolverMenu
     Private _exportMenu As ExportMenu
+    Private _measureMenu As MeasureMenu
 
     ''' <param name="trace">receives one line per action when the app runs with --trace; Nothing otherwise</param>
     ''' <param name="store">scene files; Nothing disables Open and Save</param>
@@ -204,6 +207,9 @@ Partial Friend NotInheritable Class MainForm
         _solverMenu = New SolverMenu(_kit, _solver)
         _exportMenu = New ExportMenu(_kit, _export, _canvas, _painter)
         _lessonMenu = New LessonMenu(_kit, _scenes)
+        AddHeaderButton(_measure, MeasureMenu.Caption, Sub() _measureMenu.Show())
+        _measureMenu = New MeasureMenu(_kit, _measure)
+        _kit.Tips.SetToolTip(_measure, "The tape measure, a stopwatch on simulated time, and the timing of a body's passes through a line")
         _kit.Tips.SetToolTip(_solver, "How the scene is moved on in time: choose another, then Restart, to compare")
         _kit.Tips.SetToolTip(_export, "Save the tables, the collision log or the graph as CSV, or the graph or the canvas as a picture")
         _kit.Tips.SetToolTip(_scenes, "Ready-made lesson scenes (" & SimulationPresenter.ScenesKey & ")")
@@ -888,6 +894,7 @@ Partial Friend NotInheritable Class MainForm
             _solverMenu?.Dispose()
             DisposeLiquidMenu()
             _exportMenu?.Dispose()
+            _measureMenu?.Dispose()
             _graphs?.Dispose()
             _momentumBoxes?.Dispose()
             _cells?.Dispose()

@@ -138,6 +138,7 @@ Partial Friend NotInheritable Class ScenePainter
         DrawDraft(g, p, view, outline, theme, k)
         DrawCue(g, p, view, theme, k)
         DrawArrowDrag(g, p, view, theme, k)
+        DrawMeasures(g, p, view, theme, k)
         g.ResetClip()
         Dim keyEnd = DrawScaleBar(g, p, view, theme, height, k)
         DrawBanner(g, p, theme, width, height, keyEnd, k)

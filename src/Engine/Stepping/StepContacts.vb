@@ -88,14 +88,14 @@ Friend NotInheritable Class StepContacts
 
         ResolvePairs()       ' 1. movable pairs, lowest first, with their real masses
         ResolveFixed()       ' 2. fixed bodies and walls; marks who rests on them
-        If _gravity > 0 Then ' only gravity makes things rest on each other
-            ' 3. A body resting on a supported one treats it as immovable. Lowest pair first lets support
-            ' climb a stack in one pass; in an irregular pile height is not quite the order of support, so
-            ' passes repeat (a few at most) until one finds nothing left to resolve.
-            For pass = 1 To MaxSupportPasses
-                If Not ResolveSupport() Then Exit For
-            Next
-        End If
+        ' 3. A body pressing on a held one (resting on a fixed body or a wall, or on a body that is) treats it
+        ' as immovable: under gravity a stack, and with or without gravity a light body squeezed against a
+        ' wall by a heavy one. Lowest pair first lets support climb a stack in one pass; in an irregular pile
+        ' height is not quite the order of support, so passes repeat (a few at most) until one finds nothing
+        ' left to resolve.
+        For pass = 1 To MaxSupportPasses
+            If Not ResolveSupport() Then Exit For
+        Next
         ' 4. Fixed bodies and walls have the last word: a pair or support push (a heavy ball on a light
         ' one) may have moved a body into one, and no body may end a step inside a fixed body.
         For pass = 1 To MaxFixedPasses
