@@ -12,7 +12,7 @@ Public NotInheritable Class BodyInputs
         {InputField.RectangleWidth, "1"}, {InputField.RectangleHeight, "0.5"},
         {InputField.ContainerWidth, ""}, {InputField.ContainerHeight, ""},
         {InputField.Sides, "5"}, {InputField.PolygonAngle, "0"}, {InputField.Stiffness, "20"},
-        {InputField.FrictionKinetic, "0"}, {InputField.FrictionStatic, ""}}
+        {InputField.FrictionKinetic, "0"}, {InputField.FrictionStatic, ""}, {InputField.LiquidDensity, "1000"}}
 
     ''' <summary>The text of one box.</summary>
     Default Public Property Item(field As InputField) As String

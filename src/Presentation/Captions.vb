@@ -26,11 +26,13 @@ Public Module Captions
     Public Const AddString As String = "+ String"
     Public Const SetFriction As String = "Set friction"
     Public Const Grid As String = "Grid"
+    ''' <summary>The liquid tool's button, which drops down water, oil or a typed density.</summary>
+    Public Const Liquid As String = "Liquid ▾"
 
     ''' <summary>Every caption, with the changing ones (Pause/Resume, Delete mode) in their plain form.</summary>
     Public ReadOnly Property All As IReadOnlyList(Of String) = {
         "Pause", "Resume", Reset, "Delete mode", AddCircle, AddRectangle, ResizeContainer, Fixed, LargeFonts, HighContrast, Arrows, Grid,
         Tutorial, MathsUsed, OpenScene, SaveScene, "Open", "Save", CollisionLog, "Circles", "Rectangles",
-        AddPolygon, AddByCorners, AddRamp, AddSpring, AddRod, AddString, SetFriction, "Bodies", "Links",
+        AddPolygon, AddByCorners, AddRamp, AddSpring, AddRod, AddString, SetFriction, Liquid, "Bodies", "Links",
         "Moon", "Mars", "Earth", "Jupiter"}.Concat(MomentumCaptions.All).ToArray()
 End Module

@@ -12,4 +12,6 @@ Public Enum ClickMode
     Link
     ''' <summary>Draws a polygon: click its corners one after another, then finish (first corner again, a double click, or Enter).</summary>
     Corners
+    ''' <summary>Draws a liquid region: press at one corner, drag, let go at the opposite corner.</summary>
+    Liquid
 End Enum

@@ -24,4 +24,6 @@ Public Enum InputField
     FrictionKinetic
     ''' <summary>The world's coefficient of static friction μs (empty: the same as μk).</summary>
     FrictionStatic
+    ''' <summary>The density of the next liquid drawn, kg/m².</summary>
+    LiquidDensity
 End Enum

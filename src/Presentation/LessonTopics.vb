@@ -17,7 +17,8 @@ Public Module LessonTopics
         ("Gases", {"ideal-gas.json"}),
         ("Pendulums and springs", {"pendulum.json", "cradle-strings.json", "spring-mass.json", "double-pendulum.json", "rope.json"}),
         ("Ramps and boxes", {"ramp.json", "ball-in-v.json", "box-stack.json"}),
-        ("Friction", {"inclined-plane.json", "rough-floor.json"})}
+        ("Friction", {"inclined-plane.json", "rough-floor.json"}),
+        ("Forces", {"terminal-velocity.json", "projectile-air.json", "floating-sinking.json", "bobbing-box.json"})}
 
     ''' <summary>Every topic's name in menu order, <see cref="More"/> last.</summary>
     Public ReadOnly Property Names As IReadOnlyList(Of String) = Topics.Select(Function(t) t.Name).Concat({More}).ToArray()

@@ -6,7 +6,7 @@ Option Strict On
 ''' the mode a left click is in, the body waiting to be placed, the body carried or aimed at, and
 ''' what a tool has drawn so far.
 ''' </summary>
-Friend NotInheritable Class PointerTools
+Partial Friend NotInheritable Class PointerTools
     Private ReadOnly _stage As Stage
     Private ReadOnly _view As Func(Of ViewTransform)
     Private ReadOnly _screenScale As Func(Of Double)
@@ -271,7 +271,12 @@ Friend NotInheritable Class PointerTools
                             Delete(body)
                         Else
                             Dim link = LinkAt(p)
-                            If link IsNot Nothing Then DeleteLink(link)
+                            If link IsNot Nothing Then
+                                DeleteLink(link)
+                            Else
+                                Dim liquid = LiquidAt(p)
+                                If liquid IsNot Nothing Then DeleteLiquid(liquid)
+                            End If
                         End If
                         Return
                     End If
@@ -742,7 +747,7 @@ Friend NotInheritable Class PointerTools
 
     ''' <summary>Ends the ramp, link or corner tool without making anything.</summary>
     Private Sub CancelTool()
-        If _Mode <> ClickMode.Ramp AndAlso _Mode <> ClickMode.Link AndAlso _Mode <> ClickMode.Corners Then Return
+        If _Mode <> ClickMode.Ramp AndAlso _Mode <> ClickMode.Link AndAlso _Mode <> ClickMode.Corners AndAlso _Mode <> ClickMode.Liquid Then Return
         _Mode = ClickMode.Move
         _rampStart = Nothing
         _toolCursor = Nothing
@@ -755,7 +760,7 @@ Friend NotInheritable Class PointerTools
 
     ''' <summary>A button went down at <paramref name="p"/> (m) while a tool is on; True when the tool took it.</summary>
     Private Function ToolDown(button As PointerButton, p As Vector) As Boolean
-        If _Mode = ClickMode.Ramp Then
+        If _Mode = ClickMode.Ramp OrElse _Mode = ClickMode.Liquid Then
             If button = PointerButton.Left Then
                 _rampStart = _stage.World.Inside(p, 0)
                 _toolCursor = _rampStart
@@ -780,12 +785,13 @@ Friend NotInheritable Class PointerTools
 
     ''' <summary>The cursor moved to <paramref name="p"/> (m): a ramp, link or polygon being drawn follows it.</summary>
     Private Sub ToolMove(p As Vector)
-        If _Mode = ClickMode.Ramp OrElse _Mode = ClickMode.Link OrElse _Mode = ClickMode.Corners Then _toolCursor = _stage.World.Inside(p, 0)
+        If _Mode = ClickMode.Ramp OrElse _Mode = ClickMode.Link OrElse _Mode = ClickMode.Corners OrElse _Mode = ClickMode.Liquid Then _toolCursor = _stage.World.Inside(p, 0)
     End Sub
 
     ''' <summary>A button came up at <paramref name="p"/> (m) while a tool is on; True when the tool took it.</summary>
     Private Function ToolUp(button As PointerButton, p As Vector) As Boolean
         If _Mode = ClickMode.Link OrElse _Mode = ClickMode.Corners Then Return True
+        If _Mode = ClickMode.Liquid Then Return LiquidUp(button, p)
         If _Mode <> ClickMode.Ramp Then Return False
         If button <> PointerButton.Left OrElse Not _rampStart.HasValue Then Return True
         Dim a = _rampStart.Value

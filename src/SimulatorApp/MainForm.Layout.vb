@@ -141,12 +141,7 @@ Partial Friend NotInheritable Class MainForm
         _rows.Gap()
         _rows.Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
         ' A ramp is a fixed obstacle too: its button sits beside the rectangle's.
-        If pairs Then
-            _rows.Row(rh + S(2), (_rectFixed, 0.2), (_addRectangle, 0.4), (_addRamp, 0.4))
-        Else
-            _rows.Row(rh + S(2), (_rectFixed, 0.35), (_addRectangle, 0.65))
-            _rows.Row(rh + S(2), (Nothing, 0.35), (_addRamp, 0.65))
-        End If
+        LayOutRectangleRow(rh, pairs)
         _rows.Gap()
         ' The three links in one row after the spring's stiffness: a link is made by clicking its two ends.
         If pairs Then
@@ -356,6 +351,7 @@ Partial Friend NotInheritable Class MainForm
             ("large-fonts", _largeFonts), ("high-contrast", _highContrast), ("arrows", _arrows), ("grid", _grid),
             ("tutorial", _tutorial), ("maths", _maths), ("open", _open), ("save", _save), ("tabs", _tabs), ("side", _sideView)}
         named.Add(("scenes", _scenes))
+        named.AddRange(LiquidControls())
         named.Add(("restart", _restart))
         named.Add(("export", _export))
         named.Add(("solver", _solver))

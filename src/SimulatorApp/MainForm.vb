@@ -304,6 +304,7 @@ Partial Friend NotInheritable Class MainForm
         AddButton(_addRod, Captions.AddRod, Sub() _presenter.BeginAddLink(LinkKind.Rod))
         AddButton(_addString, Captions.AddString, Sub() _presenter.BeginAddLink(LinkKind.String))
         AddButton(_addRamp, Captions.AddRamp, Sub() _presenter.BeginAddRamp())
+        SetUpLiquidControls()
 
         AddField(_boxWidthLabel, "Container w (m)", _boxWidth, InputField.ContainerWidth)
         AddField(_boxHeightLabel, "h (m)", _boxHeight, InputField.ContainerHeight)
@@ -736,7 +737,8 @@ Partial Friend NotInheritable Class MainForm
                               (_addRod, link AndAlso _presenter.LinkToolKind = LinkKind.Rod),
                               (_addString, link AndAlso _presenter.LinkToolKind = LinkKind.String),
                               (_addRamp, _presenter.Mode = ClickMode.Ramp),
-                              (_addCorners, _presenter.Mode = ClickMode.Corners)}
+                              (_addCorners, _presenter.Mode = ClickMode.Corners),
+                              (_addLiquid, _presenter.Mode = ClickMode.Liquid)}
                 tool.Item1.BackColor = ScenePainter.Rgb(If(tool.Item2, theme.MessageBack, theme.Button))
             Next
             _largeFonts.Checked = _presenter.LargeFonts
@@ -890,6 +892,7 @@ Partial Friend NotInheritable Class MainForm
             _timer.Dispose()
             _lessonMenu?.Dispose()
             _solverMenu?.Dispose()
+            DisposeLiquidMenu()
             _exportMenu?.Dispose()
             _measureMenu?.Dispose()
             _graphs?.Dispose()

@@ -67,6 +67,8 @@ Partial Friend NotInheritable Class ScenePainter
             g.DrawRectangle(_openPen, CSng(tl.X), CSng(tl.Y), cw, ch)
         End If
         If p.ShowTraces Then DrawTraces(g, p, view, theme, k)
+        ' Liquids under the bodies: a body in one shows through its fill.
+        DrawLiquids(g, world, view, theme, k)
 
         ' Fixed bodies first (the fixed colour says they never move), then movable ones over them.
         Dim fixedFill = SolidOf(theme.Fixed)
@@ -130,6 +132,7 @@ Partial Friend NotInheritable Class ScenePainter
         End If
 
         DrawToolPreview(g, p, view, theme, k)
+        DrawLiquidPreview(g, p, view, k)
         DrawCornerDraft(g, p, view, outline, theme, k)
 
         DrawDraft(g, p, view, outline, theme, k)
