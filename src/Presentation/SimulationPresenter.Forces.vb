@@ -28,6 +28,14 @@ Partial Public NotInheritable Class SimulationPresenter
         Return World.Movables.Select(Function(b) b.Id).ToList()
     End Function
 
+    ''' <summary>The diagram's arrows (m) while Forces is on; none when it is off or there is no movable body.</summary>
+    Public Function ForceArrows() As IReadOnlyList(Of ForceArrow)
+        If Not Forces.Shown Then Return Array.Empty(Of ForceArrow)()
+        Dim d = ForcesDiagram()
+        If d Is Nothing Then Return Array.Empty(Of ForceArrow)()
+        Return FreeBodyView.Arrows(d, World.Width, World.Height)
+    End Function
+
     ''' <summary>Writes the forces of the body shown to the trace.</summary>
     Public Sub EmitForces()
         Emit(FreeBodyView.TraceLine(ForcesDiagram()))

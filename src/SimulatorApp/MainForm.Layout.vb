@@ -360,6 +360,7 @@ Partial Friend NotInheritable Class MainForm
         named.Add(("export", _export))
         named.Add(("solver", _solver))
         named.AddRange(_graphs.Controls(_tabs.SelectedTab Is _graphs.Page))
+        named.AddRange(_forcesPage.Controls(_tabs.SelectedTab Is _forcesPage.Page))
         named.AddRange(_momentumBoxes.Controls())
         named.AddRange(_time.Controls())
         Return named
@@ -410,6 +411,7 @@ Partial Friend NotInheritable Class MainForm
             WindowKit.Style(b, theme)
         Next
         _graphs.Restyle()
+        _forcesPage.Restyle()
         If _tabs.TabCount > 0 Then
             Dim lastTab = _tabs.GetTabRect(_tabs.TabCount - 1)
             If _tabs.Left + lastTab.Right > _solver.Left - S(4) AndAlso _tabs.Top < _export.Bottom Then
