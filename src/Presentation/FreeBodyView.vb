@@ -103,7 +103,7 @@ Public NotInheritable Class FreeBodyView
     ''' <summary>The Forces table's rows: the force's name, what exerts it, its size (N) and direction (°).</summary>
     Public Shared Function Rows(d As FreeBodyDiagram) As IReadOnlyList(Of String())
         If d Is Nothing Then Return Array.Empty(Of String())()
-        Return d.Forces.Select(Function(f) New String() {Name(f.Kind), f.Source, Units.Sig(f.Magnitude), Units.Sig(Direction(f.Force), 4)}).ToList()
+        Return d.Forces.Select(Function(f) New String() {Name(f.Kind), f.Source, Units.Sig(f.Magnitude), Units.Num(Direction(f.Force), 1)}).ToList()
     End Function
 
     ''' <summary>ΣF and m a, the noise of rounding beside the forces' sizes shown as 0.</summary>

@@ -14,6 +14,7 @@ Public Class ForcesViewTests
     Private Shared ReadOnly RestingSources As String() = {"Earth", "gentle", "gentle"}
     Private Shared ReadOnly Blocks As String() = {"stays", "slides"}
     Private Shared ReadOnly Gap As String() = {"    "}
+    Private Shared ReadOnly ForceSymbols As String() = {"W", "N", "F"}
 
     Private Shared Function OpenInclinedPlane() As PresenterHarness
         Dim h As New PresenterHarness(store:=New SceneFileStore())
@@ -42,8 +43,8 @@ Public Class ForcesViewTests
         Assert.Equal(Units.Sig(G * Math.Cos(theta)), rows(1)(2))
         Assert.Equal(Units.Sig(G * Math.Sin(theta)), rows(2)(2))
         ' The normal leans back from the vertical by θ; friction points up the slope, at θ.
-        Assert.Equal(Units.Sig(90 + theta * 180 / Math.PI, 4), rows(1)(3))
-        Assert.Equal(Units.Sig(theta * 180 / Math.PI, 4), rows(2)(3))
+        Assert.Equal(Units.Num(90 + theta * 180 / Math.PI, 1), rows(1)(3))
+        Assert.Equal(Units.Num(theta * 180 / Math.PI, 1), rows(2)(3))
         Assert.Equal("ΣF = (0, 0) N    m·a = (0, 0) N", FreeBodyView.SumLine(d))
     End Sub
 
@@ -106,5 +107,32 @@ Public Class ForcesViewTests
         h.P.ChooseForcesBody("nothing-by-that-name")
         Assert.Equal("stays", h.P.ForcesDiagram().Body.Id)
         Assert.Equal(Blocks, h.P.ForcesBodies().ToArray())
+    End Sub
+
+    <Fact>
+    Public Sub ForcesOn_EachArrowAndTheSumAreLabelledOnTheCanvas_NoLabelOverAnotherOrABody()
+        Dim h = OpenInclinedPlane()
+        h.P.CanvasResized(800, 500)
+        Dim measure = Function(text As String) As (Width As Double, Height As Double)
+                          Return (8.0 * text.Length + 2, 16.0)
+                      End Function
+        Assert.DoesNotContain(h.P.LayOutLabels(measure, 800, 500), Function(l) l.Kind = CanvasLabelKind.Force OrElse l.Kind = CanvasLabelKind.ForceSum)
+        h.P.SetShowForces(True)
+        Dim labels = h.P.LayOutLabels(measure, 800, 500)
+        Dim forces = labels.Where(Function(l) l.Kind = CanvasLabelKind.Force).Select(Function(l) l.Text.Split(" "c)(0)).ToArray()
+        Assert.Equal(ForceSymbols, forces)
+        Assert.Single(labels, Function(l) l.Kind = CanvasLabelKind.ForceSum AndAlso l.Text = "ΣF = (0, 0) N    m·a = (0, 0) N")
+        For i = 0 To labels.Count - 1
+            For j = i + 1 To labels.Count - 1
+                Assert.False(labels(i).Box.Overlaps(labels(j).Box), $"'{labels(i).Text}' and '{labels(j).Text}' overlap")
+            Next
+            For Each b In h.P.World.Bodies
+                If b.Kind = ShapeKind.Segment OrElse (labels(i).Inside AndAlso b Is labels(i).Body) Then Continue For
+                Assert.False(labels(i).Box.Overlaps(CanvasLabelLayout.ScreenBox(b, h.P.View, 1.0)), $"'{labels(i).Text}' covers {b.Id}")
+            Next
+        Next
+        Assert.Equal(3, h.P.ForceArrows().Count)
+        h.P.SetShowForces(False)
+        Assert.Empty(h.P.ForceArrows())
     End Sub
 End Class
