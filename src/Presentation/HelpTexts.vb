@@ -82,6 +82,10 @@ Public Module HelpTexts
             "On a ramp at angle θ a block at rest needs m g sin θ of friction, and the normal force is m g cos θ, so it stays while" & vbLf & "  tan θ ≤ μs" & vbLf & "The steepest slope it rests on is the angle of repose tan⁻¹ μs. Above it the block slides down with" & vbLf & "  a = g (sin θ − μk cos θ)" & vbLf & "" & vbLf &
             "In a collision the impulse along the face is at most μk times the impulse along the normal, and never turns the sliding round." & vbLf & "" & vbLf &
             "The exact solver moves a sliding block by these formulas and finds the instant it stops exactly. " & WorldSettings.BallsNote),
+        New HelpTopic("Forces on a body: the free-body diagram",
+            "The Forces tab shows every force on the body chosen there, and ""Draw the forces on the canvas"" draws each as an arrow from its centre of mass, labelled with its size in newtons: W its weight m g, N each normal force, F friction, T the pull of a rod or string, S a spring, D drag, U upthrust." & vbLf & "" & vbLf &
+            "Weight, springs, drag and upthrust follow from where the bodies are and how fast they move. The contact forces, friction and tensions are what stops the touching bodies moving into one another: they are found together, the smallest forces that do it (each contact pushes, never pulls; a string only pulls), by the same solve that moves the bodies." & vbLf & "" & vbLf &
+            "Newton's second law is the check: the sum of the forces, ΣF, is shown beside m a, and they agree. A block at rest on a ramp has ΣF = 0: the normal force m g cos θ and friction m g sin θ together hold up its weight."),
         New HelpTopic("Stepping solvers: Euler and Verlet",
             "The exact solver jumps from one collision to the next. The stepping solvers (chosen with the Solver button) move time on in small equal steps h (1 ms), move every body a little, then look for bodies that now overlap and push them apart with the collision impulse." & vbLf & "" & vbLf &
             "Semi-implicit Euler, over each step with acceleration a:" & vbLf & "  v → v + a h,    x → x + v h  (with the new v)" & vbLf &
