@@ -176,6 +176,46 @@ Namespace Forces
         End Sub
 
         <Fact>
+        Public Sub BobOnARodLeaningOnAWall_RodPullsMgOverCosTheta_WallPushesMgTanTheta()
+            Dim w As New World(10, 10, G, 0.5)
+            ' Anchored beyond the left wall: the bob would swing through it to hang below, and leans on it instead.
+            Dim anchor = New Vector(-0.8, 8)
+            Dim r = 0.1, l = 2.0, m = 0.6
+            Dim sinTheta = (r - anchor.X) / l
+            Dim theta = Math.Asin(sinTheta)
+            Dim bob As New Circle(New Vector(r, anchor.Y - l * Math.Cos(theta)), r, m, Vector.Zero, "bob")
+            w.Add(bob)
+            w.Add(Link.CreateTie(LinkKind.Rod, bob, anchor, l, "arm"))
+            Dim d = BodyForces.Diagram(w, bob)
+            Dim t = OfKind(d, ForceKind.Tension).Single()
+            Assert.Equal(m * G / Math.Cos(theta), t.Magnitude, 9)
+            ' It pulls towards the anchor.
+            Assert.True(Vector.Dot(t.Force, anchor - bob.CentreOfMass) > 0)
+            Dim n = OfKind(d, ForceKind.Normal).Single()
+            Assert.Equal("left wall", n.Source)
+            AssertClose(New Vector(m * G * Math.Tan(theta), 0), n.Force, 0.000000001)
+            AssertClose(Vector.Zero, d.Sum, 0.000000001)
+            AssertNewton(d)
+        End Sub
+
+        <Fact>
+        Public Sub BoxFloatingAtItsDepth_UpthrustIsItsWeight()
+            Dim w As New World(10, 10, G, 0.5)
+            w.Add(New Liquid(New Vector(0, 0), 10, 4, 1000, "water"))
+            Dim m = 200.0, width = 0.8
+            Dim depth = Buoyancy.FloatingDepth(m, width, 1000)
+            Dim box = Rectangle.CreateMovable(New Vector(4, 4 - depth), width, 0.6, m, Vector.Zero, "box")
+            w.Add(box)
+            Dim d = BodyForces.Diagram(w, box)
+            Dim u = OfKind(d, ForceKind.Buoyancy).Single()
+            Assert.Equal("water", u.Source)
+            AssertClose(New Vector(0, m * G), u.Force, 0.000000001)
+            Assert.Empty(OfKind(d, ForceKind.Drag))
+            AssertClose(Vector.Zero, d.Sum, 0.000000001)
+            AssertNewton(d)
+        End Sub
+
+        <Fact>
         Public Sub FixedBody_HasNoDiagram()
             Dim w As New World(10, 10, G, 0.5)
             Dim table As New Rectangle(New Vector(2, 0), 4, 1, "table")
