@@ -47,11 +47,10 @@ Friend NotInheritable Class ForcesPage
     ''' <summary>The tab page.</summary>
     Public ReadOnly Property Page As New TabPage(FreeBodyView.Title)
 
-    ''' <summary>The page's controls in the theme's colours and the window's font.</summary>
+    ''' <summary>The page's controls in the theme's colours (their font is the window's: they take it from it, never a copy a font change would dispose of).</summary>
     Public Sub Restyle()
         Dim theme = _kit.Presenter.Theme
         For Each c In New Control() {_show, _bodyLabel, _body, _list, _sum}
-            c.Font = _kit.Font
             c.ForeColor = ScenePainter.Rgb(theme.PanelText)
             c.BackColor = ScenePainter.Rgb(theme.Panel)
         Next
