@@ -10,6 +10,10 @@ Public Enum CanvasLabelKind
     TotalMomentum
     ''' <summary>"Δp": an impulse at a collision.</summary>
     Impulse
+    ''' <summary>A force of the free-body diagram, "N 19.6 N", at its arrow's tip.</summary>
+    Force
+    ''' <summary>ΣF beside m a, by the body whose forces are shown.</summary>
+    ForceSum
 End Enum
 
 ''' <summary>A label placed on the canvas: its text, what it names, and where it goes, px.</summary>

@@ -59,6 +59,18 @@ Public NotInheritable Class CanvasLabelLayout
             End If
         End If
 
+        ' The free-body diagram: each force at its arrow's tip, and ΣF beside m a by the body.
+        If p.Forces.Shown Then
+            Dim d = p.ForcesDiagram()
+            If d IsNot Nothing Then
+                For Each a In FreeBodyView.Arrows(d, world.Width, world.Height)
+                    Dim t = view.ToScreen(a.Tip)
+                    Add(result, placer, a.Label, CanvasLabelKind.Force, New LabelBox(t.X - 2 * k, t.Y - 2 * k, 4 * k, 4 * k), measure, gap, d.Body)
+                Next
+                Add(result, placer, FreeBodyView.SumLine(d), CanvasLabelKind.ForceSum, ScreenBox(d.Body, view, k), measure, gap, d.Body)
+            End If
+        End If
+
         ' The bodies' ids: inside a ball or a box when they fit there, else round it.
         If world.Circles.Count <= MaxLabelledCircles Then
             For Each b In world.Bodies

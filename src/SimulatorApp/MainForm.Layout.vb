@@ -357,6 +357,7 @@ Partial Friend NotInheritable Class MainForm
         named.Add(("solver", _solver))
         named.Add(("measure", _measure))
         named.AddRange(_graphs.Controls(_tabs.SelectedTab Is _graphs.Page))
+        named.AddRange(_forcesPage.Controls(_tabs.SelectedTab Is _forcesPage.Page))
         named.AddRange(_momentumBoxes.Controls())
         named.AddRange(_time.Controls())
         Return named
@@ -407,6 +408,7 @@ Partial Friend NotInheritable Class MainForm
             WindowKit.Style(b, theme)
         Next
         _graphs.Restyle()
+        _forcesPage.Restyle()
         If _tabs.TabCount > 0 Then
             Dim lastTab = _tabs.GetTabRect(_tabs.TabCount - 1)
             If _tabs.Left + lastTab.Right > _measure.Left - S(4) AndAlso _tabs.Top < _export.Bottom Then

@@ -118,6 +118,7 @@ Partial Friend NotInheritable Class MainForm
     Private _cells As TableCells
     ''' <summary>The Graphs tab.</summary>
     Private _graphs As GraphsPage
+    Private _forcesPage As ForcesPage
     Private _lessonMenu As LessonMenu
     Private _solverMenu As SolverMenu
     Private _exportMenu As ExportMenu
@@ -198,6 +199,8 @@ Partial Friend NotInheritable Class MainForm
         AddTab(Captions.CollisionLog, _logList)
         _graphs = New GraphsPage(_kit, AddressOf TraceShown)
         _tabs.TabPages.Add(_graphs.Page)
+        _forcesPage = New ForcesPage(_kit, AddressOf TraceShown)
+        _tabs.TabPages.Add(_forcesPage.Page)
         ' The header row's buttons, right of the tabs, where there is room at every screen size: the
         ' side panel has no row to spare on a 1024 × 768 projector.
         AddHeaderButton(_solver, "Solver ▾", Sub() _solverMenu.Show())
@@ -523,6 +526,7 @@ Partial Friend NotInheritable Class MainForm
         Dim refreshStart = _clock.Elapsed.TotalSeconds
         RefreshLog(now)
         _graphs.Refresh(now, _tabs.SelectedTab Is _graphs.Page)
+        _forcesPage.Refresh(now, _tabs.SelectedTab Is _forcesPage.Page)
         Dim refreshEnd = _clock.Elapsed.TotalSeconds
         ' The log and the graph are part of the frame too: the next frames' budget leaves room for them.
         _presenter.NoteFrameWork(refreshEnd - refreshStart)
@@ -896,6 +900,7 @@ Partial Friend NotInheritable Class MainForm
             _exportMenu?.Dispose()
             _measureMenu?.Dispose()
             _graphs?.Dispose()
+            _forcesPage?.Dispose()
             _momentumBoxes?.Dispose()
             _cells?.Dispose()
             _time?.Dispose()

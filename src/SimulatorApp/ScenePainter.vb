@@ -112,6 +112,7 @@ Partial Friend NotInheritable Class ScenePainter
 
         DrawLinks(g, world, view, theme, k)
         If p.ShowArrows AndAlso Not busy Then DrawArrows(g, p, view, theme, k)
+        DrawForces(g, p, view, theme, k)
         DrawMomentumViews(g, p, view, theme, k, width, height)
         ' Every label last, where the layout put it: over the links and arrows, never over a body or another label.
         If Not busy Then DrawLabels(g, p, theme, width, height)

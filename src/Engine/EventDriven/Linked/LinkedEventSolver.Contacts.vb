@@ -432,7 +432,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 scale = Math.Max(scale, Math.Abs(curvature))
             Next
             If forces.Length < rows.Count Then forces = New Double(rows.Count - 1) {}
-            SolveWithFriction(inverse, free, rows, solveRows, y, ContactSolve.ApproachTolerance * scale, result, forces)
+            FrictionSolve.Solve(_solve, inverse, free, rows, solveRows, y, ContactSolve.ApproachTolerance * scale, result, forces, Nothing)
             ' A contact on a face's end that these accelerations take off it goes onto its next feature.
             If attempt = 5 Then Exit For
             Dim changed = False
@@ -452,69 +452,6 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Next
         Return pressing
     End Function
-
-    ''' <summary>
-    ''' The complementarity solve of <see cref="PressingRows"/>, with Coulomb friction at the rough flat contacts that
-    ''' press (docs/contact.md, "Friction"): one sliding is pushed back along its face by μk times its push, one
-    ''' not sliding is held along its face (a pair of opposite rows, one of which pushes) while that takes at most μs
-    ''' times its push, and slides the way it is pulled when it would take more. The pushes friction depends on
-    ''' are those of the solve before, so it is solved again until they, the contacts that push and the ones that
-    ''' stick, no longer change. Without friction, one solve.
-    ''' </summary>
-    Private Sub SolveWithFriction(inverse As Double(), free As Vector(), rows As List(Of Constraint), solveRows As ContactRow(), y As Double(),
-                                  tolerance As Double, result As Vector(), forces As Double())
-        _solve.Solve(inverse, free, solveRows, tolerance, result, forces)
-        Dim rough = Enumerable.Range(0, rows.Count).Where(Function(k) rows(k).Shape = ConstraintShape.Plane AndAlso Not rows(k).Holds AndAlso
-                                                            (rows(k).Friction > 0 OrElse rows(k).StaticFriction > 0)).ToList()
-        If rough.Count = 0 Then Return
-        Dim speed = 0.0
-        For k = 0 To inverse.Length - 1
-            speed = Math.Max(speed, New Vector(y(4 * k + 2), y(4 * k + 3)).Length)
-        Next
-        Dim still = 0.000000001 * speed + 0.000000000001
-        Dim sliding(rows.Count - 1) As Integer
-        For Each k In rough
-            Dim rate = rows(k).SlidingRate(y)
-            If Math.Abs(rate) > still Then sliding(k) = Math.Sign(rate)
-        Next
-        Dim pushed(inverse.Length - 1) As Vector
-        Dim trial(inverse.Length - 1) As Vector
-        For iteration = 1 To 4 * rough.Count + 8
-            Array.Copy(free, pushed, free.Length)
-            Dim all As New List(Of ContactRow)(solveRows)
-            Dim stickAt As New Dictionary(Of Integer, Integer)
-            For Each k In rough
-                If Not (forces(k) > 0) Then Continue For
-                Dim c = rows(k)
-                If sliding(k) <> 0 Then
-                    Dim f = c.Along * (-c.Friction * forces(k) * sliding(k))
-                    pushed(c.A) += f * inverse(c.A)
-                    If c.B >= 0 Then pushed(c.B) -= f * inverse(c.B)
-                Else
-                    stickAt(k) = all.Count
-                    all.Add(New ContactRow(c.A, c.B, c.Along, 0, False))
-                    all.Add(New ContactRow(c.A, c.B, -c.Along, 0, False))
-                End If
-            Next
-            Dim trialForces(all.Count - 1) As Double
-            _solve.Solve(inverse, pushed, all, tolerance, trial, trialForces)
-            ' The sticking contact that needs most beyond μs times its push starts to slide.
-            Dim worst = -1, excess = 0.0, pull = 0.0
-            For Each entry In stickAt
-                Dim n = trialForces(entry.Key), along = trialForces(entry.Value) - trialForces(entry.Value + 1)
-                Dim over = Math.Abs(along) - rows(entry.Key).StaticFriction * Math.Max(n, 0)
-                If over > excess + 0.000000001 * (Math.Abs(along) + Math.Abs(n)) Then worst = entry.Key : excess = over : pull = along
-            Next
-            Dim settled = worst < 0
-            For k = 0 To rows.Count - 1
-                If (forces(k) > 0) <> (trialForces(k) > 0) OrElse Math.Abs(forces(k) - trialForces(k)) > 0.000000000001 * (Math.Abs(forces(k)) + Math.Abs(trialForces(k))) Then settled = False
-                forces(k) = trialForces(k)
-            Next
-            Array.Copy(trial, result, trial.Length)
-            If worst >= 0 Then sliding(worst) = -Math.Sign(pull)
-            If settled Then Exit For
-        Next
-    End Sub
 
     ''' <summary>Whether two contact constraints are on the same feature.</summary>
     Private Shared Function SameFeature(a As Constraint, b As Constraint) As Boolean
