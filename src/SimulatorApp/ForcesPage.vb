@@ -5,8 +5,9 @@ Imports PhysicsEngine.Presentation
 
 ''' <summary>
 ''' The Forces tab: a box that draws the free-body diagram on the canvas, the body it is of, the forces on it
-''' (kind, what exerts it, size in N, direction in degrees) and ΣF beside m a. What is shown is the presenter's
-''' (its <see cref="FreeBodyView"/>); this only lays it out and refreshes it a few times a second.
+''' (kind, what exerts it, size in N, direction in degrees) and ΣF beside m a; under them the air (on or off, its
+''' density) and the chosen body's drag (C_d, b). What is shown is the presenter's (its <see cref="FreeBodyView"/>);
+''' this only lays it out and refreshes it a few times a second.
 ''' </summary>
 Friend NotInheritable Class ForcesPage
     Implements IDisposable
@@ -21,6 +22,20 @@ Friend NotInheritable Class ForcesPage
     Private ReadOnly _body As New ComboBox With {.DropDownStyle = ComboBoxStyle.DropDownList}
     Private ReadOnly _list As New ListView With {.View = View.Details, .FullRowSelect = True, .GridLines = True}
     Private ReadOnly _sum As New Label With {.UseMnemonic = False, .TextAlign = ContentAlignment.MiddleLeft}
+    Private ReadOnly _air As New CheckBox With {.Text = "Air", .UseMnemonic = False}
+    Private ReadOnly _densityLabel As New Label With {.Text = "ρ (kg/m²)", .UseMnemonic = False, .TextAlign = ContentAlignment.MiddleLeft}
+    Private ReadOnly _density As New TextBox With {.Text = Units.Input(SimulationPresenter.DefaultAirDensity)}
+    Private ReadOnly _setAir As New Button With {.Text = "Set air", .UseMnemonic = False}
+    Private ReadOnly _cdLabel As New Label With {.Text = "C_d", .UseMnemonic = False, .TextAlign = ContentAlignment.MiddleLeft}
+    Private ReadOnly _cd As New TextBox()
+    Private ReadOnly _bLabel As New Label With {.Text = "b (N·s/m)", .UseMnemonic = False, .TextAlign = ContentAlignment.MiddleLeft}
+    Private ReadOnly _b As New TextBox()
+    Private ReadOnly _setDrag As New Button With {.Text = "Set drag", .UseMnemonic = False}
+    Private ReadOnly _note As New Label With {.Text = SimulationPresenter.DragNote, .UseMnemonic = False}
+    ''' <summary>The air's density (kg/m²) the air row last showed; NaN: not yet.</summary>
+    Private _shownAir As Double = Double.NaN
+    ''' <summary>The body and its C_d and b the drag boxes last showed.</summary>
+    Private _shownDrag As (Id As String, Cd As Double, B As Double)
     Private _refreshedAt As Double = -1
     Private _filling As Boolean
 
@@ -40,7 +55,21 @@ Friend NotInheritable Class ForcesPage
                 _kit.Act(Sub() _kit.Presenter.ChooseForcesBody(id))
                 Fill()
             End Sub
+        Dim airTip = "Air on or off, with its density ρ in kg/m² (areal, like every density in this 2D world; " & Units.Input(SimulationPresenter.DefaultAirDensity) & " when nothing is typed). Enter or ""Set air"" applies it."
+        For Each c In New Control() {_air, _densityLabel, _density, _setAir}
+            _kit.Tips.SetToolTip(c, airTip)
+        Next
+        For Each c In New Control() {_cdLabel, _cd, _bLabel, _b, _setDrag, _note}
+            _kit.Tips.SetToolTip(c, "The drag of the body chosen above. " & SimulationPresenter.DragNote & " Enter or ""Set drag"" applies it.")
+        Next
+        AddHandler _air.CheckedChanged, Sub(s, e) If Not _filling Then ApplyAir()
+        AddHandler _setAir.Click, Sub(s, e) ApplyAir()
+        AddHandler _setDrag.Click, Sub(s, e) ApplyDrag()
+        OnEnter(_density, AddressOf ApplyAir)
+        OnEnter(_cd, AddressOf ApplyDrag)
+        OnEnter(_b, AddressOf ApplyDrag)
         Page.Controls.AddRange(New Control() {_show, _bodyLabel, _body, _list, _sum})
+        Page.Controls.AddRange(AirControls())
         AddHandler Page.Resize, Sub(s, e) Arrange()
     End Sub
 
@@ -50,14 +79,17 @@ Friend NotInheritable Class ForcesPage
     ''' <summary>The page's controls in the theme's colours (their font is the window's: they take it from it, never a copy a font change would dispose of).</summary>
     Public Sub Restyle()
         Dim theme = _kit.Presenter.Theme
-        For Each c In New Control() {_show, _bodyLabel, _body, _list, _sum}
+        For Each c In New Control() {_show, _bodyLabel, _body, _list, _sum, _air, _densityLabel, _cdLabel, _bLabel, _note}
             c.ForeColor = ScenePainter.Rgb(theme.PanelText)
             c.BackColor = ScenePainter.Rgb(theme.Panel)
+        Next
+        For Each b In {_setAir, _setDrag}
+            WindowKit.Style(b, theme)
         Next
         Arrange()
     End Sub
 
-    ''' <summary>The box on the first row, the body's chooser on the second, the list under them, ΣF and m a at the bottom.</summary>
+    ''' <summary>The box on the first row, the body's chooser on the second, the list under them, ΣF and m a, then the air and drag rows (each wrapping when narrow) at the bottom.</summary>
     Public Sub Arrange()
         If _kit.Presenter Is Nothing Then Return
         Dim w = Page.ClientSize.Width, h = Page.ClientSize.Height
@@ -74,12 +106,122 @@ Friend NotInheritable Class ForcesPage
         _body.SetBounds(bodyX + labelWidth, y, Math.Max(_kit.S(120), Math.Min(_kit.S(220), w - bodyX - labelWidth - _kit.S(4))), rh)
         Dim top = y + rh + _kit.S(4)
         Dim sumHeight = _kit.LineHeight(_kit.Font) + _kit.S(6)
-        _list.SetBounds(0, top, Math.Max(1, w), Math.Max(1, h - top - sumHeight))
-        _sum.SetBounds(x, h - sumHeight, Math.Max(1, w - 2 * x), sumHeight)
+        ' The air and drag rows, laid out from the top to learn their height, then moved to the bottom.
+        Dim rowsHeight = FlowRows(x, 0, w, rh)
+        Dim rowsTop = Math.Max(top + sumHeight, h - rowsHeight)
+        FlowRows(x, rowsTop, w, rh)
+        _list.SetBounds(0, top, Math.Max(1, w), Math.Max(1, rowsTop - sumHeight - top))
+        _sum.SetBounds(x, rowsTop - sumHeight, Math.Max(1, w - 2 * x), sumHeight)
         Dim columnWidth = Math.Max(_kit.S(60), (w - _kit.S(24)) \ Math.Max(1, _list.Columns.Count))
         For Each c As ColumnHeader In _list.Columns
             c.Width = columnWidth
         Next
+    End Sub
+
+    ''' <summary>The air row's and the drag row's controls, in the order they are laid out.</summary>
+    Private Function AirControls() As Control()
+        Return New Control() {_air, _densityLabel, _density, _setAir, _cdLabel, _cd, _bLabel, _b, _setDrag, _note}
+    End Function
+
+    ''' <summary>
+    ''' Lays out "[x] Air  ρ (kg/m²) [1.2] [Set air]", "C_d [..] b (N·s/m) [..] [Set drag]" and the note from
+    ''' <paramref name="top"/>, each piece on the next line when it would pass the right edge; returns the height used, px.
+    ''' </summary>
+    Private Function FlowRows(left As Integer, top As Integer, width As Integer, rh As Integer) As Integer
+        Dim gap = _kit.S(4)
+        Dim boxWidth = Math.Max(_kit.S(56), _kit.Measure("0.0000", _kit.Font).Width + _kit.S(12))
+        Dim y = top
+        For Each row In {New Control() {_air, _densityLabel, _density, _setAir}, New Control() {_cdLabel, _cd, _bLabel, _b, _setDrag}}
+            Dim px = left
+            For Each c In row
+                Dim cw As Integer
+                If TypeOf c Is TextBox Then
+                    cw = boxWidth
+                ElseIf TypeOf c Is CheckBox Then
+                    cw = _kit.Measure(c.Text, _kit.Font).Width + _kit.S(28)
+                ElseIf TypeOf c Is Button Then
+                    cw = _kit.Measure(c.Text, _kit.Font).Width + _kit.S(20)
+                Else
+                    cw = _kit.Measure(c.Text, _kit.Font).Width + _kit.S(6)
+                End If
+                If px > left AndAlso px + cw > width - gap Then
+                    px = left
+                    y += rh + gap
+                End If
+                c.SetBounds(px, y, cw, rh)
+                px += cw + gap
+            Next
+            y += rh + gap
+        Next
+        Dim noteWidth = Math.Max(1, width - 2 * left)
+        Dim noteHeight = _kit.Measure(_note.Text, _kit.Font, noteWidth).Height + _kit.S(2)
+        _note.SetBounds(left, y, noteWidth, noteHeight)
+        Return y + noteHeight + gap - top
+    End Function
+
+    ''' <summary>Enter in <paramref name="box"/> does <paramref name="apply"/> (and no beep).</summary>
+    Private Shared Sub OnEnter(box As TextBox, apply As Action)
+        AddHandler box.KeyDown,
+            Sub(s, e)
+                If e.KeyCode <> Keys.Enter AndAlso e.KeyCode <> Keys.Return Then Return
+                e.Handled = True
+                e.SuppressKeyPress = True
+                apply()
+            End Sub
+    End Sub
+
+    ''' <summary>Air on or off with the typed density; the row then shows what the world has (what was typed stays when refused).</summary>
+    Private Sub ApplyAir()
+        _kit.Act(Sub() _kit.Presenter.SetAir(_air.Checked, _density.Text))
+        ShowAir(force:=True)
+    End Sub
+
+    ''' <summary>The chosen body's drag from the typed C_d and b; the boxes then show what it has (what was typed stays when refused).</summary>
+    Private Sub ApplyDrag()
+        Dim id = CStr(_body.SelectedItem)
+        If id Is Nothing Then
+            Dim d = _kit.Presenter.ForcesDiagram()
+            id = If(d Is Nothing, "", d.Body.Id)
+        End If
+        _kit.Act(Sub() _kit.Presenter.SetDrag(id, _cd.Text, _b.Text))
+        ShowDrag(id, force:=True)
+    End Sub
+
+    ''' <summary>The air row shows the world's air when it changed since it last did (a scene opened, Reset), or when <paramref name="force"/>d (the check box always).</summary>
+    Private Sub ShowAir(force As Boolean)
+        Dim air = _kit.Presenter.AirDensity
+        Dim changed = Not air.Equals(_shownAir)
+        _filling = True
+        Try
+            _air.Checked = air > 0
+        Finally
+            _filling = False
+        End Try
+        If changed AndAlso air > 0 Then _density.Text = Units.Input(air)
+        _shownAir = air
+        If changed OrElse force Then _traced("air row", {_air.Checked.ToString(Globalization.CultureInfo.InvariantCulture), _density.Text})
+    End Sub
+
+    ''' <summary>The drag boxes show the body <paramref name="id"/>'s C_d and b when the body or its values changed since they last did (what is being typed is left alone otherwise).</summary>
+    Private Sub ShowDrag(id As String, force As Boolean)
+        Dim drag = _kit.Presenter.DragOf(id)
+        If Not drag.HasValue Then
+            _cd.Enabled = False
+            _b.Enabled = False
+            _setDrag.Enabled = False
+            Return
+        End If
+        _cd.Enabled = True
+        _b.Enabled = True
+        _setDrag.Enabled = True
+        Dim now = (Id:=id, Cd:=drag.Value.DragCoefficient, B:=drag.Value.LinearDrag)
+        Dim changed = now.Id <> _shownDrag.Id OrElse Not now.Cd.Equals(_shownDrag.Cd) OrElse Not now.B.Equals(_shownDrag.B)
+        If changed Then
+            _cd.Text = Units.Input(now.Cd)
+            _b.Text = Units.Input(now.B)
+            _shownDrag = now
+        End If
+        If changed OrElse force Then _traced("drag row", {id, _cd.Text, _b.Text})
     End Sub
 
     ''' <summary>The page's controls, by the names the --trace layout gives them (only while it is on show).</summary>
@@ -90,6 +232,16 @@ Friend NotInheritable Class ForcesPage
         named.Add(("forces-body", _body))
         named.Add(("forces-list", _list))
         named.Add(("forces-sum", _sum))
+        named.Add(("forces-air", _air))
+        named.Add(("forces-air-density-label", _densityLabel))
+        named.Add(("forces-air-density", _density))
+        named.Add(("forces-set-air", _setAir))
+        named.Add(("forces-cd-label", _cdLabel))
+        named.Add(("forces-cd", _cd))
+        named.Add(("forces-b-label", _bLabel))
+        named.Add(("forces-b", _b))
+        named.Add(("forces-set-drag", _setDrag))
+        named.Add(("forces-drag-note", _note))
         Return named
     End Function
 
@@ -128,6 +280,8 @@ Friend NotInheritable Class ForcesPage
         Next
         _list.EndUpdate()
         _sum.Text = FreeBodyView.SumLine(d)
+        ShowAir(force:=False)
+        ShowDrag(If(d Is Nothing, "", d.Body.Id), force:=False)
         _traced("forces tab", rows.Select(Function(r) String.Join(" ", r)).Concat({_sum.Text}).ToArray())
     End Sub
 
