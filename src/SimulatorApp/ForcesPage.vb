@@ -6,7 +6,7 @@ Imports PhysicsEngine.Presentation
 ''' <summary>
 ''' The Forces tab: a box that draws the free-body diagram on the canvas, the body it is of, the forces on it
 ''' (kind, what exerts it, size in N, direction in degrees) and ΣF beside m a; under them the air (on or off, its
-''' density) and the chosen body's drag (C_d, b). What is shown is the presenter's (its <see cref="FreeBodyView"/>);
+''' density: ticking the box or applying a density switches it on) and the chosen body's drag (C_d, b). What is shown is the presenter's (its <see cref="FreeBodyView"/>);
 ''' this only lays it out and refreshes it a few times a second.
 ''' </summary>
 Friend NotInheritable Class ForcesPage
@@ -62,10 +62,10 @@ Friend NotInheritable Class ForcesPage
         For Each c In New Control() {_cdLabel, _cd, _bLabel, _b, _setDrag, _note}
             _kit.Tips.SetToolTip(c, "The drag of the body chosen above. " & SimulationPresenter.DragNote & " Enter or ""Set drag"" applies it.")
         Next
-        AddHandler _air.CheckedChanged, Sub(s, e) If Not _filling Then ApplyAir()
-        AddHandler _setAir.Click, Sub(s, e) ApplyAir()
+        AddHandler _air.CheckedChanged, Sub(s, e) If Not _filling Then ApplyAir(_air.Checked)
+        AddHandler _setAir.Click, Sub(s, e) ApplyAir(True)
         AddHandler _setDrag.Click, Sub(s, e) ApplyDrag()
-        OnEnter(_density, AddressOf ApplyAir)
+        OnEnter(_density, Sub() ApplyAir(True))
         OnEnter(_cd, AddressOf ApplyDrag)
         OnEnter(_b, AddressOf ApplyDrag)
         Page.Controls.AddRange(New Control() {_show, _bodyLabel, _body, _list, _sum})
@@ -74,7 +74,7 @@ Friend NotInheritable Class ForcesPage
     End Sub
 
     ''' <summary>The tab page.</summary>
-    Public ReadOnly Property Page As New TabPage(FreeBodyView.Title)
+    Public ReadOnly Property Page As New TabPage(FreeBodyView.Title) With {.AutoScroll = True}
 
     ''' <summary>The page's controls in the theme's colours (their font is the window's: they take it from it, never a copy a font change would dispose of).</summary>
     Public Sub Restyle()
@@ -93,30 +93,45 @@ Friend NotInheritable Class ForcesPage
     Public Sub Arrange()
         If _kit.Presenter Is Nothing Then Return
         Dim w = Page.ClientSize.Width, h = Page.ClientSize.Height
+        Dim total = LayOut(w, h)
+        ' Too short for all of it (large fonts on a small screen): the page scrolls, and its contents leave room
+        ' for the scroll bar rather than spill under it and scroll sideways too (Mono's client size keeps the bar's width).
+        If total > h Then total = LayOut(w - SystemInformation.VerticalScrollBarWidth - _kit.S(2), h)
+        Dim needed = New Size(0, If(total > h, total, 0))
+        If Page.AutoScrollMinSize <> needed Then Page.AutoScrollMinSize = needed
+    End Sub
+
+    ''' <summary>Lays the page out <paramref name="w"/> px wide, shifted by how far it is scrolled; returns the height it takes, px.</summary>
+    Private Function LayOut(w As Integer, h As Integer) As Integer
         Dim rh = _kit.ButtonRowHeight()
+        Dim oy = Page.AutoScrollPosition.Y
         Dim x = _kit.S(4), y = _kit.S(3)
         Dim labelWidth = _kit.Measure(_bodyLabel.Text, _kit.Font).Width + _kit.S(8)
-        _show.SetBounds(x, y, Math.Max(1, _kit.Measure(_show.Text, _kit.Font).Width + _kit.S(28)), rh)
+        _show.SetBounds(x, y + oy, Math.Max(1, _kit.Measure(_show.Text, _kit.Font).Width + _kit.S(28)), rh)
         Dim bodyX = _show.Right + _kit.S(12)
         If bodyX + labelWidth + _kit.S(120) > w Then
             bodyX = x
             y += rh + _kit.S(4)
         End If
-        _bodyLabel.SetBounds(bodyX, y, labelWidth, rh)
-        _body.SetBounds(bodyX + labelWidth, y, Math.Max(_kit.S(120), Math.Min(_kit.S(220), w - bodyX - labelWidth - _kit.S(4))), rh)
+        _bodyLabel.SetBounds(bodyX, y + oy, labelWidth, rh)
+        _body.SetBounds(bodyX + labelWidth, y + oy, Math.Max(_kit.S(120), Math.Min(_kit.S(220), w - bodyX - labelWidth - _kit.S(4))), rh)
         Dim top = y + rh + _kit.S(4)
         Dim sumHeight = _kit.LineHeight(_kit.Font) + _kit.S(6)
-        ' The air and drag rows, laid out from the top to learn their height, then moved to the bottom.
+        ' The air and drag rows, laid out from the top to learn their height, then moved to the bottom; the list
+        ' keeps room for its header and two forces.
         Dim rowsHeight = FlowRows(x, 0, w, rh)
-        Dim rowsTop = Math.Max(top + sumHeight, h - rowsHeight)
-        FlowRows(x, rowsTop, w, rh)
-        _list.SetBounds(0, top, Math.Max(1, w), Math.Max(1, rowsTop - sumHeight - top))
-        _sum.SetBounds(x, rowsTop - sumHeight, Math.Max(1, w - 2 * x), sumHeight)
+        Dim leastList = 3 * (_kit.LineHeight(_list.Font) + _kit.S(4))
+        Dim listHeight = Math.Max(leastList, h - top - sumHeight - rowsHeight)
+        Dim rowsTop = top + listHeight + sumHeight
+        FlowRows(x, rowsTop + oy, w, rh)
+        _list.SetBounds(0, top + oy, Math.Max(1, w), listHeight)
+        _sum.SetBounds(x, rowsTop - sumHeight + oy, Math.Max(1, w - 2 * x), sumHeight)
         Dim columnWidth = Math.Max(_kit.S(60), (w - _kit.S(24)) \ Math.Max(1, _list.Columns.Count))
         For Each c As ColumnHeader In _list.Columns
             c.Width = columnWidth
         Next
-    End Sub
+        Return rowsTop + rowsHeight
+    End Function
 
     ''' <summary>The air row's and the drag row's controls, in the order they are laid out.</summary>
     Private Function AirControls() As Control()
@@ -125,38 +140,43 @@ Friend NotInheritable Class ForcesPage
 
     ''' <summary>
     ''' Lays out "[x] Air  ρ (kg/m²) [1.2] [Set air]", "C_d [..] b (N·s/m) [..] [Set drag]" and the note from
-    ''' <paramref name="top"/>, each piece on the next line when it would pass the right edge; returns the height used, px.
+    ''' <paramref name="top"/>, the drag group beside the air group when both fit, any piece on the next line when it would pass the right edge; returns the height used, px.
     ''' </summary>
     Private Function FlowRows(left As Integer, top As Integer, width As Integer, rh As Integer) As Integer
         Dim gap = _kit.S(4)
         Dim boxWidth = Math.Max(_kit.S(56), _kit.Measure("0.0000", _kit.Font).Width + _kit.S(12))
-        Dim y = top
-        For Each row In {New Control() {_air, _densityLabel, _density, _setAir}, New Control() {_cdLabel, _cd, _bLabel, _b, _setDrag}}
-            Dim px = left
-            For Each c In row
-                Dim cw As Integer
-                If TypeOf c Is TextBox Then
-                    cw = boxWidth
-                ElseIf TypeOf c Is CheckBox Then
-                    cw = _kit.Measure(c.Text, _kit.Font).Width + _kit.S(28)
-                ElseIf TypeOf c Is Button Then
-                    cw = _kit.Measure(c.Text, _kit.Font).Width + _kit.S(20)
-                Else
-                    cw = _kit.Measure(c.Text, _kit.Font).Width + _kit.S(6)
-                End If
-                If px > left AndAlso px + cw > width - gap Then
+        Dim y = top, px = left
+        ' The drag group goes beside the air group when both fit on one line, so the list keeps its room.
+        For Each pieces In {New Control() {_air, _densityLabel, _density, _setAir}, New Control() {_cdLabel, _cd, _bLabel, _b, _setDrag}}
+            Dim widths = pieces.Select(Function(c) PieceWidth(c, boxWidth)).ToArray()
+            If px > left AndAlso px + _kit.S(12) + widths.Sum() + gap * (widths.Length - 1) > width - gap Then
+                px = left
+                y += rh + gap
+            ElseIf px > left Then
+                px += _kit.S(12)
+            End If
+            For i = 0 To pieces.Length - 1
+                If px > left AndAlso px + widths(i) > width - gap Then
                     px = left
                     y += rh + gap
                 End If
-                c.SetBounds(px, y, cw, rh)
-                px += cw + gap
+                pieces(i).SetBounds(px, y, widths(i), rh)
+                px += widths(i) + gap
             Next
-            y += rh + gap
         Next
+        y += rh + gap
         Dim noteWidth = Math.Max(1, width - 2 * left)
         Dim noteHeight = _kit.Measure(_note.Text, _kit.Font, noteWidth).Height + _kit.S(2)
         _note.SetBounds(left, y, noteWidth, noteHeight)
         Return y + noteHeight + gap - top
+    End Function
+
+    ''' <summary>The width of one piece of the air and drag rows: its text and the room a box, check or button edge takes, px.</summary>
+    Private Function PieceWidth(c As Control, boxWidth As Integer) As Integer
+        If TypeOf c Is TextBox Then Return boxWidth
+        If TypeOf c Is CheckBox Then Return _kit.Measure(c.Text, _kit.Font).Width + _kit.S(28)
+        If TypeOf c Is Button Then Return _kit.Measure(c.Text, _kit.Font).Width + _kit.S(20)
+        Return _kit.Measure(c.Text, _kit.Font).Width + _kit.S(12)
     End Function
 
     ''' <summary>Enter in <paramref name="box"/> does <paramref name="apply"/> (and no beep).</summary>
@@ -170,9 +190,9 @@ Friend NotInheritable Class ForcesPage
             End Sub
     End Sub
 
-    ''' <summary>Air on or off with the typed density; the row then shows what the world has (what was typed stays when refused).</summary>
-    Private Sub ApplyAir()
-        _kit.Act(Sub() _kit.Presenter.SetAir(_air.Checked, _density.Text))
+    ''' <summary>Air on (the check box ticked, or the density applied) or off (unticked) with the typed density; the row then shows what the world has (what was typed stays when refused).</summary>
+    Private Sub ApplyAir(airOn As Boolean)
+        _kit.Act(Sub() _kit.Presenter.SetAir(airOn, _density.Text))
         ShowAir(force:=True)
     End Sub
 
@@ -241,7 +261,6 @@ Friend NotInheritable Class ForcesPage
         named.Add(("forces-b-label", _bLabel))
         named.Add(("forces-b", _b))
         named.Add(("forces-set-drag", _setDrag))
-        named.Add(("forces-drag-note", _note))
         Return named
     End Function
 
