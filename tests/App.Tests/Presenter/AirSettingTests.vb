@@ -135,4 +135,15 @@ Public Class AirSettingTests
         Assert.Equal(0.0, ball.Velocity.X)
         Assert.True(Math.Abs(-ball.Velocity.Y - terminal) < 0.001 * terminal, $"{-ball.Velocity.Y} m/s is not near m g / b = {terminal} m/s")
     End Sub
+
+    <Fact>
+    Public Sub TheHelp_SaysWhereTheAirAndDragAreSet()
+        Dim forces = HelpTexts.Maths.Single(Function(t) t.Title.StartsWith("Forces on a body", StringComparison.Ordinal))
+        Assert.Contains("""Air"" switches air resistance on or off", forces.Text, StringComparison.Ordinal)
+        Assert.Contains("kg/m²", forces.Text, StringComparison.Ordinal)
+        Assert.Contains("""Set drag""", forces.Text, StringComparison.Ordinal)
+        Dim air = HelpTexts.Maths.Single(Function(t) t.Title.StartsWith("Air resistance", StringComparison.Ordinal))
+        Assert.Contains("set in the Forces tab", air.Text, StringComparison.Ordinal)
+        Assert.DoesNotContain(HelpTexts.Tutorial.Concat(HelpTexts.Maths), Function(t) t.Text.Contains("set in the scene file only", StringComparison.Ordinal))
+    End Sub
 End Class
