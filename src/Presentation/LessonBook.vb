@@ -89,7 +89,7 @@ Friend NotInheritable Class LessonBook
 
     ''' <summary>
     ''' Puts the scene back as it was when it was opened or last built: every body where it was, with
-    ''' its velocity, the clock and the collision log at 0. Gravity, restitution, friction and speed keep what
+    ''' its velocity, the clock and the collision log at 0. Gravity, restitution, friction, the air and speed keep what
     ''' the teacher set, so the same start can be run again under other settings; what is typed in the
     ''' boxes stays.
     ''' </summary>
@@ -104,6 +104,7 @@ Friend NotInheritable Class LessonBook
                 w.Gravity = _stage.World.Gravity
                 w.Restitution = _stage.World.Restitution
                 WorldSettings.KeepFriction(w, _stage.World.Friction, _stage.World.StaticFriction)
+                w.AirDensity = _stage.World.AirDensity
                 Dim typedWidth = _stage.Inputs.ContainerWidthText, typedHeight = _stage.Inputs.ContainerHeightText
                 _stage.Present(w)
                 _stage.Inputs.ContainerWidthText = typedWidth

@@ -488,10 +488,13 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>Undo or Redo puts the world of <paramref name="point"/> back on show: the gestures end, and the run goes on from it (see <see cref="EditHistory"/>).</summary>
     Private Sub PutBack(point As Checkpoint, withSettings As Boolean)
         _pointer.DropAll()
-        Dim friction = World.Friction, staticFriction = World.StaticFriction
+        Dim friction = World.Friction, staticFriction = World.StaticFriction, air = World.AirDensity
         _time.PutBack(point, withSettings)
-        ' Friction is a setting like gravity: it stays as set (unless the edit set it too: Reset).
-        If Not withSettings Then WorldSettings.KeepFriction(World, friction, staticFriction)
+        ' Friction and the air are settings like gravity: they stay as set (unless the edit set them too: Reset).
+        If Not withSettings Then
+            WorldSettings.KeepFriction(World, friction, staticFriction)
+            If World.AirDensity <> air Then World.AirDensity = air
+        End If
         _settings.ShowFriction()
         ' Undoing is building: Restart comes back to what is on show now.
         _lessons.RememberStart()

@@ -26,11 +26,12 @@ Friend NotInheritable Class WorldSettings
         _building = building
     End Sub
 
-    ''' <summary>Gravity, restitution, friction and speed as after a reset: 9.81 m/s², e = 1, no friction, real time.</summary>
+    ''' <summary>Gravity, restitution, friction, air and speed as after a reset: 9.81 m/s², e = 1, no friction, no air, real time.</summary>
     Public Sub ToDefaults()
         _stage.World.Gravity = DefaultGravity
         _stage.World.Restitution = DefaultRestitution
         KeepFriction(_stage.World, 0, Nothing)
+        If _stage.World.AirDensity <> 0 Then _stage.World.AirDensity = 0
         ShowFriction()
         _SpeedIndex = SpeedSteps.RealTimeIndex
     End Sub
