@@ -25,17 +25,10 @@ Friend Module Overlap
                 worst = Math.Max(worst, Collider.CircleRectangle(a.Position, a.Radius, r.Min, r.Max).Depth)
             Next
             For Each s In world.Segments
-                worst = Math.Max(worst, a.Radius - DistanceToSegment(a.Position, s.StartPoint, s.EndPoint))
+                worst = Math.Max(worst, a.Radius - Vector.DistanceToSegment(a.Position, s.StartPoint, s.EndPoint))
             Next
         Next
         Return worst
-    End Function
-
-    ''' <summary>Distance (m) from p to the segment from a to b: to the nearest point on it.</summary>
-    Private Function DistanceToSegment(p As Vector, a As Vector, b As Vector) As Double
-        Dim ab = b - a
-        Dim t = Math.Max(0, Math.Min(1, Vector.Dot(p - a, ab) / Vector.Dot(ab, ab)))
-        Return (p - (a + t * ab)).Length
     End Function
 
     ''' <summary>How many movable circles have their centre inside a fixed body (a fixed circle or a rectangle).</summary>

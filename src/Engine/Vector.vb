@@ -65,6 +65,17 @@ Public Structure Vector
         Return New Vector(-Y, X)
     End Function
 
+    ''' <summary>
+    ''' The distance (m) from <paramref name="p"/> to the nearest point of the segment from <paramref name="a"/> to
+    ''' <paramref name="b"/>: along the perpendicular where its foot lies between them, else to the nearer end.
+    ''' </summary>
+    Public Shared Function DistanceToSegment(p As Vector, a As Vector, b As Vector) As Double
+        Dim ab = b - a
+        Dim lengthSquared = ab.LengthSquared
+        Dim t = If(lengthSquared > 0, Math.Max(0.0, Math.Min(1.0, Dot(p - a, ab) / lengthSquared)), 0.0)
+        Return (p - (a + ab * t)).Length
+    End Function
+
     ''' <summary>sqrt(x² + y²) with scaling, so huge or tiny components do not overflow.</summary>
     Public Shared Function Hypot(x As Double, y As Double) As Double
         Dim ax = Math.Abs(x)

@@ -889,21 +889,13 @@ Partial Friend NotInheritable Class PointerTools
         Dim reach = LinkPickPixels * _screenScale() / _view().Scale
         Dim best As Link = Nothing
         For Each l In _stage.World.Links
-            Dim d = DistanceToLine(p, l.EndA, l.EndB)
+            Dim d = Vector.DistanceToSegment(p, l.EndA, l.EndB)
             If d <= reach Then
                 reach = d
                 best = l
             End If
         Next
         Return best
-    End Function
-
-    ''' <summary>Distance from <paramref name="p"/> to the line segment from <paramref name="a"/> to <paramref name="b"/>, m.</summary>
-    Friend Shared Function DistanceToLine(p As Vector, a As Vector, b As Vector) As Double
-        Dim ab = b - a
-        Dim lengthSquared = ab.LengthSquared
-        Dim t = If(lengthSquared > 0, Math.Max(0.0, Math.Min(1.0, Vector.Dot(p - a, ab) / lengthSquared)), 0.0)
-        Return (p - (a + ab * t)).Length
     End Function
 
     Private Sub DeleteLink(link As Link)

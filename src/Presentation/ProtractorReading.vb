@@ -55,7 +55,7 @@ Public NotInheritable Class ProtractorReading
                 Next
             End If
             For Each f In faces
-                Dim d = DistanceToSegment(p, f.A, f.B)
+                Dim d = Vector.DistanceToSegment(p, f.A, f.B)
                 If d <= bestDistance Then
                     bestDistance = d
                     best = New ProtractorReading(f.A, f.B)
@@ -63,13 +63,5 @@ Public NotInheritable Class ProtractorReading
             Next
         Next
         Return best
-    End Function
-
-    ''' <summary>The distance from <paramref name="p"/> to the segment from <paramref name="a"/> to <paramref name="b"/>, m.</summary>
-    Public Shared Function DistanceToSegment(p As Vector, a As Vector, b As Vector) As Double
-        Dim ab = b - a
-        Dim l2 = ab.LengthSquared
-        Dim u = If(l2 > 0, Math.Max(0.0, Math.Min(1.0, Vector.Dot(p - a, ab) / l2)), 0.0)
-        Return (p - (a + u * ab)).Length
     End Function
 End Class
