@@ -62,6 +62,22 @@ Public Structure NumberInput
     End Function
 
     ''' <summary>
+    ''' Reads a coefficient or density that may be 0 but never negative (μ, ρ, C_d, b): as <see cref="ReadFinite"/>,
+    ''' a value above <paramref name="limit"/> brought to it, and a negative one refused; what is wrong, if
+    ''' anything, is added to <paramref name="problems"/> (a row of boxes reports them all at once).
+    ''' </summary>
+    Public Shared Function ReadNonNegative(text As String, label As String, limit As Double, problems As List(Of String)) As NumberInput
+        If problems Is Nothing Then Throw New ArgumentNullException(NameOf(problems))
+        Dim read = ReadFinite(text, label, limit)
+        If Not read.IsValid Then
+            problems.Add(read.Problem)
+        ElseIf read.Value < 0 Then
+            problems.Add(label & " must be 0 or more, not " & If(text, "").Trim())
+        End If
+        Return read
+    End Function
+
+    ''' <summary>
     ''' Reads a whole number from <paramref name="minimum"/> to <paramref name="maximum"/>: empty,
     ''' non-numeric or fractional text is refused; a value beyond a bound is brought to it.
     ''' </summary>

@@ -54,7 +54,7 @@ Partial Public NotInheritable Class SimulationPresenter
                         density = DefaultAirDensity
                     Else
                         Dim problems As New List(Of String)
-                        Dim read = ReadNonNegative(t, "air density ρ (kg/m²)", MaxAirDensity, problems)
+                        Dim read = NumberInput.ReadNonNegative(t, "air density ρ (kg/m²)", MaxAirDensity, problems)
                         If problems.Count > 0 Then
                             ShowMessage("The air is unchanged: " & String.Join("; ", problems) & ".")
                             Return
@@ -93,8 +93,8 @@ Partial Public NotInheritable Class SimulationPresenter
                     Return
                 End If
                 Dim problems As New List(Of String)
-                Dim cd = ReadNonNegative(dragCoefficientText, "drag coefficient C_d", MaxDragCoefficient, problems)
-                Dim b = ReadNonNegative(linearDragText, "linear drag b (N·s/m)", MaxLinearDrag, problems)
+                Dim cd = NumberInput.ReadNonNegative(dragCoefficientText, "drag coefficient C_d", MaxDragCoefficient, problems)
+                Dim b = NumberInput.ReadNonNegative(linearDragText, "linear drag b (N·s/m)", MaxLinearDrag, problems)
                 If problems.Count > 0 Then
                     ShowMessage("The drag of " & id & " is unchanged: " & String.Join("; ", problems) & ".")
                     Return
@@ -116,15 +116,4 @@ Partial Public NotInheritable Class SimulationPresenter
                 _window.ShowSettings()
             End Sub)
     End Sub
-
-    ''' <summary>A typed value ≥ 0 (above <paramref name="limit"/> brought to it); what is wrong goes into <paramref name="problems"/>.</summary>
-    Private Shared Function ReadNonNegative(text As String, label As String, limit As Double, problems As List(Of String)) As NumberInput
-        Dim read = NumberInput.ReadFinite(text, label, limit)
-        If Not read.IsValid Then
-            problems.Add(read.Problem)
-        ElseIf read.Value < 0 Then
-            problems.Add(label & " must be 0 or more, not " & If(text, "").Trim())
-        End If
-        Return read
-    End Function
 End Class

@@ -207,8 +207,8 @@ Friend NotInheritable Class WorldSettings
             Sub()
                 Dim hasStatic = If(staticText, "").Trim().Length > 0
                 Dim problems As New List(Of String)
-                Dim k = ReadCoefficient(kineticText, "friction μk", problems)
-                Dim s = If(hasStatic, ReadCoefficient(staticText, "static friction μs", problems), k)
+                Dim k = NumberInput.ReadNonNegative(kineticText, "friction μk", MaxFriction, problems)
+                Dim s = If(hasStatic, NumberInput.ReadNonNegative(staticText, "static friction μs", MaxFriction, problems), k)
                 If problems.Count > 0 Then
                     _stage.ShowMessage("Friction is unchanged: " & String.Join("; ", problems) & ".")
                     Return
@@ -232,17 +232,6 @@ Friend NotInheritable Class WorldSettings
                 _stage.Window.ShowSettings()
             End Sub)
     End Sub
-
-    ''' <summary>A typed coefficient: a finite number ≥ 0 (above <see cref="MaxFriction"/> brought to it); what is wrong goes into <paramref name="problems"/>.</summary>
-    Private Shared Function ReadCoefficient(text As String, label As String, problems As List(Of String)) As NumberInput
-        Dim read = NumberInput.ReadFinite(text, label, MaxFriction)
-        If Not read.IsValid Then
-            problems.Add(read.Problem)
-        ElseIf read.Value < 0 Then
-            problems.Add(label & " must be 0 or more, not " & If(text, "").Trim())
-        End If
-        Return read
-    End Function
 
     ''' <summary>Changes the container's size from the typed width and height (m).</summary>
     Public Sub ResizeContainer()
