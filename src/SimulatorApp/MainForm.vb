@@ -598,8 +598,6 @@ Partial Friend NotInheritable Class MainForm
         list.Refresh()
         _logVersion = -1
         _trace?.Invoke("tab " & page.Text)
-        ' Where the cells of the table now on show are (GUI tests double-click them there).
-        If t >= 0 Then _cells.TraceCells(t)
     End Sub
 
     Private Sub OnRetrieveRow(sender As Object, e As RetrieveVirtualItemEventArgs)
