@@ -147,4 +147,17 @@ Public Class SurfaceFrictionTests
         Assert.Equal(0.7, h.P.World.StaticFrictionOf(h.P.World.Find("floor")))
         Assert.Equal("0.7", h.P.Snapshot.Cells(RectanglesTable, floorRow)(rectCol))
     End Sub
+
+    <Fact>
+    Public Sub ABoxKeepsItsOwnMu_WhenItsMassOrSizeIsTyped()
+        Dim h = InclinedPlane()
+        h.P.TogglePause()
+        Dim row = RowOf(h, RectanglesTable, "stays")
+        Assert.True(h.P.EditCell(RectanglesTable, row, Column(RectanglesTable, TableQuantity.KineticFriction), "0.7"))
+        Assert.True(h.P.EditCell(RectanglesTable, row, Column(RectanglesTable, TableQuantity.Mass), "3"))
+        Assert.True(h.P.EditCell(RectanglesTable, row, Column(RectanglesTable, TableQuantity.Size), "0.4 × 0.4"))
+        Dim box = h.P.World.Find("stays")
+        Assert.Equal(3.0, box.Mass)
+        Assert.Equal(0.7, box.Friction.Value)
+    End Sub
 End Class
