@@ -31,6 +31,17 @@ Public Structure BodyRow
     ''' <summary>The body's sizes by the names a scene file gives them, m: ("radius", r) for a circle; ("width", w), ("height", h) for a rectangle.</summary>
     Public Property SizeFields As IReadOnlyList(Of (Name As String, Metres As Double))
 
+    ''' <summary>Whether the body's surface takes friction (every kind but a ball).</summary>
+    Public Property TakesFriction As Boolean
+    ''' <summary>μk of the body's own surface, or Nothing for the world's.</summary>
+    Public Property OwnKinetic As Double?
+    ''' <summary>μs of the body's own surface, or Nothing (its own μk when set, else the world's μs).</summary>
+    Public Property OwnStatic As Double?
+    ''' <summary>The μk its surface has in effect (its own or the world's); set when a snapshot is taken with the world.</summary>
+    Public Property Kinetic As Double
+    ''' <summary>The μs its surface has in effect; set when a snapshot is taken with the world.</summary>
+    Public Property [Static] As Double
+
     ''' <summary>Whether the canvas fills the body with the theme's fixed colour rather than its own (fixed rectangles, polygons and ramps; a fixed ball keeps its colour, with a cross).</summary>
     Public Property DrawnInFixedColour As Boolean
 
@@ -50,7 +61,9 @@ Public Structure BodyRow
         Dim row As New BodyRow With {
             .Id = body.Id, .Colour = If(body.Color, ""), .IsFixed = body.IsFixed, .Area = body.Area,
             .Position = clean(body.Position, lengthScale), .Velocity = clean(body.Velocity, speedScale), .Mass = body.Mass,
-            .Centre = clean(body.CentreOfMass, lengthScale), .DrawnInFixedColour = body.IsFixed AndAlso body.Kind <> ShapeKind.Circle}
+            .Centre = clean(body.CentreOfMass, lengthScale), .DrawnInFixedColour = body.IsFixed AndAlso body.Kind <> ShapeKind.Circle,
+            .TakesFriction = body.Kind <> ShapeKind.Circle, .OwnKinetic = body.Friction, .OwnStatic = body.StaticFriction,
+            .Kinetic = If(body.Friction, 0.0), .Static = If(body.StaticFriction, If(body.Friction, 0.0))}
         Select Case body.Kind
             Case ShapeKind.Circle
                 Dim r = DirectCast(body, Circle).Radius

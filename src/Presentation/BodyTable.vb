@@ -42,19 +42,42 @@ Public NotInheritable Class BodyTable
 
     ''' <summary>Every rectangle (fixed: no velocity, no finite mass). x, y is the lower-left corner.</summary>
     Public Shared ReadOnly Property Rectangles As New BodyTable("Rectangles",
-        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Width × height (m)", "Area (m²)"},
+        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Width × height (m)", "Area (m²)", KineticHeader, StaticHeader},
         Function(b) TypeOf b Is Rectangle,
         Function(r) {r.Id, ColourCell(r), Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
-                     If(r.IsFixed, "fixed", Units.Sig(r.Mass)), Units.Sig(r.Size.X) & " × " & Units.Sig(r.Size.Y), Units.Sig(r.Area)})
+                     If(r.IsFixed, "fixed", Units.Sig(r.Mass)), Units.Sig(r.Size.X) & " × " & Units.Sig(r.Size.Y), Units.Sig(r.Area),
+                     KineticCell(r), StaticCell(r)})
 
     ''' <summary>Every body of every kind, named in its Kind column; x, y is where its mass is centred (a ramp's middle).</summary>
     Public Shared ReadOnly Property Bodies As New BodyTable("Bodies",
-        {"Id", "Colour", "Kind", "Centre x (m)", "Centre y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Size (m)"},
+        {"Id", "Colour", "Kind", "Centre x (m)", "Centre y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Size (m)", KineticHeader, StaticHeader},
         Function(b) True,
         Function(r) {r.Id, ColourCell(r), r.KindLabel, Units.Sig(r.Centre.X), Units.Sig(r.Centre.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
-                     If(r.IsFixed, "fixed", Units.Sig(r.Mass)), r.SizeText})
+                     If(r.IsFixed, "fixed", Units.Sig(r.Mass)), r.SizeText, KineticCell(r), StaticCell(r)})
+
+    ''' <summary>The header of the column of a surface's own μk (no unit: a coefficient).</summary>
+    Public Const KineticHeader As String = "μk"
+    ''' <summary>The header of the column of a surface's own μs.</summary>
+    Public Const StaticHeader As String = "μs"
+    ''' <summary>What a friction cell says after the value a surface takes from the world (it has none of its own).</summary>
+    Public Const WorldMark As String = " (world)"
+    ''' <summary>A friction cell of a ball, which takes no friction.</summary>
+    Public Const NoFrictionCell As String = "—"
+
+    ''' <summary>The μk cell: its own ("0.6"), the world's it takes ("0.2 (world)"), or "—" for a ball.</summary>
+    Public Shared Function KineticCell(row As BodyRow) As String
+        If Not row.TakesFriction Then Return NoFrictionCell
+        Return Units.Input(row.Kinetic) & If(row.OwnKinetic.HasValue, "", WorldMark)
+    End Function
+
+    ''' <summary>The μs cell: its own, its own μk's ("0.6 (= μk)"), the world's ("0.3 (world)"), or "—" for a ball.</summary>
+    Public Shared Function StaticCell(row As BodyRow) As String
+        If Not row.TakesFriction Then Return NoFrictionCell
+        If row.OwnStatic.HasValue Then Return Units.Input(row.Static)
+        Return Units.Input(row.Static) & If(row.OwnKinetic.HasValue, " (= μk)", WorldMark)
+    End Function
 
     ''' <summary>The colour cell of a body the canvas fills with the theme's fixed colour (its own colour is not what shows).</summary>
     Public Const FixedColourCell As String = "fixed grey"

@@ -39,6 +39,8 @@ Friend NotInheritable Class TableEditor
             Case "Mass (kg)" : Return TableQuantity.Mass
             Case "Radius (m)" : Return TableQuantity.Radius
             Case "Width × height (m)", "Size (m)" : Return TableQuantity.Size
+            Case BodyTable.KineticHeader : Return TableQuantity.KineticFriction
+            Case BodyTable.StaticHeader : Return TableQuantity.StaticFriction
         End Select
         Return TableQuantity.None
     End Function
@@ -62,6 +64,8 @@ Friend NotInheritable Class TableEditor
     Public Function CanEditCell(table As Integer, row As Integer, column As Integer) As Boolean
         Dim q = EditableQuantity(table, column)
         Dim body = BodyInRow(table, row)
+        ' A surface's μ is its own, fixed or not; a ball takes none.
+        If IsFriction(q) Then Return body IsNot Nothing AndAlso body.Kind <> ShapeKind.Circle
         Return q <> TableQuantity.None AndAlso body IsNot Nothing AndAlso Not body.IsFixed AndAlso
                (q <> TableQuantity.Radius OrElse body.Kind = ShapeKind.Circle)
     End Function
@@ -70,6 +74,10 @@ Friend NotInheritable Class TableEditor
     Public Function CellEditText(table As Integer, row As Integer, column As Integer) As String
         If Not CanEditCell(table, row, column) Then Return ""
         Dim body = BodyInRow(table, row)
+        Select Case EditableQuantity(table, column)
+            Case TableQuantity.KineticFriction : Return If(body.Friction.HasValue, body.Friction.Value.ToString("R", Globalization.CultureInfo.InvariantCulture), "")
+            Case TableQuantity.StaticFriction : Return If(body.StaticFriction.HasValue, body.StaticFriction.Value.ToString("R", Globalization.CultureInfo.InvariantCulture), "")
+        End Select
         If EditableQuantity(table, column) = TableQuantity.Size AndAlso body.Kind <> ShapeKind.Circle Then
             Dim size = body.BoundsMax - body.BoundsMin
             Return size.X.ToString("G6", Globalization.CultureInfo.InvariantCulture) & " × " & size.Y.ToString("G6", Globalization.CultureInfo.InvariantCulture)
@@ -107,8 +115,17 @@ Friend NotInheritable Class TableEditor
         Dim body = BodyInRow(table, row)
         Dim q = EditableQuantity(table, column)
         If body Is Nothing OrElse q = TableQuantity.None Then
-            _stage.ShowMessage("That cell cannot be typed into: the position, velocity, mass and size of a moving body can.")
+            _stage.ShowMessage("That cell cannot be typed into: the position, velocity, mass and size of a moving body can, and the μk and μs of a surface.")
             Return False
+        End If
+        If IsFriction(q) Then
+            If body.Kind = ShapeKind.Circle Then
+                _stage.ShowMessage(body.Id & "'s " & LabelOf(q) & " cannot be set. " & WorldSettings.BallsNote)
+                Return False
+            End If
+            Dim applied = False
+            _stage.Guarded(Sub() applied = ApplyFriction(body, q, text))
+            Return applied
         End If
         If body.IsFixed Then
             _stage.ShowMessage(body.Id & " is fixed: it has no velocity or mass. Carry it with the right mouse button to move it.")
@@ -174,6 +191,59 @@ Friend NotInheritable Class TableEditor
         Return True
     End Function
 
+    ''' <summary>Whether the quantity is a surface's μk or μs.</summary>
+    Private Shared Function IsFriction(q As TableQuantity) As Boolean
+        Return q = TableQuantity.KineticFriction OrElse q = TableQuantity.StaticFriction
+    End Function
+
+    ''' <summary>
+    ''' Sets a surface's own μk or μs (boxes, polygons, fixed bodies, ramps). Empty text (or "world")
+    ''' gives the surface back the world's value. A value that is not a number or is negative, or a μs
+    ''' below the surface's μk (or a μk above its own μs), is refused naming the cell, and nothing
+    ''' changes; a value above <see cref="WorldSettings.MaxFriction"/> is brought to it and said. An
+    ''' undoable edit, kept by Save… (the body's friction and static_friction).
+    ''' </summary>
+    Private Function ApplyFriction(body As Shape, q As TableQuantity, text As String) As Boolean
+        Dim label = body.Id & "'s " & LabelOf(q)
+        Dim t = If(text, "").Trim()
+        Dim value As Double? = Nothing
+        Dim clamped = False
+        If t.Length > 0 AndAlso Not String.Equals(t, "world", StringComparison.OrdinalIgnoreCase) Then
+            Dim read = NumberInput.ReadFinite(t, label, WorldSettings.MaxFriction)
+            If Not read.IsValid Then
+                _stage.ShowMessage(label & " is unchanged: " & read.Problem & ".")
+                Return False
+            End If
+            If read.Value < 0 Then
+                _stage.ShowMessage(label & " is unchanged: it must be 0 or more, not " & Stage.OneLine(t) & ".")
+                Return False
+            End If
+            value = read.Value
+            clamped = read.WasClamped
+        End If
+        Dim kinetic = If(q = TableQuantity.KineticFriction, value, body.Friction)
+        Dim [static] = If(q = TableQuantity.StaticFriction, value, body.StaticFriction)
+        Dim k = If(kinetic, _stage.World.Friction)
+        If [static].HasValue AndAlso [static].Value < k Then
+            _stage.ShowMessage(label & " is unchanged: μs (" & Units.Input([static].Value) & ") must be at least μk (" & Units.Input(k) &
+                               "): a surface grips at least as hard before it slides as while it slides.")
+            Return False
+        End If
+        If Nullable.Equals(kinetic, body.Friction) AndAlso Nullable.Equals([static], body.StaticFriction) Then Return False
+        _stage.EndGestures()
+        Dim before = _history.Capture()
+        _stage.World.SetFriction(body, kinetic, [static])
+        Dim said = If(value.HasValue, value.Value.ToString("R", Globalization.CultureInfo.InvariantCulture), "world")
+        _stage.Emit("edited " & body.Id & " " & LabelOf(q) & " = " & said)
+        _history.Commit(label & " typed", before)
+        Dim note = If(clamped, "μ above " & Units.Input(WorldSettings.MaxFriction) & " was brought to " & Units.Input(WorldSettings.MaxFriction) & ". ", "")
+        Dim now = If(value.HasValue, Units.Input(value.Value), "the world's (" & Units.Input(If(q = TableQuantity.KineticFriction, _stage.World.KineticFrictionOf(body), _stage.World.StaticFrictionOf(body))) & ")")
+        _stage.ShowMessage(note & label & " is now " & now & ". Restart comes back to this.")
+        _built()
+        _stage.TakeSnapshot()
+        Return True
+    End Function
+
     ''' <summary>
     ''' A box's or polygon's new width × height, m ("0.8 × 0.5"; x, * or a space between them also do),
     ''' each checked as the Add panel checks a rectangle's sides. The body keeps its centre of mass,
@@ -205,6 +275,9 @@ Friend NotInheritable Class TableEditor
             replacement = New Polygon(corners, body.Mass, body.Velocity, body.Id)
         End If
         replacement.Color = body.Color
+        ' The surface keeps its own μ through a new size.
+        replacement.Friction = body.Friction
+        replacement.StaticFriction = body.StaticFriction
         Dim said = Units.Sig(width.Value) & " × " & Units.Sig(height.Value) & " m"
         Dim refusal = PlacementRefusal(replacement, body, Vector.Zero)
         If refusal IsNot Nothing Then
@@ -230,6 +303,8 @@ Friend NotInheritable Class TableEditor
             Case TableQuantity.Vx : Return "vx (m/s)"
             Case TableQuantity.Vy : Return "vy (m/s)"
             Case TableQuantity.Mass : Return "mass (kg)"
+            Case TableQuantity.KineticFriction : Return "μk"
+            Case TableQuantity.StaticFriction : Return "μs"
             Case Else : Return "radius (m)"
         End Select
     End Function
@@ -277,6 +352,8 @@ Friend NotInheritable Class TableEditor
                 copy = New Polygon(p.Vertices, mass, p.Velocity, p.Id)
         End Select
         copy.Color = body.Color
+        copy.Friction = body.Friction
+        copy.StaticFriction = body.StaticFriction
         Return copy
     End Function
 End Class

@@ -18,4 +18,8 @@ Public Enum TableQuantity
     Radius
     ''' <summary>A box's or polygon's width × height (m), or a ball's radius where a table lists sizes.</summary>
     Size
+    ''' <summary>μk of the body's own surface (empty: the world's); boxes, polygons, fixed bodies and ramps, not balls.</summary>
+    KineticFriction
+    ''' <summary>μs of the body's own surface (empty: its own μk when set, else the world's μs).</summary>
+    StaticFriction
 End Enum

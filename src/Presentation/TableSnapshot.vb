@@ -73,6 +73,8 @@ Public NotInheritable Class TableSnapshot
         Dim fastest = 0.0
         For Each b In world.Bodies
             Dim row = BodyRow.Capture(b, lengthScale, speedScale)
+            row.Kinetic = world.KineticFrictionOf(b)
+            row.Static = world.StaticFrictionOf(b)
             If Not b.IsFixed Then fastest = Math.Max(fastest, row.Velocity.Length)
             For t = 0 To tables.Count - 1
                 If tables(t).Lists(b) Then rows(t).Add(row)

@@ -15,6 +15,7 @@ Public Class HelpPagesTests
     <InlineData("Maxwell–Boltzmann", "f(v)")>
     <InlineData("Friction", "s = v² / (2 μk g)")>
     <InlineData("Friction", "tan θ ≤ μs")>
+    <InlineData("Friction", "double-click its μk or μs cell in the Rectangles or Bodies table")>
     Public Sub TheMathsWindow_HasAPageForEveryModel(titlePart As String, formula As String)
         Dim page = HelpTexts.Maths.SingleOrDefault(Function(t) t.Title.Contains(titlePart, StringComparison.Ordinal))
         Assert.True(page IsNot Nothing, "no Maths used page on " & titlePart)
