@@ -274,10 +274,7 @@ Friend NotInheritable Class TableEditor
             Dim corners = DirectCast(body, Polygon).Vertices.Select(Function(v) centre + New Vector((v.X - centre.X) * sx, (v.Y - centre.Y) * sy)).ToList()
             replacement = New Polygon(corners, body.Mass, body.Velocity, body.Id)
         End If
-        replacement.Color = body.Color
-        ' The surface keeps its own μ through a new size.
-        replacement.Friction = body.Friction
-        replacement.StaticFriction = body.StaticFriction
+        KeepOwnValues(body, replacement)
         Dim said = Units.Sig(width.Value) & " × " & Units.Sig(height.Value) & " m"
         Dim refusal = PlacementRefusal(replacement, body, Vector.Zero)
         If refusal IsNot Nothing Then
@@ -351,9 +348,19 @@ Friend NotInheritable Class TableEditor
                 Dim p = DirectCast(body, Polygon)
                 copy = New Polygon(p.Vertices, mass, p.Velocity, p.Id)
         End Select
-        copy.Color = body.Color
-        copy.Friction = body.Friction
-        copy.StaticFriction = body.StaticFriction
+        KeepOwnValues(body, copy)
         Return copy
     End Function
+
+    ''' <summary>
+    ''' A body rebuilt for a new mass or size keeps what is its own and not typed: its colour, its surface's
+    ''' μk and μs, and its drag (C_d and b).
+    ''' </summary>
+    Private Shared Sub KeepOwnValues(body As Shape, rebuilt As Shape)
+        rebuilt.Color = body.Color
+        rebuilt.Friction = body.Friction
+        rebuilt.StaticFriction = body.StaticFriction
+        rebuilt.DragCoefficient = body.DragCoefficient
+        rebuilt.LinearDrag = body.LinearDrag
+    End Sub
 End Class

@@ -149,15 +149,18 @@ Public Class SurfaceFrictionTests
     End Sub
 
     <Fact>
-    Public Sub ABoxKeepsItsOwnMu_WhenItsMassOrSizeIsTyped()
+    Public Sub ABoxKeepsItsOwnMuAndDrag_WhenItsMassOrSizeIsTyped()
         Dim h = InclinedPlane()
         h.P.TogglePause()
         Dim row = RowOf(h, RectanglesTable, "stays")
         Assert.True(h.P.EditCell(RectanglesTable, row, Column(RectanglesTable, TableQuantity.KineticFriction), "0.7"))
+        h.P.World.SetDrag(h.P.World.Find("stays"), 0.8, 0.3)
         Assert.True(h.P.EditCell(RectanglesTable, row, Column(RectanglesTable, TableQuantity.Mass), "3"))
         Assert.True(h.P.EditCell(RectanglesTable, row, Column(RectanglesTable, TableQuantity.Size), "0.4 × 0.4"))
         Dim box = h.P.World.Find("stays")
         Assert.Equal(3.0, box.Mass)
         Assert.Equal(0.7, box.Friction.Value)
+        Assert.Equal(0.8, box.DragCoefficient)
+        Assert.Equal(0.3, box.LinearDrag)
     End Sub
 End Class
