@@ -55,10 +55,15 @@ Partial Friend NotInheritable Class PointerTools
     ''' <summary>The message while Delete mode is on: short enough for the message area's first lines at any panel width.</summary>
     Public Const DeleteModeMessage As String = "Delete mode: click a body or a link to remove it. Press Delete mode again to stop."
 
+    ''' <summary>The Delete mode button's caption while it is off.</summary>
+    Public Const DeleteModeOffCaption As String = "Delete mode"
+    ''' <summary>The Delete mode button's caption while it is on.</summary>
+    Public Const DeleteModeOnCaption As String = "Delete mode: ON"
+
     ''' <summary>"Delete mode" or "Delete mode: ON".</summary>
     Public ReadOnly Property DeleteModeText As String
         Get
-            Return If(_Mode = ClickMode.Delete, "Delete mode: ON", "Delete mode")
+            Return If(_Mode = ClickMode.Delete, DeleteModeOnCaption, DeleteModeOffCaption)
         End Get
     End Property
 

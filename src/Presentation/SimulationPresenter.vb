@@ -404,7 +404,18 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>"❚❚ Pause" or "▶ Resume".</summary>
     Public ReadOnly Property PauseText As String
         Get
-            Return If(IsPaused, "▶ Resume", "❚❚ Pause")
+            Return If(IsPaused, ResumeCaption, PauseCaption)
+        End Get
+    End Property
+
+    ''' <summary>The pause button's caption while time runs.</summary>
+    Public Const PauseCaption As String = "❚❚ Pause"
+    ''' <summary>The pause button's caption while paused.</summary>
+    Public Const ResumeCaption As String = "▶ Resume"
+    ''' <summary>The captions the Delete mode button shows, off and on (the layout leaves room for the longer).</summary>
+    Public Shared ReadOnly Property DeleteModeCaptions As String()
+        Get
+            Return {PointerTools.DeleteModeOffCaption, PointerTools.DeleteModeOnCaption}
         End Get
     End Property
 

@@ -103,7 +103,9 @@ Partial Friend NotInheritable Class MainForm
             {_massLabel, _heightLabel, _angleLabel}.All(Function(l) _rows.TextFits(l, CInt(fieldUsable * PanelRows.FieldShares(2))))
 
         _rows.Row(MessageHeight(), (_message, 1.0))
-        _rows.Row(rh + S(4), (_pause, 1 / 3), (_reset, 1 / 3), (_deleteMode, 1 / 3))
+        ' A third each, or as wide as the longest caption each shows (Resume, Delete mode: ON) where a third is too narrow (large fonts on a small screen).
+        _rows.CaptionRow(rh + S(4), (_pause, 1 / 3, {SimulationPresenter.PauseCaption, SimulationPresenter.ResumeCaption}),
+                         (_reset, 1 / 3, {_reset.Text}), (_deleteMode, 1 / 3, SimulationPresenter.DeleteModeCaptions))
         _rows.Row(line + S(2), (_speedLabel, 1.0))
         _rows.Row(sliderHeight, (_speed, 1.0))
         _rows.Row(line + S(2), (_gravityLabel, 1.0))

@@ -91,12 +91,43 @@ Friend NotInheritable Class PanelRows
         Return True
     End Function
 
+    ''' <summary>
+    ''' One row whose places do not depend on what the controls say now: each control gets its share
+    ''' of the width or, where that share is too narrow for the longest caption the control can show,
+    ''' that caption's width, taken from the controls with room to spare (those with no captions give
+    ''' what they need not keep). So a caption that changes (Pause and Resume) never moves a control,
+    ''' and a wide one (large fonts on a small screen) is not cut.
+    ''' </summary>
+    Public Sub CaptionRow(height As Integer, ParamArray items As (Control As Control, Share As Double, Captions As String())())
+        Dim usable = Width - _kit.S(6) * (items.Length - 1)
+        Dim shares = items.Select(Function(i) i.Share).ToArray()
+        If usable > 0 Then
+            Dim needs = items.Select(Function(i) If(i.Captions Is Nothing, 0.0, i.Captions.Max(Function(t) NeededWidth(i.Control, t)) / usable)).ToArray()
+            Dim grown = Enumerable.Range(0, items.Length).Sum(Function(k) Math.Max(0.0, needs(k) - shares(k)))
+            If grown > 0 Then
+                Dim spare = Enumerable.Range(0, items.Length).Select(Function(k) Math.Max(0.0, shares(k) - needs(k))).ToArray()
+                Dim room = spare.Sum()
+                Dim taken = Math.Min(grown, room)
+                For k = 0 To items.Length - 1
+                    shares(k) = Math.Max(shares(k), needs(k)) - If(room > 0, spare(k) * taken / room, 0.0)
+                Next
+            End If
+        End If
+        Row(height, items.Select(Function(i, k) (i.Control, shares(k))).ToArray())
+    End Sub
+
     ''' <summary>The least width a control of the side panel needs for its caption (or, a text box, five digits), px.</summary>
     Public Function NeededWidth(c As Control) As Integer
         If c Is Nothing Then Throw New ArgumentNullException(NameOf(c))
+        Return NeededWidth(c, c.Text)
+    End Function
+
+    ''' <summary>The least width <paramref name="c"/> needs to show <paramref name="caption"/> whole (a text box: five digits), px.</summary>
+    Public Function NeededWidth(c As Control, caption As String) As Integer
+        If c Is Nothing Then Throw New ArgumentNullException(NameOf(c))
         If TypeOf c Is TextBox Then Return _kit.Measure("00000", c.Font).Width + _kit.S(8)
         Dim box = TryCast(c, ScaledCheckBox)
-        Return _kit.Measure(c.Text, c.Font).Width + If(box IsNot Nothing, box.CaptionOffset + _kit.S(2), _kit.S(10)) + _kit.S(2)
+        Return _kit.Measure(caption, c.Font).Width + If(box IsNot Nothing, box.CaptionOffset + _kit.S(2), _kit.S(10)) + _kit.S(2)
     End Function
 
     ''' <summary>Whether a control's caption fits in <paramref name="w"/> px (with a button's edges or a check box's box).</summary>

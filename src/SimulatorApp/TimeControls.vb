@@ -50,7 +50,9 @@ Friend NotInheritable Class TimeControls
     ''' </summary>
     Public Sub Arrange(rows As PanelRows, line As Integer)
         ' A line of text and a margin: these captions are single symbols, centred in what there is.
-        rows.Row(Math.Max(_kit.S(26), line + _kit.S(9)), (_previousCollision, 0.11), (_stepBack, 0.1), (_timeline, 0.58), (_step, 0.1), (_nextCollision, 0.11))
+        ' Where a share is too narrow for its symbol (large fonts on a small screen) the button widens and the timeline gives way.
+        rows.CaptionRow(Math.Max(_kit.S(26), line + _kit.S(9)), (_previousCollision, 0.11, {_previousCollision.Text}), (_stepBack, 0.1, {_stepBack.Text}),
+                        (_timeline, 0.58, Nothing), (_step, 0.1, {_step.Text}), (_nextCollision, 0.11, {_nextCollision.Text}))
     End Sub
 
     ''' <summary>The timeline's tip and thumb follow the time on show (not while the teacher holds the thumb).</summary>

@@ -40,6 +40,7 @@ Public Class LayoutGuiTests
     <GuiTheory>
     <InlineData("1024x768x24", 0, False, False, "layout-1024x768")>
     <InlineData("1280x720x24", 0, False, False, "layout-1280x720")>
+    <InlineData("1024x768x24", 0, True, True, "layout-1024x768-large-contrast")>
     <InlineData("1280x800x24", 0, True, True, "layout-1280x800-large-contrast")>
     <InlineData("1920x1200x24", 144, False, False, "layout-144dpi")>
     <InlineData("2560x1600x24", 192, False, False, "layout-192dpi")>
