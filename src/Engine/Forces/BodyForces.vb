@@ -142,7 +142,7 @@ Public Module BodyForces
                     Dim c = ContactFeatures.OnWall(0, side, low, high, world.Width, world.Height)
                     If Not Touching(c, New Shape() {m}) Then Continue For
                     c = c.WithSlots(a, -1)
-                    AddFriction(world, c, m, Nothing)
+                    ContactFriction.Give(world, c, m, Nothing)
                     holders.Add(New Holder With {.Row = c, .Kind = ForceKind.Normal, .SourceA = WallName(side)})
                 Next
             End If
@@ -153,7 +153,7 @@ Public Module BodyForces
                 Dim c = ContactFeatures.OnOutline(0, -1, shift, k, m.CentreOfMass - shift, m.Velocity, Vector.Zero, TouchSlop)
                 If c Is Nothing OrElse Not Touching(c, New Shape() {m}) Then Continue For
                 c = c.WithSlots(a, -1)
-                AddFriction(world, c, m, f)
+                ContactFriction.Give(world, c, m, f)
                 holders.Add(New Holder With {.Row = c, .Kind = ForceKind.Normal, .SourceA = f.Id, .OtherShape = f})
             Next
             Dim i = IndexOf(movables, m)
@@ -166,7 +166,7 @@ Public Module BodyForces
                 Dim c = ContactFeatures.OnOutline(0, 1, shift, k, m.CentreOfMass - other.CentreOfMass - shift, m.Velocity - other.Velocity, Vector.Zero, TouchSlop)
                 If c Is Nothing OrElse Not Touching(c, New Shape() {m, other}) Then Continue For
                 c = c.WithSlots(a, SlotOf(members, other))
-                AddFriction(world, c, m, other)
+                ContactFriction.Give(world, c, m, other)
                 holders.Add(New Holder With {.Row = c, .Kind = ForceKind.Normal, .SourceA = other.Id, .SourceB = m.Id, .OtherShape = other})
             Next
         Loop
@@ -218,14 +218,6 @@ Public Module BodyForces
         c.Measure(Constraint.StateOf(bodies), u, value, rate, curvature)
         Return Math.Abs(value) <= TouchSlop AndAlso Math.Abs(rate) <= TouchSpeed
     End Function
-
-    ''' <summary>Coulomb friction on a flat face between bodies that do not turn (a ball would roll), as the event solver has it.</summary>
-    Private Sub AddFriction(world As World, c As Constraint, a As Shape, b As Shape)
-        If c.Shape <> ConstraintShape.Plane OrElse Not world.HasFriction Then Return
-        If a.Kind = ShapeKind.Circle OrElse (b IsNot Nothing AndAlso b.Kind = ShapeKind.Circle) Then Return
-        c.Friction = ContactFriction.Mean(world.KineticFrictionOf(a), world.KineticFrictionOf(b))
-        c.StaticFriction = ContactFriction.Mean(world.StaticFrictionOf(a), world.StaticFrictionOf(b))
-    End Sub
 
     ''' <summary>A string is taut when its ends are at its full length and not moving apart or together (as the event solver has it, within the touching slop).</summary>
     Private Function IsTaut(world As World, l As Link) As Boolean

@@ -15,6 +15,19 @@ Public Module ContactFriction
     End Function
 
     ''' <summary>
+    ''' Gives a lasting contact <paramref name="c"/> between <paramref name="a"/> and <paramref name="b"/> (Nothing for a
+    ''' wall) its Coulomb coefficients, the mean of the two surfaces' (<see cref="Mean"/>): only on a flat face, and only
+    ''' between bodies that do not turn (a ball would roll: docs/forces.md). Elsewhere, or in a world without
+    ''' friction, the contact keeps none.
+    ''' </summary>
+    Friend Sub Give(world As World, c As Constraint, a As Shape, b As Shape)
+        If c.Shape <> ConstraintShape.Plane OrElse Not world.HasFriction Then Return
+        If a.Kind = ShapeKind.Circle OrElse (b IsNot Nothing AndAlso b.Kind = ShapeKind.Circle) Then Return
+        c.Friction = Mean(world.KineticFrictionOf(a), world.KineticFrictionOf(b))
+        c.StaticFriction = Mean(world.StaticFrictionOf(a), world.StaticFrictionOf(b))
+    End Sub
+
+    ''' <summary>
     ''' The size (N·s, ≥ 0) of the tangential impulse against a slip of <paramref name="slip"/> m/s (≥ 0) at a
     ''' contact whose normal impulse was <paramref name="normalImpulse"/> N·s. Stopping the slip takes
     ''' m_eff × slip (m_eff = 1/(1/m_A + 1/m_B), kg): if that is at most μs j_n the contact sticks (the slip is

@@ -263,14 +263,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If c Is Nothing Then Return Nothing
         c.Tag = touch.Key
         c.Scale = size
-        ' Coulomb friction on a flat face, between bodies that do not turn (a ball would roll: docs/forces.md).
-        If c.Shape = ConstraintShape.Plane AndAlso _world.HasFriction Then
-            Dim other = If(touch.Other >= 0, _bodies(touch.Other), If(touch.Fixed >= 0, _fixed(touch.Fixed), Nothing))
-            If _bodies(i).Kind <> ShapeKind.Circle AndAlso (other Is Nothing OrElse other.Kind <> ShapeKind.Circle) Then
-                c.Friction = ContactFriction.Mean(_world.KineticFrictionOf(_bodies(i)), _world.KineticFrictionOf(other))
-                c.StaticFriction = ContactFriction.Mean(_world.StaticFrictionOf(_bodies(i)), _world.StaticFrictionOf(other))
-            End If
-        End If
+        ContactFriction.Give(_world, c, _bodies(i), If(touch.Other >= 0, _bodies(touch.Other), If(touch.Fixed >= 0, _fixed(touch.Fixed), Nothing)))
         Return c
     End Function
 
