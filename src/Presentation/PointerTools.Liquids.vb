@@ -107,10 +107,6 @@ Partial Friend NotInheritable Class PointerTools
     End Function
 
     Private Sub DeleteLiquid(liquid As Liquid)
-        Dim before = _history.Capture()
-        _stage.World.Remove(liquid)
-        _stage.Emit("deleted liquid " & liquid.Id)
-        _history.Commit("the liquid " & liquid.Id & " deleted", before)
-        _stage.TakeSnapshot()
+        Undoably("the liquid " & liquid.Id & " deleted", "deleted liquid " & liquid.Id, Sub() _stage.World.Remove(liquid))
     End Sub
 End Class

@@ -411,10 +411,18 @@ Partial Friend NotInheritable Class PointerTools
     Private Sub Delete(body As Shape)
         If body Is _dragged Then EndCarry()
         If body Is AimedBody Then _AimedBody = Nothing
+        Undoably(body.Id & " deleted", "deleted " & body.Id, Sub() _stage.World.Remove(body))
+    End Sub
+
+    ''' <summary>
+    ''' Makes one deletion (a body, a link, a liquid) an edit Ctrl+Z takes back: the world before it is kept, the
+    ''' trace says <paramref name="traced"/>, and the history names it <paramref name="what"/>.
+    ''' </summary>
+    Private Sub Undoably(what As String, traced As String, remove As Action)
         Dim before = _history.Capture()
-        _stage.World.Remove(body)
-        _stage.Emit("deleted " & body.Id)
-        _history.Commit(body.Id & " deleted", before)
+        remove()
+        _stage.Emit(traced)
+        _history.Commit(what, before)
         _stage.TakeSnapshot()
     End Sub
 
@@ -904,11 +912,7 @@ Partial Friend NotInheritable Class PointerTools
     End Function
 
     Private Sub DeleteLink(link As Link)
-        Dim before = _history.Capture()
-        _stage.World.Remove(link)
-        _stage.Emit("deleted link " & link.Id)
-        _history.Commit("the link " & link.Id & " deleted", before)
-        _stage.TakeSnapshot()
+        Undoably("the link " & link.Id & " deleted", "deleted link " & link.Id, Sub() _stage.World.Remove(link))
     End Sub
 
     ''' <summary>"spring", "rod" or "string".</summary>
