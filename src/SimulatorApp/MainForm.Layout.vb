@@ -130,20 +130,11 @@ Partial Friend NotInheritable Class MainForm
         ' A regular polygon takes the circle's radius (its corners lie on that circle), mass and Fixed box.
         _rows.Fields(rh, pairs, (_sidesLabel, _sides), (_angleLabel, _angle))
         ' A polygon drawn by clicking its corners takes the mass and Fixed box too: its button sits beside the regular one's.
-        If pairs AndAlso _rows.FitRow(rh + S(2), _fixed, _addCircle, _addPolygon, _addCorners) Then
-            ' One row: Fixed, Add circle, Add polygon, Add by corners.
-        ElseIf pairs Then
-            _rows.Row(rh + S(2), (_fixed, 0.2), (_addCircle, 0.4), (_addPolygon, 0.4))
-            _rows.Row(rh + S(2), (Nothing, 0.2), (Nothing, 0.4), (_addCorners, 0.4))
-        Else
-            _rows.Row(rh + S(2), (_fixed, 0.35), (_addCircle, 0.65))
-            _rows.Row(rh + S(2), (Nothing, 0.35), (_addPolygon, 0.65))
-            _rows.Row(rh + S(2), (Nothing, 0.35), (_addCorners, 0.65))
-        End If
+        LayOutAddRow(rh, pairs, _fixed, _addCircle, _addPolygon, _addCorners)
         _rows.Gap()
         _rows.Fields(rh, pairs, (_widthLabel, _rectWidth), (_heightLabel, _rectHeight))
         ' A ramp is a fixed obstacle too: its button sits beside the rectangle's.
-        LayOutRectangleRow(rh, pairs)
+        LayOutAddRow(rh, pairs, _rectFixed, _addRectangle, _addRamp, _addLiquid)
         _rows.Gap()
         ' The three links in one row after the spring's stiffness: a link is made by clicking its two ends.
         If pairs Then
@@ -425,5 +416,22 @@ Partial Friend NotInheritable Class MainForm
         For Each b In {_solver, _export, _scenes, _restart, _measure}
             b.BringToFront()
         Next
+    End Sub
+
+    ''' <summary>
+    ''' A Fixed box and three Add buttons (a circle's, a polygon's and by corners; a rectangle's, a ramp's and a
+    ''' liquid's): one row when all four fit, else the third button under the second in two columns, or, in one
+    ''' column, each button on a row of its own beside the box's place.
+    ''' </summary>
+    Private Sub LayOutAddRow(rh As Integer, pairs As Boolean, box As Control, first As Control, second As Control, third As Control)
+        If pairs AndAlso _rows.FitRow(rh + S(2), box, first, second, third) Then Return
+        If pairs Then
+            _rows.Row(rh + S(2), (box, 0.2), (first, 0.4), (second, 0.4))
+            _rows.Row(rh + S(2), (Nothing, 0.2), (Nothing, 0.4), (third, 0.4))
+        Else
+            _rows.Row(rh + S(2), (box, 0.35), (first, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (second, 0.65))
+            _rows.Row(rh + S(2), (Nothing, 0.35), (third, 0.65))
+        End If
     End Sub
 End Class
