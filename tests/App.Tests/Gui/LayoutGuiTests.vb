@@ -34,7 +34,7 @@ Public Class LayoutGuiTests
     ''' fonts and high contrast, 144- and 192-dpi screens. Every control is on the screen, its caption
     ''' whole, at least as tall as a line of text (a check box's box and a slider's thumb grow with the
     ''' text too); with normal fonts every control of the side panel shows without scrolling, and with
-    ''' large fonts any below the fold is reached with the wheel. Then messages of every length come
+    ''' large fonts any below the fold is reached with the wheel, in one page at most. Then messages of every length come
     ''' and go while time runs (the totals changing): no control moves by a pixel.
     ''' </summary>
     <GuiTheory>
@@ -64,6 +64,11 @@ Public Class LayoutGuiTests
             Dim overflow = Int(app.LastMatch("panel overflow (\d+) px").Groups(1).Value)
             If Not large Then Assert.True(overflow = 0, $"with normal fonts the side panel needs {overflow} px more than the {screen} screen has")
             Dim side = app.Control("side")
+            ' With large fonts the panel may scroll, but by at most one page: every control is in view
+            ' either at the top or after one scroll of the panel's own height. (At 192 dpi under Mono the rows
+            ' are taller than the text needs: Mono centres captions by the font height it reports, which
+            ' Xft.dpi inflates, so that screen is held to "reachable by the wheel" only.)
+            If large AndAlso dpi = 0 Then Assert.True(overflow <= side.H, $"with large fonts the side panel needs {overflow} px more than its {side.H} px: more than one scroll")
             Dim panel As New List(Of (Name As String, R As (X As Integer, Y As Integer, W As Integer, H As Integer)))
             Dim below As New List(Of String)
             For Each line2 In app.LastLayout()
