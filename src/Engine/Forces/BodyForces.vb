@@ -179,7 +179,7 @@ Public Module BodyForces
         For Each l In world.Links
             If l.Kind = LinkKind.Spring OrElse tied.Contains(l) Then Continue For
             Dim onB = l.B IsNot Nothing AndAlso Not l.B.IsFixed AndAlso members.Contains(l.B)
-            If Not (members.Contains(l.A) OrElse onB) OrElse Not (l.Kind = LinkKind.Rod OrElse IsTaut(world, l)) Then Continue For
+            If Not (members.Contains(l.A) OrElse onB) OrElse Not (l.Kind = LinkKind.Rod OrElse LinkedMotions.IsTaut(l, world.Gravity, TouchSlop, TouchSpeed)) Then Continue For
             tied.Add(l)
             Dim a = SlotOf(members, l.A)
             Dim b = If(l.IsAnchored, -1, SlotOf(members, l.B))
@@ -217,14 +217,6 @@ Public Module BodyForces
         Dim u As Vector, value As Double, rate As Double, curvature As Double
         c.Measure(Constraint.StateOf(bodies), u, value, rate, curvature)
         Return Math.Abs(value) <= TouchSlop AndAlso Math.Abs(rate) <= TouchSpeed
-    End Function
-
-    ''' <summary>A string is taut when its ends are at its full length and not moving apart or together (as the event solver has it, within the touching slop).</summary>
-    Private Function IsTaut(world As World, l As Link) As Boolean
-        If l.Distance < l.Length * (1 - LinkedMotions.FullFraction) - TouchSlop Then Return False
-        Dim vb = If(l.IsAnchored, Vector.Zero, l.B.Velocity)
-        Dim scale = l.A.Velocity.Length + vb.Length + Math.Sqrt(Math.Max(world.Gravity, 1) * l.Length)
-        Return Math.Abs(l.StretchRate) <= Math.Max(LinkedMotions.FullFraction * scale, TouchSpeed)
     End Function
 
     ''' <summary>How a wall is named in a diagram.</summary>

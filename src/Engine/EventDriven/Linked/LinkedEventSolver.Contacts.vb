@@ -104,7 +104,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         For Each l In links
             Dim a = local(Array.IndexOf(_bodies, l.A))
             Dim b = If(l.IsAnchored, -1, local(Array.IndexOf(_bodies, l.B)))
-            If l.Kind = LinkKind.Rod OrElse (l.Kind = LinkKind.String AndAlso l IsNot released AndAlso IsTaut(l)) Then
+            If l.Kind = LinkKind.Rod OrElse (l.Kind = LinkKind.String AndAlso l IsNot released AndAlso LinkedMotions.IsTaut(l, _world.Gravity)) Then
                 Dim c = Constraint.Tie(a, b, If(l.IsAnchored, l.EndB, Vector.Zero), l.Length, l.Kind = LinkKind.Rod)
                 c.Tag = l
                 rows.Add(c)
@@ -198,14 +198,6 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim ci = _bodies(i).CentreOfMass
         Return ci.X + _low(i).X <= p.X + _high(j).X + Slop AndAlso p.X + _low(j).X <= ci.X + _high(i).X + Slop AndAlso
                ci.Y + _low(i).Y <= p.Y + _high(j).Y + Slop AndAlso p.Y + _low(j).Y <= ci.Y + _high(i).Y + Slop
-    End Function
-
-    ''' <summary>A string is taut when its ends are at its full length and not moving apart or together.</summary>
-    Private Function IsTaut(l As Link) As Boolean
-        If l.Distance < l.Length * (1 - LinkedMotions.FullFraction) Then Return False
-        Dim vb = If(l.IsAnchored, Vector.Zero, l.B.Velocity)
-        Dim scale = l.A.Velocity.Length + vb.Length + Math.Sqrt(Math.Max(_world.Gravity, 1) * l.Length)
-        Return Math.Abs(l.StretchRate) <= LinkedMotions.FullFraction * scale
     End Function
 
     ''' <summary>
@@ -351,7 +343,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Function TiesOf(bodies As Shape(), links As List(Of Link)) As List(Of Constraint)
         Dim ties As New List(Of Constraint)
         For Each l In links
-            If l.Kind = LinkKind.Spring OrElse (l.Kind = LinkKind.String AndAlso Not IsTaut(l)) Then Continue For
+            If l.Kind = LinkKind.Spring OrElse (l.Kind = LinkKind.String AndAlso Not LinkedMotions.IsTaut(l, _world.Gravity)) Then Continue For
             ties.Add(Constraint.Tie(Array.IndexOf(bodies, l.A), If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B)), If(l.IsAnchored, l.EndB, Vector.Zero), l.Length, l.Kind = LinkKind.Rod))
         Next
         Return ties

@@ -9,6 +9,18 @@ Friend Module LinkedMotions
     Friend Const FullFraction As Double = 0.000000001
 
     ''' <summary>
+    ''' Whether string <paramref name="l"/> is taut: its ends at its full length (within <see cref="FullFraction"/>
+    ''' and <paramref name="slop"/>, m) and neither moving apart nor together (within FullFraction of the speeds
+    ''' that matter, or <paramref name="speedSlop"/>, m/s, if larger). <paramref name="gravity"/>: m/s².
+    ''' </summary>
+    Friend Function IsTaut(l As Link, gravity As Double, Optional slop As Double = 0, Optional speedSlop As Double = 0) As Boolean
+        If l.Distance < l.Length * (1 - FullFraction) - slop Then Return False
+        Dim vb = If(l.IsAnchored, Vector.Zero, l.B.Velocity)
+        Dim scale = l.A.Velocity.Length + vb.Length + Math.Sqrt(Math.Max(gravity, 1) * l.Length)
+        Return Math.Abs(l.StretchRate) <= Math.Max(FullFraction * scale, speedSlop)
+    End Function
+
+    ''' <summary>
     ''' The closed form for <paramref name="group"/> from its bodies' states at <paramref name="time"/> (s).
     ''' <paramref name="released"/>: a string that has just gone slack (its tension fell to zero) or snapped back is
     ''' slack, whatever the rounding says.
