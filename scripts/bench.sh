@@ -4,6 +4,8 @@
 #                                    rewrites docs/benchmarks.md, docs/benchmark-*.svg and the README's figures
 #   bash scripts/bench.sh --quick    a run of about a minute, for CI: written to a scratch folder (printed at
 #                                    the end), never over the committed report; add --out DIR to keep it
+# The box piles also run in Box2D 2.4.1 (scripts/box2d-reference.sh builds it; the full run installs
+# libbox2d-dev when missing, the quick run only uses it when present).
 # Other options go to the benchmark, e.g. --json results.json (see: dotnet src/Benchmarks/bin/Release/net10.0/Benchmarks.dll --help).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -50,6 +52,20 @@ if [ "$quick" = 0 ]; then
   baseline+=(--baseline-commit "$BASELINE_COMMIT")
 fi
 
+# Box2D 2.4.1 on the same box piles, for comparison (scripts/box2d-reference.sh): the full run installs
+# it when it is missing; the quick run uses it only when it is already installed. A failure becomes a
+# note in the report ("not run: ..."), never the end of the run.
+box2d_flags=()
+if [ "$quick" = 1 ]; then box2d_flags=(--no-install); fi
+box2d_err="$(mktemp -t bench-box2d.XXXXXX)"
+if box2d_program="$(bash scripts/box2d-reference.sh ${box2d_flags[@]+"${box2d_flags[@]}"} 2>"$box2d_err")"; then
+  box2d=(--box2d "$box2d_program")
+else
+  why="$(tail -n1 "$box2d_err" | sed -e 's/^box2d-reference: //')"
+  box2d=(--box2d-note "not run: ${why:-the Box2D reference did not build}.")
+fi
+rm -f "$box2d_err"
+
 out=(--out docs --readme README.md)
 if [ "$quick" = 1 ]; then
   out=(--out "$(mktemp -d -t bench-quick.XXXXXX)")
@@ -57,4 +73,4 @@ fi
 if [[ " $* " == *" --out "* ]]; then
   out=()
 fi
-dotnet src/Benchmarks/bin/Release/net10.0/Benchmarks.dll "${out[@]}" ${baseline[@]+"${baseline[@]}"} "$@"
+dotnet src/Benchmarks/bin/Release/net10.0/Benchmarks.dll "${out[@]}" ${baseline[@]+"${baseline[@]}"} "${box2d[@]}" "$@"

@@ -54,6 +54,12 @@ Friend NotInheritable Class BenchResult
     Public Property SlowestCollisionsPerSecond As Double = Double.NaN
     Public Property FastestCollisionsPerSecond As Double = Double.NaN
 
+    ''' <summary>A settling scene's simulated time at rest, s; NaN when it did not settle or is not such a scene.</summary>
+    Public Property RestSeconds As Double = Double.NaN
+
+    ''' <summary>Wall-clock milliseconds a run took to bring that scene to rest (median of the timed runs); NaN when it did not.</summary>
+    Public Property RestWallMs As Double = Double.NaN
+
     ''' <summary>Anything a reader needs to know: why it is not available, a secondary figure, a warning.</summary>
     Public Property Note As String = ""
 End Class

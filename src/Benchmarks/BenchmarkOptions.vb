@@ -8,7 +8,7 @@ Imports System.Globalization
 Friend NotInheritable Class BenchmarkOptions
     ''' <summary>Every scene, in report order.</summary>
     Public Shared ReadOnly Property AllScenes As IReadOnlyList(Of String) =
-        {"bouncing-apex", "bouncing-rest", "projectile", "oblique-hit", "cradle", "gas-energy", "pile", "ramp-slide", "box-drop", "pendulum", "spring", "rope", "cradle-strings", "drag-projectile", "tanh-fall", "floating-box", "galton", "mixed"}
+        {"bouncing-apex", "bouncing-rest", "projectile", "oblique-hit", "cradle", "gas-energy", "pile", "ramp-slide", "box-drop", BoxPileScene.WideName, BoxPileScene.DeepName, "pendulum", "spring", "rope", "cradle-strings", "drag-projectile", "tanh-fall", "floating-box", "galton", "mixed"}
 
     ''' <summary>The solvers compared, as SolverFactory names them.</summary>
     Public Shared ReadOnly Property AllSolvers As IReadOnlyList(Of String) = {"event", "euler", "verlet"}
@@ -33,10 +33,13 @@ Friend NotInheritable Class BenchmarkOptions
         "  --baseline-dll PATH  the Benchmarks.dll of the baseline commit: the full run times its gas beside this one's" & vbLf &
         "  --baseline-commit HASH  which commit that is, for the report" & vbLf &
         "  --baseline-note TEXT    why there is no baseline build (the report says so instead)" & vbLf &
+        "  --box2d PATH  the Box2D reference program (scripts/box2d-reference.sh builds it): the box piles run in it too" & vbLf &
+        "  --box2d-note TEXT  why there is no Box2D reference program (the report says so instead)" & vbLf &
         "  --baseline-rounds K     pairs of runs (baseline, then this engine, or the other way round) per size (default 7)" & vbLf &
         "  --gas-rounds K  run every gas size K times, in rounds that take the sizes in turn and every solver" & vbLf &
         "               at a size one after the other; report the median run with the range (default 3; 1 with --quick)" & vbLf &
-        "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, ramp-slide, box-drop, pendulum," & vbLf &
+        "  scenes: bouncing-apex, bouncing-rest, projectile, oblique-hit, cradle, gas-energy, pile, ramp-slide, box-drop, box-pile," & vbLf &
+        "          box-pile-deep, pendulum," & vbLf &
         "          spring, rope, cradle-strings, drag-projectile, tanh-fall, floating-box, galton, mixed, and gas-scaling" & vbLf &
         "  gas-scaling also times the textbook baseline (a plain event-driven gas, not the engine) beside event"
 
@@ -57,6 +60,10 @@ Friend NotInheritable Class BenchmarkOptions
     Public Property BaselineCommit As String = ""
     ''' <summary>Why there is no baseline build, for the report; "" when there is one or none was tried.</summary>
     Public Property BaselineNote As String = ""
+    ''' <summary>The Box2D reference program (scripts/box2d-reference.sh builds it), or Nothing: see <see cref="Box2dReference"/>.</summary>
+    Public Property Box2dProgram As String
+    ''' <summary>Why there is no Box2D reference program, for the report; "" when there is one or none was tried.</summary>
+    Public Property Box2dNote As String = ""
     Public Property AppPath As String = "src/SimulatorApp/bin/Release/net48/SimulatorApp.exe"
     Public Property Scenes As IReadOnlyList(Of String) = AllScenes.Concat({GasScaling.SceneName}).ToList()
     Public Property Solvers As IReadOnlyList(Of String) = AllSolvers
@@ -199,6 +206,8 @@ Friend NotInheritable Class BenchmarkOptions
                 Case "--baseline-dll" : o.BaselineDll = value(a)
                 Case "--baseline-commit" : o.BaselineCommit = value(a)
                 Case "--baseline-note" : o.BaselineNote = value(a)
+                Case "--box2d" : o.Box2dProgram = value(a)
+                Case "--box2d-note" : o.Box2dNote = value(a)
                 Case "--scenes" : o.Scenes = ParseNames(a, value(a), AllScenes.Concat({GasScaling.SceneName}).ToList())
                 Case "--solvers" : o.Solvers = ParseList(a, value(a))
                 Case "--dts" : o._timeSteps = ParseList(a, value(a)).Select(Function(t) ParseTimeStep(a, t)).ToList()

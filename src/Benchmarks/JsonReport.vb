@@ -7,7 +7,8 @@ Imports System.Text.Json
 ''' <summary>
 ''' The results as JSON, for comparing runs: one object per case with scene, solver, dt, error, error
 ''' metric, ms per simulated second, collisions per second, N and peak MB, and for a case run in several
-''' rounds (the gas scaling) how many and their slowest and fastest. NaN is written as null.
+''' rounds (the gas scaling) how many and their slowest and fastest, for a settling scene its time at
+''' rest and the wall-clock time to reach it. NaN is written as null.
 ''' The same object, on one line, carries a result from a child process to its parent.
 ''' </summary>
 Friend Module JsonReport
@@ -81,6 +82,8 @@ Friend Module JsonReport
             .Rounds = RoundsOf(e),
             .SlowestCollisionsPerSecond = Number(e, "slowestCollisionsPerSecond"),
             .FastestCollisionsPerSecond = Number(e, "fastestCollisionsPerSecond"),
+            .RestSeconds = Number(e, "restSeconds"),
+            .RestWallMs = Number(e, "restWallMs"),
             .Note = e.GetProperty("note").GetString()}
     End Function
 
@@ -102,6 +105,8 @@ Friend Module JsonReport
         w.WriteNumber("rounds", r.Rounds)
         WriteNumber(w, "slowestCollisionsPerSecond", r.SlowestCollisionsPerSecond)
         WriteNumber(w, "fastestCollisionsPerSecond", r.FastestCollisionsPerSecond)
+        WriteNumber(w, "restSeconds", r.RestSeconds)
+        WriteNumber(w, "restWallMs", r.RestWallMs)
         w.WriteString("note", r.Note)
         w.WriteEndObject()
     End Sub

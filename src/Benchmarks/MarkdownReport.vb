@@ -184,7 +184,7 @@ Friend Module MarkdownReport
         If results Is Nothing Then Throw New ArgumentNullException(NameOf(results))
         Dim files As New Dictionary(Of String, String)(StringComparer.Ordinal)
         For Each scene In scenes
-            Dim rows = results.Where(Function(r) r.Scene = scene.Name AndAlso r.Available).ToList()
+            Dim rows = results.Where(Function(r) r.Scene = scene.Name AndAlso r.Available AndAlso r.Solver <> Box2dReference.SolverName).ToList()
             If rows.Count = 0 Then Continue For
             Dim series = rows.GroupBy(Function(r) r.Solver).Select(
                 Function(g) New PlotSeries(SeriesName(g.Key, g.First().TimeStep.HasValue), SolverColor(g.Key),
@@ -237,9 +237,31 @@ Friend Module MarkdownReport
                Append("."c).Append(ControlChars.Lf)
         End If
 
+        For Each scene In scenes.Where(Function(x) TypeOf x Is ISettlingScene)
+            Dim ev = results.FirstOrDefault(Function(r) r.Scene = scene.Name AndAlso r.Solver = "event")
+            If ev Is Nothing Then Continue For
+            Dim reference = results.FirstOrDefault(Function(r) r.Scene = scene.Name AndAlso r.Solver = Box2dReference.SolverName)
+            sb.Append("- ").Append(scene.Title).Append(": the event solver ")
+            If ev.Available AndAlso Not Double.IsNaN(ev.RestWallMs) Then
+                sb.Append("has every box at rest at t = ").Append(ev.RestSeconds.ToString("0.000", CultureInfo.InvariantCulture)).Append(" s after **").
+                   Append(Fixed2(ev.RestWallMs)).Append(" ms** of wall clock (deepest overlap ").Append(Sci(ev.Error)).Append(" m)")
+            Else
+                sb.Append("did not bring the pile to rest (").Append(Cell(ev.Note)).Append(")"c)
+            End If
+            If reference Is Nothing OrElse Not reference.Available Then
+                sb.Append("; Box2D 2.4.1: ").Append(If(reference Is Nothing, "not run", Cell(reference.Note))).Append(ControlChars.Lf)
+            ElseIf Double.IsNaN(reference.RestWallMs) Then
+                sb.Append("; Box2D 2.4.1 at 60 Hz: ").Append(Cell(reference.Note)).Append("."c).Append(ControlChars.Lf)
+            Else
+                sb.Append("; Box2D 2.4.1 at 60 Hz: every body asleep at t = ").Append(reference.RestSeconds.ToString("0.000", CultureInfo.InvariantCulture)).Append(" s after ").
+                   Append(Fixed2(reference.RestWallMs)).Append(" ms").
+                   Append(If(Double.IsNaN(ev.RestWallMs), ".", ": **" & RatioText(ev.RestWallMs / reference.RestWallMs) & "× Box2D's time**.")).Append(ControlChars.Lf)
+            End If
+        Next
+
         Dim lines As New List(Of String)
         For Each scene In scenes
-            Dim rows = results.Where(Function(r) r.Scene = scene.Name AndAlso r.Available AndAlso Not Double.IsNaN(r.Error)).ToList()
+            Dim rows = results.Where(Function(r) r.Scene = scene.Name AndAlso r.Available AndAlso Not Double.IsNaN(r.Error) AndAlso r.Solver <> Box2dReference.SolverName).ToList()
             Dim ev = rows.FirstOrDefault(Function(r) r.Solver = "event")
             Dim evAny = results.FirstOrDefault(Function(r) r.Scene = scene.Name AndAlso r.Solver = "event")
             Dim best = rows.Where(Function(r) r.TimeStep.HasValue).OrderBy(Function(r) r.Error).ThenBy(Function(r) r.MsPerSimulatedSecond).FirstOrDefault()
@@ -268,6 +290,8 @@ Friend Module MarkdownReport
             sb.Append("*Not run.*").Append(ControlChars.Lf).Append(ControlChars.Lf)
             Return
         End If
+        Dim reference = rows.FirstOrDefault(Function(r) r.Solver = Box2dReference.SolverName)
+        rows = rows.Where(Function(r) r.Solver <> Box2dReference.SolverName).ToList()
         If rows.Any(Function(r) r.Available) Then sb.Append("![").Append(scene.Title).Append("](").Append(PlotFileName(scene.Name)).Append(")"c).Append(ControlChars.Lf).Append(ControlChars.Lf)
         sb.Append("| Solver | dt (s) | ").Append(scene.ErrorMetric).Append(" | ms per simulated s | collisions/s | note |").Append(ControlChars.Lf)
         sb.Append("|---|---|---|---|---|---|").Append(ControlChars.Lf)
@@ -280,7 +304,48 @@ Friend Module MarkdownReport
             End If
         Next
         sb.Append(ControlChars.Lf)
+        If TypeOf scene Is ISettlingScene Then RestSection(sb, rows, reference)
     End Sub
+
+    ''' <summary>
+    ''' A settling scene's second table: each run's simulated time at rest and the wall-clock time it took to
+    ''' get there, beside Box2D's on the same scene, with the ratio (below 1: faster than Box2D).
+    ''' </summary>
+    Private Sub RestSection(sb As StringBuilder, rows As List(Of BenchResult), reference As BenchResult)
+        sb.Append("Time to rest: each timed run stops when the pile is at rest; wall-clock ms is the median of the timed runs (building the scene not timed), ").
+           Append("**÷ Box2D** is that time over Box2D's (below 1: faster than Box2D).").Append(ControlChars.Lf).Append(ControlChars.Lf)
+        sb.Append("| Solver | dt (s) | at rest at (simulated s) | wall-clock ms to rest | ÷ Box2D | max overlap at the end (m) | note |").Append(ControlChars.Lf)
+        sb.Append("|---|---|---|---|---|---|---|").Append(ControlChars.Lf)
+        Dim box2dMs = If(reference IsNot Nothing AndAlso reference.Available, reference.RestWallMs, Double.NaN)
+        Dim all = New List(Of BenchResult)(rows)
+        If reference IsNot Nothing Then all.Add(reference)
+        For Each r In all
+            Dim name = If(r Is reference, "Box2D 2.4.1", r.Solver)
+            If Not r.Available Then
+                sb.Append("| ").Append(name).Append(" | ").Append(TimeStepText.Format(r.TimeStep)).Append(" | — | — | — | — | ").Append(Cell(r.Note)).Append(" |").Append(ControlChars.Lf)
+                Continue For
+            End If
+            Dim rested = Not Double.IsNaN(r.RestSeconds)
+            sb.Append("| ").Append(name).Append(" | ").Append(TimeStepText.Format(r.TimeStep)).Append(" | ").
+               Append(If(rested, r.RestSeconds.ToString("0.000", CultureInfo.InvariantCulture), "not at rest")).Append(" | ").
+               Append(If(Double.IsNaN(r.RestWallMs), "—", Fixed2(r.RestWallMs))).Append(" | ").
+               Append(If(r Is reference, "1", If(Double.IsNaN(r.RestWallMs) OrElse Double.IsNaN(box2dMs), "—", "**" & RatioText(r.RestWallMs / box2dMs) & "**"))).Append(" | ").
+               Append(Sci(r.Error)).Append(" | ").Append(Cell(If(r Is reference, r.Note, RestNote(r)))).Append(" |").Append(ControlChars.Lf)
+        Next
+        If reference Is Nothing Then sb.Append(ControlChars.Lf).Append("Box2D: not run in this run.").Append(ControlChars.Lf)
+        sb.Append(ControlChars.Lf)
+    End Sub
+
+    ''' <summary>The row's note without what the first table already says; "" when nothing is left.</summary>
+    Private Function RestNote(r As BenchResult) As String
+        Return If(Double.IsNaN(r.RestSeconds) AndAlso r.Runs > 0, "no timed run came to rest within " & r.SimulatedSeconds.ToString("0.#", CultureInfo.InvariantCulture) & " s", "")
+    End Function
+
+    ''' <summary>A ratio to two significant figures ("0.31", "3.4").</summary>
+    Friend Function RatioText(ratio As Double) As String
+        If Double.IsNaN(ratio) OrElse Double.IsInfinity(ratio) Then Return "—"
+        Return If(ratio < 1, ratio.ToString("0.00", CultureInfo.InvariantCulture), ratio.ToString("0.0", CultureInfo.InvariantCulture))
+    End Function
 
     Private Sub ScalingSection(sb As StringBuilder, rows As List(Of BenchResult))
         sb.Append("## Scaling: elastic gas at packing fraction 0.1").Append(ControlChars.Lf).Append(ControlChars.Lf)

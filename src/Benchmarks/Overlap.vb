@@ -31,6 +31,38 @@ Friend Module Overlap
         Return worst
     End Function
 
+    ''' <summary>
+    ''' The deepest overlap between two axis-aligned rectangles (at least one movable) or a movable rectangle and a
+    ''' wall, m (0 when none): two boxes overlap by the smaller of their overlaps along x and along y.
+    ''' </summary>
+    Public Function DeepestBetweenBoxes(world As World) As Double
+        If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
+        Dim worst = 0.0
+        Dim rs = world.Rectangles
+        For i = 0 To rs.Count - 1
+            Dim a = rs(i)
+            If Not a.IsFixed AndAlso world.Walls Then
+                worst = Math.Max(worst, -a.Min.X)
+                worst = Math.Max(worst, -a.Min.Y)
+                worst = Math.Max(worst, a.Max.X - world.Width)
+                worst = Math.Max(worst, a.Max.Y - world.Height)
+            End If
+            For j = i + 1 To rs.Count - 1
+                Dim b = rs(j)
+                If a.IsFixed AndAlso b.IsFixed Then Continue For
+                worst = Math.Max(worst, BoxOverlap(a.Min, a.Max, b.Min, b.Max))
+            Next
+        Next
+        Return worst
+    End Function
+
+    ''' <summary>How deep two axis-aligned boxes overlap, m: the smaller of the x and y overlaps; negative when apart.</summary>
+    Public Function BoxOverlap(aMin As Vector, aMax As Vector, bMin As Vector, bMax As Vector) As Double
+        Dim ox = Math.Min(aMax.X, bMax.X) - Math.Max(aMin.X, bMin.X)
+        Dim oy = Math.Min(aMax.Y, bMax.Y) - Math.Max(aMin.Y, bMin.Y)
+        Return Math.Min(ox, oy)
+    End Function
+
     ''' <summary>How many movable circles have their centre inside a fixed body (a fixed circle or a rectangle).</summary>
     Public Function CentresInsideFixedBodies(world As World) As Integer
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))

@@ -47,6 +47,12 @@ Public NotInheritable Class Program
             For Each solver In options.Solvers
                 results.AddRange(RunSceneInChild(scene, solver, options))
             Next
+            Dim pile = TryCast(scene, BoxPileScene)
+            If pile IsNot Nothing Then
+                Dim reference = RunBox2d(pile, options)
+                Print(reference)
+                results.Add(reference)
+            End If
         Next
         If options.Scenes.Contains(GasScaling.SceneName) Then results.AddRange(RunScaling(options))
         Dim baseline = RunBaseline(options)
@@ -106,6 +112,16 @@ Public NotInheritable Class Program
             results.Add(r)
         Next
         Return results
+    End Function
+
+    ''' <summary>The same box pile in Box2D 2.4.1 (the reference program the script built), or a row saying why not.</summary>
+    Private Shared Function RunBox2d(scene As BoxPileScene, options As BenchmarkOptions) As BenchResult
+        If options.Box2dProgram Is Nothing Then
+            Return Box2dReference.NotRun(scene.Name, scene.ErrorMetric,
+                                         If(options.Box2dNote.Length > 0, options.Box2dNote,
+                                            "not run: no Box2D reference program was given (scripts/bench.sh builds one with scripts/box2d-reference.sh)."))
+        End If
+        Return Box2dReference.Run(options.Box2dProgram, scene, options.Repeats, options.ChildTimeout(1))
     End Function
 
     ''' <summary>

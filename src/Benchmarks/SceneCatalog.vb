@@ -15,6 +15,8 @@ Friend Module SceneCatalog
             Case "pile" : Return New PileScene()
             Case "ramp-slide" : Return New RampSlideScene()
             Case "box-drop" : Return New BoxDropScene()
+            Case BoxPileScene.WideName : Return New BoxPileScene(BoxPileScene.WideName, 200, 10.0, 4.0)
+            Case BoxPileScene.DeepName : Return New BoxPileScene(BoxPileScene.DeepName, 200, 3.0, 8.0)
             Case "pendulum" : Return New PendulumScene()
             Case "spring" : Return New SpringScene()
             Case "rope" : Return New RopeScene()

@@ -5,6 +5,7 @@ Imports System.Globalization
 ''' <summary>
 ''' Measures one case (scene × solver × time step): one run for the error, one warm-up run, then
 ''' several timed runs of which the median is reported. Every run starts from a freshly built scene.
+''' A settling scene's timed runs stop when its pile is at rest (see <see cref="ISettlingScene"/>).
 ''' </summary>
 Friend Module SceneRunner
     ''' <summary>Simulated seconds between two looks at the wall clock during a timed run.</summary>
@@ -46,7 +47,7 @@ Friend Module SceneRunner
         ' The error run: scenes may look at the state as often as the solver has one.
         Dim world = scene.Build()
         world.Solver = SolverFactory.Create(solverName, timeStep)
-        result.BodyCount = world.Circles.Count
+        result.BodyCount = If(TypeOf scene Is ISettlingScene, world.Movables.Count, world.Circles.Count)
         Dim measured = scene.Measure(world, If(world.Solver.TimeStep, EventSampleStep), New RunBudget(budgetSeconds))
         result.Error = measured.Error
         result.Note = measured.Note
@@ -56,9 +57,11 @@ Friend Module SceneRunner
         ' Warm-up, then the timed runs; fewer of them when one run is slow, so the case fits its budget.
         Dim warm = TimedRun(scene, solverName, timeStep, budgetSeconds - clock.Elapsed.TotalSeconds)
         Dim times As New List(Of Double)
+        Dim restWalls As New List(Of Double)
         Dim collisions = warm.Collisions
         Dim simulated = warm.Simulated
-        Dim runs = If(warm.Simulated < scene.SimulatedSeconds - 1.0E-9, 0, repeats)
+        Dim settling = TryCast(scene, ISettlingScene)
+        Dim runs = If(warm.Complete, repeats, 0)
         ' A run of a second or more is steady enough that three make a good median.
         If warm.WallSeconds >= 1 Then runs = Math.Min(runs, 3)
         For k = 1 To runs
@@ -66,10 +69,17 @@ Friend Module SceneRunner
             If k > 1 AndAlso left < warm.WallSeconds * 1.5 Then Exit For
             Dim r = TimedRun(scene, solverName, timeStep, left)
             times.Add(r.WallSeconds * 1000 / r.Simulated)
+            If Not Double.IsNaN(r.RestTime) Then restWalls.Add(r.WallSeconds * 1000)
             collisions = r.Collisions
             simulated = r.Simulated
-            If r.Simulated < scene.SimulatedSeconds - 1.0E-9 Then Exit For
+            If Not r.Complete Then Exit For
         Next
+        If settling IsNot Nothing Then
+            ' Every run of a settling scene comes to rest at the same simulated time (the runs are the same
+            ' computation); the warm-up run's says whether it did.
+            result.RestSeconds = warm.RestTime
+            If restWalls.Count > 0 Then result.RestWallMs = Statistics.Median(restWalls)
+        End If
         If times.Count = 0 Then
             ' Even one run did not fit: report the warm-up run's rate, and say so.
             times.Add(warm.WallSeconds * 1000 / Math.Max(warm.Simulated, 1.0E-12))
@@ -96,6 +106,10 @@ Friend Module SceneRunner
         Public WallSeconds As Double
         Public Simulated As Double
         Public Collisions As Long
+        ''' <summary>A settling scene's simulated time at rest (s), where the run stopped; NaN otherwise.</summary>
+        Public RestTime As Double
+        ''' <summary>True when the run reached its end: the scene's simulated seconds, or rest.</summary>
+        Public Complete As Boolean
     End Structure
 
     Private Function TimedRun(scene As IBenchScene, solverName As String, timeStep As Double?, budgetSeconds As Double) As RunTiming
@@ -106,9 +120,17 @@ Friend Module SceneRunner
         GC.Collect()
         Dim budget As New RunBudget(budgetSeconds)
         Dim slice = Sampling.SliceOf(If(timeStep, EventSampleStep), Chunk)
+        Dim settling = TryCast(scene, ISettlingScene)
+        Dim restTime = Double.NaN
         Dim clock = Stopwatch.StartNew()
-        Sampling.Run(world, scene.SimulatedSeconds, slice, Function(t) True, budget)
+        If settling IsNot Nothing Then
+            ' A settling scene's run ends when the pile is at rest: the time that takes is what it measures.
+            restTime = settling.RunToRest(world, budget)
+        Else
+            Sampling.Run(world, scene.SimulatedSeconds, slice, Function(t) True, budget)
+        End If
         clock.Stop()
-        Return New RunTiming With {.WallSeconds = clock.Elapsed.TotalSeconds, .Simulated = world.Time, .Collisions = world.CollisionCount}
+        Return New RunTiming With {.WallSeconds = clock.Elapsed.TotalSeconds, .Simulated = world.Time, .Collisions = world.CollisionCount,
+                                   .RestTime = restTime, .Complete = Not Double.IsNaN(restTime) OrElse world.Time >= scene.SimulatedSeconds - 1.0E-9}
     End Function
 End Module

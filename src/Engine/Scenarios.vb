@@ -186,6 +186,46 @@ Public Module Scenarios
     End Function
 
     ''' <summary>
+    ''' A box pile: <paramref name="count"/> movable boxes of mixed sizes (sides 0.2 to 0.5 m, 10 kg/m²,
+    ''' frictionless, never rotating) wait at rest in rows 0.6 m apart with gaps of at least 0.15 m between
+    ''' them, the lowest row 0.5 m above the floor of a walled container <paramref name="width"/> m wide,
+    ''' and fall into it (g = 9.81, restitution e) until the pile settles. The container is 1 m taller than
+    ''' the top row. The same seed gives the same scene.
+    ''' </summary>
+    Public Function BoxPile(Optional count As Integer = 200, Optional width As Double = 10.0, Optional restitution As Double = 0.3,
+                            Optional seed As Integer = 1) As World
+        If count < 1 Then Throw New ArgumentOutOfRangeException(NameOf(count))
+        Const margin = 0.3        ' m from the side walls to the first box of a row
+        Const gap = 0.15          ' m between neighbours in a row
+        Const rowPitch = 0.6      ' m between rows: more than the tallest box, so no two rows touch
+        Const density = 10.0      ' kg/m²
+        Const smallest = 0.2, largest = 0.5 ' m, a side
+        If width < 2 * margin + largest Then Throw New ArgumentOutOfRangeException(NameOf(width), "the container must hold at least one box per row")
+        Dim rng As New Random(seed)
+        Dim boxes As New List(Of Rectangle)
+        Dim x = margin
+        Dim y = 0.5
+        Dim top = 0.0
+        For i = 0 To count - 1
+            Dim w = smallest + (largest - smallest) * rng.NextDouble()
+            Dim h = smallest + (largest - smallest) * rng.NextDouble()
+            If x + w > width - margin Then
+                ' A new row, started a little way in so that rows do not line up edge over edge.
+                x = margin + 0.1 * rng.NextDouble()
+                y += rowPitch
+            End If
+            boxes.Add(Rectangle.CreateMovable(New Vector(x, y), w, h, density * w * h, Vector.Zero, "box" & i.ToString(Globalization.CultureInfo.InvariantCulture)))
+            top = Math.Max(top, y + h)
+            x += w + gap
+        Next
+        Dim world As New World(width, top + 1.0, 9.81, restitution)
+        For Each b In boxes
+            world.Add(b)
+        Next
+        Return world
+    End Function
+
+    ''' <summary>
     ''' A bob of radius 0.1 m and 1 kg on a string of length L (m) from a fixed point, released at rest
     ''' at θ0 (rad) from the vertical; e = 1, nothing else in the box.
     ''' </summary>
