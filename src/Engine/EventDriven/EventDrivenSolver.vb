@@ -29,6 +29,8 @@ Public NotInheritable Class EventDrivenSolver
     Private _carried As VerletSolver
     Private _carriedWorld As World
     Private _dirty As Boolean = True
+    ''' <summary>When the fast path handed the world over to the general path for good (s; +∞: not yet). See <see cref="HandOver"/>.</summary>
+    Private _handedOverAt As Double = Double.PositiveInfinity
     ''' <summary>Events processed at the current instant so far (see <see cref="CountInstant"/>).</summary>
     Private _instantEvents As Long
 
@@ -105,6 +107,7 @@ Public NotInheritable Class EventDrivenSolver
         _s.World = world
         _linked.Attach(world)
         _dirty = True
+        _handedOverAt = Double.PositiveInfinity
     End Sub
 
     ''' <summary>
@@ -137,6 +140,7 @@ Public NotInheritable Class EventDrivenSolver
     ''' time, where the state is exact, and the next advance carries on from the same predictions.
     ''' </summary>
     Public Function AdvanceWithin(duration As Double, deadline As Long) As Double Implements ISolver.AdvanceWithin
+        If _s.World IsNot Nothing AndAlso _s.World.Time >= _handedOverAt Then Return AdvanceLinked(duration, deadline) ' see HandOver
         If _s.World Is Nothing Then Throw New InvalidOperationException("the solver is not attached to a world")
         ' Links, drag, liquids and friction take the general path; a scene with none of them, this one.
         If _s.World.Links.Count > 0 OrElse _s.World.HasDragOrLiquids OrElse _s.World.HasFriction Then Return AdvanceLinked(duration, deadline)
@@ -166,6 +170,10 @@ Public NotInheritable Class EventDrivenSolver
             Else
                 _responder.Resolve(i)
                 RescheduleTouched()
+                If _s.HandOver Then
+                    _EventCount += processed + 1
+                    Return HandOver(tEnd, deadline)
+                End If
             End If
             If CheckLanesEveryEvent Then LaneCheck.Check(_s)
             processed += 1
@@ -196,6 +204,20 @@ Public NotInheritable Class EventDrivenSolver
         Dim reached = _linked.AdvanceWithin(duration, deadline)
         _dirty = True
         Return reached
+    End Function
+
+    ''' <summary>
+    ''' A rule met what the fast path cannot follow exactly (<see cref="SolverState.HandOver"/>): from the clock
+    ''' on, this world goes to the general path of lasting contact (LinkedEventSolver), the rest of this advance
+    ''' and every later one, until the solver is attached anew or the world goes back before that instant.
+    ''' </summary>
+    Private Function HandOver(tEnd As Double, deadline As Long) As Double
+        _s.HandOver = False
+        _handedOverAt = _s.Now
+        WriteBack(_s.Now)
+        _dirty = True
+        If _s.World.DraggedBody IsNot Nothing Then Return _s.Now ' carried by hand: the next advance steps it (AdvanceLinked)
+        Return _linked.AdvanceWithin(tEnd - _s.Now, deadline, _s.Now)
     End Function
 
     ''' <summary>
@@ -269,6 +291,7 @@ Public NotInheritable Class EventDrivenSolver
         _s.Width = w.Width
         _s.Height = w.Height
         _s.Now = w.Time
+        _s.HandOver = False
         _s.Obstacles.Load(w)
         _s.Bodies.Load(w, _s.Now)
         _s.Shapes.Clear()

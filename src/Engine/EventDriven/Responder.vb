@@ -135,7 +135,11 @@ Friend NotInheritable Class Responder
         _s.SyncUnpublished(j)
         Dim b = _bodies
         If _rest.HitTooOften(i) Or _rest.HitTooOften(j) Then
-            ResolveJam(i, j)
+            ' A jam of bodies in motion (a heavy ball sliding into a light one that it lifts up a wall) is
+            ' lasting contact that moves: the cluster rule would stop the wedged body dead, and a moving
+            ' body taken as a support would lift it with energy from nowhere. Only the general path follows
+            ' it exactly. A settling jam (slow bodies pressed into a gap by gravity) keeps the cluster rule.
+            If Not ((_rest.InMotion(i) OrElse _rest.InMotion(j)) AndAlso _s.TryHandOver()) Then ResolveJam(i, j)
             Return
         End If
         Dim m = b.Motion

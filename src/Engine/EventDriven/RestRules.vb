@@ -163,6 +163,16 @@ Friend NotInheritable Class RestRules
         Return _s.E
     End Function
 
+    ''' <summary>
+    ''' Whether body i is in motion rather than settling, under gravity: faster than ½ √(g r), five times the
+    ''' speed of a gentle touch (<see cref="GentleSpeed"/>). Bodies settling into a pile are far slower.
+    ''' </summary>
+    Friend Function InMotion(i As Integer) As Boolean
+        If _s.G = 0 Then Return False
+        Dim m = _s.Bodies.Motion(i)
+        Return m.Vx * m.Vx + m.Vy * m.Vy > 0.25 * _s.G * _s.Bodies.Size(i).Scale
+    End Function
+
     ''' <summary>Normal speed (m/s) below which a touch on a resting body does not wake it: 10 % of √(g r).</summary>
     Friend Function GentleSpeed(i As Integer, j As Integer) As Double
         If _s.G = 0 Then Return 0 ' without reading the sizes, which no collision of a gas needs otherwise

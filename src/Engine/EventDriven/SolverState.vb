@@ -32,6 +32,26 @@ Friend NotInheritable Class SolverState
     ''' <summary>Grid cells searched for partners so far (see <see cref="EventDrivenSolver.CellsSearched"/>).</summary>
     Friend CellsSearched As Long
 
+    ''' <summary>
+    ''' Set by a rule that meets what the fast path cannot follow exactly (a jam of bodies in motion, see
+    ''' Responder): the solver hands the world over to the general path of lasting contact once the event is
+    ''' resolved (see <see cref="EventDrivenSolver"/>).
+    ''' </summary>
+    Friend HandOver As Boolean
+
+    ''' <summary>
+    ''' The most movable bodies a world may have for the fast path to hand it over: the general path works on
+    ''' every pair of bodies, so a crowd keeps the fast path's own rules (a cluster resolved at once, a pile asleep).
+    ''' </summary>
+    Friend Const HandOverBodies As Integer = 16
+
+    ''' <summary>Asks for the hand-over (<see cref="HandOver"/>); whether it will happen (only in a world of few bodies).</summary>
+    Friend Function TryHandOver() As Boolean
+        If Bodies.Count > HandOverBodies Then Return False
+        HandOver = True
+        Return True
+    End Function
+
     ''' <summary>The bodies an event changed, to be rescheduled once it is resolved (each once, in the order they changed).</summary>
     Friend ReadOnly Touched As New TouchedList()
 

@@ -94,10 +94,12 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' <summary>
     ''' As <see cref="Advance"/>, stopping between two events once the wall clock passes <paramref name="deadline"/>
     ''' (Stopwatch ticks). The bodies are written back at the time reached, where the state is exact, and that time
-    ''' is returned; the next advance carries on from the same predictions, as one long advance would.
+    ''' is returned; the next advance carries on from the same predictions, as one long advance would. It starts at
+    ''' <paramref name="start"/> (s) when given, the world's bodies being there then (the fast path hands over mid-advance).
     ''' </summary>
-    Friend Function AdvanceWithin(duration As Double, deadline As Long) As Double
-        If _dirty OrElse _now <> _world.Time Then Rebuild()
+    Friend Function AdvanceWithin(duration As Double, deadline As Long, Optional start As Double = Double.NaN) As Double
+        If Double.IsNaN(start) Then start = _world.Time
+        If _dirty OrElse _now <> start Then Rebuild(start)
         _reports.Clear()
         Dim reached = AdvanceTo(_now + duration, deadline)
         For Each r In _reports
@@ -150,9 +152,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
     End Sub
 
     ''' <summary>Reads the world: groups from the links, then every group's motion by the one rule, from the state now.</summary>
-    Private Sub Rebuild()
+    Private Sub Rebuild(start As Double)
         Dim w = _world
-        _now = w.Time
+        _now = start
         _instant = 0
         _lastTime = Double.NaN
         Dim bodies = w.Movables.ToList()
