@@ -75,6 +75,96 @@ Public Class CaseSceneTests
         Loop
     End Sub
 
+    ''' <summary>
+    ''' Where the frictionless hopper's opening is (m). Why the hopper must empty: the ramps are frictionless, at
+    ''' 60° to the level, and leave an opening 0.24 m wide, three diameters of the largest ball (r = 2.5–4 cm).
+    ''' With no friction every contact force acts along the line of centres, so an arch spanning the opening is
+    ''' an inverted chain of rigid links under the weight above it: in equilibrium only for particular shapes,
+    ''' and even there unstable (a small sideways shift of one ball lowers the weight above and lets the arch
+    ''' fold). No ball rests on a ramp alone (g sin 60° along it). So nothing holds a ball above the opening (the
+    ''' position-Verlet solver empties the hopper of tests/cases/event-hopper-frictionless.json within 10 s at
+    ''' e = 0.3 and at e = 0); a lasting arch needs friction.
+    ''' </summary>
+    Private Const HopperOpeningY As Double = 1.0
+
+    ''' <summary>
+    ''' A frictionless V hopper (ramps at 60° from the container's walls down to an opening 0.24 m wide at
+    ''' y = 1 m) with <paramref name="balls"/> balls of radii 2.5, 3, 3.5 or 4 cm (mass ∝ r², 0.1 kg for 4 cm)
+    ''' in rows above it, placed from <paramref name="seed"/>; e = <paramref name="restitution"/>, g = 9.81 m/s².
+    ''' </summary>
+    Friend Shared Function Hopper(seed As Integer, restitution As Double, balls As Integer) As World
+        Const width = 1.2, opening = 0.24, columns = 11
+        Dim rise = (width / 2 - opening / 2) * Math.Tan(Math.PI / 3)
+        Dim random As New Random(seed)
+        Dim radii = {0.025, 0.03, 0.035, 0.04}
+        Dim rows = (balls + columns - 1) \ columns
+        Dim w As New World(width, HopperOpeningY + rise + 0.12 + rows * 0.09, 9.81, restitution)
+        w.Add(New Segment(New Vector(0, HopperOpeningY + rise), New Vector(width / 2 - opening / 2, HopperOpeningY), "ramp-left"))
+        w.Add(New Segment(New Vector(width / 2 + opening / 2, HopperOpeningY), New Vector(width, HopperOpeningY + rise), "ramp-right"))
+        Dim spacing = width / columns
+        For k = 0 To balls - 1
+            Dim r = radii(random.Next(radii.Length))
+            Dim x = spacing * (k Mod columns + 0.5) + (random.NextDouble() - 0.5) * 0.016
+            Dim y = HopperOpeningY + rise + 0.06 + (k \ columns) * 0.09 + (random.NextDouble() - 0.5) * 0.006
+            w.Add(New Circle(New Vector(x, y), r, 0.1 * (r / 0.04) ^ 2, id:="b" & k))
+        Next
+        Return w
+    End Function
+
+    ''' <summary>
+    ''' Runs a frictionless hopper for 10 s with the event solver, sampling every 0.5 s: at each sample no two
+    ''' bodies overlap by more than 10⁻⁹ m, and energy plus what was dissipated stays the starting energy to
+    ''' 10⁻⁹ (relative); at the end every ball is wholly below the opening.
+    ''' </summary>
+    Private Shared Sub AssertHopperEmpties(w As World)
+        EventSolverTestKit.UseEventSolver(w)
+        Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+        Dim worst = 0.0, worstAt = 0.0
+        For k = 1 To 20
+            w.Advance(0.5)
+            Dim depth = EventSolverTestKit.DeepestOverlap(w)
+            Assert.True(depth <= 0.000000001, $"at t = {w.Time} s two bodies overlap by {depth} m")
+            Dim drift = (w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated - e0) / Math.Abs(e0)
+            If Math.Abs(drift) > Math.Abs(worst) Then worst = drift : worstAt = w.Time
+        Next
+        Dim above = w.Circles.Where(Function(b) Not b.IsFixed AndAlso b.Position.Y + b.Radius > HopperOpeningY).
+            Select(Function(b) $"{b.Id} at ({b.Position.X:0.####}, {b.Position.Y:0.####})").ToList()
+        Assert.True(above.Count = 0, $"{above.Count} balls still above the opening at t = 10 s: {String.Join(", ", above)}")
+        ' The energy ledger last, so that a run that jams says so first.
+        Assert.True(Math.Abs(worst) <= 0.000000001, $"at t = {worstAt} s energy + dissipated is off the starting {e0} J by {worst:G3} of it")
+    End Sub
+
+    ''' <summary>
+    ''' The hopper of tests/cases/event-hopper-frictionless.json (60 balls), with e = 0.3 as in the file and
+    ''' with e = 0: it jammed, balls put to sleep as they slid down a ramp against another, left in the air.
+    ''' </summary>
+    <Theory(Skip:=HopperStillJams)>
+    <InlineData(0.3)>
+    <InlineData(0.0)>
+    Public Sub FrictionlessHopper_Empties(restitution As Double)
+        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-hopper-frictionless.json"))
+        w.Restitution = restitution
+        AssertHopperEmpties(w)
+    End Sub
+
+    ''' <summary>Other layouts and numbers of balls in the frictionless hopper: each empties, with no overlap and the energy ledger kept.</summary>
+    <Theory(Skip:=HopperStillJams)>
+    <InlineData(1, 0.3, 60)>
+    <InlineData(1, 0.0, 60)>
+    <InlineData(3, 0.3, 40)>
+    <InlineData(3, 0.0, 100)>
+    <InlineData(4, 0.3, 100)>
+    <InlineData(4, 0.0, 40)>
+    Public Sub FrictionlessHopper_EmptiesWhateverTheLayout(seed As Integer, restitution As Double, balls As Integer)
+        AssertHopperEmpties(Hopper(seed, restitution, balls))
+    End Sub
+
+    ''' <summary>Why the hopper tests are skipped: what the event solver still does wrong in them.</summary>
+    Private Const HopperStillJams As String =
+        "the event solver still jams the frictionless hopper: a body resolved in a cluster twice at one instant " &
+        "(ClusterResponse) is stopped and put to sleep whether or not anything holds it, and the energy a cluster " &
+        "takes is not counted in World.Dissipated"
+
     Private Shared Function RepoRoot() As String
         For Each a In GetType(CaseSceneTests).Assembly.GetCustomAttributes(GetType(Reflection.AssemblyMetadataAttribute), False).Cast(Of Reflection.AssemblyMetadataAttribute)()
             If a.Key = "RepoRoot" Then Return a.Value
