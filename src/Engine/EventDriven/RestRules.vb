@@ -395,6 +395,9 @@ Friend NotInheritable Class RestRules
         If (target - p).Length > gap OrElse Not IsClear(i, target) Then Return
         b.Motion(i).Px = target.X
         b.Motion(i).Py = target.Y
+        ' It stands for the last crumb of its fall, which the bounces that would have ended it take:
+        ' the height it drops here is dissipated (m g Δy, J). A rise, by rounding, is not counted.
+        _s.World.Dissipate(b.Shapes(i).Mass * _s.G * (p.Y - target.Y))
     End Sub
 
     ''' <summary>Whether body i could be at p (m) without overlapping anything it collides with (beyond the touching tolerance).</summary>
@@ -491,9 +494,11 @@ Friend NotInheritable Class RestRules
                 Dim before = New Vector(b.Motion(j).Px, b.Motion(j).Py)
                 Settle(j)
                 If Not IsHeld(j) Then
-                    ' It fell asleep on a body that has since moved away: it falls after it, from now.
+                    ' It fell asleep on a body that has since moved away: it falls after it, from now, and
+                    ' so does whatever sleeps on it (which it no longer holds up once it moves).
                     MakeFree(j)
                     _s.Changed(j)
+                    WakeAbove(j)
                     Continue For
                 End If
                 If b.Motion(j).Px = before.X AndAlso b.Motion(j).Py = before.Y Then Continue For
