@@ -604,7 +604,11 @@ Friend NotInheritable Class RestRules
             If b.Mode(j) = BodyMode.Rounding OrElse b.Mode(j) = BodyMode.Dragged Then Continue For
             If b.Mode(j) <> BodyMode.Sleeping AndAlso Not Settling(j, If(supportSpeed2 < 0, 0.0004 * _s.G * b.Size(j).Scale, supportSpeed2)) Then Continue For
             Dim c = ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now))
-            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y, False)
+            If c.Depth < -gap Then Continue For
+            ' A body moving away from it (one still falling, under it) does not hold it up: what slept on
+            ' it would be left in the air, kept by it from being put on what is under both.
+            If b.Mode(j) <> BodyMode.Sleeping AndAlso MovesAway(j, c.Normal) Then Continue For
+            AddNormal(c.Normal.X, c.Normal.Y, False)
         Next
         ' One support alone holds a body only if it is level. A fixed body (a face, a corner, a peg) must
         ' be level to rounding: on a frictionless slope of any angle, however small, a body slides (g sin θ
@@ -664,6 +668,13 @@ Friend NotInheritable Class RestRules
         Dim x, y, vx, vy As Double
         _bodies.Motion(j).StateAt(_s.Now, x, y, vx, vy)
         Return vx * vx + vy * vy < speed2
+    End Function
+
+    ''' <summary>Whether body j moves away (now) along n, the normal of its contact pointing from it towards the body it would hold.</summary>
+    Private Function MovesAway(j As Integer, n As Vector) As Boolean
+        Dim x, y, vx, vy As Double
+        _bodies.Motion(j).StateAt(_s.Now, x, y, vx, vy)
+        Return vx * n.X + vy * n.Y < 0
     End Function
 
     Private Sub AddNormal(x As Double, y As Double, Optional exact As Boolean = True)
