@@ -405,6 +405,9 @@ Friend NotInheritable Class RestRules
         If (target - p).Length > gap OrElse Not IsClear(i, target) Then Return
         b.Motion(i).Px = target.X
         b.Motion(i).Py = target.Y
+        ' It stands for the last crumb of its fall, which the bounces that would have ended it take:
+        ' the height it drops here is dissipated (m g Δy, J). A rise, by rounding, is not counted.
+        _s.World.Dissipate(b.Shapes(i).Mass * _s.G * (p.Y - target.Y))
     End Sub
 
     ''' <summary>Whether body i could be at p (m) without overlapping anything it collides with (beyond the touching tolerance).</summary>
@@ -501,9 +504,11 @@ Friend NotInheritable Class RestRules
                 Dim before = New Vector(b.Motion(j).Px, b.Motion(j).Py)
                 Settle(j)
                 If Not IsHeld(j) Then
-                    ' It fell asleep on a body that has since moved away: it falls after it, from now.
+                    ' It fell asleep on a body that has since moved away: it falls after it, from now, and
+                    ' so does whatever sleeps on it (which it no longer holds up once it moves).
                     MakeFree(j)
                     _s.Changed(j)
+                    WakeAbove(j)
                     Continue For
                 End If
                 If b.Motion(j).Px = before.X AndAlso b.Motion(j).Py = before.Y Then Continue For
@@ -609,7 +614,11 @@ Friend NotInheritable Class RestRules
             If b.Mode(j) = BodyMode.Rounding OrElse b.Mode(j) = BodyMode.Dragged Then Continue For
             If b.Mode(j) <> BodyMode.Sleeping AndAlso Not Settling(j, If(supportSpeed2 < 0, 0.0004 * _s.G * b.Size(j).Scale, supportSpeed2)) Then Continue For
             Dim c = ContactRules.OverlapWithBody(_s, i, j, p, b.PositionAt(j, _s.Now))
-            If c.Depth >= -gap Then AddNormal(c.Normal.X, c.Normal.Y, False)
+            If c.Depth < -gap Then Continue For
+            ' A body moving away from it (one still falling, under it) does not hold it up: what slept on
+            ' it would be left in the air, kept by it from being put on what is under both.
+            If b.Mode(j) <> BodyMode.Sleeping AndAlso MovesAway(j, c.Normal) Then Continue For
+            AddNormal(c.Normal.X, c.Normal.Y, False)
         Next
         ' One support alone holds a body only if it is level. A fixed body (a face, a corner, a peg) must
         ' be level to rounding: on a frictionless slope of any angle, however small, a body slides (g sin θ
@@ -669,6 +678,13 @@ Friend NotInheritable Class RestRules
         Dim x, y, vx, vy As Double
         _bodies.Motion(j).StateAt(_s.Now, x, y, vx, vy)
         Return vx * vx + vy * vy < speed2
+    End Function
+
+    ''' <summary>Whether body j moves away (now) along n, the normal of its contact pointing from it towards the body it would hold.</summary>
+    Private Function MovesAway(j As Integer, n As Vector) As Boolean
+        Dim x, y, vx, vy As Double
+        _bodies.Motion(j).StateAt(_s.Now, x, y, vx, vy)
+        Return vx * n.X + vy * n.Y < 0
     End Function
 
     Private Sub AddNormal(x As Double, y As Double, Optional exact As Boolean = True)
