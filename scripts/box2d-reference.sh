@@ -23,20 +23,9 @@ if ! have_box2d; then
     echo "box2d-reference: libbox2d-dev (Box2D 2.4.1) is not installed; scripts/box2d-reference.sh installs it" >&2
     exit 1
   fi
-  if ! command -v apt-get >/dev/null 2>&1; then
-    echo "box2d-reference: libbox2d-dev is not installed and this is not a Debian/Ubuntu machine" >&2
-    exit 1
-  fi
-  sudo=""
-  if [ "$(id -u)" -ne 0 ]; then
-    if command -v sudo >/dev/null 2>&1; then sudo="sudo"; else
-      echo "box2d-reference: libbox2d-dev is not installed; run as root or install sudo" >&2; exit 1
-    fi
-  fi
-  echo "box2d-reference: installing libbox2d-dev" >&2
-  export DEBIAN_FRONTEND=noninteractive
-  if ! { $sudo apt-get update -qq && $sudo apt-get install -y -qq --no-install-recommends libbox2d-dev; } >/dev/null 2>&1; then
-    echo "box2d-reference: libbox2d-dev could not be installed (apt-get failed: no network?)" >&2
+  mkdir -p "$out"
+  if ! bash scripts/install-deps.sh box2d 2>"$out/install.log"; then
+    echo "box2d-reference: libbox2d-dev could not be installed: $(tail -n1 "$out/install.log")" >&2
     exit 1
   fi
 fi

@@ -2,13 +2,17 @@
 # Installs, from the distribution, what this project needs beyond the .NET SDK.
 #   install-deps.sh app    Mono + WinForms + libgdiplus (to build and run the net48 app)
 #   install-deps.sh test   the above + Xvfb, xdotool, ImageMagick, xwininfo, xprop, setxkbmap (GUI tests)
+#   install-deps.sh box2d  Box2D 2.4.1 and g++ (the benchmark's reference, scripts/box2d-reference.sh)
 # Installs only what is missing; needs root (or sudo) only when something is missing.
 set -euo pipefail
 
-want=(mono-runtime mono-devel libmono-system-windows-forms4.0-cil libgdiplus fonts-dejavu-core)
-if [ "${1:-app}" = "test" ]; then
-  want+=(xvfb xdotool imagemagick x11-utils x11-xkb-utils)
-fi
+case "${1:-app}" in
+  app)   want=(mono-runtime mono-devel libmono-system-windows-forms4.0-cil libgdiplus fonts-dejavu-core) ;;
+  test)  want=(mono-runtime mono-devel libmono-system-windows-forms4.0-cil libgdiplus fonts-dejavu-core
+               xvfb xdotool imagemagick x11-utils x11-xkb-utils) ;;
+  box2d) want=(libbox2d-dev g++) ;;
+  *) echo "install-deps: unknown set '$1' (app, test or box2d)" >&2; exit 2 ;;
+esac
 
 missing=()
 for p in "${want[@]}"; do
