@@ -50,17 +50,10 @@ Friend Module Overlap
             For j = i + 1 To rs.Count - 1
                 Dim b = rs(j)
                 If a.IsFixed AndAlso b.IsFixed Then Continue For
-                worst = Math.Max(worst, BoxOverlap(a.Min, a.Max, b.Min, b.Max))
+                worst = Math.Max(worst, Collider.BoxBoxDepth(a.Min, a.Max, b.Min, b.Max))
             Next
         Next
         Return worst
-    End Function
-
-    ''' <summary>How deep two axis-aligned boxes overlap, m: the smaller of the x and y overlaps; negative when apart.</summary>
-    Public Function BoxOverlap(aMin As Vector, aMax As Vector, bMin As Vector, bMax As Vector) As Double
-        Dim ox = Math.Min(aMax.X, bMax.X) - Math.Max(aMin.X, bMin.X)
-        Dim oy = Math.Min(aMax.Y, bMax.Y) - Math.Max(aMin.Y, bMin.Y)
-        Return Math.Min(ox, oy)
     End Function
 
     ''' <summary>How many movable circles have their centre inside a fixed body (a fixed circle or a rectangle).</summary>

@@ -37,6 +37,16 @@ Public Module Collider
     End Function
 
     ''' <summary>
+    ''' How deep two axis-aligned boxes [aMin, aMax] and [bMin, bMax] overlap, m: the smaller of their
+    ''' overlaps along x and along y, the shorter way to part them; zero when they touch, negative when apart.
+    ''' </summary>
+    Public Function BoxBoxDepth(aMin As Vector, aMax As Vector, bMin As Vector, bMax As Vector) As Double
+        Dim ox = Math.Min(aMax.X, bMax.X) - Math.Max(aMin.X, bMin.X)
+        Dim oy = Math.Min(aMax.Y, bMax.Y) - Math.Max(aMin.Y, bMin.Y)
+        Return Math.Min(ox, oy)
+    End Function
+
+    ''' <summary>
     ''' <see cref="CircleRectangle"/> for a circle that moved to p from <paramref name="from"/> during a
     ''' time step. If the centre's path crossed into the rectangle (it ended inside it, or went right
     ''' through it), the circle is sent back out through the face its path came in by, not the nearest

@@ -33,7 +33,7 @@ Public Class BoxPileTests
         For i = 0 To world.Rectangles.Count - 1
             For j = i + 1 To world.Rectangles.Count - 1
                 Dim a = world.Rectangles(i), b = world.Rectangles(j)
-                closest = Math.Min(closest, -Overlap.BoxOverlap(a.Min, a.Max, b.Min, b.Max))
+                closest = Math.Min(closest, -Collider.BoxBoxDepth(a.Min, a.Max, b.Min, b.Max))
             Next
         Next
         Assert.True(closest >= 0.1, $"two boxes start {closest} m apart")
@@ -112,12 +112,6 @@ Public Class BoxPileTests
         w.Add(Rectangle.CreateMovable(New Vector(3.4, 0.8), 0.4, 0.4, 1, Vector.Zero, "beside it, lower"))
         Assert.Equal(4, BoxPileScene.Unsupported(w, 1.0E-9))
         Assert.Equal(3, BoxPileScene.Unsupported(w, 0.002))
-    End Sub
-
-    <Fact>
-    Public Sub BoxOverlap_IsTheSmallerOverlap_AndNegativeWhenApart()
-        Assert.Equal(0.1, Overlap.BoxOverlap(New Vector(0, 0), New Vector(1, 1), New Vector(0.9, 0.5), New Vector(2, 2)), 12)
-        Assert.Equal(-0.5, Overlap.BoxOverlap(New Vector(0, 0), New Vector(1, 1), New Vector(1.5, 0), New Vector(2, 1)), 12)
     End Sub
 
     <Fact>

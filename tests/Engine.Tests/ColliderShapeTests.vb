@@ -183,4 +183,14 @@ Public Class ColliderShapeTests
         Assert.Equal(0.0, core.Radius)
         Assert.Equal(rounded.Vertices, core.Vertices)
     End Sub
+
+    <Fact>
+    Public Sub BoxBoxDepth_IsTheSmallerOverlap_ZeroWhenTouching_NegativeWhenApart()
+        Assert.Equal(0.1, Collider.BoxBoxDepth(New Vector(0, 0), New Vector(1, 1), New Vector(0.9, 0.5), New Vector(2, 2)), 12)
+        Assert.Equal(0.0, Collider.BoxBoxDepth(New Vector(0, 0), New Vector(1, 1), New Vector(1, 0.2), New Vector(2, 0.8)), 12)
+        Assert.Equal(-0.5, Collider.BoxBoxDepth(New Vector(0, 0), New Vector(1, 1), New Vector(1.5, 0), New Vector(2, 1)), 12)
+        ' Symmetric in the two boxes.
+        Assert.Equal(Collider.BoxBoxDepth(New Vector(0.9, 0.5), New Vector(2, 2), New Vector(0, 0), New Vector(1, 1)),
+                     Collider.BoxBoxDepth(New Vector(0, 0), New Vector(1, 1), New Vector(0.9, 0.5), New Vector(2, 2)))
+    End Sub
 End Class

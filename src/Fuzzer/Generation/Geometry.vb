@@ -17,13 +17,6 @@ Namespace Generation
             Return r - Vector.Hypot(x - qx, y - qy)
         End Function
 
-        ''' <summary>How deep two boxes overlap, m: the smaller of the overlaps along x and y (≤ 0 when apart or touching).</summary>
-        Friend Function BoxBoxDepth(a0 As Vector, a1 As Vector, b0 As Vector, b1 As Vector) As Double
-            Dim ox = Math.Min(a1.X, b1.X) - Math.Max(a0.X, b0.X)
-            Dim oy = Math.Min(a1.Y, b1.Y) - Math.Max(a0.Y, b0.Y)
-            Return Math.Min(ox, oy)
-        End Function
-
         ''' <summary>Distance from point p to the segment from a to b, m.</summary>
         Friend Function PointSegmentDistance(p As Vector, a As Vector, b As Vector) As Double
             Dim ab = b - a

@@ -68,7 +68,7 @@ Namespace Generation
                         Case DraftShape.Circle
                             Return Depth(b, a)
                         Case DraftShape.Rectangle
-                            Return Geometry.BoxBoxDepth(a.Position, a.Corner, b.Position, b.Corner)
+                            Return Collider.BoxBoxDepth(a.Position, a.Corner, b.Position, b.Corner)
                         Case Else
                             Return Depth(a.Bound(), b)
                     End Select
