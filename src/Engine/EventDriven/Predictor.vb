@@ -58,54 +58,54 @@ Friend NotInheritable Class Predictor
     ''' <summary>Recomputes body i's next event at the solver's clock and files it in the queue.</summary>
     Friend Sub Reschedule(i As Integer)
         Dim b = _bodies
-        Dim best = Double.PositiveInfinity
-        Dim kind = EventKind.None
-        Dim other = -1
-        Dim feature = 0
         Dim m = b.Slot(i).Mode
         If m = BodyMode.Rounding Then
             RescheduleSlide(i)
             Return
         End If
-        Dim ay = b.Motion(i).Ay
-        Dim ax = b.Motion(i).Ax
-        Dim px, py, vx, vy As Double
-        b.Motion(i).StateAt(_s.Now, px, py, vx, vy)
-        Dim r = b.Motion(i).R
-        Dim slop = SolverState.SlopAt(px, py)
-        Dim asleep = m = BodyMode.Sleeping
+        Dim p As Probe
+        p.Body = i
+        b.Motion(i).StateAt(_s.Now, p.Px, p.Py, p.Vx, p.Vy)
+        p.Ax = b.Motion(i).Ax
+        p.Ay = b.Motion(i).Ay
+        p.R = b.Motion(i).R
+        p.Slop = SolverState.SlopAt(p.Px, p.Py)
+        p.Asleep = m = BodyMode.Sleeping
+        p.Best = Double.PositiveInfinity
+        p.Kind = EventKind.None
+        p.Other = -1
         Dim dir = 0
-        Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, dir)
+        p.ExitTime = CellExit(p, dir)
         Dim moving = m = BodyMode.Free OrElse m = BodyMode.Supported
         If moving Then
-            If _s.Walls AndAlso AlongWall(i) Then CheckWalls(i, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0), px, py, vx, vy, ay, r, best, kind, feature)
+            If _s.Walls AndAlso AlongWall(i) Then CheckWalls(p, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0))
             If b.Slot(i).Cell >= 0 Then
                 ' An obstacle is listed in every cell within half a cell of it, so the body's own cell
                 ' suffices, and only until it leaves the cell: the next cell's obstacles are tested then.
                 Dim c = b.Slot(i).Cell
                 For s = _grid.StaticStart(c) To _grid.StaticStart(c + 1) - 1
-                    CheckObstacle(i, _grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
+                    CheckObstacle(p, _grid.StaticItems(s))
                 Next
             Else
                 For s = 0 To _s.Obstacles.Count - 1
-                    CheckObstacle(i, s, px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
+                    CheckObstacle(p, s)
                 Next
             End If
         End If
         ' Movable neighbours: those in the cells within reach of its path (see ReachOfPath).
         If b.Slot(i).Cell >= 0 Then
             Dim c0, c1, r0, r1 As Integer
-            ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
-            ScanCells(i, c0, c1, r0, r1, -1, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
-            If _deferredCount > 0 Then CheckDeferred(i, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
-            If _s.OversizedCount > 0 Then CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
+            ReachOfPath(p, Math.Min(p.ExitTime, p.Best), c0, c1, r0, r1)
+            ScanCells(p, c0, c1, r0, r1, -1)
+            If _deferredCount > 0 Then CheckDeferred(p)
+            If _s.OversizedCount > 0 Then CheckOversized(p)
         Else
             For j = 0 To b.Count - 1
-                If j <> i Then CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+                If j <> i Then CheckPair(p, j, Double.PositiveInfinity)
             Next
         End If
-        If m = BodyMode.Supported AndAlso b.Support(i) >= 0 Then CheckLeaveFace(i, px, py, vx, vy, ax, ay, best, kind, other, feature)
-        File(i, best, kind, other, feature, exitTime, dir)
+        If m = BodyMode.Supported AndAlso b.Support(i) >= 0 Then CheckLeaveFace(p)
+        File(i, p.Best, p.Kind, p.Other, p.Feature, p.ExitTime, dir)
     End Sub
 
     ''' <summary>
@@ -126,14 +126,19 @@ Friend NotInheritable Class Predictor
         File(i, best, kind, other, 0, Double.PositiveInfinity, 0)
     End Sub
 
-    ''' <summary>Supported body i (at p with velocity v and acceleration a, m, m/s, m/s²) reaching an end of the face it rests on.</summary>
+    ''' <summary>The probe's body, supported, reaching an end of the face it rests on.</summary>
     <MethodImpl(MethodImplOptions.NoInlining)>
-    Private Sub CheckLeaveFace(i As Integer, px As Double, py As Double, vx As Double, vy As Double, ax As Double, ay As Double,
-                               ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
+    Private Sub CheckLeaveFace(ByRef p As Probe)
         Dim b = _bodies
+        Dim i = p.Body
         Dim farEnd As Boolean
-        Dim t = ContactRules.TimeToLeaveFace(_s, i, b.Support(i), b.SupportEdge(i), New Vector(px, py), New Vector(vx, vy), New Vector(ax, ay), farEnd)
-        If t < best Then best = Math.Max(0, t) : kind = EventKind.LeaveSupport : other = b.Support(i) : feature = If(farEnd, 1, 0)
+        Dim t = ContactRules.TimeToLeaveFace(_s, i, b.Support(i), b.SupportEdge(i), New Vector(p.Px, p.Py), New Vector(p.Vx, p.Vy), New Vector(p.Ax, p.Ay), farEnd)
+        If t < p.Best Then
+            p.Best = Math.Max(0, t)
+            p.Kind = EventKind.LeaveSupport
+            p.Other = b.Support(i)
+            p.Feature = If(farEnd, 1, 0)
+        End If
     End Sub
 
     ''' <summary>
@@ -154,45 +159,45 @@ Friend NotInheritable Class Predictor
         Dim previous = b.Slot(i).Cell
         _s.MoveToCell(i, col, row)
         Dim target = b.Slot(i).Cell
-        Dim kind = b.Slot(i).Kind
-        If kind = EventKind.Body AndAlso b.Slot(b.Slot(i).Other).Count <> b.Slot(i).OtherCount Then
+        If b.Slot(i).Kind = EventKind.Body AndAlso b.Slot(b.Slot(i).Other).Count <> b.Slot(i).OtherCount Then
             Reschedule(i) ' the kept prediction went stale: start afresh
             Return
         End If
-        Dim best = b.Slot(i).ColTime - _s.Now
-        Dim other = b.Slot(i).Other
-        Dim feature = b.Slot(i).Feature
+        ' The kept prediction is the best so far.
+        Dim p As Probe
+        p.Body = i
+        p.Best = b.Slot(i).ColTime - _s.Now
+        p.Kind = b.Slot(i).Kind
+        p.Other = b.Slot(i).Other
+        p.Feature = b.Slot(i).Feature
         Dim m = b.Slot(i).Mode
-        Dim ay = b.Motion(i).Ay
-        Dim px, py, vx, vy As Double
-        b.Motion(i).StateAt(_s.Now, px, py, vx, vy)
-        Dim r = b.Motion(i).R
-        Dim ax = b.Motion(i).Ax
-        Dim slop = SolverState.SlopAt(px, py)
-        Dim asleep = m = BodyMode.Sleeping
+        b.Motion(i).StateAt(_s.Now, p.Px, p.Py, p.Vx, p.Vy)
+        p.Ax = b.Motion(i).Ax
+        p.Ay = b.Motion(i).Ay
+        p.R = b.Motion(i).R
+        p.Slop = SolverState.SlopAt(p.Px, p.Py)
+        p.Asleep = m = BodyMode.Sleeping
         Dim exitDir = 0
-        Dim exitTime = CellExit(i, asleep, px, py, vx, vy, ay, exitDir)
+        p.ExitTime = CellExit(p, exitDir)
         If m = BodyMode.Free OrElse m = BodyMode.Supported Then
-            If _s.Walls AndAlso AlongWall(i) Then CheckWalls(i, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0), px, py, vx, vy, ay, r, best, kind, feature)
+            If _s.Walls AndAlso AlongWall(i) Then CheckWalls(p, m = BodyMode.Free OrElse (m = BodyMode.Supported AndAlso b.Support(i) >= 0))
             For s = _grid.StaticStart(target) To _grid.StaticStart(target + 1) - 1
-                CheckObstacle(i, _grid.StaticItems(s), px, py, vx, vy, ax, ay, slop, exitTime, best, kind, other, feature)
+                CheckObstacle(p, _grid.StaticItems(s))
             Next
         End If
         Dim c0, c1, r0, r1 As Integer
-        ReachOfPath(i, px, py, vx, vy, ay, r, slop, Math.Min(exitTime, best), c0, c1, r0, r1)
-        ScanCells(i, c0, c1, r0, r1, previous, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
-        If _deferredCount > 0 Then CheckDeferred(i, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
-        If _s.OversizedCount > 0 Then CheckOversized(i, asleep, px, py, vx, vy, ay, r, slop, exitTime, best, kind, other)
-        File(i, best, kind, other, feature, exitTime, exitDir)
+        ReachOfPath(p, Math.Min(p.ExitTime, p.Best), c0, c1, r0, r1)
+        ScanCells(p, c0, c1, r0, r1, previous)
+        If _deferredCount > 0 Then CheckDeferred(p)
+        If _s.OversizedCount > 0 Then CheckOversized(p)
+        File(i, p.Best, p.Kind, p.Other, p.Feature, p.ExitTime, exitDir)
     End Sub
 
     ''' <summary>
-    ''' Body i against the movable bodies in cells col0 … col1 × row0 … row1: in each cell, any
+    ''' The probe's body against the movable bodies in cells col0 … col1 × row0 … row1: in each cell, any
     ''' overflow one by one, then the lanes, four at a time where the processor has 256-bit vectors.
     ''' </summary>
-    Private Sub ScanCells(i As Integer, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, skip As Integer, asleep As Boolean,
-                          px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
-                          ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+    Private Sub ScanCells(ByRef p As Probe, col0 As Integer, col1 As Integer, row0 As Integer, row1 As Integer, skip As Integer)
         Dim grid = _grid
         Dim c0 = Math.Max(0, col0), c1 = Math.Min(grid.Nx - 1, col1)
         Dim r0 = Math.Max(0, row0), r1 = Math.Min(grid.Ny - 1, row1)
@@ -203,17 +208,17 @@ Friend NotInheritable Class Predictor
         End If
         ' A body asleep, not a circle (R = 0: only a circle has a rounding radius), or whose acceleration is
         ' not vertical (sliding down a slope), takes no hot path.
-        Dim slowOnly = asleep OrElse _bodies.Motion(i).Ax <> 0 OrElse _bodies.Motion(i).R = 0
+        Dim slowOnly = p.Asleep OrElse p.Ax <> 0 OrElse p.R = 0
         _deferredCount = 0
         ' The scan is the last call (a tail call: nothing kept across it); the caller then tests what it
         ' deferred, with CheckDeferred.
 #If NET Then
         If VectorScan Then
-            ScanLanesVector(i, c0, c1, r0, r1, skip, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+            ScanLanesVector(p, c0, c1, r0, r1, skip, slowOnly)
             Return
         End If
 #End If
-        ScanBodies(i, c0, c1, r0, r1, skip, True, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+        ScanBodies(p, c0, c1, r0, r1, skip, True, slowOnly)
     End Sub
 
     ''' <summary>A pair the scan leaves to <see cref="CheckPair"/>: tested after the scan, nearest first.</summary>
@@ -231,24 +236,25 @@ Friend NotInheritable Class Predictor
     ''' one is usually the one it meets, and the others then cost a bound each instead of a quartic. Pairs
     ''' of equal bound keep the scan's order, so ties are broken as the scan would.
     ''' </summary>
-    Private Sub CheckDeferred(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
-                              ay As Double, r As Double, slop As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+    Private Sub CheckDeferred(ByRef p As Probe)
         If _deferredCount = 0 Then Return
         Dim b = _bodies
-        Dim ax = b.Motion(i).Ax
+        Dim i = p.Body
+        Dim px = p.Px, py = p.Py, vx = p.Vx, vy = p.Vy, ax = p.Ax, ay = p.Ay
         Dim reachI = b.Size(i).Reach
+        Dim gapSlop = 4 * p.Slop
         Dim now = _s.Now
         Dim n = 0
         For q = 0 To _deferredCount - 1
             Dim j = _deferred(q)
             Dim bound = 0.0
             Dim mj = b.Slot(j).Mode
-            If mj = BodyMode.Sleeping AndAlso asleep Then Continue For ' two sleepers never meet
+            If mj = BodyMode.Sleeping AndAlso p.Asleep Then Continue For ' two sleepers never meet
             If mj = BodyMode.Free OrElse mj = BodyMode.Sleeping OrElse mj = BodyMode.Supported Then
                 Dim xj, yj, vxj, vyj As Double
                 b.Motion(j).StateAt(now, xj, yj, vxj, vyj)
                 Dim dx = px - xj, dy = py - yj
-                Dim gap = Math.Sqrt(dx * dx + dy * dy) - reachI - b.Size(j).Reach - 4 * slop
+                Dim gap = Math.Sqrt(dx * dx + dy * dy) - reachI - b.Size(j).Reach - gapSlop
                 If gap > 0 Then
                     Dim dvx = vx - vxj, dvy = vy - vyj
                     Dim daX = ax - b.Motion(j).Ax, daY = ay - b.Motion(j).Ay
@@ -256,7 +262,7 @@ Friend NotInheritable Class Predictor
                     Dim halfAccel = 0.5 * Math.Sqrt(daX * daX + daY * daY)
                     ' The smaller root of ½|Δa| t² + |Δv| t = gap, shrunk by a part in 10⁶ against rounding.
                     bound = 0.999999 * 2 * gap / (speed + Math.Sqrt(speed * speed + 4 * halfAccel * gap))
-                    If bound >= best Then Continue For
+                    If bound >= p.Best Then Continue For
                 End If
             End If
             _deferred(n) = j
@@ -269,14 +275,14 @@ Friend NotInheritable Class Predictor
             For q = 1 To n - 1
                 If _deferredBound(q) < _deferredBound(pick) Then pick = q
             Next
-            If _deferredBound(pick) >= best Then Exit Do
+            If _deferredBound(pick) >= p.Best Then Exit Do
             Dim j = _deferred(pick)
             For q = pick To n - 2
                 _deferred(q) = _deferred(q + 1)
                 _deferredBound(q) = _deferredBound(q + 1)
             Next
             n -= 1
-            CheckPair(i, j, asleep, px, py, vx, vy, ay, r, slop, best, kind, other)
+            CheckPair(p, j, Double.PositiveInfinity)
         Loop
     End Sub
 
@@ -286,14 +292,16 @@ Friend NotInheritable Class Predictor
     ''' one (the order of the vector scan); without, only the cells' overflow lists.
     ''' <paramref name="slowOnly"/>: the scanning body takes no hot path (asleep, or not falling freely).
     ''' </summary>
-    Private Sub ScanBodies(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, withLanes As Boolean,
-                           slowOnly As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
-                           ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+    Private Sub ScanBodies(ByRef p As Probe, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, withLanes As Boolean,
+                           slowOnly As Boolean)
         Dim grid = _grid
         Dim count = grid.Count, laneBody = grid.LaneBody, nx = grid.Nx, listed = _scanList
         Dim motion = _bodies.Motion, slot = _bodies.Slot
         Dim now = _s.Now
-        Dim asleep = _bodies.Slot(i).Mode = BodyMode.Sleeping
+        ' The probe's numbers in locals, which the loop keeps in registers; a hit is written through.
+        Dim i = p.Body
+        Dim px = p.Px, py = p.Py, vx = p.Vx, vy = p.Vy, ay = p.Ay, r = p.R, slop = p.Slop
+        Dim best = p.Best
         Dim crowded = _crowdedCells, crowdedCount = 0
         For rr = r0 To r1
             For cell = rr * nx + c0 To rr * nx + c1
@@ -345,8 +353,7 @@ Friend NotInheritable Class Predictor
                             Dim hit = (b < 0) And (disc > TimeOfImpact.GrazeFraction * b * b) And (t < best)
                             If hit AndAlso now + t <= slot(j).ColTime Then
                                 best = t
-                                kind = EventKind.Body
-                                other = j
+                                p.OfferBody(t, j)
                             End If
                         End If
                     ElseIf j <> i Then
@@ -357,7 +364,7 @@ Friend NotInheritable Class Predictor
         Next
         For k = 0 To crowdedCount - 1
             Dim row = crowded(k) \ nx, col = crowded(k) - row * nx
-            ScanBodies(i, col, col, row, row, -1, False, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+            ScanBodies(p, col, col, row, row, -1, False, slowOnly)
         Next
     End Sub
 
@@ -369,24 +376,26 @@ Friend NotInheritable Class Predictor
     ''' acceleration, and touching pairs, go to <see cref="CheckPair"/>; a hit earlier than the best
     ''' so far is taken in lane order, as the scalar loop would.
     ''' </summary>
-    Private Sub ScanLanesVector(i As Integer, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, slowOnly As Boolean,
-                                px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
-                                ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+    Private Sub ScanLanesVector(ByRef p As Probe, c0 As Integer, c1 As Integer, r0 As Integer, r1 As Integer, skip As Integer, slowOnly As Boolean)
         Dim grid = _grid
         Dim blocks = grid.Blocks, shift = grid.BlockShift, count = grid.Count, laneBody = grid.LaneBody, overflow = grid.OverflowHead
         Dim nx = grid.Nx
         Dim now = _s.Now
+        Dim i = p.Body
+        Dim ay = p.Ay
         Dim vNow = Vector256.Create(now)
-        Dim vPx = Vector256.Create(px), vPy = Vector256.Create(py)
-        Dim vVx = Vector256.Create(vx), vVy = Vector256.Create(vy)
+        Dim vPx = Vector256.Create(p.Px), vPy = Vector256.Create(p.Py)
+        Dim vVx = Vector256.Create(p.Vx), vVy = Vector256.Create(p.Vy)
         Dim vAy = Vector256.Create(ay), vHalfAy = Vector256.Create(0.5 * ay)
         ' A body that takes no hot path matches no lane: NaN equals nothing.
         Dim vMatch = Vector256.Create(If(slowOnly, Double.NaN, ay))
-        Dim vR = Vector256.Create(r), vTwo = Vector256.Create(2.0), vSlop = Vector256.Create(slop)
+        Dim vR = Vector256.Create(p.R), vTwo = Vector256.Create(2.0), vSlop = Vector256.Create(p.Slop)
         Dim vGraze = Vector256.Create(TimeOfImpact.GrazeFraction)
         Dim vZero = Vector256(Of Double).Zero
         Dim laneIndex = Vector256.Create(0.0, 1.0, 2.0, 3.0)
         Dim vMargin = Vector256.Create(1 + 1.0E-6)
+        ' The best so far in a local, which the loop keeps in a register; a hit is written through.
+        Dim best = p.Best
         Dim bestSeen = best, vInvBest = Vector256.Create(1 / best)
         ' Cells with an overflow are listed and their overflow tested after the lanes: the loop then
         ' calls nothing, so its constants stay in registers.
@@ -443,15 +452,14 @@ Friend NotInheritable Class Predictor
                         If j <> i Then Defer(j)
                     ElseIf t.GetElement(k) < best Then
                         best = t.GetElement(k)
-                        kind = EventKind.Body
-                        other = j
+                        p.OfferBody(best, j)
                     End If
                 End While
             Next
         Next
         For k = 0 To crowdedCount - 1
             Dim rr = crowded(k) \ nx, col = crowded(k) - rr * nx
-            ScanBodies(i, col, col, rr, rr, -1, False, slowOnly, px, py, vx, vy, ay, r, slop, best, kind, other)
+            ScanBodies(p, col, col, rr, rr, -1, False, slowOnly)
         Next
     End Sub
 #End If
@@ -485,18 +493,18 @@ Friend NotInheritable Class Predictor
     End Function
 
     ''' <summary>
-    ''' Body i against the container's walls (the floor and the ceiling only when it is free or slides
+    ''' The probe's body against the container's walls (the floor and the ceiling only when it is free or slides
     ''' on a fixed body: a ramp may end below the point where a ball sliding down it meets the floor;
     ''' one resting on the floor or on a body is held by what it rests on). The
     ''' cells tile the container and are wider than any gridded body, so a gridded body touches a wall
     ''' only from a cell along that wall, and it crosses into one (an event) before it gets there:
     ''' only the walls its own cell lies along are tested, on a prediction and on entering the cell.
     ''' </summary>
-    Private Sub CheckWalls(i As Integer, vertical As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
-                           r As Double, ByRef best As Double, ByRef kind As EventKind, ByRef feature As Integer)
+    Private Sub CheckWalls(ByRef p As Probe, vertical As Boolean)
         Dim b = _bodies
         Dim slot = b.Slot
-        Dim ax = b.Motion(i).Ax
+        Dim i = p.Body
+        Dim px = p.Px, py = p.Py, vx = p.Vx, vy = p.Vy, ax = p.Ax, ay = p.Ay, r = p.R
         Dim all = slot(i).Cell < 0
         Dim col = slot(i).Col, row = slot(i).Row
         Dim atLeft = all OrElse col = 0, atRight = all OrElse col = _grid.Nx - 1
@@ -514,73 +522,63 @@ Friend NotInheritable Class Predictor
         Dim t As Double
         If atLeft Then
             t = TimeOfImpact.GapCloses(px + minX, vx, ax, slop)
-            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Left
+            p.Offer(t, EventKind.Wall, p.Other, WallSide.Left)
         End If
         If atRight Then
             t = TimeOfImpact.GapCloses(_s.Width - maxX - px, -vx, -ax, slop)
-            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Right
+            p.Offer(t, EventKind.Wall, p.Other, WallSide.Right)
         End If
         slop = SolverState.SlopAlong(py)
         If atBottom Then
             t = TimeOfImpact.GapCloses(py + minY, vy, ay, slop)
-            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Bottom
+            p.Offer(t, EventKind.Wall, p.Other, WallSide.Bottom)
         End If
         If atTop Then
             t = TimeOfImpact.GapCloses(_s.Height - maxY - py, -vy, -ay, slop)
-            If t < best Then best = t : kind = EventKind.Wall : feature = WallSide.Top
+            p.Offer(t, EventKind.Wall, p.Other, WallSide.Top)
         End If
     End Sub
 
-    ''' <summary>Body i against obstacle s, looking no further ahead than the best so far or <paramref name="until"/> (s from now).</summary>
-    Private Sub CheckObstacle(i As Integer, s As Integer, px As Double, py As Double, vx As Double, vy As Double, ax As Double, ay As Double,
-                              slop As Double, until As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer, ByRef feature As Integer)
+    ''' <summary>The probe's body against obstacle s, looking no further ahead than the best so far or its next cell exit.</summary>
+    Private Sub CheckObstacle(ByRef p As Probe, s As Integer)
         ' Sliding on a face of a convex body, it can meet that body again only where the face ends,
         ' which is its own event (LeaveSupport).
+        Dim i = p.Body
         If _bodies.Support(i) = s AndAlso _bodies.Slot(i).Mode = BodyMode.Supported Then Return
         Dim f As Integer
-        Dim t = ContactRules.TimeToObstacle(_s, i, s, px, py, vx, vy, ax, ay, slop, Math.Min(best, until), f)
-        If t < best Then best = t : kind = EventKind.Obstacle : other = s : feature = f
+        Dim t = ContactRules.TimeToObstacle(_s, i, s, p.Px, p.Py, p.Vx, p.Vy, p.Ax, p.Ay, p.Slop, Math.Min(p.Best, p.ExitTime), f)
+        p.Offer(t, EventKind.Obstacle, s, f)
     End Sub
 
     ''' <summary>
-    ''' Gridded body i against the bodies too large for the grid, looking only as far ahead as its next
+    ''' The probe's body (gridded) against the bodies too large for the grid, looking only as far ahead as its next
     ''' cell crossing: they are tested again on every crossing, and an oversized body that changes
     ''' course tests every body itself.
     ''' </summary>
-    Private Sub CheckOversized(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
-                               ay As Double, r As Double, slop As Double, until As Double,
-                               ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer)
+    Private Sub CheckOversized(ByRef p As Probe)
         For k = 0 To _s.OversizedCount - 1
-            CheckPair(i, _s.Oversized(k), asleep, px, py, vx, vy, ay, r, slop, best, kind, other, until)
+            CheckPair(p, _s.Oversized(k), p.ExitTime)
         Next
     End Sub
 
-    Private Sub CheckPair(i As Integer, j As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double,
-                          ay As Double, r As Double, slop As Double, ByRef best As Double, ByRef kind As EventKind, ByRef other As Integer,
-                          Optional until As Double = Double.PositiveInfinity)
+    ''' <summary>
+    ''' The probe's body against movable body j, looking no further ahead than the best so far or
+    ''' <paramref name="until"/> (s from now).
+    ''' </summary>
+    Private Sub CheckPair(ByRef p As Probe, j As Integer, until As Double)
         Dim b = _bodies
         Dim mj = b.Slot(j).Mode
         If mj = BodyMode.Rounding Then
-            Dim ts = _slides.TimeToReach(j, i, best)
-            If ts < best Then
-                best = ts
-                kind = EventKind.Body
-                other = j
-            End If
+            p.OfferBody(_slides.TimeToReach(j, p.Body, p.Best), j)
             Return
         End If
-        If asleep AndAlso mj = BodyMode.Sleeping Then Return
+        If p.Asleep AndAlso mj = BodyMode.Sleeping Then Return
         Dim f As Integer
-        Dim t = ContactRules.TimeBetweenBodies(_s, i, j, slop, Math.Min(best, until), f)
-        If t < best Then
-            best = t
-            kind = EventKind.Body
-            other = j
-        End If
+        p.OfferBody(ContactRules.TimeBetweenBodies(_s, p.Body, j, p.Slop, Math.Min(p.Best, until), f), j)
     End Sub
 
     ''' <summary>
-    ''' The cells (columns c0 … c1, rows r0 … r1, within its 3 × 3 block) that a partner touching body i
+    ''' The cells (columns c0 … c1, rows r0 … r1, within its 3 × 3 block) that a partner touching the probe's body
     ''' in the next <paramref name="span"/> seconds could be in. Until it leaves its cell, or meets what it
     ''' has already found, its reference point stays on the stretch of its path that follows; a partner
     ''' touching it there has its reference point within r + r_max of that stretch, so only cells that
@@ -588,11 +586,11 @@ Friend NotInheritable Class Predictor
     ''' needs the cells beyond it. Every pair is still found: of the two bodies, the one that searched
     ''' last searched with both final courses and the other's cell (docs/event-driven.md §4).
     ''' </summary>
-    Private Sub ReachOfPath(i As Integer, px As Double, py As Double, vx As Double, vy As Double, ay As Double, r As Double, slop As Double,
-                            span As Double, ByRef c0 As Integer, ByRef c1 As Integer, ByRef r0 As Integer, ByRef r1 As Integer)
+    Private Sub ReachOfPath(ByRef p As Probe, span As Double, ByRef c0 As Integer, ByRef c1 As Integer, ByRef r0 As Integer, ByRef r1 As Integer)
         Dim slot = _bodies.Slot
         Dim grid = _grid
-        Dim ax = _bodies.Motion(i).Ax
+        Dim i = p.Body
+        Dim px = p.Px, py = p.Py, vx = p.Vx, vy = p.Vy, ax = p.Ax, ay = p.Ay, r = p.R, slop = p.Slop
         Dim col = slot(i).Col, row = slot(i).Row
         c0 = col - 1 : c1 = col + 1 : r0 = row - 1 : r1 = row + 1
         If vx = 0 AndAlso vy = 0 AndAlso ay = 0 AndAlso ax = 0 Then span = 0 ' at rest: its path is a point
@@ -617,14 +615,14 @@ Friend NotInheritable Class Predictor
     ''' it, so if it moves on outwards it leaves at once; otherwise it would never leave, and its
     ''' searches would be centred on the wrong cell.
     ''' </summary>
-    Private Function CellExit(i As Integer, asleep As Boolean, px As Double, py As Double, vx As Double, vy As Double, ay As Double,
-                              ByRef dir As Integer) As Double
+    Private Function CellExit(ByRef p As Probe, ByRef dir As Integer) As Double
         Dim best = Double.PositiveInfinity
         Dim slot = _bodies.Slot
         Dim grid = _grid
-        Dim ax = _bodies.Motion(i).Ax
+        Dim i = p.Body
+        Dim px = p.Px, py = p.Py, vx = p.Vx, vy = p.Vy, ax = p.Ax, ay = p.Ay
         Dim cell = slot(i).Cell
-        If cell < 0 OrElse asleep OrElse (vx = 0 AndAlso vy = 0 AndAlso ay = 0 AndAlso ax = 0) Then Return best
+        If cell < 0 OrElse p.Asleep OrElse (vx = 0 AndAlso vy = 0 AndAlso ay = 0 AndAlso ax = 0) Then Return best
         Dim col = slot(i).Col, row = slot(i).Row
         Dim t As Double
         dir = -1
