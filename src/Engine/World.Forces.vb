@@ -135,21 +135,23 @@ Partial Public NotInheritable Class World
     End Function
 
     ''' <summary>
-    ''' Whether some contact can have friction: the world's μk is above 0 (every wall and every surface without
-    ''' its own has it), or two bodies that are not circles have their own μk above 0 (a contact's μ is the
-    ''' geometric mean of its two surfaces', so one rough surface alone among icy ones rubs nothing).
+    ''' Whether some contact can have friction: a movable body that is not a circle has a rough surface (its own
+    ''' μk, or the world's) and something rough to touch. The walls and every surface without its own μ take the
+    ''' world's, so a world μk above 0 is enough; else another body that is not a circle must have its own μk above
+    ''' 0 (a contact's μ is the geometric mean of its two surfaces', so one rough surface alone among icy ones rubs
+    ''' nothing). Circles take no friction (they would roll) and two fixed bodies never rub, so a world whose
+    ''' movable bodies are all circles has none: the event solver keeps its frictionless path for it.
     ''' </summary>
     Public ReadOnly Property HasFriction As Boolean
         Get
-            If _friction > 0 Then Return True
+            Dim roughMovable = False
             Dim rough = 0
             For Each b In _bodies
-                If b.Kind <> ShapeKind.Circle AndAlso b.Friction.GetValueOrDefault() > 0 Then
-                    rough += 1
-                    If rough >= 2 Then Return True
-                End If
+                If b.Kind = ShapeKind.Circle OrElse Not (KineticFrictionOf(b) > 0) Then Continue For
+                rough += 1
+                If Not b.IsFixed Then roughMovable = True
             Next
-            Return False
+            Return roughMovable AndAlso (_friction > 0 OrElse rough >= 2)
         End Get
     End Property
 

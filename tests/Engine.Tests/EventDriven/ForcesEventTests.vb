@@ -297,6 +297,24 @@ Namespace EventDriven
         End Sub
 
         <Fact>
+        Public Sub ARoughWorld_WhoseMovableBodiesAreAllBalls_HasNoFriction()
+            ' Balls take no friction and two fixed bodies never rub: nothing here can.
+            Dim w = EventWorld(4, 3)
+            w.Friction = 0.5
+            w.Add(New Rectangle(New Vector(1, 0), 1, 0.5, "table"))
+            w.Add(New Segment(New Vector(3, 1), New Vector(4, 1), "ledge"))
+            w.Add(New Circle(New Vector(1.5, 1), 0.1, 1, New Vector(1, 0), "ball"))
+            Assert.False(w.HasFriction)
+            ' A box can rub on the walls and the table.
+            Dim box = Rectangle.CreateMovable(New Vector(3, 0), 0.3, 0.2, 1, New Vector(0, 0), "box")
+            w.Add(box)
+            Assert.True(w.HasFriction)
+            ' Not when its own surface is ice.
+            box.Friction = 0
+            Assert.False(w.HasFriction)
+        End Sub
+
+        <Fact>
         Public Sub BodiesWithoutDrag_InASceneWithDrag_StillFlyTheirParabolas()
             Dim w = EventWorld(20, 20)
             Dim plain As New Circle(New Vector(2, 10), 0.1, 1, New Vector(3, 4), "plain")

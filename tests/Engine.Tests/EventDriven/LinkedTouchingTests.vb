@@ -42,6 +42,38 @@ Namespace EventDriven
             Loop
         End Sub
 
+        ''' <summary>
+        ''' A ball (1 kg, r = 1 cm) at rest on top of a fixed peg (r = 5 cm), g = 9.81, e = 0.5, on a rod to a point below
+        ''' and to its left, and on a string at full length to a point to its right, a little above it. The rod and the
+        ''' string fix the ball's place between them, so the peg's contact seemed implied by them and was not held; but
+        ''' the string would have to push (its tension, with the rod's, to hold the weight is negative), so it let go,
+        ''' and the ball fell on the rod alone into the peg and struck it (in the random scene, bounce after bounce, each
+        ''' 2·10⁻⁹ m deep, past the 10⁻⁹ m of touching, with energy plus dissipated rising). With the string gone the
+        ''' peg's contact is not implied and holds: the ball stays where it is, never struck (the rod carries nothing).
+        ''' </summary>
+        <Fact>
+        Public Sub BallOnARodRestingOnAPeg_WithAStringThatWouldPush_StaysOnThePeg()
+            Dim w As New World(10, 10, 9.81, 0.5)
+            w.Solver = SolverFactory.Create("event")
+            Dim peg = Circle.CreateFixed(New Vector(5, 1), 0.05, "peg")
+            w.Add(peg)
+            Dim start = New Vector(5, 1 + 0.05 + 0.01)
+            Dim ball As New Circle(start, 0.01, 1, Vector.Zero, "ball")
+            w.Add(ball)
+            Dim below = New Vector(4.8, 0.8), right = New Vector(6, 1.2)
+            w.Add(Link.CreateTie(LinkKind.Rod, ball, below, (start - below).Length))
+            w.Add(Link.CreateTie(LinkKind.String, ball, right, (start - right).Length))
+            Dim hits = 0
+            w.CollisionListener = Sub(r) hits += 1
+            Do While w.Time < 0.1
+                w.Advance(0.01)
+                Dim gap = (ball.Position - peg.Position).Length - 0.06
+                Assert.True(gap >= -Press, $"at t = {w.Time} s the ball is {-gap} m deep in the peg")
+                Assert.True(ball.Velocity.Length < 0.000000000001, $"at t = {w.Time} s the ball moves at {ball.Velocity.Length} m/s")
+            Loop
+            Assert.Equal(0, hits)
+        End Sub
+
         ''' <summary>A world 10 m square with a pendulum hanging still at its right, so that it has links.</summary>
         Private Shared Function WithPendulum(restitution As Double) As World
             Dim w = NewWorld("event", restitution)

@@ -134,31 +134,35 @@ Friend NotInheritable Class ConstrainedMotion
             If Not Equals(c.Tag, released) Then held.Add(c)
         Next
         ' A constraint the others already imply is not held (its row would make the solve singular): a rod is
-        ' watched as a slack string is, a contact left to the contact search.
-        Dim independent = IndependentRows(held, y)
-        For Each c In held.Except(independent).ToList()
-            held.Remove(c)
-            If c.Shape = ConstraintShape.Tie Then slack.Add(c) Else watched.Add(c)
-        Next
-        ' A string or contact whose force would be negative with the others holding lets go: the most negative
-        ' first, then look again.
+        ' watched as a slack string is, a contact left to the contact search. A string or contact whose force would
+        ' be negative with the others holding lets go: the most negative first, then look again, at the implied ones
+        ' too: a contact implied by a rod and a string is not once the string has let go (a ball on a rod resting on
+        ' a peg, with a string that would have to push), and must hold, or the ball falls into the peg.
+        Dim candidates As New List(Of Constraint)(held)
         Do
+            Dim independent = IndependentRows(candidates, y)
             Dim d = FreeDerivative(y)
-            Dim lambda = New ConstraintSet(held.ToArray(), _inverseMass).Tensions(y, d)
+            Dim lambda = New ConstraintSet(independent.ToArray(), _inverseMass).Tensions(y, d)
             Dim worst = -1, least = 0.0
-            For i = 0 To held.Count - 1
-                If held(i).Holds Then Continue For
-                Dim w = _inverseMass(held(i).A) + If(held(i).B >= 0, _inverseMass(held(i).B), 0)
+            For i = 0 To independent.Count - 1
+                If independent(i).Holds Then Continue For
+                Dim w = _inverseMass(independent(i).A) + If(independent(i).B >= 0, _inverseMass(independent(i).B), 0)
                 ' λw is the force's share of the ends' relative acceleration, m/s²; rounding of g's size is not a push.
                 Dim pull = lambda(i) * w
                 If pull < least AndAlso pull < -0.000000001 * (gravity + 1) Then least = pull : worst = i
             Next
-            If worst < 0 Then Exit Do
-            Dim letGo = held(worst)
+            If worst < 0 Then
+                For Each c In candidates.Except(independent)
+                    If c.Shape = ConstraintShape.Tie Then slack.Add(c) Else watched.Add(c)
+                Next
+                held = independent
+                Exit Do
+            End If
+            Dim letGo = independent(worst)
             If letGo.Shape = ConstraintShape.Tie Then slack.Add(letGo) Else watched.Add(letGo)
-            held.RemoveAt(worst)
+            candidates.Remove(letGo)
             ' A contact that lets go no longer sticks either.
-            held.RemoveAll(Function(c) c.StuckTo Is letGo)
+            candidates.RemoveAll(Function(c) c.StuckTo Is letGo)
         Loop
         _rows = held.ToArray()
         _held = held.Where(Function(c) c.Shape = ConstraintShape.Tie).Select(Function(c) DirectCast(c.Tag, Link)).ToArray()
