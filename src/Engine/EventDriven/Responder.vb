@@ -278,12 +278,19 @@ Friend NotInheritable Class Responder
         Dim m = b.Motion
         If ai <> vi AndAlso b.Slot(i).Mode <> BodyMode.Dragged AndAlso onFace <> i Then _rest.WakeFrom(i)
         If aj <> vj AndAlso b.Slot(j).Mode <> BodyMode.Dragged AndAlso onFace <> j Then _rest.WakeFrom(j)
-        If b.Slot(i).Mode = BodyMode.Free AndAlso invJ = 0 AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then
+        Dim t As Vector
+        Dim approach = Vector.Dot(vi - vj, n)
+        If b.Slot(i).Mode = BodyMode.Free AndAlso onFace = j AndAlso SlidesOnFixedFace(j, t) Then
+            ' Touched gently, the sliding body is still i's support, though the touch moved it along its face.
+            _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy, before:=vi, slider:=j, tangent:=t, approach:=approach)
+        ElseIf b.Slot(i).Mode = BodyMode.Free AndAlso invJ = 0 AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then
             _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy, before:=vi)
         ElseIf b.Slot(i).Mode = BodyMode.Free Then
             _rest.SleepIfSettled(i)
         End If
-        If b.Slot(j).Mode = BodyMode.Free AndAlso invI = 0 AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then
+        If b.Slot(j).Mode = BodyMode.Free AndAlso onFace = i AndAlso SlidesOnFixedFace(i, t) Then
+            _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy, before:=vj, slider:=i, tangent:=t, approach:=approach)
+        ElseIf b.Slot(j).Mode = BodyMode.Free AndAlso invI = 0 AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then
             _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy, before:=vj)
         ElseIf b.Slot(j).Mode = BodyMode.Free Then
             _rest.SleepIfSettled(j)
