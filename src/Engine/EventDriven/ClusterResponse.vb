@@ -29,6 +29,8 @@ Friend NotInheritable Class ClusterResponse
     Private ReadOnly _supportEdge As New List(Of Integer)
     Private ReadOnly _pairs As New HashSet(Of Long)
     Private ReadOnly _workspace As New ContactClusterWorkspace()
+    ''' <summary>Each body's mechanical energy (J) before the cluster is resolved (see <see cref="CollisionLosses.OpenBooks"/>).</summary>
+    Private _energies As Double() = Array.Empty(Of Double)()
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
     ''' <summary>Per body: the instant (s) it was last resolved in a cluster.</summary>
     Private _clusteredAt As Double() = Array.Empty(Of Double)()
@@ -43,6 +45,9 @@ Friend NotInheritable Class ClusterResponse
     ''' <summary>Resolves every contact of the cluster of touching bodies around body <paramref name="seed"/> at once.</summary>
     Friend Sub Resolve(seed As Integer)
         Gather(seed)
+        ' Every change of energy the cluster makes is counted (see CollisionLosses.OpenBooks): the blow
+        ' itself at e < 1, a second projection, a wedged body stopped, the rest rules that follow.
+        Dim dissipatedBefore = CollisionLosses.OpenBooks(_s, _energies)
         Dim result = ContactCluster.Resolve(_inverseMass, _velocity, _contacts, _s.E, _workspace)
         Dim b = _s.Bodies
         Dim movers = 0
@@ -74,6 +79,7 @@ Friend NotInheritable Class ClusterResponse
         Next
         ApplyRestRules()
         Report(result)
+        CollisionLosses.NoteChange(_s, _energies, dissipatedBefore)
     End Sub
 
     ''' <summary>
