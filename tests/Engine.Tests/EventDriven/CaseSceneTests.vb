@@ -15,6 +15,27 @@ Public Class CaseSceneTests
     ''' is resolved with them as a cluster and left at rest, but for rounding, on c49: the solver did not
     ''' see it fall back onto c49 at once, and it sank into c49 as ½ g t² (1.2 mm by t = 0.05 s).
     ''' </summary>
+    ''' <summary>
+    ''' A 0.24 g ball pushed up into the ceiling by a compressed spring to an 18.7 mg ball on a string (about 2,700 m/s²
+    ''' against the ceiling, sliding along it at 2 m/s): the touch was judged by gravity alone, so every bounce was
+    ''' too fast to last, the ball chattered 10,000 times in 0.2 s and crept 1e-9 m further out with each bounce,
+    ''' 1.5e-6 m out of the container by t = 0.05 s.
+    ''' </summary>
+    <Fact>
+    Public Sub BallPressedIntoTheCeilingByASpring_StaysInside_WithoutChatter()
+        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-spring-presses-ball-into-ceiling.json"))
+        EventSolverTestKit.UseEventSolver(w)
+        Dim hits = 0
+        w.CollisionListener = Sub(r) hits += 1
+        Dim ball = w.Bodies.First(Function(b) b.Id = "c8")
+        For k = 1 To 40
+            w.Advance(0.005)
+            Dim top = ball.Outline.MaxY
+            Assert.True(top <= w.Height + 0.000000001, $"at t = {w.Time} s the ball sticks out of the top by {top - w.Height} m")
+        Next
+        Assert.True(hits < 1000, $"{hits} collisions in 0.2 s")
+    End Sub
+
     <Fact>
     Public Sub BallLeftOnASleeper_FallsOntoIt_NotIntoIt()
         Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-ball-sinks-into-sleeper.json"))

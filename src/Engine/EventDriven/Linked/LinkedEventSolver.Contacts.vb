@@ -54,7 +54,15 @@ Partial Friend NotInheritable Class LinkedEventSolver
         ' energy drag and damping took is settled first).
         For Each g In seeds
             _ledger.Settle(_groups(g), _world, t)
-            _groups(g).Motion = New SnapshotMotion(_groups(g).Motion.Bodies, t)
+            Dim snapped = _groups(g).Motion.Bodies
+            Dim now(4 * snapped.Length - 1) As Double
+            For k = 0 To snapped.Length - 1
+                now(4 * k) = snapped(k).CentreOfMass.X
+                now(4 * k + 1) = snapped(k).CentreOfMass.Y
+                now(4 * k + 2) = snapped(k).Velocity.X
+                now(4 * k + 3) = snapped(k).Velocity.Y
+            Next
+            _groups(g).Motion = New SnapshotMotion(snapped, t, FreeAccelerations(snapped, _groups(g).Links, now))
         Next
         Dim touches As New List(Of Touch)
         Dim seen As New HashSet(Of Long)

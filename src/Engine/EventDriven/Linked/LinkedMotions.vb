@@ -37,6 +37,7 @@ Friend Module LinkedMotions
         Dim l = group.Links(0)
         If OnlySprings(group) Then
             If group.Bodies.Count = 1 AndAlso group.Links.Count = 1 AndAlso SpringMotion.Fits(a, l, g) Then Return New SpringMotion(a, l, time, g)
+            If SpringPairMotion.Fits(group) Then Return New SpringPairMotion(l.A, l.B, group.Links, time, g)
             Return New IntegratedMotion(group.Bodies.ToArray(), group.Links, time, g)
         End If
         If IsChain(group) Then

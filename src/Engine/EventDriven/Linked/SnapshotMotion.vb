@@ -9,12 +9,19 @@ Friend NotInheritable Class SnapshotMotion
 
     Private ReadOnly _p As Vector()
     Private ReadOnly _v As Vector()
+    ' Each body's acceleration now from gravity, springs and the forces (m/s²), or Nothing for none known.
+    Private ReadOnly _a As Vector()
 
-    ''' <summary>The <paramref name="bodies"/>' centres and velocities now.</summary>
-    Friend Sub New(bodies As Shape(), time As Double)
+    ''' <summary>
+    ''' The <paramref name="bodies"/>' centres and velocities now, and their <paramref name="accelerations"/> (m/s²,
+    ''' from gravity, springs and the forces): whether a touch may last depends on how hard the body is pressed,
+    ''' and a spring can press far harder than gravity.
+    ''' </summary>
+    Friend Sub New(bodies As Shape(), time As Double, Optional accelerations As Vector() = Nothing)
         MyBase.New(bodies, time)
         _p = bodies.Select(Function(b) b.CentreOfMass).ToArray()
         _v = bodies.Select(Function(b) b.Velocity).ToArray()
+        _a = accelerations
     End Sub
 
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
@@ -27,6 +34,6 @@ Friend NotInheritable Class SnapshotMotion
     End Function
 
     Friend Overrides Function AccelerationBound(k As Integer, t0 As Double, t1 As Double) As Double
-        Return 0
+        Return If(_a Is Nothing, 0, _a(k).Length)
     End Function
 End Class
