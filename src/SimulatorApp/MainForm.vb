@@ -190,6 +190,8 @@ Partial Friend NotInheritable Class MainForm
         For Each t In SimulationPresenter.Tables
             Dim list As New BufferedListView()
             SetUpTable(list, t.Headers, AddressOf OnRetrieveRow)
+            ' The headers are short (every column shows at once); the tip says what they hold.
+            _kit.Tips.SetToolTip(list, t.Tip)
             AddTab(t.Title, list)
             _tables.Add(list)
         Next
@@ -597,6 +599,7 @@ Partial Friend NotInheritable Class MainForm
         End If
         list.Refresh()
         _logVersion = -1
+        If t >= 0 OrElse list Is _linkList Then TraceColumnEdge(list)
         _trace?.Invoke("tab " & page.Text)
     End Sub
 

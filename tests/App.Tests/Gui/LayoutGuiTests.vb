@@ -253,6 +253,64 @@ Public Class LayoutGuiTests
         End Try
     End Sub
 
+    ''' <summary>
+    ''' On a 1280-px-wide screen with normal fonts, every column of the Bodies table shows without a
+    ''' sideways scroll, the friction columns (μk, μs) at its right end too: the last column's right
+    ''' edge lies within the list's visible width, as the app laid it out for the scene it opened
+    ''' (balls, a fixed ball and a fixed rectangle) and for one with every kind of body but polygons,
+    ''' boxes with their own friction among them, after time has run.
+    ''' </summary>
+    <GuiTheory>
+    <InlineData("1280x800x24", False)>
+    <InlineData("1280x720x24", False)>
+    <InlineData("1280x800x24", True)>
+    <InlineData("1280x720x24", True)>
+    Public Sub TheBodiesTable_ShowsEveryColumn_WithoutASidewaysScroll(screen As String, everyKind As Boolean)
+        Dim folder = IO.Path.Combine(IO.Path.GetTempPath(), "gui-fit-" & Guid.NewGuid().ToString("N"))
+        IO.Directory.CreateDirectory(folder)
+        Dim scene = IO.Path.Combine(folder, "kinds.json")
+        IO.File.WriteAllText(scene, "{""format"":""physics-scene/1"",""world"":{""width"":8,""height"":5,""gravity"":9.81,""friction"":0.25,""static_friction"":0.4},""bodies"":[" &
+            "{""id"":""slope"",""type"":""segment"",""x1"":0.2,""y1"":0.5,""x2"":3.123456,""y2"":1.5}," &
+            "{""id"":""crate"",""type"":""rectangle"",""x"":5,""y"":0,""width"":1.23456,""height"":0.987654,""fixed"":false,""mass"":2.5,""vx"":-1.5,""friction"":0.35}," &
+            "{""id"":""table"",""type"":""rectangle"",""x"":6.5,""y"":0,""width"":1,""height"":0.5,""fixed"":true}," &
+            "{""id"":""peg"",""type"":""circle"",""x"":4,""y"":3,""radius"":0.2,""fixed"":true}," &
+            "{""id"":""ball"",""type"":""circle"",""x"":2,""y"":3,""radius"":0.25,""mass"":1,""vx"":-12.345678}]}")
+        Try
+            Dim args = If(everyKind, {scene}, Array.Empty(Of String)())
+            Using app As New AppDriver(New XSessionOptions With {.Screen = screen}, args)
+                If everyKind Then app.WaitFor("^opened kinds.json: 5 bodies")
+                Dim from = app.Mark()
+                app.Click("tab-bodies")
+                app.WaitFor("^tab Bodies$", skip:=from)
+                app.WaitFor("^row Bodies 4: ", skip:=from)
+                ' Let the values change as time runs (columns only grow): a row is traced again only when it changed.
+                from = app.Mark()
+                app.WaitFor("^row Bodies \d+: ", skip:=from)
+                from = app.Mark()
+                app.Click("tab-circles")
+                app.WaitFor("^tab Circles$", skip:=from)
+                from = app.Mark()
+                app.Click("tab-bodies")
+                app.WaitFor("^tab Bodies$", skip:=from)
+                Dim edge = app.LastMatch("^columns Bodies right (\d+) visible (\d+)$")
+                Dim right = Int(edge.Groups(1).Value), visible = Int(edge.Groups(2).Value)
+                Assert.True(right <= visible, $"the Bodies table's columns end at {right} px, past its visible {visible} px: the last columns need a sideways scroll")
+                Dim widths As New Dictionary(Of Integer, (Width As Integer, Needs As Integer))
+                For Each line In app.Lines()
+                    Dim m = Regex.Match(line, "^column Bodies (\d+) width (\d+) needs (\d+)$")
+                    If m.Success Then widths(Int(m.Groups(1).Value)) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value))
+                Next
+                Assert.Equal(12, widths.Count)
+                For Each kv In widths
+                    Assert.True(kv.Value.Width >= kv.Value.Needs, $"column {kv.Key} of the Bodies table is {kv.Value.Width} px wide; its header and values need {kv.Value.Needs} px")
+                Next
+                app.X.Shoot("bodies-table-" & screen.Replace("x24", "") & If(everyKind, "-kinds", ""))
+            End Using
+        Finally
+            IO.Directory.Delete(folder, True)
+        End Try
+    End Sub
+
     Private Shared Function Int(text As String) As Integer
         Return Integer.Parse(text, CultureInfo.InvariantCulture)
     End Function
