@@ -84,6 +84,9 @@ Partial Friend NotInheritable Class MainForm
         End If
         If contentHeight > _sideView.ClientSize.Height Then contentHeight = ArrangeSide(_sideView.ContentWidthFor(contentHeight), large, line)
         _sideView.SetContentHeight(contentHeight)
+        For Each b In _side.Controls.OfType(Of Button)()
+            _kit.CentreCaption(b)
+        Next
         ' A label's words follow its new width (a long one drops its bracketed part where it would be cut).
         _restitutionLabel.Text = Fitted(_restitutionLabel, _presenter.RestitutionText)
         OrderTabsByPlace()
