@@ -354,6 +354,8 @@ Partial Friend NotInheritable Class MainForm
             If check IsNot Nothing Then _trace("part " & n.Name & " box " & check.BoxSize & " " & check.BoxSize)
             Dim slider = TryCast(c, ScaledSlider)
             If slider IsNot Nothing Then _trace("part " & n.Name & " thumb " & slider.ThumbWidth & " " & slider.ThumbHeight)
+            Dim button = TryCast(c, Button)
+            If button IsNot Nothing Then TraceCaptionHeight(n.Name, button)
         Next
         _trace("text line " & LineHeight(Font) & " px, scroll bar " & _sideView.BarWidth & " px, panel overflow " & _sideView.Overflow & " px, scrolled " & _sideView.Offset & " px")
         ' The tabs' headers, so tests can open a table as a teacher would: "tab-links", "tab-bodies".
@@ -369,6 +371,20 @@ Partial Friend NotInheritable Class MainForm
         Dim v = _presenter.View
         _trace("view scale " & Units.Num(v.Scale, 4) & " origin " & Units.Num(v.OffsetX, 2) & " " & Units.Num(v.OffsetY, 2))
         _trace("ready")
+    End Sub
+
+    ''' <summary>
+    ''' With --trace: the height a button's caption takes as the button places it, and the button's
+    ''' inside ("caption add-circle client 53 padding 1 0 line 44 placed 44"). A caption aligned to
+    ''' the top is placed by the text's measured height; one centred is placed by the font's height
+    ''' as the toolkit reports it, which under Mono at a desktop's Xft.dpi is far more than the text
+    ''' drawn (95 px for a 44-px line), so it lands low and cut in a button only as tall as the text needs.
+    ''' </summary>
+    Private Sub TraceCaptionHeight(name As String, b As Button)
+        Dim line = LineHeight(b.Font)
+        Dim topAligned = b.TextAlign = ContentAlignment.TopCenter OrElse b.TextAlign = ContentAlignment.TopLeft OrElse b.TextAlign = ContentAlignment.TopRight
+        Dim placed = If(topAligned, line, Math.Max(line, b.Font.Height))
+        _trace("caption " & name & " client " & b.ClientSize.Height & " padding " & b.Padding.Top & " " & b.Padding.Bottom & " line " & line & " placed " & placed)
     End Sub
 
     ''' <summary>The controls GUI tests know by name, with their names (see the "control" trace lines).</summary>
@@ -443,9 +459,10 @@ Partial Friend NotInheritable Class MainForm
             x -= S(6)
         Next
         Dim theme = _presenter.Theme
+        ' Their font is the window's, taken from it (a font of their own would be disposed of when large fonts change it).
         For Each b In {_solver, _export, _scenes, _restart, _measure}
-            b.Font = Font
             WindowKit.Style(b, theme)
+            _kit.CentreCaption(b)
         Next
         _graphs.Restyle()
         _forcesPage.Restyle()

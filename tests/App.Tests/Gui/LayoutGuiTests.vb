@@ -32,7 +32,7 @@ Public Class LayoutGuiTests
     ''' <summary>
     ''' The window on the screens a classroom has: small laptops, projectors at 1280 × 800 with large
     ''' fonts and high contrast, 144- and 192-dpi screens. Every control is on the screen, its caption
-    ''' whole, at least as tall as a line of text (a check box's box and a slider's thumb grow with the
+    ''' whole (a button's from side to side and from top to bottom), at least as tall as a line of text (a check box's box and a slider's thumb grow with the
     ''' text too); with normal fonts every control of the side panel shows without scrolling, and with
     ''' large fonts any below the fold is reached with the wheel, in one page at most. Then messages of every length come
     ''' and go while time runs (the totals changing): no control moves by a pixel.
@@ -107,6 +107,7 @@ Public Class LayoutGuiTests
                     Assert.True(w >= 0.45 * line AndAlso h >= 0.6 * line, $"{m.Groups(1).Value}'s thumb is {w} × {h} px, beside text {line} px high")
                 End If
             Next
+            Assert.True(CaptionsWholeTopToBottom(block) >= 20, "the layout names no button captions")
             For i = 0 To panel.Count - 1
                 For j = i + 1 To panel.Count - 1
                     Dim a = panel(i).R, b = panel(j).R
@@ -164,10 +165,40 @@ Public Class LayoutGuiTests
                     Assert.Contains(item.Split(Presentation.Units.Nbsp)(0), TotalsItems)
                 Next
             Next
+            ' The buttons of the Graphs and Forces pages, laid out when their tab opens, are whole from top to bottom too.
+            For Each pageName In {"Graphs", "Forces"}
+                from = app.Mark()
+                app.Click("tab-" & pageName.ToLowerInvariant())
+                app.WaitFor("^tab " & pageName & "$", skip:=from)
+                app.WaitFor("^ready$", skip:=from)
+                Dim all2 = app.Lines()
+                Dim ready2 = Array.LastIndexOf(all2, "ready")
+                Dim previous2 = Array.LastIndexOf(all2, "ready", ready2 - 1)
+                Dim onPage = If(pageName = "Graphs", "graph-window", "forces-set-air")
+                Dim block2 = all2.Skip(previous2 + 1).Take(ready2 - previous2 - 1).ToList()
+                Assert.True(block2.Any(Function(l) l.StartsWith("caption " & onPage & " ", StringComparison.Ordinal)), $"the {pageName} page's buttons were not laid out")
+                CaptionsWholeTopToBottom(block2)
+            Next
             Thread.Sleep(300)
             app.X.Shoot(shotName)
         End Using
     End Sub
+
+    ''' <summary>
+    ''' Every button's caption in a layout is whole from top to bottom: the height it is placed by (the
+    ''' text's when it is aligned to the top, the font's as the toolkit reports it when centred), with the
+    ''' button's padding and its edge (a bevel of 2 px and a focus margin of 1, top and bottom), fits
+    ''' inside the button. Returns how many captions it checked.
+    ''' </summary>
+    Private Shared Function CaptionsWholeTopToBottom(block As IEnumerable(Of String)) As Integer
+        Dim captions = block.Select(Function(l) Regex.Match(l, "^caption (\S+) client (\d+) padding (\d+) (\d+) line (\d+) placed (\d+)$")).Where(Function(x) x.Success).ToList()
+        For Each m In captions
+            Dim client = Int(m.Groups(2).Value), padTop = Int(m.Groups(3).Value), padBottom = Int(m.Groups(4).Value), placed = Int(m.Groups(6).Value)
+            Assert.True(padTop + placed + padBottom + 2 * 3 <= client,
+                        $"{m.Groups(1).Value}'s caption is cut from top to bottom: placed by {placed} px, with padding {padTop} + {padBottom} and its edges, in a button {client} px high")
+        Next
+        Return captions.Count
+    End Function
 
     <GuiFact>
     Public Sub TheSidePanel_StaysWhereItWasScrolled_WhenAToggleIsClicked()
