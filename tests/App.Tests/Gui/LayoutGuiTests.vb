@@ -11,6 +11,8 @@ Public Class LayoutGuiTests
     Private Shared ReadOnly LineBreak As String() = {" / "}
     Private Shared ReadOnly ItemGap As String() = {"     "}
 
+    Private Shared ReadOnly SideTextBoxes As String() = {"friction", "static-friction", "radius", "mass", "rect-width", "rect-height", "sides", "angle", "stiffness", "box-width", "box-height"}
+
     Private Shared ReadOnly Sized As String() = {"canvas", "totals", "tabs", "side", "message", "graph"}
 
     ''' <summary>The rectangles of the last layout the app printed, by control name (table cells left out: they follow the rows).</summary>
@@ -108,6 +110,13 @@ Public Class LayoutGuiTests
                 End If
             Next
             Assert.True(CaptionsWholeTopToBottom(block) >= 20, "the layout names no button captions")
+            ' A text box of the side panel is a line of text and a margin high, no more: the text, written
+            ' at the box's top, then sits in its middle (not at the top of a box twice its height).
+            Dim laidOut = Rects(app)
+            For Each name In SideTextBoxes
+                Dim r = laidOut(name)
+                Assert.True(r.H <= line + line \ 2, $"the {name} box is {r.H} px high for a line of {line} px: its text sits at the top, not in the middle")
+            Next
             For i = 0 To panel.Count - 1
                 For j = i + 1 To panel.Count - 1
                     Dim a = panel(i).R, b = panel(j).R
