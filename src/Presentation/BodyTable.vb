@@ -9,9 +9,10 @@ Public NotInheritable Class BodyTable
     Private ReadOnly _lists As Func(Of Shape, Boolean)
     Private ReadOnly _cells As Func(Of BodyRow, String())
 
-    Private Sub New(title As String, headers As String(), lists As Func(Of Shape, Boolean), cells As Func(Of BodyRow, String()))
+    Private Sub New(title As String, headers As String(), tip As String, lists As Func(Of Shape, Boolean), cells As Func(Of BodyRow, String()))
         Me.Title = title
         Me.Headers = headers
+        Me.Tip = tip
         _lists = lists
         _cells = cells
     End Sub
@@ -20,6 +21,8 @@ Public NotInheritable Class BodyTable
     Public ReadOnly Property Title As String
     ''' <summary>Column headers, with units.</summary>
     Public ReadOnly Property Headers As IReadOnlyList(Of String)
+    ''' <summary>What the columns hold, in words (the headers are kept short so that every column shows at once).</summary>
+    Public ReadOnly Property Tip As String
 
     ''' <summary>Whether this table lists the body.</summary>
     Public Function Lists(body As Shape) As Boolean
@@ -34,6 +37,7 @@ Public NotInheritable Class BodyTable
     ''' <summary>Every circle, movable and fixed.</summary>
     Public Shared ReadOnly Property Circles As New BodyTable("Circles",
         {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Radius (m)", "Density (kg/m²)"},
+        "x, y: the centre (m); vx, vy: the velocity (m/s); a ball takes no friction.",
         Function(b) TypeOf b Is Circle,
         Function(r) {r.Id, ColourCell(r), Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
@@ -43,19 +47,29 @@ Public NotInheritable Class BodyTable
     ''' <summary>Every rectangle (fixed: no velocity, no finite mass). x, y is the lower-left corner.</summary>
     Public Shared ReadOnly Property Rectangles As New BodyTable("Rectangles",
         {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Width × height (m)", "Area (m²)", KineticHeader, StaticHeader},
+        "x, y: the lower-left corner (m); vx, vy: the velocity (m/s). " & FrictionTip,
         Function(b) TypeOf b Is Rectangle,
         Function(r) {r.Id, ColourCell(r), Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
                      If(r.IsFixed, "fixed", Units.Sig(r.Mass)), Units.Sig(r.Size.X) & " × " & Units.Sig(r.Size.Y), Units.Sig(r.Area),
                      KineticCell(r), StaticCell(r)})
 
-    ''' <summary>Every body of every kind, named in its Kind column; x, y is where its mass is centred (a ramp's middle).</summary>
+    ''' <summary>
+    ''' Every body of every kind, named in its Kind column; x, y is where its mass is centred (a ramp's
+    ''' middle). Its headers are short (the speed is |v|), so that all twelve columns show at
+    ''' once on a 1280-px-wide screen; the tip says what x and y are.
+    ''' </summary>
     Public Shared ReadOnly Property Bodies As New BodyTable("Bodies",
-        {"Id", "Colour", "Kind", "Centre x (m)", "Centre y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Size (m)", KineticHeader, StaticHeader},
+        {"Id", "Colour", "Kind", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "|v| (m/s)", "Mass (kg)", "Size (m)", KineticHeader, StaticHeader},
+        "x, y: where the body's mass is centred, a ramp's middle (m); vx, vy: the velocity and |v| the speed (m/s). " & FrictionTip,
         Function(b) True,
         Function(r) {r.Id, ColourCell(r), r.KindLabel, Units.Sig(r.Centre.X), Units.Sig(r.Centre.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
                      If(r.IsFixed, "fixed", Units.Sig(r.Mass)), r.SizeText, KineticCell(r), StaticCell(r)})
+
+    ''' <summary>What the μk and μs columns hold, for the tables' tips.</summary>
+    Public Const FrictionTip As String = "μk, μs: the coefficients of kinetic (sliding) and static friction of the body's surface; " &
+        "(world): it takes the world's, set in the side panel. Double-click a cell to type a value."
 
     ''' <summary>The header of the column of a surface's own μk (no unit: a coefficient).</summary>
     Public Const KineticHeader As String = "μk"

@@ -71,13 +71,14 @@ Public NotInheritable Class CanvasLabelLayout
             End If
         End If
 
-        ' The bodies' ids: inside a ball or a box when they fit there, else round it.
+        ' The bodies' ids: inside a ball or a box when they fit there, else round it. A fixed ball's
+        ' middle holds the cross that marks it fixed: its id goes round it, never over the cross.
         If world.Circles.Count <= MaxLabelledCircles Then
             For Each b In world.Bodies
                 If b.Kind = ShapeKind.Segment OrElse (b.IsFixed AndAlso b.Kind = ShapeKind.Rectangle) Then Continue For
                 Dim box = ScreenBox(b, view, k)
                 Dim size = measure(b.Id)
-                If size.Width < box.Width - 2 AndAlso size.Height < box.Height Then
+                If Not b.IsFixed AndAlso size.Width < box.Width - 2 AndAlso size.Height < box.Height Then
                     Dim inside As New LabelBox(box.X + (box.Width - size.Width) / 2, box.Y + (box.Height - size.Height) / 2, size.Width, size.Height)
                     ' A ball that has flown under the momentum panel, or off the canvas, keeps its id to itself.
                     If (panel > 0 AndAlso inside.Overlaps(panelBox)) OrElse Not inside.IsInside(canvas) Then Continue For

@@ -32,8 +32,8 @@ Friend NotInheritable Class TableEditor
         Dim headers = BodyTable.All(table).Headers
         If column < 0 OrElse column >= headers.Count Then Return TableQuantity.None
         Select Case headers(column)
-            Case "x (m)", "Centre x (m)" : Return TableQuantity.X
-            Case "y (m)", "Centre y (m)" : Return TableQuantity.Y
+            Case "x (m)" : Return TableQuantity.X
+            Case "y (m)" : Return TableQuantity.Y
             Case "vx (m/s)" : Return TableQuantity.Vx
             Case "vy (m/s)" : Return TableQuantity.Vy
             Case "Mass (kg)" : Return TableQuantity.Mass

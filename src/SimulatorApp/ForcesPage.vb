@@ -130,6 +130,9 @@ Friend NotInheritable Class ForcesPage
         For Each c As ColumnHeader In _list.Columns
             c.Width = columnWidth
         Next
+        For Each b In Page.Controls.OfType(Of Button)()
+            _kit.CentreCaption(b)
+        Next
         Return rowsTop + rowsHeight
     End Function
 

@@ -83,11 +83,14 @@ Friend NotInheritable Class GraphsPage
         _window?.Redraw()
     End Sub
 
-    ''' <summary>The page's buttons in the theme's colours and the window's font; the graph's window follows the font.</summary>
+    ''' <summary>
+    ''' The page's buttons in the theme's colours (their font is the window's: they take it from it,
+    ''' never hold a copy a font change would dispose of while the page is laid out); the graph's
+    ''' window follows the font.
+    ''' </summary>
     Public Sub Restyle()
         Dim theme = _kit.Presenter.Theme
         For Each b In _graphButtons.Concat({_windowButton}).Concat(_gasButtons.Select(Function(g) g.Button))
-            b.Font = _kit.Font
             WindowKit.Style(b, theme)
         Next
         If _window IsNot Nothing Then
@@ -142,6 +145,9 @@ Friend NotInheritable Class GraphsPage
         ' The window button at the right end of the row.
         Dim ww = widthOf(_windowButton)
         _windowButton.SetBounds(Math.Max(x + _kit.S(6), w - ww - _kit.S(4)), y, ww, rh)
+        For Each b In Page.Controls.OfType(Of Button)()
+            _kit.CentreCaption(b)
+        Next
         Dim top = y + rh + _kit.S(4)
         _box.SetBounds(0, top, Math.Max(1, w), Math.Max(1, h - top))
         _box.Invalidate()

@@ -84,6 +84,9 @@ Partial Friend NotInheritable Class MainForm
         End If
         If contentHeight > _sideView.ClientSize.Height Then contentHeight = ArrangeSide(_sideView.ContentWidthFor(contentHeight), large, line)
         _sideView.SetContentHeight(contentHeight)
+        For Each b In _side.Controls.OfType(Of Button)()
+            _kit.CentreCaption(b)
+        Next
         ' A label's words follow its new width (a long one drops its bracketed part where it would be cut).
         _restitutionLabel.Text = Fitted(_restitutionLabel, _presenter.RestitutionText)
         OrderTabsByPlace()
@@ -182,9 +185,23 @@ Partial Friend NotInheritable Class MainForm
         Return Measure(sample & "  −00.0", _totals.Font).Width <= width
     End Function
 
-    ''' <summary>Each column as wide as its header, and the spare width shared out, so no header is clipped.</summary>
+    ''' <summary>The margin each column of a list keeps beside its widest text, px (set where its columns were last fitted to the window).</summary>
+    Private ReadOnly _columnMargins As New Dictionary(Of BufferedListView, Integer)
+
+    ''' <summary>
+    ''' Each column as wide as its header and values, and the spare width shared out, so no header is
+    ''' clipped. Where the columns with their usual margin would be wider than the list (the Bodies
+    ''' table's twelve on a 1280-px screen), the margins close up, down to a few pixels, before the
+    ''' list would need a sideways scroll: a teacher sees every column at once.
+    ''' </summary>
     Private Sub FitColumns(list As BufferedListView, available As Integer)
-        Dim widths = NeededColumnWidths(list)
+        Dim margin = S(12)
+        Dim widths = NeededColumnWidths(list, margin)
+        Do While margin > S(6) AndAlso widths.Sum() > available
+            margin -= 1
+            widths = NeededColumnWidths(list, margin)
+        Loop
+        _columnMargins(list) = margin
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
         For i = 0 To widths.Length - 1
             list.Columns(i).Width = widths(i) + spare
@@ -192,20 +209,26 @@ Partial Friend NotInheritable Class MainForm
         TraceColumns(list, widths)
     End Sub
 
+    ''' <summary>The margin beside each column's widest text in <paramref name="list"/>, px.</summary>
+    Private Function ColumnMargin(list As BufferedListView) As Integer
+        Dim margin As Integer
+        Return If(_columnMargins.TryGetValue(list, margin), margin, S(12))
+    End Function
+
     ''' <summary>
     ''' Each column's least width, px: its header, a typical value, and what its rows hold now (a
-    ''' polygon's "12 sides, 1.23×10⁻³ × 0.500"), each with a margin.
+    ''' polygon's "12 sides, 1.23×10⁻³ × 0.500"), each value with <paramref name="margin"/> px beside it.
     ''' </summary>
-    Private Function NeededColumnWidths(list As BufferedListView) As Integer()
+    Private Function NeededColumnWidths(list As BufferedListView, margin As Integer) As Integer()
         Dim widths(list.Columns.Count - 1) As Integer
         Dim rows = ShownCells(list)
         For i = 0 To widths.Length - 1
-            Dim sample = ColumnSample(list.Columns(i).Text, i)
-            Dim widest = Math.Max(Measure(list.Columns(i).Text, list.Font).Width, Measure(sample, list.Font).Width)
+            Dim widest = Measure(ColumnSample(list.Columns(i).Text, i), list.Font).Width
             For Each rowCells In rows
                 If i < rowCells.Length Then widest = Math.Max(widest, Measure(rowCells(i), list.Font).Width)
             Next
-            widths(i) = widest + S(12)
+            ' A header keeps its full margin (Mono and Windows both inset its caption by several pixels); values may close up.
+            widths(i) = Math.Max(Measure(list.Columns(i).Text, list.Font).Width + S(12), widest + margin)
         Next
         Return widths
     End Function
@@ -237,7 +260,7 @@ Partial Friend NotInheritable Class MainForm
         Dim now = _clock.Elapsed.TotalSeconds
         If now - _columnsGrownAt < 0.5 Then Return
         _columnsGrownAt = now
-        Dim widths = NeededColumnWidths(list)
+        Dim widths = NeededColumnWidths(list, ColumnMargin(list))
         Dim grew = False
         For i = 0 To widths.Length - 1
             If list.Columns(i).Width < widths(i) Then
@@ -256,14 +279,38 @@ Partial Friend NotInheritable Class MainForm
         For i = 0 To needs.Length - 1
             _trace("column " & name & " " & i & " width " & list.Columns(i).Width & " needs " & needs(i))
         Next
+        TraceColumnEdge(list)
+    End Sub
+
+    ''' <summary>
+    ''' With --trace: where the last column ends and how wide the list's visible part is, less a
+    ''' vertical scroll bar when its rows need one ("columns Bodies right 812 visible 836"). A right
+    ''' edge past the visible width means the teacher must scroll sideways to see the last columns.
+    ''' </summary>
+    Private Sub TraceColumnEdge(list As BufferedListView)
+        If _trace Is Nothing OrElse Not list.IsHandleCreated Then Return
+        Dim t = _tables.IndexOf(list)
+        Dim name = If(t >= 0, SimulationPresenter.Tables(t).Title, LinkTable.Title)
+        Dim right = 0
+        For Each c As ColumnHeader In list.Columns
+            right += c.Width
+        Next
+        Dim visible = list.ClientSize.Width
+        ' Mono counts the vertical scroll bar inside the client area; Windows does not. Either way the
+        ' columns must end before it when the rows need it.
+        If list.VirtualListSize > 0 AndAlso list.GetItemRect(list.VirtualListSize - 1).Bottom > list.ClientSize.Height Then
+            visible = Math.Min(visible, list.Width - SystemInformation.VerticalScrollBarWidth - 2 * SystemInformation.Border3DSize.Width)
+        End If
+        _trace("columns " & name & " right " & right & " visible " & visible)
     End Sub
 
     ''' <summary>The widest text a table column usually holds, by its header: ids, colours, kinds and ends are words; the rest numbers.</summary>
     Private Shared Function ColumnSample(header As String, index As Integer) As String
         Select Case header
-            Case "Kind" : Return If(index = 1, "spring, k 1000 N/m", "fixed polygon")
+            Case "Kind" : Return If(index = 1, "spring, k 1000 N/m", "rectangle")
             Case "End B" : Return "anchor (0.00, 0.00)"
-            Case "Size (m)" : Return "12 sides, 0.00 × 0.00"
+            ' A body's size in words runs from "r 0.250" to a polygon's "5 sides, 0.800 × 0.761": room is kept for a box's, and a polygon's row widens it.
+            Case "Size (m)" : Return "0.000 × 0.000"
             Case "Colour" : Return "#888888"
         End Select
         Return If(index = 0, "ball00", "−0.000")
@@ -307,6 +354,8 @@ Partial Friend NotInheritable Class MainForm
             If check IsNot Nothing Then _trace("part " & n.Name & " box " & check.BoxSize & " " & check.BoxSize)
             Dim slider = TryCast(c, ScaledSlider)
             If slider IsNot Nothing Then _trace("part " & n.Name & " thumb " & slider.ThumbWidth & " " & slider.ThumbHeight)
+            Dim button = TryCast(c, Button)
+            If button IsNot Nothing Then TraceCaptionHeight(n.Name, button)
         Next
         _trace("text line " & LineHeight(Font) & " px, scroll bar " & _sideView.BarWidth & " px, panel overflow " & _sideView.Overflow & " px, scrolled " & _sideView.Offset & " px")
         ' The tabs' headers, so tests can open a table as a teacher would: "tab-links", "tab-bodies".
@@ -322,6 +371,20 @@ Partial Friend NotInheritable Class MainForm
         Dim v = _presenter.View
         _trace("view scale " & Units.Num(v.Scale, 4) & " origin " & Units.Num(v.OffsetX, 2) & " " & Units.Num(v.OffsetY, 2))
         _trace("ready")
+    End Sub
+
+    ''' <summary>
+    ''' With --trace: the height a button's caption takes as the button places it, and the button's
+    ''' inside ("caption add-circle client 53 padding 1 0 line 44 placed 44"). A caption aligned to
+    ''' the top is placed by the text's measured height; one centred is placed by the font's height
+    ''' as the toolkit reports it, which under Mono at a desktop's Xft.dpi is far more than the text
+    ''' drawn (95 px for a 44-px line), so it lands low and cut in a button only as tall as the text needs.
+    ''' </summary>
+    Private Sub TraceCaptionHeight(name As String, b As Button)
+        Dim line = LineHeight(b.Font)
+        Dim topAligned = b.TextAlign = ContentAlignment.TopCenter OrElse b.TextAlign = ContentAlignment.TopLeft OrElse b.TextAlign = ContentAlignment.TopRight
+        Dim placed = If(topAligned, line, Math.Max(line, b.Font.Height))
+        _trace("caption " & name & " client " & b.ClientSize.Height & " padding " & b.Padding.Top & " " & b.Padding.Bottom & " line " & line & " placed " & placed)
     End Sub
 
     ''' <summary>The controls GUI tests know by name, with their names (see the "control" trace lines).</summary>
@@ -396,9 +459,10 @@ Partial Friend NotInheritable Class MainForm
             x -= S(6)
         Next
         Dim theme = _presenter.Theme
+        ' Their font is the window's, taken from it (a font of their own would be disposed of when large fonts change it).
         For Each b In {_solver, _export, _scenes, _restart, _measure}
-            b.Font = Font
             WindowKit.Style(b, theme)
+            _kit.CentreCaption(b)
         Next
         _graphs.Restyle()
         _forcesPage.Restyle()

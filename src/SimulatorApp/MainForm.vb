@@ -190,6 +190,8 @@ Partial Friend NotInheritable Class MainForm
         For Each t In SimulationPresenter.Tables
             Dim list As New BufferedListView()
             SetUpTable(list, t.Headers, AddressOf OnRetrieveRow)
+            ' The headers are short (every column shows at once); the tip says what they hold.
+            _kit.Tips.SetToolTip(list, t.Tip)
             AddTab(t.Title, list)
             _tables.Add(list)
         Next
@@ -371,14 +373,36 @@ Partial Friend NotInheritable Class MainForm
         _side.Controls.Add(label)
     End Sub
 
+    ''' <summary>The characters a text box of the side panel never keeps (it holds one line).</summary>
+    Private Shared ReadOnly LineBreaks As Char() = {Convert.ToChar(13), Convert.ToChar(10)}
+
     Private Sub AddField(label As Label, text As String, box As TextBox, field As InputField)
         AddLabel(label, text)
         _inputs(field) = box
         ' The layout sets its height: Mono would otherwise size it from the DPI it reports, not the one it draws at.
         box.AutoSize = False
+        ' One line of text, but multiline to the toolkit: Mono keeps a single-line box as tall as the font
+        ' height it reports (under a desktop's Xft.dpi about twice the text drawn) and writes the text at
+        ' its top; a multiline box takes the height the layout gives it, a line of text and a margin, so
+        ' the text sits in its middle. It never wraps, and Enter or a pasted line break adds no line.
+        box.Multiline = True
+        box.WordWrap = False
+        box.AcceptsReturn = False
+        AddHandler box.KeyDown,
+            Sub(s, e)
+                If e.KeyCode = Keys.Enter Then e.SuppressKeyPress = True
+            End Sub
+        AddHandler box.KeyPress,
+            Sub(s, e)
+                If Array.IndexOf(LineBreaks, e.KeyChar) >= 0 Then e.Handled = True
+            End Sub
         ' Every edit goes to the presenter at once, so what was typed is what it knows.
         AddHandler box.TextChanged,
             Sub(s, a)
+                If box.Text.IndexOfAny(LineBreaks) >= 0 Then
+                    box.Text = String.Concat(box.Text.Where(Function(ch) Array.IndexOf(LineBreaks, ch) < 0))
+                    Return
+                End If
                 If _updating Then Return
                 _presenter.InputChanged(field, box.Text)
                 TraceInputs()
@@ -597,6 +621,7 @@ Partial Friend NotInheritable Class MainForm
         End If
         list.Refresh()
         _logVersion = -1
+        If t >= 0 OrElse list Is _linkList Then TraceColumnEdge(list)
         _trace?.Invoke("tab " & page.Text)
     End Sub
 

@@ -50,10 +50,12 @@ Friend NotInheritable Class PanelRows
         For Each item In items
             Dim w = CInt(usable * item.Share)
             If item.Control IsNot Nothing Then
-                ' A text box is as tall as a line of its text and a little, or as Mono insists on making
-                ' it (from the DPI it reports, later, whatever it is given).
+                ' A text box is as tall as a line of its text and a little (a multiline one, as the side
+                ' panel's are, takes that height), or as Mono insists on making a single-line one (from
+                ' the DPI it reports, later, whatever it is given).
                 Dim box = TryCast(item.Control, TextBox)
-                Dim ctlHeight = If(box IsNot Nothing, Math.Min(height, Math.Max(_kit.LineHeight(box.Font) + _kit.S(8), box.PreferredHeight)), height)
+                Dim boxHeight = If(box Is Nothing, height, If(box.Multiline, _kit.LineHeight(box.Font) + _kit.S(6), Math.Max(_kit.LineHeight(box.Font) + _kit.S(8), box.PreferredHeight)))
+                Dim ctlHeight = Math.Min(height, boxHeight)
                 item.Control.SetBounds(x, Y + (height - ctlHeight) \ 2, w, ctlHeight)
                 ' Mono keeps a one-line text box as tall as the DPI it reports asks: the row grows to hold it.
                 If item.Control.Height > height Then

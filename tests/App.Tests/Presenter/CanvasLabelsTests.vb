@@ -89,6 +89,25 @@ Public Class CanvasLabelsTests
         Assert.Contains(CanvasLabelKind.Impulse, kinds)
     End Sub
 
+    ''' <summary>
+    ''' A fixed ball's id is placed beside it, not over the cross in its middle that marks it fixed;
+    ''' a moving ball as big has its id inside it.
+    ''' </summary>
+    <Fact>
+    Public Sub AFixedBallsId_IsBesideIt_NotOverItsCross()
+        Dim h As New PresenterHarness()
+        h.P.World.Add(Circle.CreateFixed(New Vector(4, 1.5), 0.5, "peg"))
+        h.P.World.Add(New Circle(New Vector(2, 3.5), 0.5, 1.0, Vector.Zero, "ball"))
+        Dim labels = h.P.LayOutLabels(AddressOf Measure, 800, 500)
+        Dim peg = Assert.Single(labels, Function(l) l.Text = "peg")
+        Dim pegBox = CanvasLabelLayout.ScreenBox(peg.Body, h.P.View, 1.0)
+        Assert.True(pegBox.Width > 40, $"the fixed ball is only {pegBox.Width} px across: too small to test")
+        Assert.False(peg.Inside, "the fixed ball's id is inside it, over its cross")
+        Assert.False(peg.Box.Overlaps(pegBox), "the fixed ball's id covers the ball")
+        Assert.True(Assert.Single(labels, Function(l) l.Text = "ball").Inside, "the moving ball's id is not inside it")
+        CheckLabels(h, "a fixed and a moving ball")
+    End Sub
+
     <Fact>
     Public Sub ALabelWithNoRoom_IsLeftOut_NotDrawnOverSomething()
         Dim placer As New LabelPlacer(New LabelBox(0, 0, 100, 100))
