@@ -152,10 +152,9 @@ Friend NotInheritable Class Responder
         ' A gentle touch on a body at rest treats it as a support (infinite mass); a real hit wakes it.
         Dim invI = _rest.InverseMassFor(i, j, gentle)
         Dim invJ = _rest.InverseMassFor(j, i, gentle)
-        Dim onFace = -1 ' a body that the blow leaves sliding on its fixed face (see ResolveWithResting)
-        Dim result = If(invI = 0 OrElse invJ = 0, ResolveWithResting(i, j, n, vi, vj, gentle, invI, invJ, onFace),
+        Dim result = If(invI = 0 OrElse invJ = 0, ResolveWithResting(i, j, n, vi, vj, gentle, invI, invJ),
                         Impulse.Resolve(vi, invI, vj, invJ, n, _rest.EffectiveRestitution(i, j)))
-        If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then PartTouching(i, j, n, If(onFace = i, 0, invI), If(onFace = j, 0, invJ))
+        If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then PartTouching(i, j, n, invI, invJ)
         m(i).Vx = result.A.X
         m(i).Vy = result.A.Y
         m(j).Vx = result.B.X
@@ -171,7 +170,7 @@ Friend NotInheritable Class Responder
         End If
         ' Two free bodies, both movable, with no gravity (the elastic gas): no rest rule can apply.
         If b.Slot(i).Mode <> BodyMode.Free OrElse b.Slot(j).Mode <> BodyMode.Free OrElse invI = 0 OrElse invJ = 0 OrElse _s.G <> 0 Then
-            RestAfterHit(i, j, n, vi, vj, result.A, result.B, invI, invJ, onFace)
+            RestAfterHit(i, j, n, vi, vj, result.A, result.B, invI, invJ)
         End If
         If _s.E < 1 Then CollisionLosses.Note(_s, i, vi, j, vj)
         _s.Changed(i)
@@ -183,42 +182,14 @@ Friend NotInheritable Class Responder
     ''' A sleeper alone on level ground, struck from above, is not: the ground takes the vertical part of
     ''' the blow and the body the horizontal part (<see cref="Impulse.ResolveOnLevelGround"/>), so a ball
     ''' dropped on a resting one knocks it sideways and momentum along the ground is kept. Its inverse
-    ''' mass becomes the one the blow meets, n_x²/m, for the rest rules that follow. Nor is a body that
-    ''' still slides on a fixed face (the floor, a face of a fixed body), touched gently: taken as immovable it
-    ''' would be a moving wall, which can give energy. The face takes the part of the blow that presses the body
-    ''' into it, and the body the part along the face (<see cref="Impulse.ResolveOnFace"/>): it stays on its face
-    ''' (<paramref name="onFace"/> names it), with the inverse mass (n·t)²/m along n. A blow that lifts it off
-    ''' its face meets its whole mass. Apart from <see cref="CollideBodies"/>, which runs at every collision,
-    ''' because it is rare.
+    ''' mass becomes the one the blow meets, n_x²/m, for the rest rules that follow. Apart from
+    ''' <see cref="CollideBodies"/>, which runs at every collision, because it is rare.
     ''' </summary>
     <MethodImpl(MethodImplOptions.NoInlining)>
     Private Function ResolveWithResting(i As Integer, j As Integer, n As Vector, vi As Vector, vj As Vector, gentle As Boolean,
-                                        ByRef invI As Double, ByRef invJ As Double, ByRef onFace As Integer) As (A As Vector, B As Vector)
+                                        ByRef invI As Double, ByRef invJ As Double) As (A As Vector, B As Vector)
         Dim b = _bodies
         Dim e = _rest.EffectiveRestitution(i, j)
-        Dim t As Vector
-        If gentle AndAlso invJ = 0 AndAlso invI > 0 AndAlso b.Info(j).InverseMass > 0 AndAlso SlidesOnFixedFace(j, t) Then
-            ' The blow on j is along −n: it presses j into its face when the face's normal has s·n ≥ 0.
-            If Vector.Dot(n, FaceNormal(t)) >= 0 Then
-                onFace = j
-                Dim along = Vector.Dot(n, t)
-                invJ = b.Info(j).InverseMass * along * along
-                Return Impulse.ResolveOnFace(vi, invI, vj, b.Info(j).InverseMass, n, t, e)
-            End If
-            invJ = b.Info(j).InverseMass
-            Return Impulse.Resolve(vi, invI, vj, invJ, n, e)
-        End If
-        If gentle AndAlso invI = 0 AndAlso invJ > 0 AndAlso b.Info(i).InverseMass > 0 AndAlso SlidesOnFixedFace(i, t) Then
-            If Vector.Dot(-n, FaceNormal(t)) >= 0 Then
-                onFace = i
-                Dim along = Vector.Dot(n, t)
-                invI = b.Info(i).InverseMass * along * along
-                Dim swapped = Impulse.ResolveOnFace(vj, invJ, vi, b.Info(i).InverseMass, -n, t, e)
-                Return (swapped.B, swapped.A)
-            End If
-            invI = b.Info(i).InverseMass
-            Return Impulse.Resolve(vi, invI, vj, invJ, n, e)
-        End If
         If Not gentle AndAlso invJ = 0 AndAlso invI > 0 AndAlso n.Y > 0 AndAlso b.Info(j).InverseMass > 0 AndAlso _rest.AloneOnLevelGround(j, i) Then
             invJ = b.Info(j).InverseMass * n.X * n.X
             Return Impulse.ResolveOnLevelGround(vi, invI, vj, b.Info(j).InverseMass, n, e)
@@ -229,27 +200,6 @@ Friend NotInheritable Class Responder
             Return (swapped.B, swapped.A)
         End If
         Return Impulse.Resolve(vi, invI, vj, invJ, n, e)
-    End Function
-
-    ''' <summary>
-    ''' Whether body k rests on a fixed face (the floor, or a face of a fixed body) and slides along it, and
-    ''' the face's unit tangent <paramref name="t"/>: level, (1, 0); sloping, the direction of its acceleration
-    ''' down the face (see RestRules.EnterSlide). A body resting on another body is not: that one may move.
-    ''' </summary>
-    Private Function SlidesOnFixedFace(k As Integer, ByRef t As Vector) As Boolean
-        Dim b = _bodies
-        If b.Slot(k).Mode <> BodyMode.Supported Then Return False
-        Dim support = b.Support(k)
-        If support <> BodyTable.SupportFloor AndAlso support < 0 Then Return False
-        Dim m = b.Motion(k)
-        t = If(m.Ax = 0 AndAlso m.Ay = 0, New Vector(1, 0), New Vector(m.Ax, m.Ay).Normalized(New Vector(1, 0)))
-        Return True
-    End Function
-
-    ''' <summary>The unit normal, pointing up, of a face with unit tangent t that holds a body up.</summary>
-    Private Shared Function FaceNormal(t As Vector) As Vector
-        Dim s = t.Perpendicular()
-        Return If(s.Y < 0, -s, s)
     End Function
 
     ''' <summary>
@@ -268,29 +218,21 @@ Friend NotInheritable Class Responder
     ''' <summary>
     ''' The rest rules after bodies i and j collided along n (towards i), their velocities going from
     ''' vi, vj to ai, aj: whoever moved leaves rest (a body still asleep stays a support); a free body
-    ''' that hit something immovable may come to rest on it; a free body may fall asleep. A body the blow
-    ''' left sliding on its face (<paramref name="onFace"/>) stays on it.
+    ''' that hit something immovable may come to rest on it; a free body may fall asleep.
     ''' </summary>
     <MethodImpl(MethodImplOptions.NoInlining)>
     Private Sub RestAfterHit(i As Integer, j As Integer, n As Vector, vi As Vector, vj As Vector, ai As Vector, aj As Vector,
-                             invI As Double, invJ As Double, onFace As Integer)
+                             invI As Double, invJ As Double)
         Dim b = _bodies
         Dim m = b.Motion
-        If ai <> vi AndAlso b.Slot(i).Mode <> BodyMode.Dragged AndAlso onFace <> i Then _rest.WakeFrom(i)
-        If aj <> vj AndAlso b.Slot(j).Mode <> BodyMode.Dragged AndAlso onFace <> j Then _rest.WakeFrom(j)
-        Dim t As Vector
-        Dim approach = Vector.Dot(vi - vj, n)
-        If b.Slot(i).Mode = BodyMode.Free AndAlso onFace = j AndAlso SlidesOnFixedFace(j, t) Then
-            ' Touched gently, the sliding body is still i's support, though the touch moved it along its face.
-            _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy, before:=vi, slider:=j, tangent:=t, approach:=approach)
-        ElseIf b.Slot(i).Mode = BodyMode.Free AndAlso invJ = 0 AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then
+        If ai <> vi AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then _rest.WakeFrom(i)
+        If aj <> vj AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then _rest.WakeFrom(j)
+        If b.Slot(i).Mode = BodyMode.Free AndAlso invJ = 0 AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then
             _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy, before:=vi)
         ElseIf b.Slot(i).Mode = BodyMode.Free Then
             _rest.SleepIfSettled(i)
         End If
-        If b.Slot(j).Mode = BodyMode.Free AndAlso onFace = i AndAlso SlidesOnFixedFace(i, t) Then
-            _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy, before:=vj, slider:=i, tangent:=t, approach:=approach)
-        ElseIf b.Slot(j).Mode = BodyMode.Free AndAlso invI = 0 AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then
+        If b.Slot(j).Mode = BodyMode.Free AndAlso invI = 0 AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then
             _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy, before:=vj)
         ElseIf b.Slot(j).Mode = BodyMode.Free Then
             _rest.SleepIfSettled(j)

@@ -206,13 +206,9 @@ Friend NotInheritable Class RestRules
     ''' a body at rest, moving at (sx, sy) m/s) with normal n: the resting and sleeping rules that end
     ''' the Zeno series. Speeds are relative to the support. <paramref name="before"/> is the body's velocity
     ''' just before the contact (m/s; Nothing: as now), which a hop down a slope may not exceed in energy.
-    ''' <paramref name="slider"/> names the support when it is a body sliding on a fixed face along unit tangent
-    ''' <paramref name="tangent"/> that the touch moved (see Responder.ResolveWithResting), −1 otherwise, and
-    ''' <paramref name="approach"/> is the pair's normal relative velocity before the touch (m/s, negative).
     ''' </summary>
     Friend Sub AfterSupportContact(i As Integer, n As Vector, support As Integer, edge As Integer, sx As Double, sy As Double,
-                                   Optional curve As CurvedSupport? = Nothing, Optional before As Vector? = Nothing,
-                                   Optional slider As Integer = -1, Optional tangent As Vector = Nothing, Optional approach As Double = 0)
+                                   Optional curve As CurvedSupport? = Nothing, Optional before As Vector? = Nothing)
         If _s.G = 0 OrElse n.Y <= 0 Then Return
         Dim b = _s.Bodies
         Dim r = b.Size(i).Scale
@@ -255,14 +251,11 @@ Friend NotInheritable Class RestRules
         ' Zeno guard: never leave the support slower than restSpeed, so a body sliding down a curved
         ' support hops down it in finitely many events instead of infinitely many. On a support that does
         ' not move, the hop is paid for by the body's own speed or by a move down the slope, never by new
-        ' energy (see HopDownSlope); likewise off a body sliding on a fixed face (see HopOffSlider). On one
-        ' that moves otherwise (a body resting on a body, touched gently, taken as immovable), energy is
-        ' not kept anyway: the hop is given.
+        ' energy (see HopDownSlope). On one that moves (a body resting and sliding, touched gently, taken
+        ' as immovable), energy is not kept anyway: the hop is given.
         If vn < restSpeed Then
             If still Then
                 HopDownSlope(i, n, restSpeed, If(before.HasValue, before.Value, New Vector(rx, ry)))
-            ElseIf slider >= 0 Then
-                HopOffSlider(i, slider, n, tangent, restSpeed, vn, approach)
             Else
                 b.Motion(i).Vx += n.X * (restSpeed - vn)
                 b.Motion(i).Vy += n.Y * (restSpeed - vn)
@@ -290,44 +283,6 @@ Friend NotInheritable Class RestRules
         m(i).Px = p.X + shift.X
         m(i).Py = p.Y + shift.Y
         _s.MoveToCellOfPosition(i)
-    End Sub
-
-    ''' <summary>
-    ''' Body i (at the clock, touching body j, which slides on a fixed face along unit tangent t, along normal n
-    ''' from j towards i) is too slow to leave j: their normal relative speed <paramref name="vn"/> (m/s) is below
-    ''' <paramref name="minimum"/>. It leaves at the minimum by a further push between the two, i along n and j
-    ''' along t, as the touch itself pushed them (Impulse.ResolveOnFace), with no new energy: such a push raising
-    ''' the normal relative speed from w to w' costs ½ μ (w'² − w²), μ = 1/(1/m_i + (n·t)²/m_j). Up to the speed
-    ''' of approach before the touch it costs nothing the touch did not take (a restitution up to 1); the rest
-    ''' is paid by a move of i down the tangent line of the contact, m_i g h = ½ μ (w'² − w²), at most
-    ''' <see cref="MaxSlopeShift"/> of its size and only where it is clear (see <see cref="SlopeHop"/>).
-    ''' </summary>
-    Private Sub HopOffSlider(i As Integer, j As Integer, n As Vector, t As Vector, minimum As Double, vn As Double, approach As Double)
-        Dim b = _s.Bodies
-        Dim invI = b.Info(i).InverseMass, invJ = b.Info(j).InverseMass
-        If invI = 0 Then Return
-        Dim along = Vector.Dot(n, t)
-        Dim mu = 1 / (invI + invJ * along * along) ' kg: the pair's mass along n
-        Dim w = Math.Max(vn, Math.Min(minimum, -approach))
-        Dim slope = Math.Abs(n.X) ' height lost per metre along the tangent line
-        If w < minimum AndAlso slope > 0 Then
-            Dim mass = 1 / invI
-            Dim distance = Math.Min(mu * (minimum * minimum - w * w) / (2 * mass * _s.G * slope), MaxSlopeShift * b.Size(i).Scale)
-            Dim shift = New Vector(n.Y, -n.X) * (Math.Sign(n.X) * distance)
-            Dim p = New Vector(b.Motion(i).Px, b.Motion(i).Py)
-            If IsClear(i, p + shift) Then
-                b.Motion(i).Px = p.X + shift.X
-                b.Motion(i).Py = p.Y + shift.Y
-                _s.MoveToCellOfPosition(i)
-                w = Math.Sqrt(w * w + 2 * mass * _s.G * slope * distance / mu)
-            End If
-        End If
-        If w <= vn Then Return
-        Dim push = mu * (w - vn) ' N·s
-        b.Motion(i).Vx += n.X * push * invI
-        b.Motion(i).Vy += n.Y * push * invI
-        b.Motion(j).Vx -= t.X * push * invJ * along
-        b.Motion(j).Vy -= t.Y * push * invJ * along
     End Sub
 
     ''' <summary>
