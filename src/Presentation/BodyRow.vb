@@ -22,11 +22,11 @@ Public Structure BodyRow
     Public Property Size As Vector
     ''' <summary>m²</summary>
     Public Property Area As Double
-    ''' <summary>What the body is, as the Bodies table names it: "ball", "fixed ball", "rectangle", "box", "ramp", "polygon", "fixed polygon".</summary>
+    ''' <summary>What the body is, as the Bodies table names it: "ball", "fixed ball", "rectangle", "box", "ramp", a polygon by its sides ("triangle", "fixed pentagon", "dodecagon"; "polygon" past twelve).</summary>
     Public Property KindLabel As String
     ''' <summary>Where its mass is centred (a ramp's middle), m.</summary>
     Public Property Centre As Vector
-    ''' <summary>The body's size in words: "r 0.25", "1 × 0.5", "length 2.83", "5 sides, 0.8 × 0.76" (m).</summary>
+    ''' <summary>The body's size in words: "r 0.25", "1 × 0.5", "length 2.83", a polygon's width × height "0.8 × 0.76" (m).</summary>
     Public Property SizeText As String
     ''' <summary>The body's sizes by the names a scene file gives them, m: ("radius", r) for a circle; ("width", w), ("height", h) for a rectangle.</summary>
     Public Property SizeFields As IReadOnlyList(Of (Name As String, Metres As Double))
@@ -86,9 +86,27 @@ Public Structure BodyRow
             Case Else
                 row.Size = body.BoundsMax - body.BoundsMin
                 row.SizeFields = Array.Empty(Of (Name As String, Metres As Double))()
-                row.KindLabel = If(body.IsFixed, "fixed polygon", "polygon")
-                row.SizeText = body.Outline.VertexCount & " sides, " & Units.Sig(row.Size.X) & " × " & Units.Sig(row.Size.Y)
+                ' Its sides in its name ("pentagon"), its size as a box's: the Size column then needs no more room for a polygon than for a box.
+                row.KindLabel = If(body.IsFixed, "fixed ", "") & PolygonName(body.Outline.VertexCount)
+                row.SizeText = Units.Sig(row.Size.X) & " × " & Units.Sig(row.Size.Y)
         End Select
         Return row
+    End Function
+
+    ''' <summary>A polygon's name by its number of sides: "triangle" to "dodecagon", "polygon" past twelve.</summary>
+    Public Shared Function PolygonName(sides As Integer) As String
+        Select Case sides
+            Case 3 : Return "triangle"
+            Case 4 : Return "quadrilateral"
+            Case 5 : Return "pentagon"
+            Case 6 : Return "hexagon"
+            Case 7 : Return "heptagon"
+            Case 8 : Return "octagon"
+            Case 9 : Return "nonagon"
+            Case 10 : Return "decagon"
+            Case 11 : Return "hendecagon"
+            Case 12 : Return "dodecagon"
+        End Select
+        Return "polygon"
     End Function
 End Structure

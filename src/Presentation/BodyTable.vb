@@ -34,10 +34,15 @@ Public NotInheritable Class BodyTable
         Return _cells(row)
     End Function
 
-    ''' <summary>Every circle, movable and fixed.</summary>
+    ''' <summary>
+    ''' Every circle, movable and fixed. Its headers are short (|v| the speed, m the mass, r the radius,
+    ''' ρ the density), so that all ten columns show at once at 192 dpi with large fonts; the tip says
+    ''' what they are.
+    ''' </summary>
     Public Shared ReadOnly Property Circles As New BodyTable("Circles",
-        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Radius (m)", "Density (kg/m²)"},
-        "x, y: the centre (m); vx, vy: the velocity (m/s); a ball takes no friction.",
+        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", SpeedHeader, MassHeader, RadiusHeader, "ρ (kg/m²)"},
+        "x, y: the centre (m); vx, vy: the velocity and |v| the speed (m/s); m: the mass (kg); r: the radius (m); " &
+        "ρ: the density, mass per area (kg/m²). A ball takes no friction.",
         Function(b) TypeOf b Is Circle,
         Function(r) {r.Id, ColourCell(r), Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
@@ -46,8 +51,8 @@ Public NotInheritable Class BodyTable
 
     ''' <summary>Every rectangle (fixed: no velocity, no finite mass). x, y is the lower-left corner.</summary>
     Public Shared ReadOnly Property Rectangles As New BodyTable("Rectangles",
-        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Speed (m/s)", "Mass (kg)", "Width × height (m)", "Area (m²)", KineticHeader, StaticHeader},
-        "x, y: the lower-left corner (m); vx, vy: the velocity (m/s). " & FrictionTip,
+        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", SpeedHeader, MassHeader, "Width × height (m)", "Area (m²)", KineticHeader, StaticHeader},
+        "x, y: the lower-left corner (m); vx, vy: the velocity and |v| the speed (m/s); m: the mass (kg). " & FrictionTip,
         Function(b) TypeOf b Is Rectangle,
         Function(r) {r.Id, ColourCell(r), Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
@@ -56,12 +61,13 @@ Public NotInheritable Class BodyTable
 
     ''' <summary>
     ''' Every body of every kind, named in its Kind column; x, y is where its mass is centred (a ramp's
-    ''' middle). Its headers are short (the speed is |v|), so that all twelve columns show at
-    ''' once on a 1280-px-wide screen; the tip says what x and y are.
+    ''' middle). Its headers are short (|v| the speed, m the mass), so that all twelve columns
+    ''' show at once on a 1280-px-wide screen; the tip says what they are.
     ''' </summary>
     Public Shared ReadOnly Property Bodies As New BodyTable("Bodies",
-        {"Id", "Colour", "Kind", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "|v| (m/s)", "Mass (kg)", "Size (m)", KineticHeader, StaticHeader},
-        "x, y: where the body's mass is centred, a ramp's middle (m); vx, vy: the velocity and |v| the speed (m/s). " & FrictionTip,
+        {"Id", "Colour", "Kind", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", SpeedHeader, MassHeader, "Size (m)", KineticHeader, StaticHeader},
+        "x, y: where the body's mass is centred, a ramp's middle (m); vx, vy: the velocity and |v| the speed (m/s); m: the mass (kg); " &
+        "Size: a ball's radius r, a box's or a polygon's width × height, a ramp's length (m). " & FrictionTip,
         Function(b) True,
         Function(r) {r.Id, ColourCell(r), r.KindLabel, Units.Sig(r.Centre.X), Units.Sig(r.Centre.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
@@ -71,6 +77,12 @@ Public NotInheritable Class BodyTable
     Public Const FrictionTip As String = "μk, μs: the coefficients of kinetic (sliding) and static friction of the body's surface; " &
         "(world): it takes the world's, set in the side panel. Double-click a cell to type a value."
 
+    ''' <summary>The header of the speed's column, m/s (short: every column shows at once).</summary>
+    Public Const SpeedHeader As String = "|v| (m/s)"
+    ''' <summary>The header of the mass's column, kg.</summary>
+    Public Const MassHeader As String = "m (kg)"
+    ''' <summary>The header of a ball's radius's column, m.</summary>
+    Public Const RadiusHeader As String = "r (m)"
     ''' <summary>The header of the column of a surface's own μk (no unit: a coefficient).</summary>
     Public Const KineticHeader As String = "μk"
     ''' <summary>The header of the column of a surface's own μs.</summary>

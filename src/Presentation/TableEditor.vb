@@ -36,8 +36,8 @@ Friend NotInheritable Class TableEditor
             Case "y (m)" : Return TableQuantity.Y
             Case "vx (m/s)" : Return TableQuantity.Vx
             Case "vy (m/s)" : Return TableQuantity.Vy
-            Case "Mass (kg)" : Return TableQuantity.Mass
-            Case "Radius (m)" : Return TableQuantity.Radius
+            Case BodyTable.MassHeader : Return TableQuantity.Mass
+            Case BodyTable.RadiusHeader : Return TableQuantity.Radius
             Case "Width × height (m)", "Size (m)" : Return TableQuantity.Size
             Case BodyTable.KineticHeader : Return TableQuantity.KineticFriction
             Case BodyTable.StaticHeader : Return TableQuantity.StaticFriction

@@ -217,7 +217,7 @@ Partial Friend NotInheritable Class MainForm
 
     ''' <summary>
     ''' Each column's least width, px: its header, a typical value, and what its rows hold now (a
-    ''' polygon's "12 sides, 1.23×10⁻³ × 0.500"), each value with <paramref name="margin"/> px beside it.
+    ''' polygon's "1.23×10⁻³ × 0.500"), each value with <paramref name="margin"/> px beside it.
     ''' </summary>
     Private Function NeededColumnWidths(list As BufferedListView, margin As Integer) As Integer()
         Dim widths(list.Columns.Count - 1) As Integer
@@ -309,11 +309,13 @@ Partial Friend NotInheritable Class MainForm
         Select Case header
             Case "Kind" : Return If(index = 1, "spring, k 1000 N/m", "rectangle")
             Case "End B" : Return "anchor (0.00, 0.00)"
-            ' A body's size in words runs from "r 0.250" to a polygon's "5 sides, 0.800 × 0.761": room is kept for a box's, and a polygon's row widens it.
+            ' A body's size in words runs from "r 0.250" and "length 2.83" to a box's or a polygon's "0.800 × 0.761".
             Case "Size (m)" : Return "0.000 × 0.000"
             Case "Colour" : Return "#888888"
+            ' Only a velocity's components are usually negative: a position in a walled container, a speed, a mass, a size or a density is not (a column grows when one is).
+            Case "vx (m/s)", "vy (m/s)" : Return "−0.000"
         End Select
-        Return If(index = 0, "ball00", "−0.000")
+        Return If(index = 0, "ball00", "0.000")
     End Function
 
     ''' <summary>

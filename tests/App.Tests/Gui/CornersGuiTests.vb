@@ -95,7 +95,7 @@ Public Class CornersGuiTests
             ' The Bodies tab lists it: a 4-sided polygon of 2 kg.
             from = app.Mark()
             app.Click("tab-bodies")
-            app.WaitFor("^row Bodies 0: " & m.Groups(1).Value & " \| #[0-9a-f]{6} \| polygon \| \S+ \| \S+ \| 0 \| 0 \| 0 \| 2.00 \| 4 sides, ", skip:=from)
+            app.WaitFor("^row Bodies 0: " & m.Groups(1).Value & " \| #[0-9a-f]{6} \| quadrilateral \| \S+ \| \S+ \| 0 \| 0 \| 0 \| 2.00 \| \S+ × \S+ \| ", skip:=from)
         End Using
     End Sub
 

@@ -282,9 +282,9 @@ Public Class LayoutGuiTests
                 For Each kv In widths
                     Assert.True(kv.Value.Width >= kv.Value.Needs, $"column {kv.Key} of the Bodies table is {kv.Value.Width} px wide; its header and values need {kv.Value.Needs} px")
                 Next
-                ' The Size column's widest value is the polygon's: "12 sides, 0.0246 × 0.0238" is longer than the typical value it started from.
-                Dim size = app.LastMatch("^row Bodies \d+: dodecagon \| .* \| (12 sides, [^|]+) \| [^|]+ \| [^|]+$").Groups(1).Value
-                Assert.StartsWith("12 sides, ", size, StringComparison.Ordinal)
+                ' The polygon is named by its sides, its Size is its width × height: "0.0246 × 0.0238".
+                Dim size = app.LastMatch("^row Bodies \d+: dodecagon \| #[0-9a-f]{6} \| dodecagon \| .* \| ([^|]+ × [^|]+) \| [^|]+ \| [^|]+$").Groups(1).Value
+                Assert.StartsWith("0.02", size, StringComparison.Ordinal)
                 app.X.Shoot("bodies-table-large")
             End Using
         Finally
@@ -293,57 +293,77 @@ Public Class LayoutGuiTests
     End Sub
 
     ''' <summary>
-    ''' On a 1280-px-wide screen with normal fonts, every column of the Bodies table shows without a
-    ''' sideways scroll, the friction columns (μk, μs) at its right end too: the last column's right
-    ''' edge lies within the list's visible width, as the app laid it out for the scene it opened
-    ''' (balls, a fixed ball and a fixed rectangle) and for one with every kind of body but polygons,
-    ''' boxes with their own friction among them, after time has run.
+    ''' Every column of a table shows without a sideways scroll: the last column's right edge lies
+    ''' within the list's visible width, as the app laid it out for the scene it opened, after time
+    ''' has run. The Bodies table on a 1280-px-wide screen with normal fonts, for the scene the app
+    ''' starts with (balls, a fixed ball and a fixed rectangle), for one with every kind of body but
+    ''' polygons (boxes with their own friction among them, the μk and μs columns at its right end),
+    ''' and for one with a polygon (named by its sides, "pentagon"); the Circles table at 192 dpi with
+    ''' large fonts.
     ''' </summary>
     <GuiTheory>
-    <InlineData("1280x800x24", False)>
-    <InlineData("1280x720x24", False)>
-    <InlineData("1280x800x24", True)>
-    <InlineData("1280x720x24", True)>
-    Public Sub TheBodiesTable_ShowsEveryColumn_WithoutASidewaysScroll(screen As String, everyKind As Boolean)
+    <InlineData("1280x800x24", 0, False, "", "Bodies")>
+    <InlineData("1280x720x24", 0, False, "", "Bodies")>
+    <InlineData("1280x800x24", 0, False, "kinds", "Bodies")>
+    <InlineData("1280x720x24", 0, False, "kinds", "Bodies")>
+    <InlineData("1280x800x24", 0, False, "polygon", "Bodies")>
+    <InlineData("1280x720x24", 0, False, "polygon", "Bodies")>
+    <InlineData("2560x1600x24", 192, True, "", "Circles")>
+    Public Sub TheTable_ShowsEveryColumn_WithoutASidewaysScroll(screen As String, dpi As Integer, large As Boolean, scene As String, table As String)
         Dim folder = IO.Path.Combine(IO.Path.GetTempPath(), "gui-fit-" & Guid.NewGuid().ToString("N"))
         IO.Directory.CreateDirectory(folder)
-        Dim scene = IO.Path.Combine(folder, "kinds.json")
-        IO.File.WriteAllText(scene, "{""format"":""physics-scene/1"",""world"":{""width"":8,""height"":5,""gravity"":9.81,""friction"":0.25,""static_friction"":0.4},""bodies"":[" &
+        Dim file = IO.Path.Combine(folder, "kinds.json")
+        Dim second = If(scene = "polygon",
+            "{""id"":""pentagon"",""type"":""polygon"",""vertices"":[[4.0,3.4],[3.6195,3.1236],[3.7648,2.6764],[4.2352,2.6764],[4.3805,3.1236]],""mass"":1.5,""friction"":0.35}",
+            "{""id"":""crate"",""type"":""rectangle"",""x"":5,""y"":0,""width"":1.23456,""height"":0.987654,""fixed"":false,""mass"":2.5,""vx"":-1.5,""friction"":0.35}")
+        IO.File.WriteAllText(file, "{""format"":""physics-scene/1"",""world"":{""width"":8,""height"":5,""gravity"":9.81,""friction"":0.25,""static_friction"":0.4},""bodies"":[" &
             "{""id"":""slope"",""type"":""segment"",""x1"":0.2,""y1"":0.5,""x2"":3.123456,""y2"":1.5}," &
-            "{""id"":""crate"",""type"":""rectangle"",""x"":5,""y"":0,""width"":1.23456,""height"":0.987654,""fixed"":false,""mass"":2.5,""vx"":-1.5,""friction"":0.35}," &
+            second & "," &
             "{""id"":""table"",""type"":""rectangle"",""x"":6.5,""y"":0,""width"":1,""height"":0.5,""fixed"":true}," &
-            "{""id"":""peg"",""type"":""circle"",""x"":4,""y"":3,""radius"":0.2,""fixed"":true}," &
+            "{""id"":""peg"",""type"":""circle"",""x"":6,""y"":3,""radius"":0.2,""fixed"":true}," &
             "{""id"":""ball"",""type"":""circle"",""x"":2,""y"":3,""radius"":0.25,""mass"":1,""vx"":-12.345678}]}")
         Try
-            Dim args = If(everyKind, {scene}, Array.Empty(Of String)())
-            Using app As New AppDriver(New XSessionOptions With {.Screen = screen}, args)
-                If everyKind Then app.WaitFor("^opened kinds.json: 5 bodies")
+            Dim args = If(scene = "", Array.Empty(Of String)(), {file})
+            Using app As New AppDriver(New XSessionOptions With {.Screen = screen, .Dpi = dpi}, args)
+                If scene <> "" Then app.WaitFor("^opened kinds.json: 5 bodies")
                 Dim from = app.Mark()
-                app.Click("tab-bodies")
-                app.WaitFor("^tab Bodies$", skip:=from)
-                app.WaitFor("^row Bodies 4: ", skip:=from)
+                If large Then
+                    app.Click("large-fonts")
+                    app.WaitFor("^large fonts on$", skip:=from)
+                    app.WaitFor("^ready$", skip:=from)
+                    from = app.Mark()
+                End If
+                ' Another tab first: the window may open on this table, and choosing it again does nothing.
+                Const other = "Links"
+                app.Click("tab-" & other.ToLowerInvariant())
+                app.WaitFor("^tab " & other & "$", skip:=from)
+                from = app.Mark()
+                app.Click("tab-" & table.ToLowerInvariant())
+                app.WaitFor("^tab " & table & "$", skip:=from)
+                app.WaitFor("^row " & table & " 1: ", skip:=from)
                 ' Let the values change as time runs (columns only grow): a row is traced again only when it changed.
                 from = app.Mark()
-                app.WaitFor("^row Bodies \d+: ", skip:=from)
+                app.WaitFor("^row " & table & " \d+: ", skip:=from)
                 from = app.Mark()
-                app.Click("tab-circles")
-                app.WaitFor("^tab Circles$", skip:=from)
+                app.Click("tab-" & other.ToLowerInvariant())
+                app.WaitFor("^tab " & other & "$", skip:=from)
                 from = app.Mark()
-                app.Click("tab-bodies")
-                app.WaitFor("^tab Bodies$", skip:=from)
-                Dim edge = app.LastMatch("^columns Bodies right (\d+) visible (\d+)$")
+                app.Click("tab-" & table.ToLowerInvariant())
+                app.WaitFor("^tab " & table & "$", skip:=from)
+                Dim edge = app.LastMatch("^columns " & table & " right (\d+) visible (\d+)$")
                 Dim right = Int(edge.Groups(1).Value), visible = Int(edge.Groups(2).Value)
-                Assert.True(right <= visible, $"the Bodies table's columns end at {right} px, past its visible {visible} px: the last columns need a sideways scroll")
+                Assert.True(right <= visible, $"the {table} table's columns end at {right} px, past its visible {visible} px: the last columns need a sideways scroll")
                 Dim widths As New Dictionary(Of Integer, (Width As Integer, Needs As Integer))
                 For Each line In app.Lines()
-                    Dim m = Regex.Match(line, "^column Bodies (\d+) width (\d+) needs (\d+)$")
+                    Dim m = Regex.Match(line, "^column " & table & " (\d+) width (\d+) needs (\d+)$")
                     If m.Success Then widths(Int(m.Groups(1).Value)) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value))
                 Next
-                Assert.Equal(12, widths.Count)
+                Assert.Equal(If(table = "Bodies", 12, 10), widths.Count)
                 For Each kv In widths
-                    Assert.True(kv.Value.Width >= kv.Value.Needs, $"column {kv.Key} of the Bodies table is {kv.Value.Width} px wide; its header and values need {kv.Value.Needs} px")
+                    Assert.True(kv.Value.Width >= kv.Value.Needs, $"column {kv.Key} of the {table} table is {kv.Value.Width} px wide; its header and values need {kv.Value.Needs} px")
                 Next
-                app.X.Shoot("bodies-table-" & screen.Replace("x24", "") & If(everyKind, "-kinds", ""))
+                If scene = "polygon" Then app.LastMatch("^row Bodies \d+: pentagon \| #[0-9a-f]{6} \| pentagon \| ")
+                app.X.Shoot(table.ToLowerInvariant() & "-table-" & screen.Replace("x24", "") & If(dpi > 0, "-" & dpi & "dpi", "") & If(large, "-large", "") & If(scene = "", "", "-" & scene))
             End Using
         Finally
             IO.Directory.Delete(folder, True)

@@ -68,7 +68,7 @@ Public Class ShapesGuiTests
             ' The Bodies tab lists it with its kind, centre, mass and size.
             from = app.Mark()
             app.Click("tab-bodies")
-            app.WaitFor("^row Bodies 0: " & m.Groups(1).Value & " \| #[0-9a-f]{6} \| polygon \| 4.00 \| 2.50 \| 0 \| 0 \| 0 \| 2.00 \| 6 sides, ", skip:=from)
+            app.WaitFor("^row Bodies 0: " & m.Groups(1).Value & " \| #[0-9a-f]{6} \| hexagon \| 4.00 \| 2.50 \| 0 \| 0 \| 0 \| 2.00 \| \S+ × \S+ \| ", skip:=from)
             Thread.Sleep(300)
             app.X.Shoot("shapes-polygon-table")
         End Using

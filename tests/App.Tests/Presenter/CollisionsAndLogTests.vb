@@ -101,8 +101,8 @@ Public Class CollisionsAndLogTests
 
     <Fact>
     Public Sub Tables_ShowEveryColumnWithUnits_InSignificantFigures()
-        Assert.Contains("Speed (m/s)", BodyTable.Circles.Headers)
-        Assert.Contains("Density (kg/m²)", BodyTable.Circles.Headers)
+        Assert.Contains("|v| (m/s)", BodyTable.Circles.Headers)
+        Assert.Contains("ρ (kg/m²)", BodyTable.Circles.Headers)
         Dim c As New Circle(New Vector(1, 2), 0.5, 2, New Vector(3, 4), "b1") With {.Color = "#123456"}
         Dim row = BodyTable.Circles.Cells(BodyRow.Capture(c))
         Assert.Equal("b1|#123456|1.00|2.00|3.00|4.00|5.00|2.00|0.500|2.55", String.Join("|", row))

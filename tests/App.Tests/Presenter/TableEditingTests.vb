@@ -7,7 +7,7 @@ Public Class TableEditingTests
     Private Const CirclesTable As Integer = 0
     Private Const RectanglesTable As Integer = 1
     Private Const BodiesTable As Integer = 2
-    Private Shared ReadOnly EditableCircleHeaders As String() = {"x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "Mass (kg)", "Radius (m)"}
+    Private Shared ReadOnly EditableCircleHeaders As String() = {"x (m)", "y (m)", "vx (m/s)", "vy (m/s)", "m (kg)", "r (m)"}
 
     Private Shared Function TwoBalls() As PresenterHarness
         Dim h As New PresenterHarness(New World(8, 5, 0.0, 1.0))
