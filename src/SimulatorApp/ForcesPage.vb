@@ -17,12 +17,12 @@ Friend NotInheritable Class ForcesPage
 
     Private ReadOnly _kit As WindowKit
     Private ReadOnly _traced As Action(Of String, String())
-    Private ReadOnly _show As New CheckBox With {.Text = "Draw the forces on the canvas", .UseMnemonic = False}
+    Private ReadOnly _show As New ScaledCheckBox With {.Text = "Draw the forces on the canvas", .UseMnemonic = False}
     Private ReadOnly _bodyLabel As New Label With {.Text = "Body", .UseMnemonic = False, .TextAlign = ContentAlignment.MiddleLeft}
-    Private ReadOnly _body As New ComboBox With {.DropDownStyle = ComboBoxStyle.DropDownList}
+    Private ReadOnly _body As New OneLineComboBox()
     Private ReadOnly _list As New ListView With {.View = View.Details, .FullRowSelect = True, .GridLines = True}
     Private ReadOnly _sum As New Label With {.UseMnemonic = False, .TextAlign = ContentAlignment.MiddleLeft}
-    Private ReadOnly _air As New CheckBox With {.Text = "Air", .UseMnemonic = False}
+    Private ReadOnly _air As New ScaledCheckBox With {.Text = "Air", .UseMnemonic = False}
     Private ReadOnly _densityLabel As New Label With {.Text = "ρ (kg/m²)", .UseMnemonic = False, .TextAlign = ContentAlignment.MiddleLeft}
     Private ReadOnly _density As New TextBox With {.Text = Units.Input(SimulationPresenter.DefaultAirDensity)}
     Private ReadOnly _setAir As New Button With {.Text = "Set air", .UseMnemonic = False}
@@ -43,6 +43,12 @@ Friend NotInheritable Class ForcesPage
     Public Sub New(kit As WindowKit, traced As Action(Of String, String()))
         _kit = kit
         _traced = traced
+        ' Check boxes whose box, and text boxes and a drop-down whose height, grow with the text, as the side panel's.
+        _show.ScreenScale = kit.Dpi.Scale
+        _air.ScreenScale = kit.Dpi.Scale
+        For Each box In {_density, _cd, _b}
+            WindowKit.KeepToOneLine(box)
+        Next
         For Each h In FreeBodyView.Headers
             _list.Columns.Add(h, 100)
         Next
@@ -114,7 +120,11 @@ Friend NotInheritable Class ForcesPage
             y += rh + _kit.S(4)
         End If
         _bodyLabel.SetBounds(bodyX, y + oy, labelWidth, rh)
-        _body.SetBounds(bodyX + labelWidth, y + oy, Math.Max(_kit.S(120), Math.Min(_kit.S(220), w - bodyX - labelWidth - _kit.S(4))), rh)
+        ' The drop-down a line of text and a margin high, in the middle of its row; its items a line high.
+        Dim itemHeight = _kit.LineHeight(_kit.Font) + _kit.S(4)
+        If _body.ItemHeight <> itemHeight Then _body.ItemHeight = itemHeight
+        Dim boxHeight = Math.Min(rh, _kit.OneLineHeight(_kit.Font))
+        _body.SetBounds(bodyX + labelWidth, y + (rh - boxHeight) \ 2 + oy, Math.Max(_kit.S(120), Math.Min(_kit.S(220), w - bodyX - labelWidth - _kit.S(4))), boxHeight)
         Dim top = y + rh + _kit.S(4)
         Dim sumHeight = _kit.LineHeight(_kit.Font) + _kit.S(6)
         ' The air and drag rows, laid out from the top to learn their height, then moved to the bottom; the list
@@ -163,7 +173,9 @@ Friend NotInheritable Class ForcesPage
                     px = left
                     y += rh + gap
                 End If
-                pieces(i).SetBounds(px, y, widths(i), rh)
+                ' A text box is a line of text and a margin high, in the middle of the row.
+                Dim h = If(TypeOf pieces(i) Is TextBox, Math.Min(rh, _kit.OneLineHeight(_kit.Font)), rh)
+                pieces(i).SetBounds(px, y + (rh - h) \ 2, widths(i), h)
                 px += widths(i) + gap
             Next
         Next

@@ -373,37 +373,17 @@ Partial Friend NotInheritable Class MainForm
         _side.Controls.Add(label)
     End Sub
 
-    ''' <summary>The characters a text box of the side panel never keeps (it holds one line).</summary>
-    Private Shared ReadOnly LineBreaks As Char() = {Convert.ToChar(13), Convert.ToChar(10)}
-
     Private Sub AddField(label As Label, text As String, box As TextBox, field As InputField)
         AddLabel(label, text)
         _inputs(field) = box
-        ' The layout sets its height: Mono would otherwise size it from the DPI it reports, not the one it draws at.
-        box.AutoSize = False
-        ' One line of text, but multiline to the toolkit: Mono keeps a single-line box as tall as the font
-        ' height it reports (under a desktop's Xft.dpi about twice the text drawn) and writes the text at
-        ' its top; a multiline box takes the height the layout gives it, a line of text and a margin, so
-        ' the text sits in its middle. It never wraps, and Enter or a pasted line break adds no line.
-        box.Multiline = True
-        box.WordWrap = False
-        box.AcceptsReturn = False
-        AddHandler box.KeyDown,
-            Sub(s, e)
-                If e.KeyCode = Keys.Enter Then e.SuppressKeyPress = True
-            End Sub
-        AddHandler box.KeyPress,
-            Sub(s, e)
-                If Array.IndexOf(LineBreaks, e.KeyChar) >= 0 Then e.Handled = True
-            End Sub
+        ' One line as tall as the layout makes it (a line of text and a margin), the text in its middle:
+        ' Mono would otherwise size it from the DPI it reports, not the one it draws at.
+        WindowKit.KeepToOneLine(box)
         ' Every edit goes to the presenter at once, so what was typed is what it knows.
         AddHandler box.TextChanged,
             Sub(s, a)
-                If box.Text.IndexOfAny(LineBreaks) >= 0 Then
-                    box.Text = String.Concat(box.Text.Where(Function(ch) Array.IndexOf(LineBreaks, ch) < 0))
-                    Return
-                End If
-                If _updating Then Return
+                ' A pasted line break is taken out first (the box then changes again, without it).
+                If box.Text.Contains(vbCr) OrElse box.Text.Contains(vbLf) OrElse _updating Then Return
                 _presenter.InputChanged(field, box.Text)
                 TraceInputs()
             End Sub
@@ -600,7 +580,9 @@ Partial Friend NotInheritable Class MainForm
         Dim page = _tabs.SelectedTab
         If page Is Nothing OrElse page.Controls.Count = 0 Then Return
         Dim list = TryCast(page.Controls(0), BufferedListView)
-        If list Is Nothing Then ' the Graphs tab
+        If list Is Nothing Then ' the Graphs and Forces tabs
+            ' Mono sizes a text box again when its page first shows (from the font height it reports): the Forces page is laid out again then.
+            If page Is _forcesPage.Page Then _forcesPage.Arrange()
             _trace?.Invoke("tab " & page.Text)
             TraceLayout()
             Return

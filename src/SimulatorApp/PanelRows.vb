@@ -54,7 +54,7 @@ Friend NotInheritable Class PanelRows
                 ' panel's are, takes that height), or as Mono insists on making a single-line one (from
                 ' the DPI it reports, later, whatever it is given).
                 Dim box = TryCast(item.Control, TextBox)
-                Dim boxHeight = If(box Is Nothing, height, If(box.Multiline, _kit.LineHeight(box.Font) + _kit.S(6), Math.Max(_kit.LineHeight(box.Font) + _kit.S(8), box.PreferredHeight)))
+                Dim boxHeight = If(box Is Nothing, height, If(box.Multiline, _kit.OneLineHeight(box.Font), Math.Max(_kit.LineHeight(box.Font) + _kit.S(8), box.PreferredHeight)))
                 Dim ctlHeight = Math.Min(height, boxHeight)
                 item.Control.SetBounds(x, Y + (height - ctlHeight) \ 2, w, ctlHeight)
                 ' Mono keeps a one-line text box as tall as the DPI it reports asks: the row grows to hold it.

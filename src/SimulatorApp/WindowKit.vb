@@ -110,6 +110,41 @@ Friend NotInheritable Class WindowKit
         If b.Padding.Top <> top Then b.Padding = New Padding(0, top, 0, 0)
     End Sub
 
+    ''' <summary>The characters a one-line text box never keeps.</summary>
+    Private Shared ReadOnly LineBreaks As Char() = {Convert.ToChar(13), Convert.ToChar(10)}
+
+    ''' <summary>
+    ''' Makes <paramref name="box"/> a box of one line that takes the height the layout gives it (see
+    ''' <see cref="OneLineHeight"/>), its text in its middle at every DPI. It is multiline to the toolkit:
+    ''' Mono keeps a single-line box as tall as the font height it reports (under a desktop's Xft.dpi
+    ''' about twice the text drawn) and writes the text at its top; a multiline box takes the height it is
+    ''' given. It never wraps, and Enter or a pasted line break adds no line.
+    ''' </summary>
+    Public Shared Sub KeepToOneLine(box As TextBox)
+        If box Is Nothing Then Throw New ArgumentNullException(NameOf(box))
+        box.AutoSize = False
+        box.Multiline = True
+        box.WordWrap = False
+        box.AcceptsReturn = False
+        AddHandler box.KeyDown,
+            Sub(s, e)
+                If e.KeyCode = Keys.Enter Then e.SuppressKeyPress = True
+            End Sub
+        AddHandler box.KeyPress,
+            Sub(s, e)
+                If Array.IndexOf(LineBreaks, e.KeyChar) >= 0 Then e.Handled = True
+            End Sub
+        AddHandler box.TextChanged,
+            Sub(s, e)
+                If box.Text.IndexOfAny(LineBreaks) >= 0 Then box.Text = String.Concat(box.Text.Where(Function(ch) Array.IndexOf(LineBreaks, ch) < 0))
+            End Sub
+    End Sub
+
+    ''' <summary>The height of a one-line text box or drop-down in <paramref name="font"/>: a line of text and a margin, px.</summary>
+    Public Function OneLineHeight(font As Font) As Integer
+        Return LineHeight(font) + S(6)
+    End Function
+
     ''' <summary>A button in the theme's colours (flat with a thick edge in high contrast).</summary>
     Public Shared Sub Style(b As Button, theme As Theme)
         If b Is Nothing Then Throw New ArgumentNullException(NameOf(b))

@@ -187,6 +187,7 @@ Public Class LayoutGuiTests
                 Dim block2 = all2.Skip(previous2 + 1).Take(ready2 - previous2 - 1).ToList()
                 Assert.True(block2.Any(Function(l) l.StartsWith("caption " & onPage & " ", StringComparison.Ordinal)), $"the {pageName} page's buttons were not laid out")
                 CaptionsWholeTopToBottom(block2)
+                If pageName = "Forces" Then ForcesPageScalesWithTheText(block2, line)
             Next
             Thread.Sleep(300)
             app.X.Shoot(shotName)
@@ -208,6 +209,40 @@ Public Class LayoutGuiTests
         Next
         Return captions.Count
     End Function
+
+    ''' <summary>The text boxes and the body's drop-down of the Forces page, as the side panel's: a line of text and a margin high.</summary>
+    Private Shared ReadOnly ForcesBoxes As String() = {"forces-air-density", "forces-cd", "forces-b", "forces-body"}
+
+    ''' <summary>
+    ''' The Forces page's controls in a layout grow with the text as the side panel's do: each at least
+    ''' a line of text high, its two check boxes' boxes as large as the side panel's (not the toolkit's
+    ''' 13 px at every DPI), and its text boxes and drop-down a line and a margin high (at most one and
+    ''' a half lines: the text in their middle, not at the top of a box twice as tall).
+    ''' </summary>
+    Private Shared Sub ForcesPageScalesWithTheText(block As IEnumerable(Of String), line As Integer)
+        Dim rects As New Dictionary(Of String, (W As Integer, H As Integer))(StringComparer.Ordinal)
+        Dim boxes As New Dictionary(Of String, Integer)(StringComparer.Ordinal)
+        For Each l In block
+            Dim m = Regex.Match(l, "^control (forces-\S+) -?\d+ -?\d+ (\d+) (\d+) (fits|cut)$")
+            If m.Success Then rects(m.Groups(1).Value) = (Int(m.Groups(2).Value), Int(m.Groups(3).Value))
+            m = Regex.Match(l, "^part (forces-\S+) box (\d+) \d+$")
+            If m.Success Then boxes(m.Groups(1).Value) = Int(m.Groups(2).Value)
+        Next
+        Assert.True(rects.Count >= 10, "the layout names no controls of the Forces page")
+        For Each kv In rects
+            If kv.Key = "forces-list" OrElse kv.Key = "forces-sum" Then Continue For
+            Assert.True(kv.Value.H >= line, $"{kv.Key} is {kv.Value.H} px high, less than a line of text ({line} px)")
+        Next
+        For Each name In {"forces-show", "forces-air"}
+            Dim side As Integer
+            Assert.True(boxes.TryGetValue(name, side), $"{name}'s box is the toolkit's, drawn 13 px square at every DPI, beside text {line} px high")
+            Assert.True(side >= 0.6 * line, $"{name}'s box is {side} px, beside text {line} px high")
+        Next
+        For Each name In ForcesBoxes
+            Dim r = rects(name)
+            Assert.True(r.H <= line + line \ 2, $"the {name} box is {r.H} px high for a line of {line} px: its text sits at the top, not in the middle")
+        Next
+    End Sub
 
     <GuiFact>
     Public Sub TheSidePanel_StaysWhereItWasScrolled_WhenAToggleIsClicked()
