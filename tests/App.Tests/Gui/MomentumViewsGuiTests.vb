@@ -199,7 +199,7 @@ Public Class MomentumViewsGuiTests
             from = app.Mark()
             app.MoveTo(massCell.X + massCell.W \ 2, massCell.Y + massCell.H \ 2)
             app.X.XDo("click", "--repeat", "2", "--delay", "80", "1")
-            app.WaitFor("^edit open Circles 0 Mass \(kg\) \[2\]", skip:=from)
+            app.WaitFor("^edit open Circles 0 m \(kg\) \[2\]", skip:=from)
             app.X.XDo("key", "ctrl+a")
             app.TypeAndEnter("abc")
             app.WaitFor("^message: Please enter a suitable value for the mass and radius! mass \(kg\) 'abc' is not a number\.$", skip:=from)
