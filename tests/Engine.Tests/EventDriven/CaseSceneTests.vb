@@ -51,9 +51,9 @@ Public Class CaseSceneTests
     ''' A 33 mg ball (c33, r = 4.2 cm) caught between a 171 kg ball sliding along the floor at 7.4 m/s (c30) and
     ''' two heavy balls (c24, 32.6 t; c3, 43 kg), g = 100, e = 0.16. The collapse guard made every one of its
     ''' rapid hits elastic, so the closing gap pumped it up to thousands of m/s: millions of collisions within
-    ''' 10 μs, the run held for minutes. The guard now makes only slow contacts elastic; a fast hit keeps e, and
-    ''' the light ball stays a few m/s. Checked: under 5,000 collisions in 0.1 s, no overlap, and energy plus
-    ''' dissipated never above its start (to 1e-9).
+    ''' 10 μs, the run held for minutes. The guard now makes only slow contacts elastic (up to 2 √(g r)); a fast
+    ''' hit keeps e, and the light ball is no longer pumped. Checked: under 5,000 collisions in 0.1 s, no
+    ''' overlap, and energy plus dissipated never above its start (to 1e-9).
     ''' </summary>
     <Fact>
     Public Sub FeatherPumpedInACage_TakesFewCollisions_AndGainsNoEnergy()

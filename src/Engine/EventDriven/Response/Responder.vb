@@ -154,7 +154,7 @@ Friend NotInheritable Class Responder
         ' A gentle touch on a body at rest treats it as a support (infinite mass); a real hit wakes it.
         Dim invI = _rest.InverseMassFor(i, j, gentle)
         Dim invJ = _rest.InverseMassFor(j, i, gentle)
-        Dim onFace = -1 ' a body that the blow leaves sliding on its fixed face (see ResolveWithResting)
+        Dim onFace = -1 ' a body that the blow leaves sliding on its face (see ResolveWithResting)
         Dim result = If(invI = 0 OrElse invJ = 0, ResolveWithResting(i, j, n, vi, vj, gentle, invI, invJ, onFace),
                         Impulse.Resolve(vi, invI, vj, invJ, n, _rest.EffectiveRestitution(i, j, approach)))
         If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then PartTouching(i, j, n, If(onFace = i, 0, invI), If(onFace = j, 0, invJ))
@@ -171,10 +171,10 @@ Friend NotInheritable Class Responder
             _rest.NoteHit(i)
             _rest.NoteHit(j)
         End If
-        ' Two free bodies, both movable, with no gravity (the elastic gas): no rest rule can apply.
         ' A touch shared with a face is booked at once: the rules after it keep their own books (RestRules.AfterSliderContact).
         Dim booked = onFace >= 0 AndAlso _s.E < 1
         If booked Then CollisionLosses.Note(_s, i, vi, j, vj)
+        ' Two free bodies, both movable, with no gravity (the elastic gas): no rest rule can apply.
         If b.Slot(i).Mode <> BodyMode.Free OrElse b.Slot(j).Mode <> BodyMode.Free OrElse invI = 0 OrElse invJ = 0 OrElse _s.G <> 0 Then
             RestAfterHit(i, j, n, vi, vj, result.A, result.B, invI, invJ, onFace)
         End If
