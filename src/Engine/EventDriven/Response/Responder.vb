@@ -123,6 +123,8 @@ Friend NotInheritable Class Responder
             End If
             _rest.NoteHit(i)
         End If
+        ' What rests on a supported body (see RestRules.AfterSliderContact) does not go with it when it bounces.
+        If b.Mode(i) = BodyMode.Supported AndAlso after <> before Then _rest.WakeAbove(i)
         If b.Mode(i) = BodyMode.Supported AndAlso (after.Y <> 0 OrElse n.Y <> 0) Then _rest.MakeFree(i)
         If b.Mode(i) = BodyMode.Free Then _rest.AfterSupportContact(i, n, support, edge, 0, 0, curve, before)
         If _s.E < 1 Then CollisionLosses.Note(_s, i, before)
@@ -152,9 +154,10 @@ Friend NotInheritable Class Responder
         ' A gentle touch on a body at rest treats it as a support (infinite mass); a real hit wakes it.
         Dim invI = _rest.InverseMassFor(i, j, gentle)
         Dim invJ = _rest.InverseMassFor(j, i, gentle)
-        Dim result = If(invI = 0 OrElse invJ = 0, ResolveWithResting(i, j, n, vi, vj, gentle, invI, invJ),
-                        Impulse.Resolve(vi, invI, vj, invJ, n, _rest.EffectiveRestitution(i, j)))
-        If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then PartTouching(i, j, n, invI, invJ)
+        Dim onFace = -1 ' a body that the blow leaves sliding on its face (see ResolveWithResting)
+        Dim result = If(invI = 0 OrElse invJ = 0, ResolveWithResting(i, j, n, vi, vj, gentle, invI, invJ, onFace),
+                        Impulse.Resolve(vi, invI, vj, invJ, n, _rest.EffectiveRestitution(i, j, approach)))
+        If approach < 0 AndAlso result.A = vi AndAlso result.B = vj Then PartTouching(i, j, n, If(onFace = i, 0, invI), If(onFace = j, 0, invJ))
         m(i).Vx = result.A.X
         m(i).Vy = result.A.Y
         m(j).Vx = result.B.X
@@ -168,11 +171,14 @@ Friend NotInheritable Class Responder
             _rest.NoteHit(i)
             _rest.NoteHit(j)
         End If
+        ' A touch shared with a face is booked at once: the rules after it keep their own books (RestRules.AfterSliderContact).
+        Dim booked = onFace >= 0 AndAlso _s.E < 1
+        If booked Then CollisionLosses.Note(_s, i, vi, j, vj)
         ' Two free bodies, both movable, with no gravity (the elastic gas): no rest rule can apply.
         If b.Slot(i).Mode <> BodyMode.Free OrElse b.Slot(j).Mode <> BodyMode.Free OrElse invI = 0 OrElse invJ = 0 OrElse _s.G <> 0 Then
-            RestAfterHit(i, j, n, vi, vj, result.A, result.B, invI, invJ)
+            RestAfterHit(i, j, n, vi, vj, result.A, result.B, invI, invJ, onFace)
         End If
-        If _s.E < 1 Then CollisionLosses.Note(_s, i, vi, j, vj)
+        If _s.E < 1 AndAlso Not booked Then CollisionLosses.Note(_s, i, vi, j, vj)
         _s.Changed(i)
         _s.Changed(j)
     End Sub
@@ -182,14 +188,42 @@ Friend NotInheritable Class Responder
     ''' A sleeper alone on level ground, struck from above, is not: the ground takes the vertical part of
     ''' the blow and the body the horizontal part (<see cref="Impulse.ResolveOnLevelGround"/>), so a ball
     ''' dropped on a resting one knocks it sideways and momentum along the ground is kept. Its inverse
-    ''' mass becomes the one the blow meets, n_x²/m, for the rest rules that follow. Apart from
-    ''' <see cref="CollideBodies"/>, which runs at every collision, because it is rare.
+    ''' mass becomes the one the blow meets, n_x²/m, for the rest rules that follow. Nor is a body that
+    ''' rests on a face and may slide along it (<see cref="SlidesOnFace"/>), touched gently: taken as immovable it
+    ''' would be a moving wall, which can give energy. The face takes the part of the blow that presses the body
+    ''' into it, and the body the part along the face (<see cref="Impulse.ResolveOnFace"/>): it stays on its face
+    ''' (<paramref name="onFace"/> names it), with the inverse mass (n·t)²/m along n. A blow that lifts it off
+    ''' its face meets its whole mass. Apart from <see cref="CollideBodies"/>, which runs at every collision,
+    ''' because it is rare.
     ''' </summary>
     <MethodImpl(MethodImplOptions.NoInlining)>
     Private Function ResolveWithResting(i As Integer, j As Integer, n As Vector, vi As Vector, vj As Vector, gentle As Boolean,
-                                        ByRef invI As Double, ByRef invJ As Double) As (A As Vector, B As Vector)
+                                        ByRef invI As Double, ByRef invJ As Double, ByRef onFace As Integer) As (A As Vector, B As Vector)
         Dim b = _bodies
-        Dim e = _rest.EffectiveRestitution(i, j)
+        Dim e = _rest.EffectiveRestitution(i, j, Vector.Dot(vi - vj, n))
+        Dim t As Vector
+        If gentle AndAlso invJ = 0 AndAlso invI > 0 AndAlso b.Info(j).InverseMass > 0 AndAlso SlidesOnFace(j, t) Then
+            ' The blow on j is along −n: it presses j into its face when the face's normal has s·n ≥ 0.
+            If Vector.Dot(n, FaceNormal(t)) >= 0 Then
+                onFace = j
+                Dim along = Vector.Dot(n, t)
+                invJ = b.Info(j).InverseMass * along * along
+                Return Impulse.ResolveOnFace(vi, invI, vj, b.Info(j).InverseMass, n, t, e)
+            End If
+            invJ = b.Info(j).InverseMass
+            Return Impulse.Resolve(vi, invI, vj, invJ, n, e)
+        End If
+        If gentle AndAlso invI = 0 AndAlso invJ > 0 AndAlso b.Info(i).InverseMass > 0 AndAlso SlidesOnFace(i, t) Then
+            If Vector.Dot(-n, FaceNormal(t)) >= 0 Then
+                onFace = i
+                Dim along = Vector.Dot(n, t)
+                invI = b.Info(i).InverseMass * along * along
+                Dim swapped = Impulse.ResolveOnFace(vj, invJ, vi, b.Info(i).InverseMass, -n, t, e)
+                Return (swapped.B, swapped.A)
+            End If
+            invI = b.Info(i).InverseMass
+            Return Impulse.Resolve(vi, invI, vj, invJ, n, e)
+        End If
         If Not gentle AndAlso invJ = 0 AndAlso invI > 0 AndAlso n.Y > 0 AndAlso b.Info(j).InverseMass > 0 AndAlso _rest.AloneOnLevelGround(j, i) Then
             invJ = b.Info(j).InverseMass * n.X * n.X
             Return Impulse.ResolveOnLevelGround(vi, invI, vj, b.Info(j).InverseMass, n, e)
@@ -200,6 +234,26 @@ Friend NotInheritable Class Responder
             Return (swapped.B, swapped.A)
         End If
         Return Impulse.Resolve(vi, invI, vj, invJ, n, e)
+    End Function
+
+    ''' <summary>
+    ''' Whether body k rests on a face and slides along it (or may: it is not asleep), and the face's unit
+    ''' tangent <paramref name="t"/>: level, (1, 0); sloping, the direction of its acceleration down the face
+    ''' (see RestRules.EnterSlide). The face is the floor, a face of a fixed body, or the top of the body it
+    ''' rests on (RestRules.AfterSliderContact), which does not move across the face either.
+    ''' </summary>
+    Private Function SlidesOnFace(k As Integer, ByRef t As Vector) As Boolean
+        Dim b = _bodies
+        If b.Slot(k).Mode <> BodyMode.Supported Then Return False
+        Dim m = b.Motion(k)
+        t = If(m.Ax = 0 AndAlso m.Ay = 0, New Vector(1, 0), New Vector(m.Ax, m.Ay).Normalized(New Vector(1, 0)))
+        Return True
+    End Function
+
+    ''' <summary>The unit normal, pointing up, of a face with unit tangent t that holds a body up.</summary>
+    Private Shared Function FaceNormal(t As Vector) As Vector
+        Dim s = t.Perpendicular()
+        Return If(s.Y < 0, -s, s)
     End Function
 
     ''' <summary>
@@ -218,21 +272,30 @@ Friend NotInheritable Class Responder
     ''' <summary>
     ''' The rest rules after bodies i and j collided along n (towards i), their velocities going from
     ''' vi, vj to ai, aj: whoever moved leaves rest (a body still asleep stays a support); a free body
-    ''' that hit something immovable may come to rest on it; a free body may fall asleep.
+    ''' that hit something immovable may come to rest on it; a free body may fall asleep. A body the blow
+    ''' left sliding on its face (<paramref name="onFace"/>) stays on it.
     ''' </summary>
     <MethodImpl(MethodImplOptions.NoInlining)>
     Private Sub RestAfterHit(i As Integer, j As Integer, n As Vector, vi As Vector, vj As Vector, ai As Vector, aj As Vector,
-                             invI As Double, invJ As Double)
+                             invI As Double, invJ As Double, onFace As Integer)
         Dim b = _bodies
         Dim m = b.Motion
-        If ai <> vi AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then _rest.WakeFrom(i)
-        If aj <> vj AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then _rest.WakeFrom(j)
-        If b.Slot(i).Mode = BodyMode.Free AndAlso invJ = 0 AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then
+        If ai <> vi AndAlso b.Slot(i).Mode <> BodyMode.Dragged AndAlso onFace <> i Then _rest.WakeFrom(i)
+        If aj <> vj AndAlso b.Slot(j).Mode <> BodyMode.Dragged AndAlso onFace <> j Then _rest.WakeFrom(j)
+        ' A body the touch moved along its face stays on it; what rested on it does not go with it, and flies.
+        If onFace = i AndAlso ai <> vi Then _rest.WakeAbove(i)
+        If onFace = j AndAlso aj <> vj Then _rest.WakeAbove(j)
+        Dim t As Vector
+        If b.Slot(i).Mode = BodyMode.Free AndAlso onFace = j AndAlso SlidesOnFace(j, t) Then
+            _rest.AfterSliderContact(i, j, n, t)
+        ElseIf b.Slot(i).Mode = BodyMode.Free AndAlso invJ = 0 AndAlso b.Slot(j).Mode <> BodyMode.Dragged Then
             _rest.AfterSupportContact(i, n, BodyTable.SupportBody, -1, m(j).Vx, m(j).Vy, before:=vi)
         ElseIf b.Slot(i).Mode = BodyMode.Free Then
             _rest.SleepIfSettled(i)
         End If
-        If b.Slot(j).Mode = BodyMode.Free AndAlso invI = 0 AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then
+        If b.Slot(j).Mode = BodyMode.Free AndAlso onFace = i AndAlso SlidesOnFace(i, t) Then
+            _rest.AfterSliderContact(j, i, -n, t)
+        ElseIf b.Slot(j).Mode = BodyMode.Free AndAlso invI = 0 AndAlso b.Slot(i).Mode <> BodyMode.Dragged Then
             _rest.AfterSupportContact(j, -n, BodyTable.SupportBody, -1, m(i).Vx, m(i).Vy, before:=vj)
         ElseIf b.Slot(j).Mode = BodyMode.Free Then
             _rest.SleepIfSettled(j)
@@ -275,6 +338,7 @@ Friend NotInheritable Class Responder
         b.Motion(i).Py = corner.Y + n.Y * k.Radius
         Dim v = New Vector(b.Motion(i).Vx, b.Motion(i).Vy)
         _rest.MakeFree(i)
+        _rest.WakeAbove(i) ' what rested on it, sliding with it, is left to fall
         If k.Radius > 0 AndAlso Not _slides.Start(i, corner.X, corner.Y, k.Radius, n, v, (n, k.EdgeNormals(nextFace))) AndAlso
            (_slides.Refusal = SlideRefusal.Crowded OrElse _slides.Refusal = SlideRefusal.Blocked) Then
             ' Kept from sliding round (by a neighbour, or a wall or body in the way), and free at the very

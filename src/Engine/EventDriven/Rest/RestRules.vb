@@ -155,11 +155,16 @@ Friend NotInheritable Class RestRules
     ''' <summary>
     ''' Inelastic-collapse guard (the "TC model" of Luding and McNamara): two bodies that both collided
     ''' within the last 10⁻⁴ √(r/g) collide elastically, so an infinite cascade cannot form in finite time.
+    ''' Only when they meet slowly, at a normal speed (<paramref name="approach"/>, m/s, negative when they
+    ''' approach) of at most 2 √(g r): a fast hit keeps e. Elastic at any speed, rapid hits let a closing gap
+    ''' pump a light body between heavy ones to thousands of m/s (tests/cases/event-feather-pumped-in-cage.json).
     ''' </summary>
-    Friend Function EffectiveRestitution(i As Integer, j As Integer) As Double
+    Friend Function EffectiveRestitution(i As Integer, j As Integer, approach As Double) As Double
         If _s.E >= 1 OrElse _s.G = 0 Then Return _s.E
-        Dim tc = 1.0E-4 * Math.Sqrt(Math.Min(_s.Bodies.Size(i).Scale, _s.Bodies.Size(j).Scale) / _s.G)
-        If _s.Now - _bodies.Info(i).LastHit < tc AndAlso _s.Now - _bodies.Info(j).LastHit < tc Then Return 1.0
+        Dim r = Math.Min(_s.Bodies.Size(i).Scale, _s.Bodies.Size(j).Scale)
+        Dim tc = 1.0E-4 * Math.Sqrt(r / _s.G)
+        If _s.Now - _bodies.Info(i).LastHit < tc AndAlso _s.Now - _bodies.Info(j).LastHit < tc AndAlso
+           approach * approach <= 4 * _s.G * r Then Return 1.0
         Return _s.E
     End Function
 
@@ -283,6 +288,97 @@ Friend NotInheritable Class RestRules
         m(i).Px = p.X + shift.X
         m(i).Py = p.Y + shift.Y
         _s.MoveToCellOfPosition(i)
+    End Sub
+
+    ''' <summary>
+    ''' After free body i touched body j gently along normal n (from j towards i), j sliding on a fixed face
+    ''' along unit tangent t, the touch shared with the face (Impulse.ResolveOnFace): what ends the bounces
+    ''' of i on j without new energy. Fast enough to leave (a normal relative speed of at least the resting
+    ''' hop's), i flies. Slower, it hops off at that speed only where a move down the tangent line pays for
+    ''' the whole hop (<see cref="HopOffSlider"/>); otherwise, on a level face, the touch becomes lasting contact:
+    ''' i rests on j and the two slide on together (<see cref="JoinSlider"/>); on a sloping one, i is held by
+    ''' what keeps it from moving down the tangent, and gets no hop. Whatever this changes in the pair's
+    ''' energy, kinetic and potential, is counted in World.Dissipated here (a hop paid by height changes none).
+    ''' </summary>
+    Friend Sub AfterSliderContact(i As Integer, j As Integer, n As Vector, t As Vector)
+        If _s.G = 0 OrElse n.Y <= 0 Then Return
+        Dim b = _s.Bodies
+        Dim m = b.Motion
+        Dim vn = (m(i).Vx - m(j).Vx) * n.X + (m(i).Vy - m(j).Vy) * n.Y
+        Dim minimum = Math.Sqrt(2 * _s.G * RestHeight(b.Size(i).Scale))
+        If vn >= minimum Then Return
+        Dim before = PairEnergy(i, j)
+        ' On a sloping face the hop is paid by height but where something is in the way, which then holds it.
+        If Not HopOffSlider(i, j, n, t, minimum, vn) AndAlso LevelSlider(j) Then JoinSlider(i, j)
+        _s.World.Dissipate(before - PairEnergy(i, j))
+    End Sub
+
+    ''' <summary>Kinetic plus potential energy of bodies i and j at the clock (their motions start now), J.</summary>
+    Private Function PairEnergy(i As Integer, j As Integer) As Double
+        Dim b = _s.Bodies
+        Dim m = b.Motion
+        Dim mi = b.Shapes(i).Mass, mj = b.Shapes(j).Mass
+        Return mi * (0.5 * (m(i).Vx * m(i).Vx + m(i).Vy * m(i).Vy) + _s.G * m(i).Py) +
+               mj * (0.5 * (m(j).Vx * m(j).Vx + m(j).Vy * m(j).Vy) + _s.G * m(j).Py)
+    End Function
+
+    ''' <summary>
+    ''' Body i, touching body j (which slides on a fixed face along unit tangent t) along normal n, leaves it
+    ''' at the normal relative speed <paramref name="minimum"/> (m/s), from <paramref name="vn"/>, if a move of i
+    ''' down the tangent line of the contact pays for it: the push between the two (i along n, j along t, as the
+    ''' touch itself pushed them) raises the pair's kinetic energy by ½ μ (minimum² − vn²), μ = 1/(1/m_i + (n·t)²/m_j),
+    ''' and i drops the height h with m_i g h equal to that. The move is at most <see cref="MaxSlopeShift"/> of
+    ''' i's size and only where i is clear; otherwise nothing is done and False is returned.
+    ''' </summary>
+    Private Function HopOffSlider(i As Integer, j As Integer, n As Vector, t As Vector, minimum As Double, vn As Double) As Boolean
+        Dim b = _s.Bodies
+        Dim invI = b.Info(i).InverseMass, invJ = b.Info(j).InverseMass
+        Dim slope = Math.Abs(n.X) ' height lost per metre along the tangent line
+        If invI = 0 OrElse slope = 0 Then Return False
+        Dim along = Vector.Dot(n, t)
+        Dim mu = 1 / (invI + invJ * along * along) ' kg: the pair's mass along n
+        Dim distance = mu * (minimum * minimum - vn * vn) * invI / (2 * _s.G * slope)
+        If Not (distance <= MaxSlopeShift * b.Size(i).Scale) Then Return False
+        Dim shift = New Vector(n.Y, -n.X) * (Math.Sign(n.X) * distance)
+        Dim p = New Vector(b.Motion(i).Px, b.Motion(i).Py)
+        If Not IsClear(i, p + shift) Then Return False
+        b.Motion(i).Px = p.X + shift.X
+        b.Motion(i).Py = p.Y + shift.Y
+        _s.MoveToCellOfPosition(i)
+        Dim push = mu * (minimum - vn) ' N·s
+        b.Motion(i).Vx += n.X * push * invI
+        b.Motion(i).Vy += n.Y * push * invI
+        b.Motion(j).Vx -= t.X * push * invJ * along
+        b.Motion(j).Vy -= t.Y * push * invJ * along
+        Return True
+    End Function
+
+    ''' <summary>Whether supported body j slides on a level face (the floor, a level top): it moves at a constant velocity.</summary>
+    Private Function LevelSlider(j As Integer) As Boolean
+        Dim m = _s.Bodies.Motion(j)
+        Return m.Ax = 0 AndAlso m.Ay = 0 AndAlso m.Vy = 0
+    End Function
+
+    ''' <summary>
+    ''' Body i comes to rest on body j, which slides on a level face: the two move on together, as one body
+    ''' would, at the velocity that keeps the pair's momentum along the face, V = (m_i v_ix + m_j v_jx)/(m_i + m_j).
+    ''' That is a perfectly inelastic touch of the two along the face (energy only lost, never gained; i's
+    ''' vertical speed, below the slowest hop, is lost too). i is supported by j from now on: a blow that moves
+    ''' j, or j leaving its face, sets it free (<see cref="WakeAbove"/>).
+    ''' </summary>
+    Private Sub JoinSlider(i As Integer, j As Integer)
+        Dim b = _s.Bodies
+        Dim m = b.Motion
+        Dim mi = b.Shapes(i).Mass, mj = b.Shapes(j).Mass
+        Dim speed = (mi * m(i).Vx + mj * m(j).Vx) / (mi + mj)
+        m(j).Vx = speed
+        m(i).Vx = speed
+        m(i).Vy = 0
+        m(i).Ax = 0
+        m(i).Ay = 0
+        b.Support(i) = BodyTable.SupportBody
+        b.SupportEdge(i) = -1
+        b.SetMode(i, BodyMode.Supported)
     End Sub
 
     ''' <summary>
