@@ -4,6 +4,19 @@ Option Strict On
 ' body is searched by conservative advancement on the motions, up to a horizon, except the contacts a group's
 ' motion holds (they end by that motion's own events) and pairs that can never meet.
 Partial Friend NotInheritable Class LinkedEventSolver
+    ' How many times the contact searches have measured a gap, over the solver's life.
+    Private _gapEvaluations As Long
+
+    ''' <summary>
+    ''' How many times the contact searches have measured a gap since the solver was made: the work of finding
+    ''' contacts, counted exactly, so that a search that crawls can be caught without timing it.
+    ''' </summary>
+    Friend ReadOnly Property GapEvaluations As Long
+        Get
+            Return _gapEvaluations
+        End Get
+    End Property
+
     Private Sub PredictAll(tEnd As Double)
         For i = 0 To _bodies.Length - 1
             PredictBody(i, tEnd, -1)
@@ -76,6 +89,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Else
             speed = ma.SpeedBound(_slotOf(a), t0, until) + mb.SpeedBound(_slotOf(b), t0, until)
             accel = ma.AccelerationBound(_slotOf(a), t0, until) + mb.AccelerationBound(_slotOf(b), t0, until)
+            ' Seen from a frame falling with gravity, both may be far slower: their relative bounds, when tighter.
+            Dim frameA As Vector, speedA As Double, accelA As Double, frameB As Vector, speedB As Double, accelB As Double
+            If ma.FallingBounds(_slotOf(a), t0, until, _world.Gravity, frameA, speedA, accelA) AndAlso
+               mb.FallingBounds(_slotOf(b), t0, until, _world.Gravity, frameB, speedB, accelB) Then
+                speed = Math.Min(speed, ((frameA - frameB).Length + speedA + speedB) * (1 + 0.000000001))
+                accel = Math.Min(accel, accelA + accelB)
+            End If
         End If
         If BothBalls(a, b) Then
             Dim curved = accel + speed * speed / (DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
@@ -150,9 +170,10 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' a body pressed into another (a ball pulled onto a peg it sits on) would otherwise be "opened" on the
     ''' far side, after passing right through it, and the contact between never looked for.
     ''' </summary>
-    Private Shared Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean) As Double
+    Private Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean) As Double
         Dim n As Vector, rate As Double
         Dim d = gap.GapAndNormal(t0, n, rate)
+        _gapEvaluations += 1
         If d <= Slop Then
             If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
             ' Leaving at rate ḋ, the gap is at least d + ḋ s − ½ A s² (A the bound from below): where that
@@ -169,6 +190,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 Dim limit = If(sinks.Found, sinks.Time, sinks.ClearUntil)
                 Dim sharp = Double.IsPositiveInfinity(above)
                 Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, limit, 0, speed, above, If(sharp, SharpOpeningBudget, 100000))
+                _gapEvaluations += opened.Evaluations
                 If Not opened.Found Then Return If(opened.ClearUntil < limit AndAlso Not sharp, opened.ClearUntil, Finding(sinks, tEnd))
                 t0 = opened.Time
             End If
@@ -177,11 +199,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
     End Function
 
     ''' <summary>The search for the gap closing to −<paramref name="tolerance"/> (m), one- or two-sided (see <see cref="FirstContact"/>).</summary>
-    Private Shared Function Closing(gap As LinkedGap, t0 As Double, tEnd As Double, tolerance As Double, speed As Double,
-                                    below As Double, above As Double, oneSided As Boolean) As AdvancementResult
-        Return If(oneSided,
-                  OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, below),
-                  ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, above))
+    Private Function Closing(gap As LinkedGap, t0 As Double, tEnd As Double, tolerance As Double, speed As Double,
+                             below As Double, above As Double, oneSided As Boolean) As AdvancementResult
+        Dim result = If(oneSided,
+                        OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, below),
+                        ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, above))
+        _gapEvaluations += result.Evaluations
+        Return result
     End Function
 
     ''' <summary>A search's answer as a time: when it found the contact, where it stopped short of <paramref name="tEnd"/> (to be taken up again), or +∞.</summary>
