@@ -19,15 +19,18 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     Private Sub PredictAll(tEnd As Double)
         For i = 0 To _bodies.Length - 1
-            PredictBody(i, tEnd, -1)
+            PredictBody(i, tEnd, Nothing)
         Next
     End Sub
 
-    ''' <summary>Predicts every contact of body i (with bodies after it, or all of them when <paramref name="everyPair"/> ≥ 0).</summary>
-    Private Sub PredictBody(i As Integer, tEnd As Double, everyPair As Integer)
+    ''' <summary>
+    ''' Predicts every contact of body i: with the bodies after it when <paramref name="done"/> is Nothing, else with
+    ''' every body not in <paramref name="done"/> (those whose pairs have just been predicted).
+    ''' </summary>
+    Private Sub PredictBody(i As Integer, tEnd As Double, done As HashSet(Of Integer))
         Dim n = _bodies.Length
         For j = 0 To n - 1
-            If j = i OrElse (everyPair < 0 AndAlso j < i) Then Continue For
+            If j = i OrElse (If(done Is Nothing, j < i, done.Contains(j))) Then Continue For
             Dim a = Math.Min(i, j), b = Math.Max(i, j)
             ' A contact held by a group's motion is kept by it exactly (it ends by that motion's own events), and
             ' two balls on a rod can never meet: neither is searched.
@@ -77,8 +80,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
         End If
         Dim gap = PairGap(a, b)
         Dim t0 = _now
-        Dim until = Math.Min(tEnd, t0 + Horizon)
         Dim ma = MotionOf(a), mb = MotionOf(b)
+        Dim until = SearchEnd(tEnd, ma, mb)
         Dim speed As Double, accel As Double
         Dim flightA = TryCast(ma, FlightMotion), flightB = TryCast(mb, FlightMotion)
         Dim together = TryCast(ma, ConstrainedMotion)
@@ -102,6 +105,16 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Return Recheck(FirstContact(gap, t0, until, speed, curved, curved, False), until, tEnd)
         End If
         Return Recheck(FirstContact(gap, t0, until, speed, accel, UpperCurvature(accel, speed, _pairDifferences(a, b).Radius), True), until, tEnd)
+    End Function
+
+    ''' <summary>
+    ''' How far ahead (s, absolute) a search of bodies moved by <paramref name="a"/> and <paramref name="b"/> looks: to
+    ''' the horizon, and never past either motion's own event (a contact lifting off, a string changing), where the
+    ''' motion ends and the bodies are predicted again: an integrated group would otherwise be carried on past its
+    ''' event, on constraints that no longer hold there, for nothing.
+    ''' </summary>
+    Private Function SearchEnd(tEnd As Double, a As LinkedMotion, b As LinkedMotion) As Double
+        Return Math.Max(_now, Math.Min(Math.Min(tEnd, _now + Horizon), Math.Min(a.EventTime, b.EventTime)))
     End Function
 
     ''' <summary>A bound on the gap's second derivative (m/s²) from above: the acceleration's, plus V²/R for the turning of the normal about a pair shape rounded by R; +∞ (none) for a sharp one.</summary>
@@ -140,7 +153,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     Private Function PredictGap(i As Integer, gap As LinkedGap, tEnd As Double) As Double
         Dim m = MotionOf(i)
-        Dim until = Math.Min(tEnd, _now + Horizon)
+        Dim until = SearchEnd(tEnd, m, m)
         Dim speed = m.SpeedBound(_slotOf(i), _now, until)
         Dim accel = m.AccelerationBound(_slotOf(i), _now, until)
         ' A wall is flat: its gap's second derivative is the acceleration across it.
@@ -262,8 +275,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     ''' <summary>Predicts again every contact of the given bodies, with everything.</summary>
     Private Sub Repredict(bodies As List(Of Integer), tEnd As Double)
+        ' A pair of two of them is predicted once, with the first.
+        Dim done As New HashSet(Of Integer)
         For Each i In bodies
-            PredictBody(i, tEnd, 0)
+            PredictBody(i, tEnd, done)
+            done.Add(i)
         Next
     End Sub
 End Class
