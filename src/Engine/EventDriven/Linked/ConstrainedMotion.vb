@@ -655,13 +655,6 @@ Friend NotInheritable Class ConstrainedMotion
         End Get
     End Property
 
-    ''' <summary>The first event found on the steps looked at so far (+∞ for none yet): not the end of those steps.</summary>
-    Friend Overrides ReadOnly Property EventTime As Double
-        Get
-            Return _eventTime
-        End Get
-    End Property
-
     ''' <summary>
     ''' At the end of the steps looked at, with no event on them: takes as many steps again (up to
     ''' <see cref="Lookahead"/> at once) and returns True, so the motion goes on as it was; False once it has taken so

@@ -49,16 +49,6 @@ Friend MustInherit Class LinkedMotion
     End Property
 
     ''' <summary>
-    ''' When something happens that ends this motion (s): <see cref="TransitionTime"/>, unless that is only the end of
-    ''' what the motion has looked at so far; +∞ while no such event is known. Contacts are not searched past it.
-    ''' </summary>
-    Friend Overridable ReadOnly Property EventTime As Double
-        Get
-            Return TransitionTime
-        End Get
-    End Property
-
-    ''' <summary>
     ''' At <see cref="TransitionTime"/>: whether that was only the end of what the motion had looked at, and it has
     ''' now looked further and goes on as it was (nothing to do). False when something happens there.
     ''' </summary>
