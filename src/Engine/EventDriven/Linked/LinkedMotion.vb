@@ -49,6 +49,17 @@ Friend MustInherit Class LinkedMotion
     End Property
 
     ''' <summary>
+    ''' How far contacts of its bodies are searched at most (s, absolute): <see cref="TransitionTime"/>, where the
+    ''' bodies are predicted again. A chain's integrated motion gives only its own events, not the end of what it
+    ''' has looked at (<see cref="ConstrainedMotion"/>): its searches look on to the horizon.
+    ''' </summary>
+    Friend Overridable ReadOnly Property SearchEnd As Double
+        Get
+            Return TransitionTime
+        End Get
+    End Property
+
+    ''' <summary>
     ''' At <see cref="TransitionTime"/>: whether that was only the end of what the motion had looked at, and it has
     ''' now looked further and goes on as it was (nothing to do). False when something happens there.
     ''' </summary>
