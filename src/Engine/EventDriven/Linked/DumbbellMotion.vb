@@ -39,6 +39,18 @@ Friend NotInheritable Class DumbbellMotion
         Return (Math.Max(c0.Length, c1.Length) + Math.Abs(_dumbbell.AngularVelocity) * _arm(k)) * (1 + 0.000000001)
     End Function
 
+    ''' <summary>The centre of mass falls with the frame (when the gravities agree); in it each end only turns about the centre.</summary>
+    Friend Overrides Function FallingBounds(k As Integer, t0 As Double, t1 As Double, gravity As Double,
+                                            ByRef frame As Vector, ByRef speed As Double, ByRef acceleration As Double) As Boolean
+        If gravity <> _gravity Then Return False
+        frame = New Vector(_centreVelocity.X, _centreVelocity.Y - _gravity * (t0 - StartTime))
+        Dim omega = Math.Abs(_dumbbell.AngularVelocity)
+        ' The ends' velocities are worked out apart from the centre's: a rounding of the frame's speed is allowed for.
+        speed = omega * _arm(k) * (1 + 0.000000001) + 0.000000000001 * frame.Length
+        acceleration = omega * omega * _arm(k) * (1 + 0.000000001)
+        Return True
+    End Function
+
     Friend Overrides Function AccelerationBound(k As Integer, t0 As Double, t1 As Double) As Double
         Dim omega = _dumbbell.AngularVelocity
         Return (_gravity + omega * omega * _arm(k)) * (1 + 0.000000001)

@@ -76,6 +76,16 @@ Friend NotInheritable Class FlightMotion
         acceleration = (a._acceleration - b._acceleration).Length
     End Sub
 
+    ''' <summary>Its velocity at t0 is the frame's; in the frame it accelerates by its acceleration less gravity's (none in flight).</summary>
+    Friend Overrides Function FallingBounds(k As Integer, t0 As Double, t1 As Double, gravity As Double,
+                                            ByRef frame As Vector, ByRef speed As Double, ByRef acceleration As Double) As Boolean
+        Dim p As Vector
+        StateAt(t0, 0, p, frame)
+        acceleration = New Vector(_acceleration.X, _acceleration.Y + gravity).Length
+        speed = acceleration * (t1 - t0) * (1 + 0.000000001)
+        Return True
+    End Function
+
     Friend Overrides Function SpeedBound(k As Integer, t0 As Double, t1 As Double) As Double
         ' |v| is convex in time on a parabola: its largest value is at an end.
         Dim p As Vector, a As Vector, b As Vector

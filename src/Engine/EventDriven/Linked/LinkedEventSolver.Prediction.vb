@@ -4,17 +4,33 @@ Option Strict On
 ' body is searched by conservative advancement on the motions, up to a horizon, except the contacts a group's
 ' motion holds (they end by that motion's own events) and pairs that can never meet.
 Partial Friend NotInheritable Class LinkedEventSolver
+    ' How many times the contact searches have measured a gap, over the solver's life.
+    Private _gapEvaluations As Long
+
+    ''' <summary>
+    ''' How many times the contact searches have measured a gap since the solver was made: the work of finding
+    ''' contacts, counted exactly, so that a search that crawls can be caught without timing it.
+    ''' </summary>
+    Friend ReadOnly Property GapEvaluations As Long
+        Get
+            Return _gapEvaluations
+        End Get
+    End Property
+
     Private Sub PredictAll(tEnd As Double)
         For i = 0 To _bodies.Length - 1
-            PredictBody(i, tEnd, -1)
+            PredictBody(i, tEnd, Nothing)
         Next
     End Sub
 
-    ''' <summary>Predicts every contact of body i (with bodies after it, or all of them when <paramref name="everyPair"/> ≥ 0).</summary>
-    Private Sub PredictBody(i As Integer, tEnd As Double, everyPair As Integer)
+    ''' <summary>
+    ''' Predicts every contact of body i: with the bodies after it when <paramref name="done"/> is Nothing, else with
+    ''' every body not in <paramref name="done"/> (those whose pairs have just been predicted).
+    ''' </summary>
+    Private Sub PredictBody(i As Integer, tEnd As Double, done As HashSet(Of Integer))
         Dim n = _bodies.Length
         For j = 0 To n - 1
-            If j = i OrElse (everyPair < 0 AndAlso j < i) Then Continue For
+            If j = i OrElse (If(done Is Nothing, j < i, done.Contains(j))) Then Continue For
             Dim a = Math.Min(i, j), b = Math.Max(i, j)
             ' A contact held by a group's motion is kept by it exactly (it ends by that motion's own events), and
             ' two balls on a rod can never meet: neither is searched.
@@ -64,8 +80,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
         End If
         Dim gap = PairGap(a, b)
         Dim t0 = _now
-        Dim until = Math.Min(tEnd, t0 + Horizon)
         Dim ma = MotionOf(a), mb = MotionOf(b)
+        Dim until = SearchEnd(tEnd, ma, mb)
         Dim speed As Double, accel As Double
         Dim flightA = TryCast(ma, FlightMotion), flightB = TryCast(mb, FlightMotion)
         Dim together = TryCast(ma, ConstrainedMotion)
@@ -76,12 +92,30 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Else
             speed = ma.SpeedBound(_slotOf(a), t0, until) + mb.SpeedBound(_slotOf(b), t0, until)
             accel = ma.AccelerationBound(_slotOf(a), t0, until) + mb.AccelerationBound(_slotOf(b), t0, until)
+            ' Seen from a frame falling with gravity, both may be far slower: their relative bounds, when tighter.
+            Dim frameA As Vector, speedA As Double, accelA As Double, frameB As Vector, speedB As Double, accelB As Double
+            If ma.FallingBounds(_slotOf(a), t0, until, _world.Gravity, frameA, speedA, accelA) AndAlso
+               mb.FallingBounds(_slotOf(b), t0, until, _world.Gravity, frameB, speedB, accelB) Then
+                speed = Math.Min(speed, ((frameA - frameB).Length + speedA + speedB) * (1 + 0.000000001))
+                accel = Math.Min(accel, accelA + accelB)
+            End If
         End If
         If BothBalls(a, b) Then
             Dim curved = accel + speed * speed / (DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
             Return Recheck(FirstContact(gap, t0, until, speed, curved, curved, False), until, tEnd)
         End If
         Return Recheck(FirstContact(gap, t0, until, speed, accel, UpperCurvature(accel, speed, _pairDifferences(a, b).Radius), True), until, tEnd)
+    End Function
+
+    ''' <summary>
+    ''' How far ahead (s, absolute) a search of bodies moved by <paramref name="a"/> and <paramref name="b"/> looks: to
+    ''' the horizon, and never past either motion's <see cref="LinkedMotion.SearchEnd"/> (its own event, or the end of
+    ''' what a spring group has looked at so far), where the bodies are predicted again. An integrated group would
+    ''' otherwise be carried on past its event, on constraints that no longer hold there, or integrated a whole
+    ''' horizon ahead after every collision, for a stretch the next collision throws away.
+    ''' </summary>
+    Private Function SearchEnd(tEnd As Double, a As LinkedMotion, b As LinkedMotion) As Double
+        Return Math.Max(_now, Math.Min(Math.Min(tEnd, _now + Horizon), Math.Min(a.SearchEnd, b.SearchEnd)))
     End Function
 
     ''' <summary>A bound on the gap's second derivative (m/s²) from above: the acceleration's, plus V²/R for the turning of the normal about a pair shape rounded by R; +∞ (none) for a sharp one.</summary>
@@ -120,7 +154,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     Private Function PredictGap(i As Integer, gap As LinkedGap, tEnd As Double) As Double
         Dim m = MotionOf(i)
-        Dim until = Math.Min(tEnd, _now + Horizon)
+        Dim until = SearchEnd(tEnd, m, m)
         Dim speed = m.SpeedBound(_slotOf(i), _now, until)
         Dim accel = m.AccelerationBound(_slotOf(i), _now, until)
         ' A wall is flat: its gap's second derivative is the acceleration across it.
@@ -150,9 +184,10 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' a body pressed into another (a ball pulled onto a peg it sits on) would otherwise be "opened" on the
     ''' far side, after passing right through it, and the contact between never looked for.
     ''' </summary>
-    Private Shared Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean) As Double
+    Private Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean) As Double
         Dim n As Vector, rate As Double
         Dim d = gap.GapAndNormal(t0, n, rate)
+        _gapEvaluations += 1
         If d <= Slop Then
             If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
             ' Leaving at rate ḋ, the gap is at least d + ḋ s − ½ A s² (A the bound from below): where that
@@ -169,6 +204,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 Dim limit = If(sinks.Found, sinks.Time, sinks.ClearUntil)
                 Dim sharp = Double.IsPositiveInfinity(above)
                 Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, limit, 0, speed, above, If(sharp, SharpOpeningBudget, 100000))
+                _gapEvaluations += opened.Evaluations
                 If Not opened.Found Then Return If(opened.ClearUntil < limit AndAlso Not sharp, opened.ClearUntil, Finding(sinks, tEnd))
                 t0 = opened.Time
             End If
@@ -177,11 +213,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
     End Function
 
     ''' <summary>The search for the gap closing to −<paramref name="tolerance"/> (m), one- or two-sided (see <see cref="FirstContact"/>).</summary>
-    Private Shared Function Closing(gap As LinkedGap, t0 As Double, tEnd As Double, tolerance As Double, speed As Double,
-                                    below As Double, above As Double, oneSided As Boolean) As AdvancementResult
-        Return If(oneSided,
-                  OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, below),
-                  ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, above))
+    Private Function Closing(gap As LinkedGap, t0 As Double, tEnd As Double, tolerance As Double, speed As Double,
+                             below As Double, above As Double, oneSided As Boolean) As AdvancementResult
+        Dim result = If(oneSided,
+                        OneSidedAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, below),
+                        ConservativeAdvancement.FirstContact(gap, t0, tEnd, tolerance, speed, above))
+        _gapEvaluations += result.Evaluations
+        Return result
     End Function
 
     ''' <summary>A search's answer as a time: when it found the contact, where it stopped short of <paramref name="tEnd"/> (to be taken up again), or +∞.</summary>
@@ -238,8 +276,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     ''' <summary>Predicts again every contact of the given bodies, with everything.</summary>
     Private Sub Repredict(bodies As List(Of Integer), tEnd As Double)
+        ' A pair of two of them is predicted once, with the first.
+        Dim done As New HashSet(Of Integer)
         For Each i In bodies
-            PredictBody(i, tEnd, 0)
+            PredictBody(i, tEnd, done)
+            done.Add(i)
         Next
     End Sub
 End Class

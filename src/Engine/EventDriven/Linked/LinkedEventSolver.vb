@@ -316,7 +316,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' </summary>
     Private Sub TransitionOf(g As Integer, t As Double, tEnd As Double)
         Dim m = _groups(g).Motion
-        If m.LookFurther(t) Then Return
+        If m.LookFurther(t) Then
+            ' It goes on as it was, looked at further: its bodies' searches, which stopped here, go on from here.
+            Repredict(m.Bodies.Select(Function(b) Array.IndexOf(_bodies, b)).ToList(), tEnd)
+            Return
+        End If
         Sync(g, t)
         Dim before = m.Bodies.Select(Function(b) b.Velocity).ToArray()
         Dim kinetic = DissipationLedger.Kinetic(m.Bodies)

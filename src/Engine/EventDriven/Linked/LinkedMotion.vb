@@ -27,10 +27,35 @@ Friend MustInherit Class LinkedMotion
     ''' <summary>An upper bound on body k's acceleration (m/s²) over [<paramref name="t0"/>, <paramref name="t1"/>].</summary>
     Friend MustOverride Function AccelerationBound(k As Integer, t0 As Double, t1 As Double) As Double
 
+    ''' <summary>
+    ''' Bounds on body k's motion over [<paramref name="t0"/>, <paramref name="t1"/>] as seen from a frame that falls
+    ''' freely under <paramref name="gravity"/> (m/s², towards −y): the frame's velocity at t0 (m/s), and bounds on the
+    ''' body's speed (m/s) and acceleration (m/s²) in that frame. Seen so, two bodies move apart or together no faster
+    ''' than the difference of their frames' velocities (constant, as both frames fall alike) plus their two speeds,
+    ''' and gravity drops out of their relative acceleration: a ball flying beside a dumbbell, or touching a group
+    ''' that a spring pulls, is searched with its bounds relative to them, not with the sum of all their speeds.
+    ''' False when the motion gives none.
+    ''' </summary>
+    Friend Overridable Function FallingBounds(k As Integer, t0 As Double, t1 As Double, gravity As Double,
+                                              ByRef frame As Vector, ByRef speed As Double, ByRef acceleration As Double) As Boolean
+        Return False
+    End Function
+
     ''' <summary>When this closed form stops holding, s; +∞ when it holds for ever.</summary>
     Friend Overridable ReadOnly Property TransitionTime As Double
         Get
             Return Double.PositiveInfinity
+        End Get
+    End Property
+
+    ''' <summary>
+    ''' How far contacts of its bodies are searched at most (s, absolute): <see cref="TransitionTime"/>, where the
+    ''' bodies are predicted again. A chain's integrated motion gives only its own events, not the end of what it
+    ''' has looked at (<see cref="ConstrainedMotion"/>): its searches look on to the horizon.
+    ''' </summary>
+    Friend Overridable ReadOnly Property SearchEnd As Double
+        Get
+            Return TransitionTime
         End Get
     End Property
 

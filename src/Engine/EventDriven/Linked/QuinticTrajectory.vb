@@ -130,18 +130,55 @@ Friend NotInheritable Class QuinticTrajectory
     ''' </summary>
     Friend Function Bound(k As Integer, t0 As Double, t1 As Double, order As Integer) As Double
         Dim first = StepAt(Math.Max(t0, StartTime)), last = StepAt(Math.Max(t1, StartTime))
+        ' The searches of one instant all ask about the same stretch, for each body and both orders: each step's
+        ' bounds are worked out once, and the last stretch's are kept.
+        Dim slot = 2 * k + order - 1
+        If first <> _rangeFirst OrElse last <> _rangeLast Then
+            _rangeFirst = first
+            _rangeLast = last
+            _range.Clear()
+        End If
+        Dim known As Double
+        If _range.TryGetValue(slot, known) Then Return known
         Dim worst = 0.0
         For j = first To last
-            Dim h = _times(j + 1) - _times(j)
-            Dim bx = 0.0, by = 0.0
-            Dim cx = Coefficients(j, k, 0), cy = Coefficients(j, k, 1)
-            For p = order To 5
-                Dim w = If(order = 1, p, p * (p - 1))
-                bx += w * Math.Abs(cx(p))
-                by += w * Math.Abs(cy(p))
-            Next
-            worst = Math.Max(worst, Math.Sqrt(bx * bx + by * by) / Math.Pow(h, order))
+            worst = Math.Max(worst, StepBound(j, k, order))
         Next
-        Return worst * (1 + 0.000000001)
+        Dim result = worst * (1 + 0.000000001)
+        _range(slot) = result
+        Return result
     End Function
+
+    ''' <summary>Body k's bound of the given order on step j, worked out once.</summary>
+    Private Function StepBound(j As Integer, k As Integer, order As Integer) As Double
+        Dim slot = 2 * k + order - 1
+        Do While _stepBounds.Count <= j
+            _stepBounds.Add(Nothing)
+        Loop
+        Dim known = _stepBounds(j)
+        If known Is Nothing Then
+            known = New Dictionary(Of Integer, Double)
+            _stepBounds(j) = known
+        End If
+        Dim value As Double
+        If known.TryGetValue(slot, value) Then Return value
+        Dim h = _times(j + 1) - _times(j)
+        Dim bx = 0.0, by = 0.0
+        Dim cx = Coefficients(j, k, 0), cy = Coefficients(j, k, 1)
+        For p = order To 5
+            Dim w = If(order = 1, p, p * (p - 1))
+            bx += w * Math.Abs(cx(p))
+            by += w * Math.Abs(cy(p))
+        Next
+        value = Math.Sqrt(bx * bx + by * by) / Math.Pow(h, order)
+        known(slot) = value
+        Return value
+    End Function
+
+    ' Per step: each body's bounds (keyed 2k + order − 1), once asked for.
+    Private ReadOnly _stepBounds As New List(Of Dictionary(Of Integer, Double))
+    ' The bounds over the steps _rangeFirst to _rangeLast, the stretch asked about last.
+    Private ReadOnly _range As New Dictionary(Of Integer, Double)
+    Private _rangeFirst As Integer = -1
+    Private _rangeLast As Integer = -1
 End Class
