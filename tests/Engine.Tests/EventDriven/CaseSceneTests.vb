@@ -87,6 +87,60 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' The balls on the pegs of tests/cases/event-ball-asleep-on-peg-top.json, looked at every 0.05 s for 10 s:
+    ''' every ball asleep above the floor's layers (centre higher than 0.5 m) could be held where it is by what
+    ''' it touches that does not move (the floor, a wall, a peg, a ball asleep or still). Without friction each
+    ''' contact pushes along its normal only, so one ball is held when a level support holds it, or when the
+    ''' weight is a sum of two of its contacts' pushes, each ≥ 0 (the vertical lies between their normals). A
+    ''' ball asleep 7 mm off a peg's top, or leaning on a peg's shoulder and a ball that moves, is not. (Such a
+    ''' ball may be woken and fall later, so a count of the balls above the pegs at the end does not see it.)
+    ''' </summary>
+    <Fact>
+    Public Sub BallsOnPegs_NoBallSleepsWhereWhatItTouchesCannotHoldIt()
+        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-ball-asleep-on-peg-top.json"))
+        Dim solver = EventSolverTestKit.UseEventSolver(w)
+        Dim unheld As New List(Of String)
+        For k = 1 To 200
+            w.Advance(0.05)
+            For Each ball In w.Circles.Where(Function(c) Not c.IsFixed AndAlso solver.IsAsleep(c) AndAlso c.Position.Y > 0.5)
+                If Not HeldByStillContacts(w, solver, ball) Then unheld.Add($"{ball.Id} at t = {w.Time:0.##} s, ({ball.Position.X:0.####}, {ball.Position.Y:0.####})")
+            Next
+        Next
+        Assert.True(unheld.Count = 0, $"{unheld.Count} sightings of a ball asleep where nothing holds it: {String.Join("; ", unheld.Take(12))}")
+    End Sub
+
+    ''' <summary>
+    ''' Whether <paramref name="ball"/> could be held at rest by its frictionless contacts (within 10⁻³ of its
+    ''' radius) with the floor, the walls, fixed circles and circles asleep or still (taken as held themselves):
+    ''' one normal within 10⁻⁶ rad of the vertical, or two whose pushes λ₁ n₁ + λ₂ n₂ = (0, 1) have λ₁, λ₂ ≥ 0.
+    ''' </summary>
+    Private Shared Function HeldByStillContacts(w As World, solver As EventDrivenSolver, ball As Circle) As Boolean
+        Dim gap = 0.001 * ball.Radius
+        Dim p = ball.Position
+        Dim normals As New List(Of Vector)
+        If p.Y - ball.Radius <= gap Then normals.Add(New Vector(0, 1))
+        If p.X - ball.Radius <= gap Then normals.Add(New Vector(1, 0))
+        If w.Width - p.X - ball.Radius <= gap Then normals.Add(New Vector(-1, 0))
+        For Each other In w.Circles
+            If other Is ball OrElse Not (other.IsFixed OrElse solver.IsAsleep(other) OrElse other.Velocity = Vector.Zero) Then Continue For
+            Dim d = p - other.Position
+            If d.Length - ball.Radius - other.Radius <= gap Then normals.Add(d * (1 / d.Length))
+        Next
+        For a = 0 To normals.Count - 1
+            If normals(a).Y >= 1 - 0.0000000000005 Then Return True
+            For b = a + 1 To normals.Count - 1
+                Dim n1 = normals(a), n2 = normals(b)
+                Dim det = n1.X * n2.Y - n1.Y * n2.X
+                If det = 0 Then Continue For
+                ' (0, 1) = λ₁ n₁ + λ₂ n₂ by Cramer's rule.
+                Dim l1 = -n2.X / det, l2 = n1.X / det
+                If l1 >= 0 AndAlso l2 >= 0 Then Return True
+            Next
+        Next
+        Return False
+    End Function
+
+    ''' <summary>
     ''' No links, e = 0: a 4.96 kg ball slides along the floor at 1 m/s into a 0.57 kg ball resting in the
     ''' corner and lifts it up the wall. The fast path resolved the jammed pair as a cluster, then took the
     ''' sliding heavy ball as an immovable support (thousands of contacts at 0.733 m/s, the light ball lifted by
