@@ -378,7 +378,7 @@ Partial Friend NotInheritable Class MainForm
         _inputs(field) = box
         ' One line as tall as the layout makes it (a line of text and a margin), the text in its middle:
         ' Mono would otherwise size it from the DPI it reports, not the one it draws at.
-        WindowKit.KeepToOneLine(box)
+        WindowKit.KeepToOneLine(box, _trace, field.ToString())
         ' Every edit goes to the presenter at once, so what was typed is what it knows.
         AddHandler box.TextChanged,
             Sub(s, a)

@@ -244,6 +244,34 @@ Public Class LayoutGuiTests
         Next
     End Sub
 
+    ''' <summary>
+    ''' At 144 and 192 dpi a one-line text box shows its figures whole once text is typed into it or set
+    ''' by the app: its view of its line stays at the top (Mono scrolls a box to show the whole of a line
+    ''' it lays out twice as tall as the figures, which leaves only their bottom edge in view). The side
+    ''' panel's radius box after typing, and the Forces page's C_d and b boxes when the page fills them.
+    ''' </summary>
+    <GuiTheory>
+    <InlineData("1920x1200x24", 144)>
+    <InlineData("2560x1600x24", 192)>
+    Public Sub AOneLineTextBox_ShowsItsFiguresWhole_AfterTextIsTypedOrSet(screen As String, dpi As Integer)
+        Using app As New AppDriver(New XSessionOptions With {.Screen = screen, .Dpi = dpi})
+            app.WaitFor("^dpi " & dpi & " ")
+            app.WaitFor("^ready$")
+            Dim from = app.Mark()
+            app.TypeInto("radius", "0.375")
+            Dim typed = app.WaitFor("^box Radius view top (-?\d+) px \[0\.375\]$", skip:=from)
+            Assert.True(Int(typed.Groups(1).Value) = 0, $"after typing at {dpi} dpi the radius box's view is scrolled {typed.Groups(1).Value} px down its line: only the bottom of the figures shows")
+            from = app.Mark()
+            app.Click("tab-forces")
+            app.WaitFor("^tab Forces$", skip:=from)
+            For Each name In {"forces-cd", "forces-b"}
+                Dim filled = app.WaitFor("^box " & name & " view top (-?\d+) px \[.+\]$", skip:=from)
+                Assert.True(Int(filled.Groups(1).Value) = 0, $"once the Forces page filled it at {dpi} dpi, the {name} box's view is scrolled {filled.Groups(1).Value} px down its line")
+            Next
+            app.X.Shoot("one-line-boxes-" & dpi & "dpi")
+        End Using
+    End Sub
+
     <GuiFact>
     Public Sub TheSidePanel_StaysWhereItWasScrolled_WhenAToggleIsClicked()
         Using app As New AppDriver(New XSessionOptions With {.Screen = "1280x720x24"})
