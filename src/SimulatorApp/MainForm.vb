@@ -836,9 +836,14 @@ Partial Friend NotInheritable Class MainForm
         Return String.Join(Environment.NewLine, lines)
     End Function
 
+    ''' <summary>The window's font size with normal fonts at 96 dpi, points.</summary>
+    Private Const NormalFontPoints As Double = 10.0
+    ''' <summary>The window's font size with large fonts at 96 dpi, points.</summary>
+    Private Const LargeFontPoints As Double = 14.0
+
     Public Sub ShowTheme() Implements ISimulationView.ShowTheme
         If _presenter Is Nothing Then Return
-        Dim size = CSng(If(_presenter.LargeFonts, 14.0, 10.0) * _dpi.FontScale)
+        Dim size = CSng(If(_presenter.LargeFonts, LargeFontPoints, NormalFontPoints) * _dpi.FontScale)
         Dim old = Font
         Font = New Font(FontFamily.GenericSansSerif, size)
         If old IsNot Nothing AndAlso Not ReferenceEquals(old, DefaultFont) Then old.Dispose()
