@@ -222,10 +222,14 @@ Partial Friend NotInheritable Class MainForm
         TraceColumns(list, widths)
     End Sub
 
-    ''' <summary>Gives a table the window's font at <paramref name="size"/> points (the window's own while it fits), when it has another.</summary>
+    ''' <summary>
+    ''' Gives a table the window's font at <paramref name="size"/> points, when it has another: at the
+    ''' window's own size it takes the window's font again (Nothing: it follows the window's, which is
+    ''' replaced, and the old one disposed, when large fonts are turned on or off).
+    ''' </summary>
     Private Sub UseTableFont(list As BufferedListView, size As Single)
         If Math.Abs(list.Font.Size - size) < 0.01F AndAlso list.Font.FontFamily.Equals(Font.FontFamily) Then Return
-        list.Font = If(Math.Abs(Font.Size - size) < 0.01F, Font, New Font(Font.FontFamily, size))
+        list.Font = If(Math.Abs(Font.Size - size) < 0.01F, Nothing, New Font(Font.FontFamily, size))
     End Sub
 
     ''' <summary>Each column's header's width and its widest value's (a typical one and what its rows hold now), px, in the list's font.</summary>
