@@ -22,7 +22,7 @@ Public Structure BodyRow
     Public Property Size As Vector
     ''' <summary>m²</summary>
     Public Property Area As Double
-    ''' <summary>What the body is, as the Bodies table names it: "ball", "fixed ball", "rectangle", "box", "ramp", a polygon by its sides ("triangle", "fixed pentagon", "dodecagon"; "polygon" past twelve).</summary>
+    ''' <summary>What the body is, as the Bodies table names it: "ball", "fixed ball", "rectangle", "box", "ramp", a polygon by its sides, fixed or not ("triangle", "quadrilateral", "dodecagon"; "polygon" past twelve).</summary>
     Public Property KindLabel As String
     ''' <summary>Where its mass is centred (a ramp's middle), m.</summary>
     Public Property Centre As Vector
@@ -87,7 +87,8 @@ Public Structure BodyRow
                 row.Size = body.BoundsMax - body.BoundsMin
                 row.SizeFields = Array.Empty(Of (Name As String, Metres As Double))()
                 ' Its sides in its name ("pentagon"), its size as a box's: the Size column then needs no more room for a polygon than for a box.
-                row.KindLabel = If(body.IsFixed, "fixed ", "") & PolygonName(body.Outline.VertexCount)
+                ' A fixed one is named so by its mass ("fixed") and colour cell ("fixed"): "fixed quadrilateral" would widen the Kind column past a 1280-px screen.
+                row.KindLabel = PolygonName(body.Outline.VertexCount)
                 row.SizeText = Units.Sig(row.Size.X) & " × " & Units.Sig(row.Size.Y)
         End Select
         Return row

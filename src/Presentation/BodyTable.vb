@@ -49,10 +49,15 @@ Public NotInheritable Class BodyTable
                      If(r.IsFixed, "fixed", Units.Sig(r.Mass)), Units.Sig(r.Size.X),
                      If(r.IsFixed, "—", Units.Sig(r.Mass / r.Area))})
 
-    ''' <summary>Every rectangle (fixed: no velocity, no finite mass). x, y is the lower-left corner.</summary>
+    ''' <summary>
+    ''' Every rectangle (fixed: no velocity, no finite mass). x, y is the lower-left corner. Its headers
+    ''' are short (w × h its size, A its area), so that all twelve columns show at once at 192 dpi with
+    ''' large fonts; the tip says what they are.
+    ''' </summary>
     Public Shared ReadOnly Property Rectangles As New BodyTable("Rectangles",
-        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", SpeedHeader, MassHeader, "Width × height (m)", "Area (m²)", KineticHeader, StaticHeader},
-        "x, y: the lower-left corner (m); vx, vy: the velocity and |v| the speed (m/s); m: the mass (kg). " & FrictionTip,
+        {"Id", "Colour", "x (m)", "y (m)", "vx (m/s)", "vy (m/s)", SpeedHeader, MassHeader, SizeHeader, "A (m²)", KineticHeader, StaticHeader},
+        "x, y: the lower-left corner (m); vx, vy: the velocity and |v| the speed (m/s); m: the mass (kg); " &
+        "w × h: the width and height (m); A: the area (m²). " & FrictionTip,
         Function(b) TypeOf b Is Rectangle,
         Function(r) {r.Id, ColourCell(r), Units.Sig(r.Position.X), Units.Sig(r.Position.Y),
                      Units.Sig(r.Velocity.X), Units.Sig(r.Velocity.Y), Units.Sig(r.Velocity.Length),
@@ -81,6 +86,8 @@ Public NotInheritable Class BodyTable
     Public Const SpeedHeader As String = "|v| (m/s)"
     ''' <summary>The header of the mass's column, kg.</summary>
     Public Const MassHeader As String = "m (kg)"
+    ''' <summary>The header of a rectangle's width × height column, m.</summary>
+    Public Const SizeHeader As String = "w × h (m)"
     ''' <summary>The header of a ball's radius's column, m.</summary>
     Public Const RadiusHeader As String = "r (m)"
     ''' <summary>The header of the column of a surface's own μk (no unit: a coefficient).</summary>
@@ -105,8 +112,11 @@ Public NotInheritable Class BodyTable
         Return Units.Input(row.Static) & If(row.OwnKinetic.HasValue, " (= μk)", WorldMark)
     End Function
 
-    ''' <summary>The colour cell of a body the canvas fills with the theme's fixed colour (its own colour is not what shows).</summary>
-    Public Const FixedColourCell As String = "fixed grey"
+    ''' <summary>
+    ''' The colour cell of a body the canvas fills with the theme's fixed colour (its own colour is not
+    ''' what shows): its swatch is that colour, its word why (not a colour's name: the theme chooses it).
+    ''' </summary>
+    Public Const FixedColourCell As String = "fixed"
 
     ''' <summary>The colour the body is drawn in: its own ("#e53935"), or <see cref="FixedColourCell"/>.</summary>
     Public Shared Function ColourCell(row As BodyRow) As String

@@ -38,7 +38,7 @@ Friend NotInheritable Class TableEditor
             Case "vy (m/s)" : Return TableQuantity.Vy
             Case BodyTable.MassHeader : Return TableQuantity.Mass
             Case BodyTable.RadiusHeader : Return TableQuantity.Radius
-            Case "Width × height (m)", "Size (m)" : Return TableQuantity.Size
+            Case BodyTable.SizeHeader, "Size (m)" : Return TableQuantity.Size
             Case BodyTable.KineticHeader : Return TableQuantity.KineticFriction
             Case BodyTable.StaticHeader : Return TableQuantity.StaticFriction
         End Select

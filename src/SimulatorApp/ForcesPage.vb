@@ -46,8 +46,8 @@ Friend NotInheritable Class ForcesPage
         ' Check boxes whose box, and text boxes and a drop-down whose height, grow with the text, as the side panel's.
         _show.ScreenScale = kit.Dpi.Scale
         _air.ScreenScale = kit.Dpi.Scale
-        For Each box In {_density, _cd, _b}
-            WindowKit.KeepToOneLine(box)
+        For Each box In {(_density, "forces-air-density"), (_cd, "forces-cd"), (_b, "forces-b")}
+            WindowKit.KeepToOneLine(box.Item1, kit.Trace, box.Item2)
         Next
         For Each h In FreeBodyView.Headers
             _list.Columns.Add(h, 100)

@@ -192,14 +192,27 @@ Partial Friend NotInheritable Class MainForm
     ''' Each column as wide as its header and values, and the spare width shared out, so no header is
     ''' clipped. Where the columns with their usual margin would be wider than the list (the Bodies
     ''' table's twelve on a 1280-px screen), the margins close up, down to a few pixels, before the
-    ''' list would need a sideways scroll: a teacher sees every column at once.
+    ''' list would need a sideways scroll (to 4 px at 96 dpi: a value still clear of the next column's
+    ''' grid line): a teacher sees every column at once. With large fonts, where
+    ''' even that is too wide (the Bodies table's twelve columns at 192 dpi), the table's text steps
+    ''' down a point at a time, never below the normal fonts' size, until every column shows.
     ''' </summary>
     Private Sub FitColumns(list As BufferedListView, available As Integer)
-        Dim margin = S(12)
-        Dim widths = NeededColumnWidths(list, margin)
-        Do While margin > S(6) AndAlso widths.Sum() > available
-            margin -= 1
-            widths = NeededColumnWidths(list, margin)
+        Dim least = CSng(NormalFontPoints * _dpi.FontScale)
+        Dim size = Font.Size
+        Dim margin As Integer
+        Dim widths As Integer()
+        Do
+            UseTableFont(list, size)
+            Dim text = ColumnTextWidths(list)
+            margin = S(12)
+            widths = WidthsWithMargin(text, margin)
+            Do While margin > S(4) AndAlso widths.Sum() > available
+                margin -= 1
+                widths = WidthsWithMargin(text, margin)
+            Loop
+            If widths.Sum() <= available OrElse size <= least Then Exit Do
+            size = Math.Max(least, size - CSng(_dpi.FontScale))
         Loop
         _columnMargins(list) = margin
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
@@ -208,6 +221,38 @@ Partial Friend NotInheritable Class MainForm
         Next
         TraceColumns(list, widths)
     End Sub
+
+    ''' <summary>
+    ''' Gives a table the window's font at <paramref name="size"/> points, when it has another: at the
+    ''' window's own size it takes the window's font again (Nothing: it follows the window's, which is
+    ''' replaced, and the old one disposed, when large fonts are turned on or off).
+    ''' </summary>
+    Private Sub UseTableFont(list As BufferedListView, size As Single)
+        If Math.Abs(list.Font.Size - size) < 0.01F AndAlso list.Font.FontFamily.Equals(Font.FontFamily) Then Return
+        list.Font = If(Math.Abs(Font.Size - size) < 0.01F, Nothing, New Font(Font.FontFamily, size))
+    End Sub
+
+    ''' <summary>Each column's header's width and its widest value's (a typical one and what its rows hold now), px, in the list's font.</summary>
+    Private Function ColumnTextWidths(list As BufferedListView) As (Header As Integer, Widest As Integer)()
+        Dim result(list.Columns.Count - 1) As (Header As Integer, Widest As Integer)
+        Dim rows = ShownCells(list)
+        For i = 0 To result.Length - 1
+            Dim widest = Measure(ColumnSample(list.Columns(i).Text, i), list.Font).Width
+            For Each rowCells In rows
+                If i < rowCells.Length Then widest = Math.Max(widest, Measure(rowCells(i), list.Font).Width)
+            Next
+            result(i) = (Measure(list.Columns(i).Text, list.Font).Width, widest)
+        Next
+        Return result
+    End Function
+
+    ''' <summary>
+    ''' Each column's least width, px, from its text's widths: a header keeps its full margin (Mono and
+    ''' Windows both inset its caption by several pixels); values have <paramref name="margin"/> px beside them and may close up.
+    ''' </summary>
+    Private Function WidthsWithMargin(text As (Header As Integer, Widest As Integer)(), margin As Integer) As Integer()
+        Return text.Select(Function(t) Math.Max(t.Header + S(12), t.Widest + margin)).ToArray()
+    End Function
 
     ''' <summary>The margin beside each column's widest text in <paramref name="list"/>, px.</summary>
     Private Function ColumnMargin(list As BufferedListView) As Integer
@@ -220,17 +265,7 @@ Partial Friend NotInheritable Class MainForm
     ''' polygon's "1.23×10⁻³ × 0.500"), each value with <paramref name="margin"/> px beside it.
     ''' </summary>
     Private Function NeededColumnWidths(list As BufferedListView, margin As Integer) As Integer()
-        Dim widths(list.Columns.Count - 1) As Integer
-        Dim rows = ShownCells(list)
-        For i = 0 To widths.Length - 1
-            Dim widest = Measure(ColumnSample(list.Columns(i).Text, i), list.Font).Width
-            For Each rowCells In rows
-                If i < rowCells.Length Then widest = Math.Max(widest, Measure(rowCells(i), list.Font).Width)
-            Next
-            ' A header keeps its full margin (Mono and Windows both inset its caption by several pixels); values may close up.
-            widths(i) = Math.Max(Measure(list.Columns(i).Text, list.Font).Width + S(12), widest + margin)
-        Next
-        Return widths
+        Return WidthsWithMargin(ColumnTextWidths(list), margin)
     End Function
 
     ''' <summary>The cells of the first rows a body or link table holds now (at most 40: enough to see how wide its values run).</summary>
@@ -310,7 +345,7 @@ Partial Friend NotInheritable Class MainForm
             Case "Kind" : Return If(index = 1, "spring, k 1000 N/m", "rectangle")
             Case "End B" : Return "anchor (0.00, 0.00)"
             ' A body's size in words runs from "r 0.250" and "length 2.83" to a box's or a polygon's "0.800 × 0.761".
-            Case "Size (m)" : Return "0.000 × 0.000"
+            Case "Size (m)", BodyTable.SizeHeader : Return "0.000 × 0.000"
             Case "Colour" : Return "#888888"
             ' Only a velocity's components are usually negative: a position in a walled container, a speed, a mass, a size or a density is not (a column grows when one is).
             Case "vx (m/s)", "vy (m/s)" : Return "−0.000"

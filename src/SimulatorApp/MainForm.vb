@@ -378,7 +378,7 @@ Partial Friend NotInheritable Class MainForm
         _inputs(field) = box
         ' One line as tall as the layout makes it (a line of text and a margin), the text in its middle:
         ' Mono would otherwise size it from the DPI it reports, not the one it draws at.
-        WindowKit.KeepToOneLine(box)
+        WindowKit.KeepToOneLine(box, _trace, field.ToString())
         ' Every edit goes to the presenter at once, so what was typed is what it knows.
         AddHandler box.TextChanged,
             Sub(s, a)
@@ -836,9 +836,14 @@ Partial Friend NotInheritable Class MainForm
         Return String.Join(Environment.NewLine, lines)
     End Function
 
+    ''' <summary>The window's font size with normal fonts at 96 dpi, points.</summary>
+    Private Const NormalFontPoints As Double = 10.0
+    ''' <summary>The window's font size with large fonts at 96 dpi, points.</summary>
+    Private Const LargeFontPoints As Double = 14.0
+
     Public Sub ShowTheme() Implements ISimulationView.ShowTheme
         If _presenter Is Nothing Then Return
-        Dim size = CSng(If(_presenter.LargeFonts, 14.0, 10.0) * _dpi.FontScale)
+        Dim size = CSng(If(_presenter.LargeFonts, LargeFontPoints, NormalFontPoints) * _dpi.FontScale)
         Dim old = Font
         Font = New Font(FontFamily.GenericSansSerif, size)
         If old IsNot Nothing AndAlso Not ReferenceEquals(old, DefaultFont) Then old.Dispose()

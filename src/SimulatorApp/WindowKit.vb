@@ -110,6 +110,32 @@ Friend NotInheritable Class WindowKit
         If b.Padding.Top <> top Then b.Padding = New Padding(0, top, 0, 0)
     End Sub
 
+    ''' <summary>Mono's vertical scroll bar of a text box (an internal field; Nothing on Windows, which has none to fight).</summary>
+    Private Shared ReadOnly MonoVerticalScroll As Reflection.FieldInfo =
+        GetType(TextBoxBase).GetField("vscroll", Reflection.BindingFlags.Instance Or Reflection.BindingFlags.NonPublic)
+
+    ''' <summary>
+    ''' How far down <paramref name="box"/>'s view of its text is scrolled, px (0: its line shows from its
+    ''' top). Mono keeps this in its own scroll bar, hidden in a box without scroll bars; 0 where there is none.
+    ''' </summary>
+    Public Shared Function ViewTop(box As TextBox) As Integer
+        If box Is Nothing Then Throw New ArgumentNullException(NameOf(box))
+        Dim bar = TryCast(MonoVerticalScroll?.GetValue(box), ScrollBar)
+        Return If(bar Is Nothing, 0, bar.Value)
+    End Function
+
+    ''' <summary>
+    ''' Puts <paramref name="box"/>'s one line back at the top of its view. Mono lays out a line as tall
+    ''' as the font height it reports (under a desktop's Xft.dpi twice the text drawn: 48 px for 24 px of
+    ''' figures at 192 dpi) and, each time the caret moves (text set or typed, a click), scrolls a
+    ''' multiline box until that whole line is in view: in a box a line of text high only the bottom edge
+    ''' of the figures then shows. The figures are drawn in the line's top half, so a view at the top shows them whole.
+    ''' </summary>
+    Private Shared Sub ScrollToTop(box As TextBox)
+        Dim bar = TryCast(MonoVerticalScroll?.GetValue(box), ScrollBar)
+        If bar IsNot Nothing AndAlso bar.Value <> bar.Minimum Then bar.Value = bar.Minimum
+    End Sub
+
     ''' <summary>The characters a one-line text box never keeps.</summary>
     Private Shared ReadOnly LineBreaks As Char() = {Convert.ToChar(13), Convert.ToChar(10)}
 
@@ -118,10 +144,31 @@ Friend NotInheritable Class WindowKit
     ''' <see cref="OneLineHeight"/>), its text in its middle at every DPI. It is multiline to the toolkit:
     ''' Mono keeps a single-line box as tall as the font height it reports (under a desktop's Xft.dpi
     ''' about twice the text drawn) and writes the text at its top; a multiline box takes the height it is
-    ''' given. It never wraps, and Enter or a pasted line break adds no line.
+    ''' given. It never wraps, and Enter or a pasted line break adds no line. Its view is kept at the top
+    ''' of its line (see <see cref="ScrollToTop"/>) after every change, click, key and resize; with
+    ''' <paramref name="trace"/>, each time it is, "box <paramref name="name"/> view top N px [text]".
     ''' </summary>
-    Public Shared Sub KeepToOneLine(box As TextBox)
+    Public Shared Sub KeepToOneLine(box As TextBox, Optional trace As Action(Of String) = Nothing, Optional name As String = Nothing)
         If box Is Nothing Then Throw New ArgumentNullException(NameOf(box))
+        ' Mono scrolls after the event that moved the caret has been handled: put the view back once it has.
+        Dim pending = False
+        Dim settle =
+            Sub()
+                If pending OrElse Not box.IsHandleCreated OrElse box.IsDisposed Then Return
+                pending = True
+                box.BeginInvoke(New Action(
+                    Sub()
+                        pending = False
+                        If box.IsDisposed Then Return
+                        ScrollToTop(box)
+                        trace?.Invoke("box " & If(name, box.Name) & " view top " & ViewTop(box) & " px [" & box.Text & "]")
+                    End Sub))
+            End Sub
+        AddHandler box.TextChanged, Sub(s, e) settle()
+        AddHandler box.KeyUp, Sub(s, e) settle()
+        AddHandler box.MouseUp, Sub(s, e) settle()
+        AddHandler box.GotFocus, Sub(s, e) settle()
+        AddHandler box.SizeChanged, Sub(s, e) settle()
         box.AutoSize = False
         box.Multiline = True
         box.WordWrap = False

@@ -4,7 +4,7 @@ Imports Xunit
 
 ''' <summary>The polygon, box and ramp tools, the Bodies table, and the cue and carry on every movable kind.</summary>
 Public Class ShapeToolsTests
-    Private Shared ReadOnly EveryKind As String() = {"ball", "fixed ball", "rectangle", "box", "ramp", "pentagon", "fixed triangle"}
+    Private Shared ReadOnly EveryKind As String() = {"ball", "fixed ball", "rectangle", "box", "ramp", "pentagon", "triangle"}
 
     <Theory>
     <InlineData(3, 0.5, 0.0)>
