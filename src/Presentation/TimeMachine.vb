@@ -381,9 +381,13 @@ Friend NotInheritable Class TimeMachine
         _stage.Window.ShowSettings()
         _stage.Emit(what & " t=" & Units.Num(_stage.World.Time, 6) & " s, collisions " & _stage.Log.TotalSeen & ", timeline " & Units.Num(_timeline.Earliest, 6) & " to " & Units.Num(_timeline.Latest, 6) & " s, " & _timeline.Points.Count & " checkpoints")
         If Not _stage.Tracing Then Return
+        Dim count = 0
         For Each b In _stage.World.Movables
             _stage.Emit("state " & b.Id & " " & Exact(b.Position.X) & " " & Exact(b.Position.Y) & " " & Exact(b.Velocity.X) & " " & Exact(b.Velocity.Y))
+            count += 1
         Next
+        ' The last line of a step's states, so that a reader of the trace knows it has them all.
+        _stage.Emit("states end, " & count & " bodies")
     End Sub
 
     ''' <summary>A number to the last bit ("R" round-trips), for tests that compare states exactly.</summary>

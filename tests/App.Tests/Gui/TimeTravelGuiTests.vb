@@ -13,19 +13,20 @@ Imports Xunit
 Public Class TimeTravelGuiTests
     ''' <summary>The time and the bodies' states the app traced after its last time-control line matching <paramref name="pattern"/>.</summary>
     Private Shared Function StateAfter(app As AppDriver, pattern As String, from As Integer) As (Time As Double, Collisions As Long, Bodies As Dictionary(Of String, Double()))
-        Dim m = app.WaitFor(pattern, skip:=from)
+        app.WaitFor(pattern, skip:=from)
+        Dim at = Array.FindLastIndex(app.Lines(), Function(l) Regex.IsMatch(l, pattern))
+        ' The states follow the step's line in the same call, but may reach the trace a moment later: wait for their end.
+        Dim count = Integer.Parse(app.WaitFor("^states end, (\d+) bodies$", skip:=at + 1).Groups(1).Value, CultureInfo.InvariantCulture)
         Dim lines = app.Lines()
-        Dim at = Array.FindLastIndex(lines, Function(l) Regex.IsMatch(l, pattern))
         Dim head = Regex.Match(lines(at), "t=(\S+) s, collisions (\d+)")
         Dim bodies As New Dictionary(Of String, Double())(StringComparer.Ordinal)
         For i = at + 1 To lines.Length - 1
+            If lines(i).StartsWith("states end", StringComparison.Ordinal) Then Exit For
             Dim s = Regex.Match(lines(i), "^state (\S+) (\S+) (\S+) (\S+) (\S+)$")
-            If Not s.Success Then
-                If bodies.Count > 0 Then Exit For
-                Continue For
-            End If
+            If Not s.Success Then Continue For
             bodies(s.Groups(1).Value) = Enumerable.Range(2, 4).Select(Function(g) Double.Parse(s.Groups(g).Value, CultureInfo.InvariantCulture)).ToArray()
         Next
+        Assert.Equal(count, bodies.Count)
         Return (Double.Parse(head.Groups(1).Value, CultureInfo.InvariantCulture), Long.Parse(head.Groups(2).Value, CultureInfo.InvariantCulture), bodies)
     End Function
 
