@@ -23,7 +23,7 @@ Public Class CaseSceneTests
     ''' </summary>
     <Fact>
     Public Sub BallPressedIntoTheCeilingByASpring_StaysInside_WithoutChatter()
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-spring-presses-ball-into-ceiling.json"))
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-spring-presses-ball-into-ceiling.json"))
         EventSolverTestKit.UseEventSolver(w)
         Dim hits = 0
         w.CollisionListener = Sub(r) hits += 1
@@ -38,7 +38,7 @@ Public Class CaseSceneTests
 
     <Fact>
     Public Sub BallLeftOnASleeper_FallsOntoIt_NotIntoIt()
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-ball-sinks-into-sleeper.json"))
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-ball-sinks-into-sleeper.json"))
         EventSolverTestKit.UseEventSolver(w)
         For k = 1 To 50
             w.Advance(0.001)
@@ -57,7 +57,7 @@ Public Class CaseSceneTests
     ''' </summary>
     <Fact>
     Public Sub FeatherPumpedInACage_TakesFewCollisions_AndGainsNoEnergy()
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-feather-pumped-in-cage.json"))
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-feather-pumped-in-cage.json"))
         EventSolverTestKit.UseEventSolver(w)
         Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
         For k = 1 To 10
@@ -78,7 +78,7 @@ Public Class CaseSceneTests
     ''' </summary>
     <Fact>
     Public Sub BallsOnPegs_NoneStaysAbove()
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-ball-asleep-on-peg-top.json"))
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-ball-asleep-on-peg-top.json"))
         EventSolverTestKit.UseEventSolver(w)
         w.Advance(10)
         Dim above = w.Movables.Where(Function(b) b.Position.Y > 1.0).Select(Function(b) $"{b.Id} at ({b.Position.X:0.####}, {b.Position.Y:0.####})").ToList()
@@ -97,7 +97,7 @@ Public Class CaseSceneTests
     ''' </summary>
     <Fact>
     Public Sub BallsOnPegs_NoBallSleepsWhereWhatItTouchesCannotHoldIt()
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-ball-asleep-on-peg-top.json"))
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-ball-asleep-on-peg-top.json"))
         Dim solver = EventSolverTestKit.UseEventSolver(w)
         Dim unheld As New List(Of String)
         For k = 1 To 200
@@ -170,8 +170,8 @@ Public Class CaseSceneTests
     ''' </summary>
     <Fact>
     Public Sub RoughWorldOfBallsOnly_RunsAsTheFrictionlessOne()
-        Dim rough = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-rough-circles-only.json"))
-        Dim icy = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-rough-circles-only.json"))
+        Dim rough = SceneFile.LoadFile(TestRepo.CaseFile("event-rough-circles-only.json"))
+        Dim icy = SceneFile.LoadFile(TestRepo.CaseFile("event-rough-circles-only.json"))
         icy.StaticFriction = Nothing
         icy.Friction = 0
         EventSolverTestKit.UseEventSolver(rough)
@@ -190,7 +190,7 @@ Public Class CaseSceneTests
     End Sub
 
     Private Shared Sub AssertEnergyPlusDissipatedKept(name As String, total As Double, relative As Double)
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", name))
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile(name))
         EventSolverTestKit.UseEventSolver(w)
         Dim e0 = w.KineticEnergy + w.PotentialEnergy + w.Dissipated
         Do While w.Time < total - 0.000000001
@@ -274,7 +274,7 @@ Public Class CaseSceneTests
     Public Sub FrictionlessHopper_KeepsItsEnergyBooks_WithNoOverlap(seed As Integer, restitution As Double, balls As Integer)
         Dim w As World
         If seed < 0 Then
-            w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-hopper-frictionless.json"))
+            w = SceneFile.LoadFile(TestRepo.CaseFile("event-hopper-frictionless.json"))
             w.Restitution = restitution
             Assert.Equal(balls, w.Circles.Where(Function(b) Not b.IsFixed).Count())
         Else
@@ -291,7 +291,7 @@ Public Class CaseSceneTests
     <InlineData(0.3)>
     <InlineData(0.0)>
     Public Sub FrictionlessHopper_Empties(restitution As Double)
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-hopper-frictionless.json"))
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-hopper-frictionless.json"))
         w.Restitution = restitution
         AssertHopperEmpties(w)
     End Sub
@@ -313,11 +313,4 @@ Public Class CaseSceneTests
         "the event solver still jams the frictionless hopper: a body resolved in a cluster twice at one instant " &
         "(ClusterResponse) is stopped and put to sleep whether or not anything holds it, and a ball may sleep on a " &
         "neighbour that still moves"
-
-    Private Shared Function RepoRoot() As String
-        For Each a In GetType(CaseSceneTests).Assembly.GetCustomAttributes(GetType(Reflection.AssemblyMetadataAttribute), False).Cast(Of Reflection.AssemblyMetadataAttribute)()
-            If a.Key = "RepoRoot" Then Return a.Value
-        Next
-        Throw New InvalidOperationException("no RepoRoot metadata")
-    End Function
 End Class

@@ -12,7 +12,7 @@ Imports Xunit
 Public Class LinkedSearchWorkTests
     ''' <summary>Runs case <paramref name="name"/> for <paramref name="duration"/> s in one advance of the linked solver alone.</summary>
     Private Shared Function Run(name As String, duration As Double, ByRef evaluations As Long, Optional ByRef collisions As Long = 0) As World
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", name))
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile(name))
         Dim s As New LinkedEventSolver()
         s.Attach(w)
         s.Advance(duration)
@@ -54,7 +54,7 @@ Public Class LinkedSearchWorkTests
     ''' <summary>The same pyramid over 2 s: no overlap, and kinetic, gravitational and spring energy kept (e = 1).</summary>
     <Fact>
     Public Sub PyramidPulledBySpring_KeepsItsEnergy_AndNeverOverlaps()
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "tests", "cases", "event-linked-pyramid-pulled-by-spring.json"))
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-pyramid-pulled-by-spring.json"))
         EventSolverTestKit.UseEventSolver(w)
         Dim e0 = w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated
         For k = 1 To 40
@@ -89,11 +89,4 @@ Public Class LinkedSearchWorkTests
         Dim w = Run("event-linked-boxes-balls-string-springs.json", 2, evaluations, collisions)
         Assert.True(evaluations < 1000000, $"{evaluations} gap measurements for 2 s ({collisions} collisions)")
     End Sub
-
-    Private Shared Function RepoRoot() As String
-        For Each a In GetType(LinkedSearchWorkTests).Assembly.GetCustomAttributes(GetType(Reflection.AssemblyMetadataAttribute), False).Cast(Of Reflection.AssemblyMetadataAttribute)()
-            If a.Key = "RepoRoot" Then Return a.Value
-        Next
-        Throw New InvalidOperationException("no RepoRoot metadata")
-    End Function
 End Class

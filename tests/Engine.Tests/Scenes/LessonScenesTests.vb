@@ -6,7 +6,7 @@ Imports Xunit
 ''' <summary>The lesson scenes in scenes/ show what their lines in the Scenes menu say, against closed forms.</summary>
 Public Class LessonScenesTests
     Private Shared Function Run(name As String, seconds As Double) As World
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "scenes", name))
+        Dim w = SceneFile.LoadFile(Path.Combine(TestRepo.Root(), "scenes", name))
         w.Solver = SolverFactory.Create("event")
         w.Advance(seconds)
         Return w
@@ -61,7 +61,7 @@ Public Class LessonScenesTests
         ' pegs, and pile up in the bins. Each row of pegs sends a ball left or right by half a peg
         ' spacing, so the counts make a binomial (bell) shape centred under the chute.
         ' The file is the board Scenarios builds (which the benchmark runs with more balls).
-        SceneRoundTripTests.AssertSameScene(Scenarios.GaltonBoard(), SceneFile.LoadFile(Path.Combine(RepoRoot(), "scenes", "galton-board.json")), "galton-board.json")
+        SceneRoundTripTests.AssertSameScene(Scenarios.GaltonBoard(), SceneFile.LoadFile(Path.Combine(TestRepo.Root(), "scenes", "galton-board.json")), "galton-board.json")
         Dim w = Run("galton-board.json", 14.0)
         Dim balls = w.Movables.OfType(Of Circle)().ToList()
         Assert.True(balls.Count >= 200, $"{balls.Count} balls")
@@ -94,7 +94,7 @@ Public Class LessonScenesTests
 
     <Fact>
     Public Sub IdealGas_KeepsItsKineticEnergy()
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "scenes", "ideal-gas.json"))
+        Dim w = SceneFile.LoadFile(Path.Combine(TestRepo.Root(), "scenes", "ideal-gas.json"))
         Assert.Equal(1000, w.Movables.Count)
         Assert.Equal(1.0, w.Restitution)
         Dim before = w.Movables.Sum(Function(b) b.KineticEnergy)
@@ -112,11 +112,4 @@ Public Class LessonScenesTests
         Assert.True(ke < 1.0E-6, $"kinetic energy {ke} J after 8 s")
         Assert.Null(Placement.FindProblem(w))
     End Sub
-
-    Private Shared Function RepoRoot() As String
-        For Each a In GetType(LessonScenesTests).Assembly.GetCustomAttributes(GetType(Reflection.AssemblyMetadataAttribute), False).Cast(Of Reflection.AssemblyMetadataAttribute)()
-            If a.Key = "RepoRoot" Then Return a.Value
-        Next
-        Throw New InvalidOperationException("no RepoRoot metadata")
-    End Function
 End Class

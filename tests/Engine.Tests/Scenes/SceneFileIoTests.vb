@@ -56,21 +56,21 @@ Public Class SceneFileIoTests
 
     Public Shared ReadOnly Property ExampleScenes As TheoryData(Of String)
         Get
-            Return New TheoryData(Of String)(Directory.GetFiles(Path.Combine(RepoRoot(), "scenes"), "*.json").Select(Function(f) Path.GetFileName(f)))
+            Return New TheoryData(Of String)(Directory.GetFiles(Path.Combine(TestRepo.Root(), "scenes"), "*.json").Select(Function(f) Path.GetFileName(f)))
         End Get
     End Property
 
     <Theory>
     <MemberData(NameOf(ExampleScenes))>
     Public Sub ExampleScenes_AreValid_AndSurviveARoundTrip(name As String)
-        Dim w = SceneFile.LoadFile(Path.Combine(RepoRoot(), "scenes", name))
+        Dim w = SceneFile.LoadFile(Path.Combine(TestRepo.Root(), "scenes", name))
         Assert.NotEmpty(w.Bodies)
         SceneRoundTripTests.AssertSameScene(w, SceneFile.Load(SceneFile.Save(w)), name)
     End Sub
 
     <Fact>
     Public Sub TheExampleScenesFolder_HoldsTheNamedExamples()
-        Dim names = Directory.GetFiles(Path.Combine(RepoRoot(), "scenes"), "*.json").Select(Function(f) Path.GetFileName(f)).ToList()
+        Dim names = Directory.GetFiles(Path.Combine(TestRepo.Root(), "scenes"), "*.json").Select(Function(f) Path.GetFileName(f)).ToList()
         For Each expected In {"demo.json", "bouncing-ball.json", "newtons-cradle.json", "pool-break.json", "peg-board.json",
                               "head-on.json", "head-on-inelastic.json", "glancing-blow.json", "pi-31.json", "pi-314.json", "pi-3141.json",
                               "ideal-gas.json", "settling-pile.json", "ramp.json", "ball-in-v.json", "boxes-sliding.json", "box-stack.json",
@@ -78,11 +78,4 @@ Public Class SceneFileIoTests
             Assert.Contains(expected, names)
         Next
     End Sub
-
-    Private Shared Function RepoRoot() As String
-        For Each a In GetType(SceneFileIoTests).Assembly.GetCustomAttributes(GetType(Reflection.AssemblyMetadataAttribute), False).Cast(Of Reflection.AssemblyMetadataAttribute)()
-            If a.Key = "RepoRoot" Then Return a.Value
-        Next
-        Throw New InvalidOperationException("no RepoRoot metadata")
-    End Function
 End Class
