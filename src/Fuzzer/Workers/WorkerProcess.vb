@@ -105,7 +105,9 @@ Namespace Workers
 
         ''' <summary>Why the process ended: its exit code and the start of what it wrote to standard error.</summary>
         Private Function Died() As String
-            _process.WaitForExit(5000)
+            ' Once it has exited, the wait without a timeout also waits for the last of standard error to be read
+            ' (the timed one does not): its last words, such as "out of stack", are part of the answer.
+            If _process.WaitForExit(5000) Then _process.WaitForExit()
             Dim code = If(_process.HasExited, _process.ExitCode.ToString(CultureInfo.InvariantCulture), "?")
             Dim text As String
             SyncLock _stderr
