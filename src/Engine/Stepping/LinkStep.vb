@@ -150,12 +150,8 @@ Friend NotInheritable Class LinkStep
     ''' direction at d = 0; a spring of positive length with its ends together has no direction, and no force.
     ''' </summary>
     Friend Shared Function SpringForce(l As Link) As Vector
-        Dim r = l.EndB - l.EndA
-        Dim d = r.Length
-        If d = 0 Then Return Vector.Zero
         Dim vb = If(l.B Is Nothing OrElse l.B.IsFixed, Vector.Zero, l.B.Velocity)
-        Dim rate = Vector.Dot(vb - l.A.Velocity, r) / d
-        Return r * ((l.Stiffness * (d - l.Length) + l.Damping * rate) / d)
+        Return SpringTerm.Pull(l, l.EndA, l.A.Velocity, l.EndB, vb)
     End Function
 
     ''' <summary>

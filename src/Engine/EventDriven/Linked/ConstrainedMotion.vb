@@ -244,24 +244,7 @@ Friend NotInheritable Class ConstrainedMotion
             d(4 * k + 1) = y(4 * k + 3)
             d(4 * k + 3) = -_gravity
         Next
-        For Each l In _springs
-            Dim a = Array.IndexOf(Bodies, l.A)
-            Dim b = If(l.IsAnchored, -1, Array.IndexOf(Bodies, l.B))
-            Dim pa As New Vector(y(4 * a), y(4 * a + 1)), va As New Vector(y(4 * a + 2), y(4 * a + 3))
-            Dim pb = If(b >= 0, New Vector(y(4 * b), y(4 * b + 1)), l.EndB)
-            Dim vb = If(b >= 0, New Vector(y(4 * b + 2), y(4 * b + 3)), Vector.Zero)
-            Dim r = pb - pa
-            Dim dist = r.Length
-            If dist = 0 Then Continue For
-            ' (k(d − L) + c ḋ)/d along r pulls A towards B.
-            Dim force = r * ((l.Stiffness * (dist - l.Length) + l.Damping * Vector.Dot(vb - va, r) / dist) / dist)
-            d(4 * a + 2) += force.X * _inverseMass(a)
-            d(4 * a + 3) += force.Y * _inverseMass(a)
-            If b >= 0 Then
-                d(4 * b + 2) -= force.X * _inverseMass(b)
-                d(4 * b + 3) -= force.Y * _inverseMass(b)
-            End If
-        Next
+        SpringTerm.Add(_springs, Bodies, y, d)
         If _forces IsNot Nothing Then BodyForceTerm.Add(_forces, Bodies, y, d)
         Return d
     End Function

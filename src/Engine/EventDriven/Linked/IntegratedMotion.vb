@@ -76,26 +76,7 @@ Friend NotInheritable Class IntegratedMotion
             d(4 * k + 1) = y(4 * k + 3)
             d(4 * k + 3) = -_gravity
         Next
-        For Each l In _links
-            Dim a = Array.IndexOf(Bodies, l.A)
-            Dim b = If(l.B Is Nothing, -1, Array.IndexOf(Bodies, l.B))
-            Dim pa As New Vector(y(4 * a), y(4 * a + 1)), va As New Vector(y(4 * a + 2), y(4 * a + 3))
-            Dim pb = If(b >= 0, New Vector(y(4 * b), y(4 * b + 1)), l.EndB)
-            Dim vb = If(b >= 0, New Vector(y(4 * b + 2), y(4 * b + 3)), Vector.Zero)
-            Dim r = pb - pa
-            Dim dist = r.Length
-            If dist = 0 Then Continue For
-            ' (k(d − L) + c ḋ)/d along r pulls A towards B.
-            Dim force = r * ((l.Stiffness * (dist - l.Length) + l.Damping * Vector.Dot(vb - va, r) / dist) / dist)
-            Dim fa = force * Bodies(a).InverseMass
-            d(4 * a + 2) += fa.X
-            d(4 * a + 3) += fa.Y
-            If b >= 0 Then
-                Dim fb = force * Bodies(b).InverseMass
-                d(4 * b + 2) -= fb.X
-                d(4 * b + 3) -= fb.Y
-            End If
-        Next
+        SpringTerm.Add(_links, Bodies, y, d)
         If _forces IsNot Nothing Then BodyForceTerm.Add(_forces, Bodies, y, d)
         Return d
     End Function

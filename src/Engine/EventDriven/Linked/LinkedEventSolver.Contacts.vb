@@ -464,11 +464,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Dim pa = New Vector(y(4 * ka), y(4 * ka + 1)), va = New Vector(y(4 * ka + 2), y(4 * ka + 3))
             Dim pb = If(kb >= 0, New Vector(y(4 * kb), y(4 * kb + 1)), l.EndB)
             Dim vb = If(kb >= 0, New Vector(y(4 * kb + 2), y(4 * kb + 3)), Vector.Zero)
-            Dim r = pb - pa
-            Dim dist = r.Length
-            If dist = 0 Then Continue For
-            ' (k(d − L) + c ḋ)/d along r pulls A towards B.
-            Dim force = r * ((l.Stiffness * (dist - l.Length) + l.Damping * Vector.Dot(vb - va, r) / dist) / dist)
+            Dim force = SpringTerm.Pull(l, pa, va, pb, vb)
             a(ka) += force * shapes(ka).InverseMass
             If kb >= 0 Then a(kb) -= force * shapes(kb).InverseMass
         Next

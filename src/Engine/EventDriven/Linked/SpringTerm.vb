@@ -1,0 +1,44 @@
+Option Strict On
+
+''' <summary>
+''' The spring term of a group's equations of motion: Hooke's law with the spring's damping, k (d − L) + c ḋ
+''' along the line of its ends (docs/links.md), added to the acceleration of a state laid out as the integrators
+''' lay it out (per body: centre x, y, then vx, vy). One formula for every motion that integrates or snapshots a
+''' group with springs, so that they all round it the same way.
+''' </summary>
+Friend Module SpringTerm
+    ''' <summary>
+    ''' The pull (N) of spring <paramref name="l"/> on its end A, whose centre is at <paramref name="pa"/> (m) moving
+    ''' at <paramref name="va"/> (m/s), towards end B at <paramref name="pb"/> moving at <paramref name="vb"/>:
+    ''' (k (d − L) + c ḋ) / d times r = pb − pa, with d = |r| and ḋ = (vb − va)·r / d. B feels the opposite pull.
+    ''' Zero when the ends coincide: the line of the ends has no direction there.
+    ''' </summary>
+    Friend Function Pull(l As Link, pa As Vector, va As Vector, pb As Vector, vb As Vector) As Vector
+        Dim r = pb - pa
+        Dim dist = r.Length
+        If dist = 0 Then Return Vector.Zero
+        Return r * ((l.Stiffness * (dist - l.Length) + l.Damping * Vector.Dot(vb - va, r) / dist) / dist)
+    End Function
+
+    ''' <summary>
+    ''' Adds every spring of <paramref name="springs"/> to <paramref name="d"/>, dy/dt of state <paramref name="y"/>
+    ''' of <paramref name="bodies"/>: its pull ÷ mass on each end that is among them. An end that is not (fixed,
+    ''' or an anchor) stays at its own point, still.
+    ''' </summary>
+    Friend Sub Add(springs As IEnumerable(Of Link), bodies As Shape(), y As Double(), d As Double())
+        For Each l In springs
+            Dim a = Array.IndexOf(bodies, l.A)
+            Dim b = If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B))
+            Dim pa As New Vector(y(4 * a), y(4 * a + 1)), va As New Vector(y(4 * a + 2), y(4 * a + 3))
+            Dim pb = If(b >= 0, New Vector(y(4 * b), y(4 * b + 1)), l.EndB)
+            Dim vb = If(b >= 0, New Vector(y(4 * b + 2), y(4 * b + 3)), Vector.Zero)
+            Dim force = Pull(l, pa, va, pb, vb)
+            d(4 * a + 2) += force.X * bodies(a).InverseMass
+            d(4 * a + 3) += force.Y * bodies(a).InverseMass
+            If b >= 0 Then
+                d(4 * b + 2) -= force.X * bodies(b).InverseMass
+                d(4 * b + 3) -= force.Y * bodies(b).InverseMass
+            End If
+        Next
+    End Sub
+End Module
