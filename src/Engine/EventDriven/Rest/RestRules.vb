@@ -285,6 +285,10 @@ Friend NotInheritable Class RestRules
         m(i).Vx = v.X
         m(i).Vy = v.Y
         If shift = Vector.Zero Then Return
+        ' The books need nothing here: the kinetic energy gained is m g times the height dropped, so kinetic plus
+        ' potential is unchanged. The collision's own loss is counted after this (CollisionLosses, from the
+        ' velocity before the contact; a hop that leaves with more than it came with counts as no loss), or by a
+        ' cluster's books, which are of kinetic plus potential energy.
         m(i).Px = p.X + shift.X
         m(i).Py = p.Y + shift.Y
         _s.MoveToCellOfPosition(i)
