@@ -24,11 +24,15 @@ Friend NotInheritable Class RestRules
     Private _nNormals As Integer
     ''' <summary>Whether a cluster of still bodies is held by the contact forces (see <see cref="HeldOnSlope"/>).</summary>
     Private ReadOnly _equilibrium As EquilibriumCheck
-    ''' <summary>Scratch: bodies being woken, and one body's neighbours.</summary>
+    ''' <summary>Scratch: each walk up a stack's queue and the bodies found on one body (see <see cref="WalkAbove"/>), and one body's neighbours.</summary>
     Private _wake As Integer() = Array.Empty(Of Integer)()
     Private _settle As Integer() = Array.Empty(Of Integer)()
-    Private ReadOnly _above As New List(Of Integer)
+    Private ReadOnly _wakeFound As New List(Of Integer)
+    Private ReadOnly _settleFound As New List(Of Integer)
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>What each walk up a stack does with a body it finds (made once, not at every walk).</summary>
+    Private ReadOnly _settleOne As Func(Of Integer, Boolean)
+    Private ReadOnly _wakeOne As Func(Of Integer, Boolean)
 
     ''' <summary>Hits at one instant after which a body's cluster is resolved at once (see <see cref="HitTooOften"/>).</summary>
     Private Const JamHits As Integer = 16
@@ -40,6 +44,8 @@ Friend NotInheritable Class RestRules
         _bodies = state.Bodies
         _slides = slides
         _equilibrium = New EquilibriumCheck(state)
+        _settleOne = AddressOf SettleOnBelow
+        _wakeOne = AddressOf WakeOne
     End Sub
 
     ''' <summary>Forgets every body's history (after a rebuild); rest times survive while the body still sits still.</summary>
@@ -285,6 +291,10 @@ Friend NotInheritable Class RestRules
         m(i).Vx = v.X
         m(i).Vy = v.Y
         If shift = Vector.Zero Then Return
+        ' The books need nothing here: the kinetic energy gained is m g times the height dropped, so kinetic plus
+        ' potential is unchanged. The collision's own loss is counted after this (CollisionLosses, from the
+        ' velocity before the contact; a hop that leaves with more than it came with counts as no loss), or by a
+        ' cluster's books, which are of kinetic plus potential energy.
         m(i).Px = p.X + shift.X
         m(i).Py = p.Y + shift.Y
         _s.MoveToCellOfPosition(i)
@@ -579,43 +589,30 @@ Friend NotInheritable Class RestRules
     ''' at all (the body below moved away after it fell asleep) wakes and falls.
     ''' </summary>
     Private Sub SettleAbove(i As Integer)
-        Dim b = _s.Bodies
-        Dim head = 0, tail = 0
-        _settle(tail) = i
-        tail += 1
-        While head < tail
-            Dim k = _settle(head)
-            head += 1
-            Dim count = GridNeighbours.Collect(_s, k, _neighbours)
-            _above.Clear()
-            For q = 0 To count - 1
-                Dim j = _neighbours(q)
-                If b.Mode(j) <> BodyMode.Sleeping OrElse b.Motion(j).Py <= b.Motion(k).Py Then Continue For
-                ' Resting on k, or near enough above it to have fallen asleep on it while k still moved.
-                Dim c = ContactRules.OverlapWithBody(_s, j, k, New Vector(b.Motion(j).Px, b.Motion(j).Py), New Vector(b.Motion(k).Px, b.Motion(k).Py))
-                If c.Depth < -0.1 * Math.Min(b.Size(j).Scale, b.Size(k).Scale) OrElse c.Normal.Y <= 0 Then Continue For
-                _above.Add(j)
-            Next
-            For Each j In _above
-                Dim before = New Vector(b.Motion(j).Px, b.Motion(j).Py)
-                Settle(j)
-                If Not IsHeld(j) Then
-                    ' It fell asleep on a body that has since moved away: it falls after it, from now, and
-                    ' so does whatever sleeps on it (which it no longer holds up once it moves).
-                    MakeFree(j)
-                    _s.Changed(j)
-                    WakeAbove(j)
-                    Continue For
-                End If
-                If b.Motion(j).Px = before.X AndAlso b.Motion(j).Py = before.Y Then Continue For
-                _s.Changed(j)
-                If tail < _settle.Length Then
-                    _settle(tail) = j
-                    tail += 1
-                End If
-            Next
-        End While
+        ' The sleepers on it, or near enough above it to have fallen asleep on it while it still moved.
+        WalkAbove(i, _settle, _settleFound, False, 0.1, _settleOne)
     End Sub
+
+    ''' <summary>
+    ''' Sleeping body j, found on a body that has just settled (<see cref="SettleAbove"/>): put exactly on what holds
+    ''' it, or, held no longer, set falling. Returns whether the walk goes on above it: it moved and still sleeps.
+    ''' </summary>
+    Private Function SettleOnBelow(j As Integer) As Boolean
+        Dim b = _s.Bodies
+        Dim before = New Vector(b.Motion(j).Px, b.Motion(j).Py)
+        Settle(j)
+        If Not IsHeld(j) Then
+            ' It fell asleep on a body that has since moved away: it falls after it, from now, and
+            ' so does whatever sleeps on it (which it no longer holds up once it moves).
+            MakeFree(j)
+            _s.Changed(j)
+            WakeAbove(j)
+            Return False
+        End If
+        If b.Motion(j).Px = before.X AndAlso b.Motion(j).Py = before.Y Then Return False
+        _s.Changed(j)
+        Return True
+    End Function
 
     ''' <summary>A resting or sleeping body that was moved by a hit flies again, and so does what rests on it.</summary>
     Friend Sub WakeFrom(i As Integer)
@@ -642,29 +639,52 @@ Friend NotInheritable Class RestRules
 
     ''' <summary>Wakes every sleeping or resting body that (directly or through others) rests on body i.</summary>
     Friend Sub WakeAbove(i As Integer)
+        ' Sleeping or resting on it, touching it (within 10⁻³ of the smaller size).
+        WalkAbove(i, _wake, _wakeFound, True, 0.001, _wakeOne)
+    End Sub
+
+    ''' <summary>Body j, found resting on one that moves (<see cref="WakeAbove"/>), flies from now; the walk goes on above it.</summary>
+    Private Function WakeOne(j As Integer) As Boolean
+        _s.Sync(j)
+        MakeFree(j)
+        _s.Changed(j)
+        Return True
+    End Function
+
+    ''' <summary>
+    ''' Walks up from body i, breadth first, through the bodies that rest on it, and on those. At each body k reached,
+    ''' the bodies j near it that rest on it are found first: asleep (or resting too, when <paramref name="orResting"/>),
+    ''' their centre above k's (at the clock), and their contact with k within <paramref name="reach"/> of the smaller
+    ''' size (a fraction) with its normal pointing up from k. Then <paramref name="visit"/> acts on each in turn and
+    ''' returns whether the walk goes on above it. <paramref name="queue"/> (one slot a body) and
+    ''' <paramref name="found"/> are the walk's own scratch, so that a visit may start a walk of the other kind.
+    ''' </summary>
+    Private Sub WalkAbove(i As Integer, queue As Integer(), found As List(Of Integer), orResting As Boolean, reach As Double,
+                          visit As Func(Of Integer, Boolean))
         Dim b = _s.Bodies
         Dim head = 0, tail = 0
-        _wake(tail) = i
+        queue(tail) = i
         tail += 1
         While head < tail
-            Dim k = _wake(head)
+            Dim k = queue(head)
             head += 1
             Dim here = b.PositionAt(k, _s.Now)
-            Dim kx = here.X, ky = here.Y
             Dim count = GridNeighbours.Collect(_s, k, _neighbours)
+            found.Clear()
             For q = 0 To count - 1
                 Dim j = _neighbours(q)
                 Dim mj = b.Mode(j)
-                If mj <> BodyMode.Sleeping AndAlso mj <> BodyMode.Supported Then Continue For
-                Dim dx = b.Motion(j).Px - kx, dy = b.Motion(j).Py - ky
-                If dy <= 0 Then Continue For
+                If mj <> BodyMode.Sleeping AndAlso Not (orResting AndAlso mj = BodyMode.Supported) Then Continue For
+                If b.Motion(j).Py - here.Y <= 0 Then Continue For
                 Dim c = ContactRules.OverlapWithBody(_s, j, k, New Vector(b.Motion(j).Px, b.Motion(j).Py), here)
-                If c.Depth < -1.0E-3 * Math.Min(b.Size(j).Scale, b.Size(k).Scale) OrElse c.Normal.Y <= 0 Then Continue For
-                _s.Sync(j)
-                MakeFree(j)
-                _s.Changed(j)
-                If tail < _wake.Length Then
-                    _wake(tail) = j
+                If c.Depth < -reach * Math.Min(b.Size(j).Scale, b.Size(k).Scale) OrElse c.Normal.Y <= 0 Then Continue For
+                found.Add(j)
+            Next
+            ' Found first, then acted on: a visit may search neighbours of its own (IsHeld, another walk).
+            For q = 0 To found.Count - 1
+                Dim j = found(q)
+                If visit(j) AndAlso tail < queue.Length Then
+                    queue(tail) = j
                     tail += 1
                 End If
             Next
