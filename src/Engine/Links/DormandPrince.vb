@@ -8,12 +8,17 @@ Option Strict On
 Friend Module DormandPrince
     ''' <summary>
     ''' A step of <paramref name="h"/> (s) from <paramref name="y"/>, where f(y) = <paramref name="k1"/>. Returns the
-    ''' largest error estimate ÷ (absolute + relative × |y|) over the components: the step is good when it
-    ''' is ≤ 1. <paramref name="result"/> is the fifth-order state and <paramref name="slope"/> f there.
+    ''' largest error estimate ÷ (absolute + relative × |y| + h × rounding) over the components: the step is good
+    ''' when it is ≤ 1. <paramref name="result"/> is the fifth-order state and <paramref name="slope"/> f there.
+    ''' <paramref name="rounding"/>, when given, is how far each component of f at y may be off by rounding alone
+    ''' (a stiff spring at its length: k (d − L) is the difference of two large, nearly equal numbers). The error
+    ''' estimate is a weighted sum of h × f, so h times that rounding is noise that no shorter step removes:
+    ''' without this floor the step shrinks towards zero while the state stands still.
     ''' </summary>
     Friend Function TryStep(f As Func(Of Double(), Double()), y As Double(), k1 As Double(), h As Double,
                             relativeTolerance As Double, absoluteTolerance As Double,
-                            ByRef result As Double(), ByRef slope As Double()) As Double
+                            ByRef result As Double(), ByRef slope As Double(),
+                            Optional rounding As Double() = Nothing) As Double
         Dim k2 = f(Combine(y, h, k1, 1 / 5.0))
         Dim k3 = f(Combine(y, h, k1, 3 / 40.0, k2, 9 / 40.0))
         Dim k4 = f(Combine(y, h, k1, 44 / 45.0, k2, -56 / 15.0, k3, 32 / 9.0))
@@ -26,6 +31,7 @@ Friend Module DormandPrince
             ' The fifth-order result minus the embedded fourth-order one.
             Dim e = h * (71 / 57600.0 * k1(i) - 71 / 16695.0 * k3(i) + 71 / 1920.0 * k4(i) - 17253 / 339200.0 * k5(i) + 22 / 525.0 * k6(i) - 1 / 40.0 * slope(i))
             Dim scale = absoluteTolerance + relativeTolerance * Math.Max(Math.Abs(y(i)), Math.Abs(result(i)))
+            If rounding IsNot Nothing Then scale += h * rounding(i)
             worst = Math.Max(worst, Math.Abs(e) / scale)
         Next
         Return worst

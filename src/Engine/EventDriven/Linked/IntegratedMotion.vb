@@ -52,7 +52,8 @@ Friend NotInheritable Class IntegratedMotion
         Next
         _firstStep = If(fastest > 0, 0.06 / fastest, 0.001)
         _lookedTo = startTime + _firstStep
-        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, y, startTime, _firstStep, RelativeTolerance, AbsoluteTolerance)
+        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, y, startTime, _firstStep, RelativeTolerance, AbsoluteTolerance,
+                                      rounding:=AddressOf Rounding)
     End Sub
 
     ''' <summary>The end of the stretch looked at so far: nothing happens there but looking further.</summary>
@@ -66,6 +67,13 @@ Friend NotInheritable Class IntegratedMotion
     Friend Overrides Function LookFurther(time As Double) As Boolean
         _lookedTo = time + Math.Min(Lookahead, Math.Max(time - StartTime, _firstStep))
         Return True
+    End Function
+
+    ''' <summary>How far each component of dy/dt may be off by rounding alone at state <paramref name="y"/>: the springs' (<see cref="SpringTerm.AddRounding"/>).</summary>
+    Private Function Rounding(y As Double()) As Double()
+        Dim r(4 * _n - 1) As Double
+        SpringTerm.AddRounding(_links, Bodies, y, r)
+        Return r
     End Function
 
     ''' <summary>dy/dt: velocities, and gravity plus every spring's pull ÷ mass.</summary>

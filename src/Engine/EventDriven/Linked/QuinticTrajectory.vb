@@ -17,6 +17,7 @@ Friend NotInheritable Class QuinticTrajectory
     Private ReadOnly _relativeTolerance As Double
     Private ReadOnly _absoluteTolerance As Double
     Private ReadOnly _maxStep As Func(Of Double(), Double)
+    Private ReadOnly _rounding As Func(Of Double(), Double())
     ' Per step start: the time (s), the state and its derivative.
     Private ReadOnly _times As New List(Of Double)
     Private ReadOnly _states As New List(Of Double())
@@ -27,15 +28,19 @@ Friend NotInheritable Class QuinticTrajectory
     ''' Starts at <paramref name="startTime"/> (s) in state <paramref name="y0"/>, with dy/dt given by
     ''' <paramref name="derivative"/>. <paramref name="firstStep"/>: s, corrected by the error control at once.
     ''' <paramref name="maxStep"/>: the longest next step from a state, s (Nothing: no limit).
+    ''' <paramref name="rounding"/>: how far each component of dy/dt at a state may be off by rounding alone, the
+    ''' floor of the error control (see <see cref="DormandPrince.TryStep"/>; Nothing: none).
     ''' <paramref name="what"/> names the integrator in messages ("the spring integrator").
     ''' </summary>
     Friend Sub New(what As String, derivative As Func(Of Double(), Double()), y0 As Double(), startTime As Double, firstStep As Double,
-                   relativeTolerance As Double, absoluteTolerance As Double, Optional maxStep As Func(Of Double(), Double) = Nothing)
+                   relativeTolerance As Double, absoluteTolerance As Double, Optional maxStep As Func(Of Double(), Double) = Nothing,
+                   Optional rounding As Func(Of Double(), Double()) = Nothing)
         _what = what
         _derivative = derivative
         _relativeTolerance = relativeTolerance
         _absoluteTolerance = absoluteTolerance
         _maxStep = maxStep
+        _rounding = rounding
         _times.Add(startTime)
         _states.Add(y0)
         _slopes.Add(derivative(y0))
@@ -60,7 +65,8 @@ Friend NotInheritable Class QuinticTrajectory
             Do
                 Dim h = _step
                 Dim next5 As Double() = Nothing, k7 As Double() = Nothing
-                Dim worst = DormandPrince.TryStep(_derivative, y, k1, h, _relativeTolerance, _absoluteTolerance, next5, k7)
+                Dim worst = DormandPrince.TryStep(_derivative, y, k1, h, _relativeTolerance, _absoluteTolerance, next5, k7,
+                                                  If(_rounding Is Nothing, Nothing, _rounding(y)))
                 _step = h * DormandPrince.StepFactor(worst)
                 ' Never longer than the caller's limit: the bounds are read from a whole step's quintic, and a step grown
                 ' long over a smooth stretch would bound a search of a few milliseconds by the motion of seconds.

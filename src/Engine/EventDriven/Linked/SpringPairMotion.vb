@@ -51,7 +51,8 @@ Friend NotInheritable Class SpringPairMotion
         For Each l In _links
             fastest = Math.Max(fastest, Math.Sqrt(l.Stiffness / _reduced))
         Next
-        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, {r.X, r.Y, w.X, w.Y}, startTime, If(fastest > 0, 0.06 / fastest, 0.001), RelativeTolerance, AbsoluteTolerance)
+        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, {r.X, r.Y, w.X, w.Y}, startTime, If(fastest > 0, 0.06 / fastest, 0.001), RelativeTolerance, AbsoluteTolerance,
+                                      rounding:=AddressOf Rounding)
     End Sub
 
     ''' <summary>d/dt of (r, ṙ): ṙ, and the springs' push along r ÷ μ (m/s²).</summary>
@@ -71,6 +72,20 @@ Friend NotInheritable Class SpringPairMotion
         d(2) = acceleration.X
         d(3) = acceleration.Y
         Return d
+    End Function
+
+    ''' <summary>
+    ''' How far d/dt of (r, ṙ) may be off by rounding alone: a few units in the last place of Σ (k (|r| + L) + c |ṙ|)
+    ''' ÷ μ, the sizes of the numbers whose difference the push is (at a stiff spring's length it is all rounding).
+    ''' </summary>
+    Private Function Rounding(y As Double()) As Double()
+        Dim size = 0.0
+        Dim dist = Math.Sqrt(y(0) * y(0) + y(1) * y(1)), rate = Math.Sqrt(y(2) * y(2) + y(3) * y(3))
+        For Each l In _links
+            size += l.Stiffness * (dist + l.Length) + l.Damping * rate
+        Next
+        size *= 4 * 2.2204460492503131E-16 / _reduced
+        Return {0, 0, size, size}
     End Function
 
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)

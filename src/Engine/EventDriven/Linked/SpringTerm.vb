@@ -7,6 +7,9 @@ Option Strict On
 ''' group with springs, so that they all round it the same way.
 ''' </summary>
 Friend Module SpringTerm
+    ' A few units in the last place of a double: the rounding of each operation in a spring's pull.
+    Private Const Ulps As Double = 4 * 2.2204460492503131E-16
+
     ''' <summary>
     ''' The pull (N) of spring <paramref name="l"/> on its end A, whose centre is at <paramref name="pa"/> (m) moving
     ''' at <paramref name="va"/> (m/s), towards end B at <paramref name="pb"/> moving at <paramref name="vb"/>:
@@ -38,6 +41,29 @@ Friend Module SpringTerm
             If b >= 0 Then
                 d(4 * b + 2) -= force.X * bodies(b).InverseMass
                 d(4 * b + 3) -= force.Y * bodies(b).InverseMass
+            End If
+        Next
+    End Sub
+
+    ''' <summary>
+    ''' Adds to <paramref name="rounding"/> how far each spring's pull ÷ mass in <see cref="Add"/> may be off by
+    ''' rounding alone at state <paramref name="y"/> (m/s², on the velocity components): a few units in the last
+    ''' place of k (|p_A| + |p_B| + L) + c (|v_A| + |v_B|), the sizes of the numbers whose difference the pull is. At
+    ''' a stiff spring's length that difference is all rounding, and the integrator's error control must not chase it.
+    ''' </summary>
+    Friend Sub AddRounding(springs As IEnumerable(Of Link), bodies As Shape(), y As Double(), rounding As Double())
+        For Each l In springs
+            Dim a = Array.IndexOf(bodies, l.A)
+            Dim b = If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B))
+            Dim pa As New Vector(y(4 * a), y(4 * a + 1)), va As New Vector(y(4 * a + 2), y(4 * a + 3))
+            Dim pb = If(b >= 0, New Vector(y(4 * b), y(4 * b + 1)), l.EndB)
+            Dim vb = If(b >= 0, New Vector(y(4 * b + 2), y(4 * b + 3)), Vector.Zero)
+            Dim size = Ulps * (l.Stiffness * (pa.Length + pb.Length + l.Length) + l.Damping * (va.Length + vb.Length))
+            rounding(4 * a + 2) += size * bodies(a).InverseMass
+            rounding(4 * a + 3) += size * bodies(a).InverseMass
+            If b >= 0 Then
+                rounding(4 * b + 2) += size * bodies(b).InverseMass
+                rounding(4 * b + 3) += size * bodies(b).InverseMass
             End If
         Next
     End Sub
