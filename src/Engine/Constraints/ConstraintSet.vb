@@ -25,6 +25,13 @@ Friend NotInheritable Class ConstraintSet
     Private ReadOnly _slides As Boolean
     Private ReadOnly _general As Double(,)
     Private ReadOnly _independence As Double
+    ' Whether the bodies the rows move differ in inverse mass by more than SpreadRatio (see SolveSpread).
+    Private ReadOnly _spread As Boolean
+    ' Past this ratio of inverse masses the forces are solved in a basis of the rows made orthogonal slot by slot:
+    ' the plain solve loses about its logarithm in digits.
+    Private Const SpreadRatio As Double = 1000000.0
+    ' A pivot of the plain factorization below this fraction of its row's own size has lost half its digits.
+    Private Const WellFactored As Double = 0.00000001
 
     ''' <summary>
     ''' The constraints of a group whose bodies have the given inverse masses (1/kg, 0 for a body that cannot move).
@@ -44,6 +51,15 @@ Friend NotInheritable Class ConstraintSet
         If _slides Then
             _general = New Double(m - 1, m - 1) {}
         End If
+        Dim largest = 0.0, smallest = Double.PositiveInfinity
+        For Each r In rows
+            For Each body In {r.A, r.B}
+                If body < 0 OrElse inverseMass(body) <= 0 Then Continue For
+                largest = Math.Max(largest, inverseMass(body))
+                smallest = Math.Min(smallest, inverseMass(body))
+            Next
+        Next
+        _spread = largest > SpreadRatio * smallest
         _shared = New Double(m - 1)() {}
         _factor = New Double(m - 1)() {}
         For i = 0 To m - 1
@@ -86,12 +102,146 @@ Friend NotInheritable Class ConstraintSet
             ' A sliding contact's force is not along its normal: M_ij = (u_i·f_j) Σ σσw is not symmetric.
             SolveGeneral(lambda)
             ApplyForces(accelerations, lambda)
+        ElseIf _spread AndAlso Not FactorsWell() Then
+            SolveSpread(lambda, accelerations)
         Else
-            Factor()
+            If Not _spread Then Factor()
             Solve(lambda)
             Apply(accelerations, lambda, 2)
         End If
         Return lambda
+    End Function
+
+    ''' <summary>
+    ''' Solves M λ = <paramref name="b"/> in place, and adds the forces ÷ mass to <paramref name="accelerations"/>, for
+    ''' rows on bodies of very different masses. A 2 mg ball wedged in a corner under a 187 t one: in the metric of
+    ''' M = J W Jᵀ their pair's row is almost all the light ball's part, and the heavy ball's part, which alone
+    ''' holds it up, is lost to rounding (the light ball's forces, 10¹¹ m/s² each, cancel to nothing). So the rows
+    ''' are first made orthogonal with every body slot weighing the same (Gram–Schmidt: Q = T J, T unit lower
+    ''' triangular); M' = Q W Qᵀ = T M Tᵀ is solved for μ = T⁻ᵀ λ, the accelerations are W Qᵀ μ (no great forces
+    ''' cancelling), and λ = Tᵀ μ. The wedged ball's rows are then its own, the heavy ball's row is its own, and M'
+    ''' is as well conditioned as the bodies' own parts.
+    ''' </summary>
+    Private Sub SolveSpread(b As Double(), accelerations As Double())
+        Dim m = _rows.Length, slots = 2 * _inverseMass.Length
+        Dim q(m - 1)() As Double, sizes(m - 1) As Double
+        ' taken(i)(j): how much of Q_j was taken from row i (the strictly lower part C of T⁻¹ = I + C).
+        Dim taken(m - 1)() As Double
+        For i = 0 To m - 1
+            Dim r = _rows(i)
+            Dim row(slots - 1) As Double
+            row(2 * r.A) = _nx(i)
+            row(2 * r.A + 1) = _ny(i)
+            If r.B >= 0 Then
+                row(2 * r.B) -= _nx(i)
+                row(2 * r.B + 1) -= _ny(i)
+            End If
+            Dim size = UnitDot(row, row)
+            taken(i) = New Double(m - 1) {}
+            ' Twice over: one pass of Gram–Schmidt can leave rounding's part of the span behind.
+            For pass = 1 To 2
+                For j = 0 To i - 1
+                    Dim p = UnitDot(row, q(j)) / sizes(j)
+                    If p = 0 Then Continue For
+                    taken(i)(j) += p
+                    For k = 0 To slots - 1
+                        row(k) -= p * q(j)(k)
+                    Next
+                Next
+            Next
+            sizes(i) = UnitDot(row, row)
+            If Not (sizes(i) > _independence * size) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
+            q(i) = row
+        Next
+        ' b' = T b, from (I + C) b' = b.
+        For i = 0 To m - 1
+            For j = 0 To i - 1
+                b(i) -= taken(i)(j) * b(j)
+            Next
+        Next
+        ' M' by Cholesky's method, its factor in the lower triangle of f.
+        Dim f(m - 1, m - 1) As Double
+        For j = 0 To m - 1
+            Dim own = WeightedDot(q(j), q(j))
+            Dim diagonal = own
+            For p = 0 To j - 1
+                diagonal -= f(j, p) * f(j, p)
+            Next
+            If Not (diagonal > _independence * own) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
+            f(j, j) = Math.Sqrt(diagonal)
+            For i = j + 1 To m - 1
+                Dim s = WeightedDot(q(i), q(j))
+                For p = 0 To j - 1
+                    s -= f(i, p) * f(j, p)
+                Next
+                f(i, j) = s / f(j, j)
+            Next
+        Next
+        For i = 0 To m - 1
+            Dim s = b(i)
+            For p = 0 To i - 1
+                s -= f(i, p) * b(p)
+            Next
+            b(i) = s / f(i, i)
+        Next
+        For i = m - 1 To 0 Step -1
+            Dim s = b(i)
+            For p = i + 1 To m - 1
+                s -= f(p, i) * b(p)
+            Next
+            b(i) = s / f(i, i)
+        Next
+        ' The accelerations W Qᵀ μ; then λ = Tᵀ μ, from (I + C)ᵀ λ = μ.
+        For k = 0 To _inverseMass.Length - 1
+            Dim w = _inverseMass(k)
+            If w = 0 Then Continue For
+            For i = 0 To m - 1
+                accelerations(4 * k + 2) += w * b(i) * q(i)(2 * k)
+                accelerations(4 * k + 3) += w * b(i) * q(i)(2 * k + 1)
+            Next
+        Next
+        For i = m - 1 To 0 Step -1
+            For k = i + 1 To m - 1
+                b(i) -= taken(k)(i) * b(k)
+            Next
+        Next
+    End Sub
+
+    ''' <summary>
+    ''' Factors M and says whether every pivot kept at least <see cref="WellFactored"/> of its row's own size (what
+    ''' the rows share cost it no more than half its digits); False also where the factorization refuses a row.
+    ''' </summary>
+    Private Function FactorsWell() As Boolean
+        Try
+            Factor()
+        Catch ex As InvalidOperationException
+            Return False
+        End Try
+        For j = 0 To _rows.Length - 1
+            If _factor(j)(j) * _factor(j)(j) < WellFactored * _shared(j)(j) Then Return False
+        Next
+        Return True
+    End Function
+
+    ''' <summary>Σ x_k · y_k over the slots of the bodies that can move, each weighing the same.</summary>
+    Private Function UnitDot(x As Double(), y As Double()) As Double
+        Dim s = 0.0
+        For k = 0 To _inverseMass.Length - 1
+            If _inverseMass(k) = 0 Then Continue For
+            s += x(2 * k) * y(2 * k) + x(2 * k + 1) * y(2 * k + 1)
+        Next
+        Return s
+    End Function
+
+    ''' <summary>Σ w_k (x_k · y_k) over the bodies k, w the inverse mass (1/kg): the metric of M.</summary>
+    Private Function WeightedDot(x As Double(), y As Double()) As Double
+        Dim s = 0.0
+        For k = 0 To _inverseMass.Length - 1
+            Dim w = _inverseMass(k)
+            If w = 0 Then Continue For
+            s += w * (x(2 * k) * y(2 * k) + x(2 * k + 1) * y(2 * k + 1))
+        Next
+        Return s
     End Function
 
     ''' <summary>

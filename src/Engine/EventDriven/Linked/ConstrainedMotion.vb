@@ -203,12 +203,17 @@ Friend NotInheritable Class ConstrainedMotion
     ''' rounding) would be lost to rounding a step later.
     ''' </summary>
     Private Function IndependentRows(rows As List(Of Constraint), y As Double()) As List(Of Constraint)
+        ' The margin is judged with every movable body weighing the same: in the inverse-mass metric a row between a
+        ' very light ball wedged in a corner and a heavy one pressing on it is almost all the light ball's part, which
+        ' the corner's faces already span, and would count as depending on them, though it alone holds the heavy
+        ' one up. The real masses are asked only whether the solve can take the row at all.
+        Dim unit = _inverseMass.Select(Function(w) If(w > 0, 1.0, 0.0)).ToArray()
         Dim kept As New List(Of Constraint)
         For Each c In rows
             kept.Add(c)
-            Dim d = FreeDerivative(y)
             Try
-                Call New ConstraintSet(kept.ToArray(), _inverseMass, IndependenceMargin).Tensions(y, d)
+                Call New ConstraintSet(kept.ToArray(), unit, IndependenceMargin).Tensions(y, FreeDerivative(y))
+                Call New ConstraintSet(kept.ToArray(), _inverseMass).Tensions(y, FreeDerivative(y))
             Catch ex As InvalidOperationException
                 kept.RemoveAt(kept.Count - 1)
             End Try

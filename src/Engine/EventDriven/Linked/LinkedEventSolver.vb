@@ -403,6 +403,18 @@ Partial Friend NotInheritable Class LinkedEventSolver
         End If
         Dim lost = kinetic - _impulse.KineticEnergy
         If lost > 0 Then _world.Dissipate(lost)
+        ' The blow is solved to a part in 10¹² of the fastest body it moves, and a group's rows bring in all its bodies:
+        ' a contact that approached by less than that, but by more than a creep, was left approaching, and would be
+        ' struck again at once, for ever (a 2 mg ball left at 10⁻¹² m/s against a wall beside a 187 t ball sliding at
+        ' 1.3 m/s). It is stopped by a blow of its own bodies alone.
+        If SeparationSpeed(a, b, normal) < -(CreepSpeed + 0.000000001 * speeds) Then
+            _impulse.Clear()
+            _impulse.AddContact(a, b, normal, _world.Restitution)
+            Dim before = _impulse.KineticEnergy
+            _impulse.Resolve()
+            Dim stopped = before - _impulse.KineticEnergy
+            If stopped > 0 Then _world.Dissipate(stopped)
+        End If
         _reports.Add(New CollisionRecord(t, a, other, side, CollisionKinds.Between(a, other), aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
         Repredict(Regroup(groups, t, Nothing), tEnd)
     End Sub
@@ -415,6 +427,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim u = a.Velocity - If(b Is Nothing, Vector.Zero, b.Velocity)
         Dim tolerance = CreepSpeed + 0.000000001 * (aBefore.Length + bBefore.Length)
         Return Vector.Dot(u, first) > tolerance AndAlso Vector.Dot(u, second) > tolerance
+    End Function
+
+    ''' <summary>How fast (m/s) b (Nothing: fixed) moves away from a along <paramref name="normal"/> (from a towards b); negative when they approach.</summary>
+    Private Shared Function SeparationSpeed(a As Shape, b As Shape, normal As Vector) As Double
+        Return Vector.Dot(If(b Is Nothing, Vector.Zero, b.Velocity) - a.Velocity, normal)
     End Function
 
     ''' <summary>
