@@ -84,7 +84,7 @@ Friend NotInheritable Class SpringPairMotion
         For Each l In _links
             size += l.Stiffness * (dist + l.Length) + l.Damping * rate
         Next
-        size *= 4 * 2.2204460492503131E-16 / _reduced
+        size *= SpringTerm.Ulps / _reduced
         Return {0, 0, size, size}
     End Function
 

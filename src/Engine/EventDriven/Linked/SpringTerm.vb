@@ -7,8 +7,8 @@ Option Strict On
 ''' group with springs, so that they all round it the same way.
 ''' </summary>
 Friend Module SpringTerm
-    ' A few units in the last place of a double: the rounding of each operation in a spring's pull.
-    Private Const Ulps As Double = 4 * 2.2204460492503131E-16
+    ''' <summary>A few units in the last place of a double, relative: the rounding of the operations in a spring's pull.</summary>
+    Friend Const Ulps As Double = 4 * 2.2204460492503131E-16
 
     ''' <summary>
     ''' The pull (N) of spring <paramref name="l"/> on its end A, whose centre is at <paramref name="pa"/> (m) moving
