@@ -22,7 +22,7 @@ Public Structure BodyRow
     Public Property Size As Vector
     ''' <summary>m²</summary>
     Public Property Area As Double
-    ''' <summary>What the body is, as the Bodies table names it: "ball", "fixed ball", "rectangle", "box", "ramp", a polygon by its sides, fixed or not ("triangle", "quadrilateral", "dodecagon"; "polygon" past twelve).</summary>
+    ''' <summary>What the body is, as the Bodies table names it: "ball", "box", a polygon by its sides ("triangle", "quadrilateral", "dodecagon"; "polygon" past twelve), each led by "fixed" when it is ("fixed ball", "fixed box", "fixed pentagon"); a ramp is always "fixed ramp".</summary>
     Public Property KindLabel As String
     ''' <summary>Where its mass is centred (a ramp's middle), m.</summary>
     Public Property Centre As Vector
@@ -69,29 +69,33 @@ Public Structure BodyRow
                 Dim r = DirectCast(body, Circle).Radius
                 row.Size = New Vector(r, 0)
                 row.SizeFields = {("radius", r)}
-                row.KindLabel = If(body.IsFixed, "fixed ball", "ball")
+                row.KindLabel = FixedWord(body) & "ball"
                 row.SizeText = "r " & Units.Sig(r)
             Case ShapeKind.Rectangle
                 Dim box = DirectCast(body, Rectangle)
                 row.Size = New Vector(box.Width, box.Height)
                 row.SizeFields = {("width", box.Width), ("height", box.Height)}
-                row.KindLabel = If(body.IsFixed, "rectangle", "box")
+                row.KindLabel = FixedWord(body) & "box"
                 row.SizeText = Units.Sig(box.Width) & " × " & Units.Sig(box.Height)
             Case ShapeKind.Segment
                 Dim length = DirectCast(body, Segment).Length
                 row.Size = New Vector(length, 0)
                 row.SizeFields = {("length", length)}
-                row.KindLabel = "ramp"
+                row.KindLabel = FixedWord(body) & "ramp"
                 row.SizeText = "length " & Units.Sig(length)
             Case Else
                 row.Size = body.BoundsMax - body.BoundsMin
                 row.SizeFields = Array.Empty(Of (Name As String, Metres As Double))()
                 ' Its sides in its name ("pentagon"), its size as a box's: the Size column then needs no more room for a polygon than for a box.
-                ' A fixed one is named so by its mass ("fixed") and colour cell ("fixed"): "fixed quadrilateral" would widen the Kind column past a 1280-px screen.
-                row.KindLabel = PolygonName(body.Outline.VertexCount)
+                row.KindLabel = FixedWord(body) & PolygonName(body.Outline.VertexCount)
                 row.SizeText = Units.Sig(row.Size.X) & " × " & Units.Sig(row.Size.Y)
         End Select
         Return row
+    End Function
+
+    ''' <summary>"fixed " before a fixed body's kind, so that every kind reads alike in the Kind column ("fixed ball", "fixed box", "fixed pentagon"); "" for a movable one.</summary>
+    Private Shared Function FixedWord(body As Shape) As String
+        Return If(body.IsFixed, "fixed ", "")
     End Function
 
     ''' <summary>A polygon's name by its number of sides: "triangle" to "dodecagon", "polygon" past twelve.</summary>

@@ -185,36 +185,51 @@ Partial Friend NotInheritable Class MainForm
         Return Measure(sample & "  −00.0", _totals.Font).Width <= width
     End Function
 
-    ''' <summary>The margin each column of a list keeps beside its widest text, px (set where its columns were last fitted to the window).</summary>
-    Private ReadOnly _columnMargins As New Dictionary(Of BufferedListView, Integer)
+    ''' <summary>The margins each column of a list keeps beside its widest value and beside its header, px (set where its columns were last fitted to the window).</summary>
+    Private ReadOnly _columnMargins As New Dictionary(Of BufferedListView, (Value As Integer, Header As Integer))
+
+    ''' <summary>The least margin beside a header's caption, px: Mono draws the caption 5 px in from each edge of its column and cuts what does not fit (not scaled with the dpi).</summary>
+    Private Const LeastHeaderMargin As Integer = 10
+
+    ''' <summary>The least margin beside a value, px: Mono draws a cell's text 3 px in from its column's left edge in a box 6 px narrower than the column, and puts "…" for what does not fit; 1 px more for rounding.</summary>
+    Private Const LeastValueMargin As Integer = 7
 
     ''' <summary>
     ''' Each column as wide as its header and values, and the spare width shared out, so no header is
     ''' clipped. Where the columns with their usual margin would be wider than the list (the Bodies
     ''' table's twelve on a 1280-px screen), the margins close up, down to a few pixels, before the
-    ''' list would need a sideways scroll (to 4 px at 96 dpi: a value still clear of the next column's
-    ''' grid line): a teacher sees every column at once. With large fonts, where
+    ''' list would need a sideways scroll (to 7 px at 96 dpi, 8 at 192: a value still whole and clear of
+    ''' the next column's grid line): a teacher sees every column at once. With large fonts, where
     ''' even that is too wide (the Bodies table's twelve columns at 192 dpi), the table's text steps
-    ''' down a point at a time, never below the normal fonts' size, until every column shows.
+    ''' down a point at a time, never below the normal fonts' size, until every column shows; and
+    ''' at that size, if it must, the margins beside the headers close up too, to no less than the
+    ''' caption's own inset (the Bodies table's twelve at 192 dpi with large fonts when one body is a
+    ''' "fixed quadrilateral").
     ''' </summary>
     Private Sub FitColumns(list As BufferedListView, available As Integer)
         Dim least = CSng(NormalFontPoints * _dpi.FontScale)
         Dim size = Font.Size
         Dim margin As Integer
+        Dim headerMargin = S(12)
         Dim widths As Integer()
+        Dim text As (Header As Integer, Widest As Integer)()
         Do
             UseTableFont(list, size)
-            Dim text = ColumnTextWidths(list)
+            text = ColumnTextWidths(list)
             margin = S(12)
-            widths = WidthsWithMargin(text, margin)
-            Do While margin > S(4) AndAlso widths.Sum() > available
+            widths = WidthsWithMargin(text, margin, headerMargin)
+            Do While margin > Math.Max(S(4), LeastValueMargin) AndAlso widths.Sum() > available
                 margin -= 1
-                widths = WidthsWithMargin(text, margin)
+                widths = WidthsWithMargin(text, margin, headerMargin)
             Loop
             If widths.Sum() <= available OrElse size <= least Then Exit Do
             size = Math.Max(least, size - CSng(_dpi.FontScale))
         Loop
-        _columnMargins(list) = margin
+        Do While headerMargin > Math.Max(LeastHeaderMargin, margin) AndAlso widths.Sum() > available
+            headerMargin -= 1
+            widths = WidthsWithMargin(text, margin, headerMargin)
+        Loop
+        _columnMargins(list) = (margin, headerMargin)
         Dim spare = Math.Max(0, available - widths.Sum()) \ widths.Length
         For i = 0 To widths.Length - 1
             list.Columns(i).Width = widths(i) + spare
@@ -247,25 +262,26 @@ Partial Friend NotInheritable Class MainForm
     End Function
 
     ''' <summary>
-    ''' Each column's least width, px, from its text's widths: a header keeps its full margin (Mono and
-    ''' Windows both inset its caption by several pixels); values have <paramref name="margin"/> px beside them and may close up.
+    ''' Each column's least width, px, from its text's widths: values have <paramref name="margin"/> px
+    ''' beside them, a header <paramref name="headerMargin"/> px (Mono and Windows both inset its caption
+    ''' by several pixels, so it keeps its full margin unless even the least font is too wide).
     ''' </summary>
-    Private Function WidthsWithMargin(text As (Header As Integer, Widest As Integer)(), margin As Integer) As Integer()
-        Return text.Select(Function(t) Math.Max(t.Header + S(12), t.Widest + margin)).ToArray()
+    Private Shared Function WidthsWithMargin(text As (Header As Integer, Widest As Integer)(), margin As Integer, headerMargin As Integer) As Integer()
+        Return text.Select(Function(t) Math.Max(t.Header + headerMargin, t.Widest + margin)).ToArray()
     End Function
 
-    ''' <summary>The margin beside each column's widest text in <paramref name="list"/>, px.</summary>
-    Private Function ColumnMargin(list As BufferedListView) As Integer
-        Dim margin As Integer
-        Return If(_columnMargins.TryGetValue(list, margin), margin, S(12))
+    ''' <summary>The margins beside each column's widest value and beside its header in <paramref name="list"/>, px.</summary>
+    Private Function ColumnMargin(list As BufferedListView) As (Value As Integer, Header As Integer)
+        Dim margin As (Value As Integer, Header As Integer)
+        Return If(_columnMargins.TryGetValue(list, margin), margin, (S(12), S(12)))
     End Function
 
     ''' <summary>
     ''' Each column's least width, px: its header, a typical value, and what its rows hold now (a
-    ''' polygon's "1.23×10⁻³ × 0.500"), each value with <paramref name="margin"/> px beside it.
+    ''' polygon's "1.23×10⁻³ × 0.500"), with the margins of <paramref name="margin"/> beside them.
     ''' </summary>
-    Private Function NeededColumnWidths(list As BufferedListView, margin As Integer) As Integer()
-        Return WidthsWithMargin(ColumnTextWidths(list), margin)
+    Private Function NeededColumnWidths(list As BufferedListView, margin As (Value As Integer, Header As Integer)) As Integer()
+        Return WidthsWithMargin(ColumnTextWidths(list), margin.Value, margin.Header)
     End Function
 
     ''' <summary>The cells of the first rows a body or link table holds now (at most 40: enough to see how wide its values run).</summary>

@@ -4,7 +4,8 @@ Imports Xunit
 
 ''' <summary>The polygon, box and ramp tools, the Bodies table, and the cue and carry on every movable kind.</summary>
 Public Class ShapeToolsTests
-    Private Shared ReadOnly EveryKind As String() = {"ball", "fixed ball", "rectangle", "box", "ramp", "pentagon", "triangle"}
+    Private Shared ReadOnly FixedAndMovableKinds As String() = {"fixed quadrilateral", "quadrilateral", "fixed ball"}
+    Private Shared ReadOnly EveryKind As String() = {"ball", "fixed ball", "fixed box", "box", "fixed ramp", "pentagon", "fixed triangle"}
 
     <Theory>
     <InlineData(3, 0.5, 0.0)>
@@ -209,6 +210,20 @@ Public Class ShapeToolsTests
         Assert.Equal(Units.Sig(1.5), ramp(3))
         Assert.Equal(Units.Sig(2.5), ramp(4))
         Assert.Equal("length " & Units.Sig(Math.Sqrt(5)), ramp(9))
+    End Sub
+
+    <Fact>
+    Public Sub TheBodiesTable_NamesAFixedPolygon_FixedAsItDoesAFixedBall()
+        Dim h As New PresenterHarness()
+        Dim kite = {New Vector(4, 3.4), New Vector(3.6, 3), New Vector(4, 2.4), New Vector(4.4, 3)}
+        h.P.World.Add(Polygon.CreateFixed(kite))
+        h.P.World.Add(New Polygon(kite.Select(Function(v) v + New Vector(2, 0)).ToArray(), 1.5))
+        h.P.World.Add(Circle.CreateFixed(New Vector(1, 4), 0.2))
+        h.P.TogglePause()
+        Dim t = SimulationPresenter.Tables.ToList().IndexOf(BodyTable.Bodies)
+        Dim kind = BodyTable.Bodies.Headers.ToList().IndexOf("Kind")
+        Dim kinds = Enumerable.Range(0, h.P.Snapshot.RowCount(t)).Select(Function(i) h.P.Snapshot.Cells(t, i)(kind)).ToList()
+        Assert.Equal(FixedAndMovableKinds, kinds)
     End Sub
 
     <Fact>
