@@ -136,12 +136,12 @@ Friend NotInheritable Class ConstraintSet
                 row(2 * r.B) -= _nx(i)
                 row(2 * r.B + 1) -= _ny(i)
             End If
-            Dim size = UnitDot(row, row)
+            Dim size = MassMetric.Unit(_inverseMass, row, row)
             taken(i) = New Double(m - 1) {}
             ' Twice over: one pass of Gram–Schmidt can leave rounding's part of the span behind.
             For pass = 1 To 2
                 For j = 0 To i - 1
-                    Dim p = UnitDot(row, q(j)) / sizes(j)
+                    Dim p = MassMetric.Unit(_inverseMass, row, q(j)) / sizes(j)
                     If p = 0 Then Continue For
                     taken(i)(j) += p
                     For k = 0 To slots - 1
@@ -149,7 +149,7 @@ Friend NotInheritable Class ConstraintSet
                     Next
                 Next
             Next
-            sizes(i) = UnitDot(row, row)
+            sizes(i) = MassMetric.Unit(_inverseMass, row, row)
             If Not (sizes(i) > _independence * size) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
             q(i) = row
         Next
@@ -162,7 +162,7 @@ Friend NotInheritable Class ConstraintSet
         ' M' by Cholesky's method, its factor in the lower triangle of f.
         Dim f(m - 1, m - 1) As Double
         For j = 0 To m - 1
-            Dim own = WeightedDot(q(j), q(j))
+            Dim own = MassMetric.Weighted(_inverseMass, q(j), q(j))
             Dim diagonal = own
             For p = 0 To j - 1
                 diagonal -= f(j, p) * f(j, p)
@@ -170,7 +170,7 @@ Friend NotInheritable Class ConstraintSet
             If Not (diagonal > _independence * own) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
             f(j, j) = Math.Sqrt(diagonal)
             For i = j + 1 To m - 1
-                Dim s = WeightedDot(q(i), q(j))
+                Dim s = MassMetric.Weighted(_inverseMass, q(i), q(j))
                 For p = 0 To j - 1
                     s -= f(i, p) * f(j, p)
                 Next
@@ -221,27 +221,6 @@ Friend NotInheritable Class ConstraintSet
             If _factor(j)(j) * _factor(j)(j) < WellFactored * _shared(j)(j) Then Return False
         Next
         Return True
-    End Function
-
-    ''' <summary>Σ x_k · y_k over the slots of the bodies that can move, each weighing the same.</summary>
-    Private Function UnitDot(x As Double(), y As Double()) As Double
-        Dim s = 0.0
-        For k = 0 To _inverseMass.Length - 1
-            If _inverseMass(k) = 0 Then Continue For
-            s += x(2 * k) * y(2 * k) + x(2 * k + 1) * y(2 * k + 1)
-        Next
-        Return s
-    End Function
-
-    ''' <summary>Σ w_k (x_k · y_k) over the bodies k, w the inverse mass (1/kg): the metric of M.</summary>
-    Private Function WeightedDot(x As Double(), y As Double()) As Double
-        Dim s = 0.0
-        For k = 0 To _inverseMass.Length - 1
-            Dim w = _inverseMass(k)
-            If w = 0 Then Continue For
-            s += w * (x(2 * k) * y(2 * k) + x(2 * k + 1) * y(2 * k + 1))
-        Next
-        Return s
     End Function
 
     ''' <summary>

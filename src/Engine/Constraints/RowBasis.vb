@@ -34,19 +34,19 @@ Friend NotInheritable Class RowBasis
             j(2 * c.B) -= u.X
             j(2 * c.B + 1) -= u.Y
         End If
-        Dim size = Dot(j, j)
+        Dim size = MassMetric.Weighted(_inverseMass, j, j)
         If Not (size > 0) Then Return False
         ' Twice over: one pass of Gram–Schmidt can leave rounding's part of the span behind.
         For pass = 1 To 2
             For Each e In _basis
-                Dim p = Dot(j, e)
+                Dim p = MassMetric.Weighted(_inverseMass, j, e)
                 If p = 0 Then Continue For
                 For k = 0 To j.Length - 1
                     j(k) -= p * e(k)
                 Next
             Next
         Next
-        Dim rest = Dot(j, j)
+        Dim rest = MassMetric.Weighted(_inverseMass, j, j)
         If Not (rest > _fraction * size) Then Return False
         Dim norm = Math.Sqrt(rest)
         For k = 0 To j.Length - 1
@@ -54,16 +54,5 @@ Friend NotInheritable Class RowBasis
         Next
         _basis.Add(j)
         Return True
-    End Function
-
-    ''' <summary>Σ_k w_k (x_k · y_k) over the bodies k.</summary>
-    Private Function Dot(x As Double(), y As Double()) As Double
-        Dim s = 0.0
-        For k = 0 To _inverseMass.Length - 1
-            Dim w = _inverseMass(k)
-            If w = 0 Then Continue For
-            s += w * (x(2 * k) * y(2 * k) + x(2 * k + 1) * y(2 * k + 1))
-        Next
-        Return s
     End Function
 End Class

@@ -30,11 +30,8 @@ Friend Module SpringTerm
     ''' </summary>
     Friend Sub Add(springs As IEnumerable(Of Link), bodies As Shape(), y As Double(), d As Double())
         For Each l In springs
-            Dim a = Array.IndexOf(bodies, l.A)
-            Dim b = If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B))
-            Dim pa As New Vector(y(4 * a), y(4 * a + 1)), va As New Vector(y(4 * a + 2), y(4 * a + 3))
-            Dim pb = If(b >= 0, New Vector(y(4 * b), y(4 * b + 1)), l.EndB)
-            Dim vb = If(b >= 0, New Vector(y(4 * b + 2), y(4 * b + 3)), Vector.Zero)
+            Dim a As Integer, b As Integer, pa As Vector, va As Vector, pb As Vector, vb As Vector
+            Ends(l, bodies, y, a, b, pa, va, pb, vb)
             Dim force = Pull(l, pa, va, pb, vb)
             d(4 * a + 2) += force.X * bodies(a).InverseMass
             d(4 * a + 3) += force.Y * bodies(a).InverseMass
@@ -53,11 +50,8 @@ Friend Module SpringTerm
     ''' </summary>
     Friend Sub AddRounding(springs As IEnumerable(Of Link), bodies As Shape(), y As Double(), rounding As Double())
         For Each l In springs
-            Dim a = Array.IndexOf(bodies, l.A)
-            Dim b = If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B))
-            Dim pa As New Vector(y(4 * a), y(4 * a + 1)), va As New Vector(y(4 * a + 2), y(4 * a + 3))
-            Dim pb = If(b >= 0, New Vector(y(4 * b), y(4 * b + 1)), l.EndB)
-            Dim vb = If(b >= 0, New Vector(y(4 * b + 2), y(4 * b + 3)), Vector.Zero)
+            Dim a As Integer, b As Integer, pa As Vector, va As Vector, pb As Vector, vb As Vector
+            Ends(l, bodies, y, a, b, pa, va, pb, vb)
             Dim size = Ulps * (l.Stiffness * (pa.Length + pb.Length + l.Length) + l.Damping * (va.Length + vb.Length))
             rounding(4 * a + 2) += size * bodies(a).InverseMass
             rounding(4 * a + 3) += size * bodies(a).InverseMass
@@ -66,5 +60,20 @@ Friend Module SpringTerm
                 rounding(4 * b + 3) += size * bodies(b).InverseMass
             End If
         Next
+    End Sub
+
+    ''' <summary>
+    ''' Spring <paramref name="l"/>'s ends in state <paramref name="y"/> of <paramref name="bodies"/>: their slots
+    ''' <paramref name="a"/> and <paramref name="b"/> (−1 for an end that is not among them, fixed or an anchor, which
+    ''' stays at its own point, still), positions (m) and velocities (m/s).
+    ''' </summary>
+    Private Sub Ends(l As Link, bodies As Shape(), y As Double(), ByRef a As Integer, ByRef b As Integer,
+                     ByRef pa As Vector, ByRef va As Vector, ByRef pb As Vector, ByRef vb As Vector)
+        a = Array.IndexOf(bodies, l.A)
+        b = If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B))
+        pa = New Vector(y(4 * a), y(4 * a + 1))
+        va = New Vector(y(4 * a + 2), y(4 * a + 3))
+        pb = If(b >= 0, New Vector(y(4 * b), y(4 * b + 1)), l.EndB)
+        vb = If(b >= 0, New Vector(y(4 * b + 2), y(4 * b + 3)), Vector.Zero)
     End Sub
 End Module
