@@ -208,12 +208,15 @@ Friend NotInheritable Class ConstrainedMotion
         ' the corner's faces already span, and would count as depending on them, though it alone holds the heavy
         ' one up. The real masses are asked only whether the solve can take the row at all.
         Dim unit = _inverseMass.Select(Function(w) If(w > 0, 1.0, 0.0)).ToArray()
+        ' The free motion at y, the same for every trial (each solve adds its forces to a copy of it).
+        Dim free = FreeDerivative(y)
         Dim kept As New List(Of Constraint)
         For Each c In rows
             kept.Add(c)
+            Dim trial = kept.ToArray()
             Try
-                Call New ConstraintSet(kept.ToArray(), unit, IndependenceMargin).Tensions(y, FreeDerivative(y))
-                Call New ConstraintSet(kept.ToArray(), _inverseMass).Tensions(y, FreeDerivative(y))
+                Call New ConstraintSet(trial, unit, IndependenceMargin).Tensions(y, CType(free.Clone(), Double()))
+                Call New ConstraintSet(trial, _inverseMass).Tensions(y, CType(free.Clone(), Double()))
             Catch ex As InvalidOperationException
                 kept.RemoveAt(kept.Count - 1)
             End Try
