@@ -173,7 +173,13 @@ Friend NotInheritable Class ConstrainedMotion
         _snapAt = New Double(_slack.Length - 1) {}
         For i = 0 To _slack.Length - 1
             Dim spare = SpareLength(y, _slackTies(i))
-            _snapAt(i) = If(spare > OverLength * _slack(i).Length, 0, Math.Min(spare, 0) - OverLength * _slack(i).Length)
+            Dim margin = OverLength * _slack(i).Length
+            ' A string at its length that the held rows already keep there (beside a contact of the same two balls,
+            ' at its length) has its length held to the integrator's accuracy, not to rounding: it counts as taut
+            ' once over-long by a watched contact's slop, or the search for it would crawl along a spare length that
+            ' stays at nothing.
+            If spare <= WatchSlop AndAlso Implied(_slackTies(i), held, y) Then margin = Math.Max(WatchSlop, margin)
+            _snapAt(i) = If(spare > margin, 0, Math.Min(spare, 0) - margin)
         Next
         _watched = watched.Where(Function(c) Not Equals(c.Tag, released)).ToArray()
         ' A watched contact already pressed in a little at the start (a body put on a level face beside it) is
@@ -222,6 +228,12 @@ Friend NotInheritable Class ConstrainedMotion
             End Try
         Next
         Return kept
+    End Function
+
+    ''' <summary>Whether <paramref name="row"/> depends on the <paramref name="held"/> rows at state <paramref name="y"/>.</summary>
+    Private Function Implied(row As Constraint, held As List(Of Constraint), y As Double()) As Boolean
+        Dim trial As New List(Of Constraint)(held) From {row}
+        Return Not IndependentRows(trial, y).Contains(row)
     End Function
 
     ''' <summary>−1 slack, 0 taut (at full length, not moving along itself), +1 over-long and stretching (it must snap now).</summary>
@@ -400,11 +412,11 @@ Friend NotInheritable Class ConstrainedMotion
             Dim target = _snapAt(i)
             Dim f0 = SpareLength(_states(j), tie), f1 = SpareLength(_states(j + 1), tie)
             Dim h = t1 - t0
-            Dim speed = StepBound(j, tie.A, 1) + If(tie.B >= 0, StepBound(j, tie.B, 1), 0)
-            ' The spare length falls no faster than the ends' speeds together: from both ends of the step it cannot reach the target in between.
+            Dim speed = StepBound(j, tie.A, 1, tie.B)
+            ' The spare length falls no faster than the ends' relative speed: from both ends of the step it cannot reach the target in between.
             If f0 > target AndAlso f1 > target AndAlso (f0 + f1 - speed * h) / 2 > target Then Continue For
             ' On L² − d²: |d| ≤ d(t0) + speed × h over the step bounds |(d²)'| = 2|r·w| and |(d²)''| = 2| |w|² + r·a |.
-            Dim accel = StepBound(j, tie.A, 2) + If(tie.B >= 0, StepBound(j, tie.B, 2), 0)
+            Dim accel = StepBound(j, tie.A, 2, tie.B)
             Dim reach = tie.Length - f0 + speed * h
             Dim reached = tie.Length - target
             Dim found = ConservativeAdvancement.FirstContact(New SquaredSpareGap(Me, tie), t0, t1, tie.Length * tie.Length - reached * reached,
@@ -515,16 +527,21 @@ Friend NotInheritable Class ConstrainedMotion
         Return c(o + 1) + s * (2 * c(o + 2) + s * (3 * c(o + 3) + s * (4 * c(o + 4) + s * 5 * c(o + 5))))
     End Function
 
-    ''' <summary>|p'| (order 1) or |p''| (order 2) of body k on step j, bounded by Σ j|cⱼ| and Σ j(j − 1)|cⱼ| (s in [0, 1]).</summary>
-    Private Function StepBound(j As Integer, k As Integer, order As Integer) As Double
+    ''' <summary>
+    ''' |p'| (order 1) or |p''| (order 2) of body k on step j, or of its motion relative to body
+    ''' <paramref name="other"/> when that is not negative: bounded by Σ j|cⱼ| and Σ j(j − 1)|cⱼ| of the (difference
+    ''' of the) quintics, s in [0, 1]. Two bodies moving together have small relative bounds, however fast they go.
+    ''' </summary>
+    Private Function StepBound(j As Integer, k As Integer, order As Integer, Optional other As Integer = -1) As Double
         Dim h = _times(j + 1) - _times(j)
         Dim bx = 0.0, by = 0.0
         Dim c = Quintics(j)
         Dim ox = 12 * k, oy = 12 * k + 6
+        Dim qx = 12 * other, qy = 12 * other + 6
         For p = order To 5
             Dim w = If(order = 1, p, p * (p - 1))
-            bx += w * Math.Abs(c(ox + p))
-            by += w * Math.Abs(c(oy + p))
+            bx += w * Math.Abs(c(ox + p) - If(other >= 0, c(qx + p), 0))
+            by += w * Math.Abs(c(oy + p) - If(other >= 0, c(qy + p), 0))
         Next
         Return Math.Sqrt(bx * bx + by * by) / Math.Pow(h, order) * (1 + 0.000000001)
     End Function
@@ -546,18 +563,8 @@ Friend NotInheritable Class ConstrainedMotion
             Return
         End If
         For j = first To last
-            Dim h = _times(j + 1) - _times(j)
-            Dim c = Quintics(j)
-            For order = 1 To 2
-                Dim bx = 0.0, by = 0.0
-                For p = order To 5
-                    Dim w = If(order = 1, p, p * (p - 1))
-                    bx += w * Math.Abs(c(12 * k1 + p) - c(12 * k2 + p))
-                    by += w * Math.Abs(c(12 * k1 + 6 + p) - c(12 * k2 + 6 + p))
-                Next
-                Dim b = Math.Sqrt(bx * bx + by * by) / Math.Pow(h, order) * (1 + 0.000000001)
-                If order = 1 Then speed = Math.Max(speed, b) Else acceleration = Math.Max(acceleration, b)
-            Next
+            speed = Math.Max(speed, StepBound(j, k1, 1, k2))
+            acceleration = Math.Max(acceleration, StepBound(j, k1, 2, k2))
         Next
     End Sub
 
