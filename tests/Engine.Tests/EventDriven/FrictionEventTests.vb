@@ -170,5 +170,46 @@ Namespace EventDriven
             Assert.Equal(1.1 + Speed * T - 0.5 * 0.1 * G * T * T, top.Position.X, 9)
             Assert.Equal(1 + Speed * T - 0.5 * 0.4 * G * T * T, bottom.Position.X, 9)
         End Sub
+
+        ''' <summary>
+        ''' A 2 kg box on a rough floor (μk = 0.4, μs = 0.6) tied by a spring (8 N/m, 1 m long) to a 1 kg bob on a 1 m
+        ''' rod, let go level with the rod's anchor on the box's side. As the bob swings over to the far side the
+        ''' spring's pull grows until it needs more than μs times the floor's push: the box slips, slides, stops and
+        ''' sticks again. At the slip the judgement "slips" and the new group's "stays stuck" once disagreed by a
+        ''' rounding, and the run stopped at t = 0.728 s with 100 001 events within a nanosecond.
+        ''' </summary>
+        <Fact>
+        Public Sub BoxPulledByASwingingBob_SlipsOnceItsPullOutgrowsMuSTimesItsPush_ThenSticksAgain()
+            Dim w = RoughWorld(0.4, 0.6, 0.3)
+            Dim box = Rectangle.CreateMovable(New Vector(0.8, 0), 0.4, 0.2, 2, Vector.Zero, "box")
+            Dim bob As New Circle(New Vector(1, 2), 0.05, 1, Vector.Zero, "bob")
+            w.Add(box)
+            w.Add(bob)
+            w.Add(Link.CreateTie(LinkKind.Rod, bob, New Vector(2, 2), 1))
+            Dim spring = Link.CreateSpring(box, bob, 8, 1)
+            w.Add(spring)
+            Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+            Dim slipped = False, stuckAgain = False
+            For k = 1 To 300
+                Dim before = box.Position.X
+                ' The spring's pull on the box and what static friction can take, from the state before this step.
+                Dim along = (bob.Position - box.CentreOfMass) / (bob.Position - box.CentreOfMass).Length
+                Dim pull = 8 * ((bob.Position - box.CentreOfMass).Length - 1) * along
+                Dim grip = 0.6 * (2 * G - pull.Y)
+                w.Advance(0.01)
+                If box.Position.X <> before Then
+                    slipped = True
+                ElseIf slipped Then
+                    stuckAgain = True
+                ElseIf Not slipped Then
+                    Assert.True(Math.Abs(pull.X) <= grip * (1 + 0.000001), $"t = {w.Time} s: the box stayed stuck under a pull of {pull.X} N, more than μs N = {grip} N")
+                End If
+                Dim books = w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated
+                Assert.True(Math.Abs(books - e0) <= 0.000000001 * e0, $"t = {w.Time} s: energy plus dissipated {books} J against {e0} J")
+            Next
+            Assert.True(slipped, "the box never slipped")
+            Assert.True(stuckAgain, "the box never stuck again")
+            Assert.Equal(3, w.Time, 12)
+        End Sub
     End Class
 End Namespace

@@ -42,6 +42,9 @@ Friend NotInheritable Class ConstrainedMotion
     ' to the contact search.
     Private Const WatchSlop As Double = 0.000000001
     Private Const WatchOpening As Double = 0.000001
+    ' A stuck contact slips once its friction needs more than μs times its push by this share of the two forces:
+    ' twice what the regrouping forgives a contact that stays stuck.
+    Private Const SlipMargin As Double = 0.000000002
     ' A constraint is held only if what it adds to the others' span is at least this fraction of it (squared): about
     ' 10⁻⁴ rad away from depending on them.
     Friend Const IndependenceMargin As Double = 0.00000001
@@ -378,7 +381,10 @@ Friend NotInheritable Class ConstrainedMotion
                 Dim n = Array.IndexOf(_rows, row.StuckTo)
                 If n < 0 Then Continue For
                 Dim stick = i
-                Dim spare = Function(tensions As Double()) row.StuckTo.StaticFriction * tensions(n) - Math.Abs(tensions(stick))
+                ' It slips once its pull is past μs times its push by twice the share that the regrouping forgives
+                ' (LinkedEventSolver.ApplyFriction), so that the new group starts it sliding, not stuck again at once.
+                Dim spare = Function(tensions As Double()) row.StuckTo.StaticFriction * tensions(n) - Math.Abs(tensions(stick)) +
+                                                             SlipMargin * (Math.Abs(tensions(stick)) + Math.Abs(tensions(n)))
                 Dim s0 = spare(_tensions(j)), s1 = spare(_tensions(j + 1))
                 If s1 < 0 Then
                     Dim root = If(s0 <= 0, t0, ScalarRoot.Brent(Function(t) spare(TensionsAt(t)), t0, t1, s0, s1))
