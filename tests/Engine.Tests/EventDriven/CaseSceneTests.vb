@@ -10,6 +10,27 @@ Imports Xunit
 ''' </summary>
 Public Class CaseSceneTests
     ''' <summary>
+    ''' 17 bodies of every kind with friction, strings and springs (a random scene). Advanced 0.05 s at a time, a
+    ''' group integrated under its springs was asked for its bounds over a search that ended where it began, before
+    ''' it had taken a step, and the run stopped with "Index was out of range" in its first 0.05 s. The bounds over
+    ''' an instant are now those of the state there.
+    ''' </summary>
+    <Fact>
+    Public Sub SearchEndingWhereItBegins_RunsOn_InEveryAdvance()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-search-ends-where-it-begins.json"))
+        EventSolverTestKit.UseEventSolver(w)
+        Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+        For k = 1 To 10
+            w.Advance(0.05)
+            Dim books = w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated
+            Assert.True(books <= e0 + 0.000000001 * Math.Abs(e0), $"t = {w.Time} s: energy plus dissipated {books} J, above {e0} J at the start")
+            Dim depth = EventSolverTestKit.DeepestOverlap(w)
+            Assert.True(depth <= 0.000000001, $"t = {w.Time} s: overlap {depth} m")
+        Next
+        Assert.Equal(0.5, w.Time, 12)
+    End Sub
+
+    ''' <summary>
     ''' Three 1 kg balls of 5 mm, two side by side and one on the left one's shoulder, the top one tied to each of
     ''' the others by a string at its length, all sliding right at 0.2 m/s as they drop 15 mm to the floor
     ''' (g = 9.81 m/s², e = 0.6). The string from the top ball to the left one is as long as their touching

@@ -136,6 +136,12 @@ Friend NotInheritable Class QuinticTrajectory
     ''' </summary>
     Friend Function Bound(k As Integer, t0 As Double, t1 As Double, order As Integer) As Double
         Dim first = StepAt(Math.Max(t0, StartTime)), last = StepAt(Math.Max(t1, StartTime))
+        If _times.Count = 1 Then
+            ' Asked only about its start (a search that ends where it begins): no step yet, the start state's own.
+            Dim y = _states(0), d = _slopes(0)
+            Dim source = If(order = 1, y, d)
+            Return New Vector(source(4 * k + 2), source(4 * k + 3)).Length * (1 + 0.000000001)
+        End If
         ' The searches of one instant all ask about the same stretch, for each body and both orders: each step's
         ' bounds are worked out once, and the last stretch's are kept.
         Dim slot = 2 * k + order - 1
