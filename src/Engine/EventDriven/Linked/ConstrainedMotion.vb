@@ -282,10 +282,15 @@ Friend NotInheritable Class ConstrainedMotion
         Return Derivative(y, unused)
     End Function
 
-    ''' <summary>Takes steps until the last one ends at or after <paramref name="time"/>, looking at each for a string's change.</summary>
-    Private Sub ExtendTo(time As Double)
+    ''' <summary>
+    ''' Takes steps until the last one ends at or after <paramref name="time"/>, looking at each for a string's change;
+    ''' only one when <paramref name="oneStep"/> (the first step, whatever length the error control gives it).
+    ''' </summary>
+    Private Sub ExtendTo(time As Double, Optional oneStep As Boolean = False)
         If Double.IsInfinity(time) Then Throw New ArgumentOutOfRangeException(NameOf(time), "a chain's motion is integrated only to a finite time")
-        Do While _times(_times.Count - 1) < time AndAlso Not _ended
+        Dim taken = 0
+        Do While _times(_times.Count - 1) < time AndAlso Not _ended AndAlso Not (oneStep AndAlso taken > 0)
+            taken += 1
             If _times.Count > MaxSteps Then Throw New InvalidOperationException($"the chain integrator took more than {MaxSteps} steps from t = {StartTime} s to t = {_times(_times.Count - 1)} s without reaching t = {time} s")
             Dim t = _times(_times.Count - 1)
             Dim y = _states(_states.Count - 1)
@@ -647,20 +652,11 @@ Friend NotInheritable Class ConstrainedMotion
         Get
             If Not Double.IsPositiveInfinity(_eventTime) Then Return _eventTime
             If Not _hasEvents Then Return Double.PositiveInfinity
-            If _times.Count < 2 Then ExtendTo(StartTime + _step)
+            ' One step, not up to the first step's guess: that guess (a hundredth of a pendulum period) can be a
+            ' thousand steps of a stiff spring, integrated for a stretch the next collision throws away.
+            If _times.Count < 2 Then ExtendTo(StartTime + _step, oneStep:=True)
             If Not Double.IsPositiveInfinity(_eventTime) Then Return _eventTime
             Return _times(_times.Count - 1)
-        End Get
-    End Property
-
-    ''' <summary>
-    ''' The first event found on the steps looked at so far (+∞ for none yet), not the end of those steps: searches
-    ''' stopped there made a group of boxes and balls on rods, a string and springs end and form anew three times as
-    ''' often, and run twenty times slower.
-    ''' </summary>
-    Friend Overrides ReadOnly Property SearchEnd As Double
-        Get
-            Return _eventTime
         End Get
     End Property
 
