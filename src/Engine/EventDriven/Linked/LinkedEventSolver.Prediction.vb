@@ -110,7 +110,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' <summary>
     ''' How far ahead (s, absolute) a search of bodies moved by <paramref name="a"/> and <paramref name="b"/> looks: to
     ''' the horizon, and never past either motion's <see cref="LinkedMotion.SearchEnd"/> (its own event, or the end of
-    ''' what a spring group has looked at so far), where the bodies are predicted again. An integrated group would
+    ''' what an integrated group has looked at so far), where the bodies are predicted again. An integrated group would
     ''' otherwise be carried on past its event, on constraints that no longer hold there, or integrated a whole
     ''' horizon ahead after every collision, for a stretch the next collision throws away.
     ''' </summary>

@@ -50,8 +50,9 @@ Friend MustInherit Class LinkedMotion
 
     ''' <summary>
     ''' How far contacts of its bodies are searched at most (s, absolute): <see cref="TransitionTime"/>, where the
-    ''' bodies are predicted again. A chain's integrated motion gives only its own events, not the end of what it
-    ''' has looked at (<see cref="ConstrainedMotion"/>): its searches look on to the horizon.
+    ''' bodies are predicted again. For an integrated group that is its own event or the end of what it has looked
+    ''' at so far, so that a group made anew at a collision is integrated only as far as it is looked at, doubling,
+    ''' not a whole horizon ahead for a stretch the next collision throws away.
     ''' </summary>
     Friend Overridable ReadOnly Property SearchEnd As Double
         Get
