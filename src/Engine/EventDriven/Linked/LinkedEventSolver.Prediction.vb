@@ -109,13 +109,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     ''' <summary>
     ''' How far ahead (s, absolute) a search of bodies moved by <paramref name="a"/> and <paramref name="b"/> looks: to
-    ''' the horizon, and never past either motion's <see cref="LinkedMotion.SearchEnd"/> (its own event, or the end of
-    ''' what an integrated group has looked at so far), where the bodies are predicted again. An integrated group would
+    ''' the horizon, and never past either motion's <see cref="LinkedMotion.TransitionTime"/> (its own event, or the end
+    ''' of what an integrated group has looked at so far), where the bodies are predicted again. An integrated group would
     ''' otherwise be carried on past its event, on constraints that no longer hold there, or integrated a whole
     ''' horizon ahead after every collision, for a stretch the next collision throws away.
     ''' </summary>
     Private Function SearchEnd(tEnd As Double, a As LinkedMotion, b As LinkedMotion) As Double
-        Return Math.Max(_now, Math.Min(Math.Min(tEnd, _now + Horizon), Math.Min(a.SearchEnd, b.SearchEnd)))
+        Return Math.Max(_now, Math.Min(Math.Min(tEnd, _now + Horizon), Math.Min(a.TransitionTime, b.TransitionTime)))
     End Function
 
     ''' <summary>A bound on the gap's second derivative (m/s²) from above: the acceleration's, plus V²/R for the turning of the normal about a pair shape rounded by R; +∞ (none) for a sharp one.</summary>

@@ -41,22 +41,15 @@ Friend MustInherit Class LinkedMotion
         Return False
     End Function
 
-    ''' <summary>When this closed form stops holding, s; +∞ when it holds for ever.</summary>
+    ''' <summary>
+    ''' When this closed form stops holding, s; +∞ when it holds for ever. Its bodies' contacts are searched no
+    ''' further, and are predicted again from there: for an integrated group that is its own event or the end of
+    ''' what it has looked at so far, so that it is integrated only as far as it is looked at, doubling, not a
+    ''' whole horizon ahead for a stretch the next collision throws away.
+    ''' </summary>
     Friend Overridable ReadOnly Property TransitionTime As Double
         Get
             Return Double.PositiveInfinity
-        End Get
-    End Property
-
-    ''' <summary>
-    ''' How far contacts of its bodies are searched at most (s, absolute): <see cref="TransitionTime"/>, where the
-    ''' bodies are predicted again. For an integrated group that is its own event or the end of what it has looked
-    ''' at so far, so that a group made anew at a collision is integrated only as far as it is looked at, doubling,
-    ''' not a whole horizon ahead for a stretch the next collision throws away.
-    ''' </summary>
-    Friend Overridable ReadOnly Property SearchEnd As Double
-        Get
-            Return TransitionTime
         End Get
     End Property
 
