@@ -42,9 +42,11 @@ Friend NotInheritable Class ConstrainedMotion
     ' to the contact search.
     Private Const WatchSlop As Double = 0.000000001
     Private Const WatchOpening As Double = 0.000001
-    ' A stuck contact slips once its friction needs more than μs times its push by this share of the two forces:
-    ' twice what the regrouping forgives a contact that stays stuck.
-    Private Const SlipMargin As Double = 0.000000002
+    ' A stuck contact stays stuck at a regrouping (LinkedEventSolver.ApplyFriction) while its friction needs no more
+    ' than μs times its push plus this share of the two forces: rounding, not a slip.
+    Friend Const StickRounding As Double = 0.000000001
+    ' Along a motion it slips once past twice that share, so that the new group starts it sliding, not stuck again.
+    Private Const SlipMargin As Double = 2 * StickRounding
     ' A constraint is held only if what it adds to the others' span is at least this fraction of it (squared): about
     ' 10⁻⁴ rad away from depending on them.
     Friend Const IndependenceMargin As Double = 0.00000001
@@ -212,31 +214,42 @@ Friend NotInheritable Class ConstrainedMotion
     ''' rounding) would be lost to rounding a step later.
     ''' </summary>
     Private Function IndependentRows(rows As List(Of Constraint), y As Double()) As List(Of Constraint)
-        ' The margin is judged with every movable body weighing the same: in the inverse-mass metric a row between a
-        ' very light ball wedged in a corner and a heavy one pressing on it is almost all the light ball's part, which
-        ' the corner's faces already span, and would count as depending on them, though it alone holds the heavy
-        ' one up. The real masses are asked only whether the solve can take the row at all.
-        Dim unit = _inverseMass.Select(Function(w) If(w > 0, 1.0, 0.0)).ToArray()
         ' The free motion at y, the same for every trial (each solve adds its forces to a copy of it).
         Dim free = FreeDerivative(y)
         Dim kept As New List(Of Constraint)
         For Each c In rows
             kept.Add(c)
-            Dim trial = kept.ToArray()
-            Try
-                Call New ConstraintSet(trial, unit, IndependenceMargin).Tensions(y, CType(free.Clone(), Double()))
-                Call New ConstraintSet(trial, _inverseMass).Tensions(y, CType(free.Clone(), Double()))
-            Catch ex As InvalidOperationException
-                kept.RemoveAt(kept.Count - 1)
-            End Try
+            If Not Admits(kept.ToArray(), y, free) Then kept.RemoveAt(kept.Count - 1)
         Next
         Return kept
     End Function
 
-    ''' <summary>Whether <paramref name="row"/> depends on the <paramref name="held"/> rows at state <paramref name="y"/>.</summary>
+    ''' <summary>
+    ''' Whether the solve takes <paramref name="trial"/> at state <paramref name="y"/> (free motion
+    ''' <paramref name="free"/>, left as it is): every row independent of the others with every movable body weighing
+    ''' the same, and the real masses able to take them.
+    ''' </summary>
+    Private Function Admits(trial As Constraint(), y As Double(), free As Double()) As Boolean
+        ' The margin is judged with every movable body weighing the same: in the inverse-mass metric a row between a
+        ' very light ball wedged in a corner and a heavy one pressing on it is almost all the light ball's part, which
+        ' the corner's faces already span, and would count as depending on them, though it alone holds the heavy
+        ' one up. The real masses are asked only whether the solve can take the row at all.
+        Dim unit = _inverseMass.Select(Function(w) If(w > 0, 1.0, 0.0)).ToArray()
+        Try
+            Call New ConstraintSet(trial, unit, IndependenceMargin).Tensions(y, CType(free.Clone(), Double()))
+            Call New ConstraintSet(trial, _inverseMass).Tensions(y, CType(free.Clone(), Double()))
+            Return True
+        Catch ex As InvalidOperationException
+            Return False
+        End Try
+    End Function
+
+    ''' <summary>
+    ''' Whether <paramref name="row"/> depends on the <paramref name="held"/> rows (already found independent) at state
+    ''' <paramref name="y"/>: one trial with it added, as <see cref="IndependentRows"/> would make last.
+    ''' </summary>
     Private Function Implied(row As Constraint, held As List(Of Constraint), y As Double()) As Boolean
-        Dim trial As New List(Of Constraint)(held) From {row}
-        Return Not IndependentRows(trial, y).Contains(row)
+        Return Not Admits(held.Append(row).ToArray(), y, FreeDerivative(y))
     End Function
 
     ''' <summary>−1 slack, 0 taut (at full length, not moving along itself), +1 over-long and stretching (it must snap now).</summary>
@@ -386,8 +399,7 @@ Friend NotInheritable Class ConstrainedMotion
                 Dim n = Array.IndexOf(_rows, row.StuckTo)
                 If n < 0 Then Continue For
                 Dim stick = i
-                ' It slips once its pull is past μs times its push by twice the share that the regrouping forgives
-                ' (LinkedEventSolver.ApplyFriction), so that the new group starts it sliding, not stuck again at once.
+                ' Past μs times its push by SlipMargin, twice what the regrouping forgives: the new group starts it sliding.
                 Dim spare = Function(tensions As Double()) row.StuckTo.StaticFriction * tensions(n) - Math.Abs(tensions(stick)) +
                                                              SlipMargin * (Math.Abs(tensions(stick)) + Math.Abs(tensions(n)))
                 Dim s0 = spare(_tensions(j)), s1 = spare(_tensions(j + 1))

@@ -324,7 +324,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             For Each stick In sticks
                 Dim k = Array.IndexOf(rows, stick), n = Array.IndexOf(rows, stick.StuckTo)
                 Dim over = Math.Abs(lambda(k)) - stick.StuckTo.StaticFriction * Math.Max(lambda(n), 0)
-                If over > excess + 0.000000001 * (Math.Abs(lambda(k)) + Math.Abs(lambda(n))) Then excess = over : worst = stick : pull = lambda(k)
+                If over > excess + ConstrainedMotion.StickRounding * (Math.Abs(lambda(k)) + Math.Abs(lambda(n))) Then excess = over : worst = stick : pull = lambda(k)
             Next
             If worst Is Nothing Then Exit For
             worst.StuckTo.Sliding = -Math.Sign(pull)
