@@ -1,5 +1,6 @@
 Option Strict On
 Imports PhysicsEngine
+Imports Xunit
 
 ''' <summary>Helpers shared by the event-driven solver's scenario tests.</summary>
 Friend Module EventSolverTestKit
@@ -9,6 +10,18 @@ Friend Module EventSolverTestKit
         w.Solver = s
         Return s
     End Function
+
+    ''' <summary>
+    ''' Fails unless energy plus dissipated is no more than 1e-9 of |<paramref name="e0"/>| above
+    ''' <paramref name="e0"/> (J, at the start) and no two bodies overlap by more than 1e-9 m: the laws of a run
+    ''' with e &lt; 1, checked at the world's time now.
+    ''' </summary>
+    Friend Sub AssertNoEnergyGainNorOverlap(w As World, e0 As Double)
+        Dim books = w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated
+        Assert.True(books <= e0 + 0.000000001 * Math.Abs(e0), $"at t = {w.Time} s energy plus dissipated is {books} J, above {e0} J at the start")
+        Dim depth = DeepestOverlap(w)
+        Assert.True(depth <= 0.000000001, $"at t = {w.Time} s two bodies overlap by {depth} m")
+    End Sub
 
     ''' <summary>The deepest overlap (m) between any two circles, or between a circle and a rectangle or wall, found with a grid.</summary>
     Friend Function DeepestOverlap(w As World) As Double
