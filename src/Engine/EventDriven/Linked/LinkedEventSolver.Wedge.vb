@@ -39,6 +39,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Do While head < groups.Count
             Dim g = groups(head)
             head += 1
+            AddStringsAtLength(g)
             For Each c In _groups(g).Bodies
                 Dim k = Array.IndexOf(_bodies, c)
                 For m = 0 To _bodies.Length - 1
@@ -74,6 +75,19 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Loop
         Return groups
     End Function
+
+    ''' <summary>
+    ''' Group g's strings that its motion holds slack but that are at their full length (within the slop): a string
+    ''' that snaps taut at this instant is part of the same blow, or the blow and the snap pass the body back and
+    ''' forth between them for ever (a bob on a string struck against another body at its string's length).
+    ''' The group's bodies are written to their states now.
+    ''' </summary>
+    Private Sub AddStringsAtLength(g As Integer)
+        Dim held = _groups(g).Motion.HeldLinks
+        For Each l In _groups(g).Links
+            If l.Kind = LinkKind.String AndAlso Array.IndexOf(held, l) < 0 AndAlso l.Distance >= l.Length - Slop Then _impulse.AddStringAtLength(l)
+        Next
+    End Sub
 
     ''' <summary>Body k's contact with a wall or fixed body, if it touches at <paramref name="t"/>.</summary>
     Private Sub AddTouching(k As Integer, gap As LinkedGap, t As Double)

@@ -78,6 +78,17 @@ Friend NotInheritable Class LinkedImpulse
                                 .Sign = If(link.Kind = LinkKind.String, -1, 0)})
     End Sub
 
+    ''' <summary>
+    ''' A string at its full length that its group's motion holds slack: in a wedged blow it may snap taut at the
+    ''' same instant, so it is a row that only pulls and, as a string going taut is a collision, gives back
+    ''' restitution times its impulse like a contact (<see cref="ResolveWedged"/>).
+    ''' </summary>
+    Friend Sub AddStringAtLength(link As Link)
+        Dim r = link.EndB - link.EndA
+        _rows.Add(New Row With {.A = IndexOf(link.A), .B = IndexOf(link.B), .U = r.Normalized(Vector.Zero), .Target = 0,
+                                .Sign = -1, .IsContact = True})
+    End Sub
+
     Private Function SeparationSpeed(row As Row) As Double
         Dim va = If(row.A >= 0, _velocities(row.A), Vector.Zero)
         Dim vb = If(row.B >= 0, _velocities(row.B), Vector.Zero)
@@ -94,7 +105,8 @@ Friend NotInheritable Class LinkedImpulse
     ''' Solves the rows as one blow in two phases (Poisson's hypothesis), for bodies wedged among contacts that
     ''' pairwise blows pass back and forth for ever (a ball caged with no room between the ends of a rod): first
     ''' every contact only stops its approach (target 0), which projects the velocities onto those that approach
-    ''' nowhere; then each contact gives back <paramref name="restitution"/> times the impulse it took, and what
+    ''' nowhere; then each contact (and string snapping taut) gives back <paramref name="restitution"/> times the
+    ''' impulse it took, and what
     ''' that sends into another contact is stopped again. The projection is orthogonal in the kinetic-energy
     ''' metric, so the energy after the first phase is the energy before less that of the change; giving back
     ''' at most all of the change (e ≤ 1) gains nothing, and stopping again only loses.
@@ -108,7 +120,7 @@ Friend NotInheritable Class LinkedImpulse
         Solve()
         For i = 0 To _rows.Count - 1
             Dim row = _rows(i)
-            If row.IsContact AndAlso row.Impulse > 0 Then
+            If row.IsContact AndAlso row.Impulse <> 0 Then
                 Dim give = restitution * row.Impulse
                 If row.A >= 0 Then _velocities(row.A) -= row.U * (give * InverseMass(row.A))
                 If row.B >= 0 Then _velocities(row.B) += row.U * (give * InverseMass(row.B))
