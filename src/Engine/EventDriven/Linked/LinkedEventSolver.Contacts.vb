@@ -20,6 +20,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ' A speed within this fraction of the group's own speeds is rounding: after its contacts' rates are taken away,
     ' a body at rest keeps none of it.
     Private Const RoundingFraction As Double = 0.000000000000001
+    ' While a regrouping works: each seed body's acceleration bound (m/s²) under the motion it had (see Pressing).
+    Private ReadOnly _pressedBefore As New Dictionary(Of Integer, Double)
 
     Private ReadOnly _solve As New ContactSolve()
     ' The keys of every contact a group's motion holds.
@@ -52,9 +54,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim order As New List(Of Integer)(seeds)
         ' What the gaps read while this works: the seeds' states now, not their old motions' (whose account of the
         ' energy drag and damping took is settled first).
+        _pressedBefore.Clear()
         For Each g In seeds
             _ledger.Settle(_groups(g), _world, t)
             Dim snapped = _groups(g).Motion.Bodies
+            For k = 0 To snapped.Length - 1
+                _pressedBefore(Array.IndexOf(_bodies, snapped(k))) = _groups(g).Motion.AccelerationBound(k, t, t)
+            Next
             Dim now(4 * snapped.Length - 1) As Double
             For k = 0 To snapped.Length - 1
                 now(4 * k) = snapped(k).CentreOfMass.X
@@ -221,12 +227,25 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If gap.GapAndNormal(t, normal, rate) > Slop Then Return False
         Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
         If rate < -(CreepSpeed + 0.000000001 * speeds) Then Return False
-        Dim press = Math.Max(_world.Gravity, MotionOf(i).AccelerationBound(_slotOf(i), t, t) + If(j >= 0, MotionOf(j).AccelerationBound(_slotOf(j), t, t), 0))
+        Dim press = Math.Max(_world.Gravity, Pressing(i, t) + If(j >= 0, Pressing(j, t), 0))
         ' Or a bounce far too slow to matter beside the bodies' own speeds (pressed by almost nothing, the four slops
         ' would allow any bounce at all): holding it takes a 10⁻¹² part of their kinetic energy at most.
         If rate > Math.Max(Math.Sqrt(2 * press * BounceSlops * Slop), CrumbFraction * speeds) Then Return False
         touches.Add(New Touch With {.Key = key, .Body = i, .Other = j, .Side = side, .Fixed = f})
         Return True
+    End Function
+
+    ''' <summary>
+    ''' A bound on body i's acceleration at <paramref name="t"/> (m/s²) as it was pressed just before: its motion's
+    ''' now, or, for a body of a group being formed anew (whose motion now is its free flight), the one it had,
+    ''' which counts the pushes through its lasting contacts (a ball pushed onto a box through another by a spring
+    ''' is pressed there though nothing pulls it by itself).
+    ''' </summary>
+    Private Function Pressing(i As Integer, t As Double) As Double
+        Dim now = MotionOf(i).AccelerationBound(_slotOf(i), t, t)
+        Dim before As Double
+        If _pressedBefore.TryGetValue(i, before) AndAlso before > now Then Return before
+        Return now
     End Function
 
     ''' <summary>
