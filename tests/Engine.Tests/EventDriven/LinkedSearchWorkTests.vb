@@ -81,7 +81,7 @@ Public Class LinkedSearchWorkTests
     ''' <summary>
     ''' Two boxes and three balls joined by a rod, a string and two springs, with friction (g = 9.81, e = 0.35): the
     ''' group's searches crawled (millions of gap measurements against the wall and the fixed polygon), and 2 s did
-    ''' not end within 90 s. Now about 140 000 measurements and 300 collisions.
+    ''' not end within 90 s. Now about 100 000 measurements and 600 collisions.
     ''' </summary>
     <Fact>
     Public Sub BoxesAndBallsOnLinks_TwoSeconds_InFewSearchSteps()

@@ -171,24 +171,92 @@ Friend NotInheritable Class LinkedImpulse
     ''' Coulomb friction at the blow's own contact (the first added), once its normal impulse is known: the bodies'
     ''' slip across the contact is stopped if that takes at most <paramref name="staticCoefficient"/> times the normal
     ''' impulse, else <paramref name="kineticCoefficient"/> times it acts against the slip, never reversing it
-    ''' (<see cref="ContactFriction.TangentialImpulse"/>). Writes the new velocities to the bodies.
+    ''' (<see cref="ContactFriction.TangentialImpulse"/>). The other rows hold through it, as through the normal blow:
+    ''' the end of a rod struck on a rough floor is stopped with the rod keeping its length, so the stop is solved with
+    ''' the rows and one more asking for no slip. Friction given alone, the rod put right after by a blow of its own,
+    ''' drove a light body on a rod back into the floor at the same instant, again and again.
+    ''' Writes the new velocities to the bodies.
     ''' </summary>
     Friend Sub Rub(staticCoefficient As Double, kineticCoefficient As Double)
         If _rows.Count = 0 Then Return
         Dim row = _rows(0)
         If Not row.IsContact OrElse Not (row.Impulse > 0) Then Return
-        Dim va = If(row.A >= 0, _velocities(row.A), Vector.Zero)
-        Dim vb = If(row.B >= 0, _velocities(row.B), Vector.Zero)
-        Dim relative = vb - va
+        Dim normalImpulse = row.Impulse
+        Dim relative = RelativeVelocity(row)
         Dim slipVector = relative - row.U * Vector.Dot(relative, row.U)
         Dim slip = slipVector.Length
         Dim w = InverseMass(row.A) + InverseMass(row.B)
         If slip = 0 OrElse w = 0 Then Return
         Dim along = slipVector / slip
-        Dim jt = ContactFriction.TangentialImpulse(slip, 1 / w, row.Impulse, staticCoefficient, kineticCoefficient)
+        Dim sliding = ContactFriction.TangentialImpulse(slip, 1 / w, normalImpulse, kineticCoefficient, kineticCoefficient)
+        If _rows.Count = 1 Then
+            Push(row, along, ContactFriction.TangentialImpulse(slip, 1 / w, normalImpulse, staticCoefficient, kineticCoefficient))
+            WriteVelocities()
+            Return
+        End If
+        Dim before = _velocities.ToList()
+        Dim kinetic = KineticEnergy
+        RubWithRows(row, along, normalImpulse, sliding, staticCoefficient)
+        If KineticEnergy > kinetic Then
+            ' The rows' answer to friction pressed the contact further, and its push, at the speed it parts with,
+            ' gave back more than friction took: solved again with the contact only kept from approaching, where
+            ' every row's target is nothing and the solve can only take energy away.
+            For i = 0 To before.Count - 1
+                _velocities(i) = before(i)
+            Next
+            Dim target = _rows(0).Target
+            SetTarget(0, 0)
+            RubWithRows(row, along, normalImpulse, sliding, staticCoefficient)
+            SetTarget(0, target)
+        End If
+        WriteVelocities()
+    End Sub
+
+    ''' <summary>
+    ''' Friction at contact <paramref name="row"/> (slipping along <paramref name="along"/> after a normal impulse of
+    ''' <paramref name="normalImpulse"/>) with every row holding: stuck, with no slip, if the friction that takes is at
+    ''' most <paramref name="staticCoefficient"/> times what the contact's row pushed in all; else the impulse
+    ''' <paramref name="sliding"/> against the slip, and the rows put right with it, stopping the slip at most.
+    ''' </summary>
+    Private Sub RubWithRows(row As Row, along As Vector, normalImpulse As Double, sliding As Double, staticCoefficient As Double)
+        Dim before = _velocities.ToList()
+        ' Stuck: the friction is the new row's impulse; the push, what the contact's row took in both solves.
+        _rows.Add(New Row With {.A = row.A, .B = row.B, .U = along, .Target = 0, .Sign = 0})
+        Solve()
+        Dim friction = -_rows(_rows.Count - 1).Impulse
+        Dim pushed = normalImpulse + _rows(0).Impulse
+        _rows.RemoveAt(_rows.Count - 1)
+        If friction <= staticCoefficient * pushed Then Return
+        Dim stuck = _velocities.ToList()
+        For i = 0 To before.Count - 1
+            _velocities(i) = before(i)
+        Next
+        Push(row, along, sliding)
+        Solve()
+        If Vector.Dot(RelativeVelocity(row), along) < 0 Then
+            ' It would have reversed the slip: it stops instead.
+            For i = 0 To stuck.Count - 1
+                _velocities(i) = stuck(i)
+            Next
+        End If
+    End Sub
+
+    ''' <summary>Sets row <paramref name="i"/>'s target separation speed, m/s.</summary>
+    Private Sub SetTarget(i As Integer, target As Double)
+        Dim r = _rows(i)
+        r.Target = target
+        _rows(i) = r
+    End Sub
+
+    ''' <summary>How fast row <paramref name="row"/>'s B end moves relative to its A end, m/s.</summary>
+    Private Function RelativeVelocity(row As Row) As Vector
+        Return If(row.B >= 0, _velocities(row.B), Vector.Zero) - If(row.A >= 0, _velocities(row.A), Vector.Zero)
+    End Function
+
+    ''' <summary>An impulse <paramref name="jt"/> (N·s) against the slip <paramref name="along"/> of row <paramref name="row"/>'s ends.</summary>
+    Private Sub Push(row As Row, along As Vector, jt As Double)
         If row.A >= 0 Then _velocities(row.A) += along * (jt * InverseMass(row.A))
         If row.B >= 0 Then _velocities(row.B) -= along * (jt * InverseMass(row.B))
-        WriteVelocities()
     End Sub
 
     Private Sub WriteVelocities()
