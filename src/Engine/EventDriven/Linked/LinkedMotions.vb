@@ -71,14 +71,16 @@ Friend Module LinkedMotions
     End Function
 
     ''' <summary>
-    ''' A body on a string to a fixed point is taut when it is at full length, not moving along the string,
+    ''' A body on a string to a fixed point is taut when it is at full length (within <paramref name="slop"/>, m, as the
+    ''' flight's search for the string snapping taut allows: a body short of the length by less than that, swung
+    ''' round fast, was found snapping taut at once, again and again, and never taut), not moving along the string,
     ''' and the string pulls: T/m = v_across²/L + g cos θ ≥ 0 (θ from straight down). Where the pull is
     ''' within rounding of zero, the free parabola decides: if it would leave the circle at once, the string is taut.
     ''' </summary>
     Private Function AnchoredTaut(body As Shape, l As Link, g As Double, slop As Double) As Boolean
         Dim r = body.CentreOfMass - l.EndB
         Dim d = r.Length
-        If d < l.Length * (1 - FullFraction) Then Return False
+        If d < l.Length * (1 - FullFraction) - slop Then Return False
         Dim v = body.Velocity
         Dim along = Vector.Dot(v, r) / d
         Dim scale = v.Length + Math.Sqrt(g * l.Length)
