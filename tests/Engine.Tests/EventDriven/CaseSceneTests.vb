@@ -74,6 +74,23 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' A random scene with every kind of body and no friction (g = 0, e = 0.9). At t = 0.0076 s a 5 mg ball flying at
+    ''' 152 m/s touches a 15 g ball on a string, closing at 1.5·10⁻⁸ m/s. The collision judged that no approach beside
+    ''' their speeds of 314 m/s and left the touch to the one rule; the search for their next contact judged it against
+    ''' their relative speed, far smaller, found them approaching "now", and so on for ever ("could not get past
+    ''' t = 0.0076 s"). The search now judges an approach against the same sum of speeds.
+    ''' </summary>
+    <Fact>
+    Public Sub TouchJudgedByCollisionAndSearchAlike_RunsOn()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-touch-judged-two-ways.json"))
+        EventSolverTestKit.UseEventSolver(w)
+        Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+        w.Advance(0.05)
+        EventSolverTestKit.AssertNoEnergyGainNorOverlap(w, e0)
+        Assert.Equal(0.05, w.Time, 12)
+    End Sub
+
+    ''' <summary>
     ''' A 1 g bob on a slack string of 0.3 m tied to a point, struck outward by a 100 kg ball at 1 m/s (g = 0). The
     ''' bob bounces between the ball and its string's full length ever faster, until the ball reaches the place where
     ''' the bob, at that length, still touches it. There the blows became wedged (all contacts in one blow) but the

@@ -192,11 +192,18 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 accel = Math.Min(accel, accelA + accelB)
             End If
         End If
+        ' Whether they approach now is judged as a collision judges it, against the sum of their speeds: the relative
+        ' bound may be far smaller, and a touch the collision leaves alone would be found "now" again and again.
+        Dim p As Vector, v As Vector, speeds = 0.0
+        ma.StateAt(t0, _slotOf(a), p, v)
+        speeds += v.Length
+        mb.StateAt(t0, _slotOf(b), p, v)
+        speeds += v.Length
         If BothBalls(a, b) Then
             Dim curved = accel + speed * speed / (DirectCast(_bodies(a), Circle).Radius + DirectCast(_bodies(b), Circle).Radius)
-            Return Recheck(FirstContact(gap, t0, until, speed, curved, curved, False), until, tEnd)
+            Return Recheck(FirstContact(gap, t0, until, speed, curved, curved, False, speeds), until, tEnd)
         End If
-        Return Recheck(FirstContact(gap, t0, until, speed, accel, UpperCurvature(accel, speed, _pairDifferences(a, b).Radius), True), until, tEnd)
+        Return Recheck(FirstContact(gap, t0, until, speed, accel, UpperCurvature(accel, speed, _pairDifferences(a, b).Radius), True, speeds), until, tEnd)
     End Function
 
     ''' <summary>
@@ -276,17 +283,19 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' <paramref name="above"/>, the two-sided bound (+∞ for two sharp shapes, where none exists). The closing
     ''' is searched with the bound from below alone (<see cref="OneSidedAdvancement"/>) when
     ''' <paramref name="oneSided"/>, else with <see cref="ConservativeAdvancement"/>. +∞ for none; a search that
-    ''' ran out of its budget returns where it stopped, to be taken up again from there.
+    ''' ran out of its budget returns where it stopped, to be taken up again from there. <paramref name="speeds"/> (m/s),
+    ''' for a pair, the sum of the two bodies' speeds now, against which Collide judges an approach too.
     ''' An opening searched for step by step counts only before the overlap could have grown by the slop:
     ''' a body pressed into another (a ball pulled onto a peg it sits on) would otherwise be "opened" on the
     ''' far side, after passing right through it, and the contact between never looked for.
     ''' </summary>
-    Private Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean) As Double
+    Private Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean,
+                                  Optional speeds As Double = 0) As Double
         Dim n As Vector, rate As Double
         Dim d = gap.GapAndNormal(t0, n, rate)
         _gapEvaluations += 1
         If d <= Slop Then
-            If rate < -(CreepSpeed + 0.000000001 * speed) Then Return t0
+            If rate < -(CreepSpeed + 0.000000001 * Math.Max(speed, speeds)) Then Return t0
             ' Leaving at rate ḋ, the gap is at least d + ḋ s − ½ A s² (A the bound from below): where that
             ' parabola first reaches twice the slop, the gap has opened that far, and it did not close before.
             Dim opens = OpeningTime(d, rate, below, 2 * Slop)
