@@ -106,8 +106,7 @@ Friend NotInheritable Class LinkedImpulse
     ''' pairwise blows pass back and forth for ever (a ball caged with no room between the ends of a rod): first
     ''' every contact only stops its approach (target 0), which projects the velocities onto those that approach
     ''' nowhere; then each contact (and string snapping taut) gives back <paramref name="restitution"/> times the
-    ''' impulse it took, and what
-    ''' that sends into another contact is stopped again. The projection is orthogonal in the kinetic-energy
+    ''' impulse it took, and what that sends into another contact is stopped again. The projection is orthogonal in the kinetic-energy
     ''' metric, so the energy after the first phase is the energy before less that of the change; giving back
     ''' at most all of the change (e ≤ 1) gains nothing, and stopping again only loses.
     ''' </summary>
