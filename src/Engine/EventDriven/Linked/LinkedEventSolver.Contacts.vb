@@ -20,8 +20,6 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ' A speed within this fraction of the group's own speeds is rounding: after its contacts' rates are taken away,
     ' a body at rest keeps none of it.
     Private Const RoundingFraction As Double = 0.000000000000001
-    ' While a regrouping works: each seed body's acceleration bound (m/s²) under the motion it had (see Pressing).
-    Private ReadOnly _pressedBefore As New Dictionary(Of Integer, Double)
 
     Private ReadOnly _solve As New ContactSolve()
     ' The keys of every contact a group's motion holds.
@@ -54,12 +52,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim order As New List(Of Integer)(seeds)
         ' What the gaps read while this works: the seeds' states now, not their old motions' (whose account of the
         ' energy drag and damping took is settled first).
-        _pressedBefore.Clear()
+        ' Each seed body's acceleration bound (m/s²) under the motion it had (see Pressing).
+        Dim pressedBefore As New Dictionary(Of Integer, Double)
         For Each g In seeds
             _ledger.Settle(_groups(g), _world, t)
             Dim snapped = _groups(g).Motion.Bodies
             For k = 0 To snapped.Length - 1
-                _pressedBefore(Array.IndexOf(_bodies, snapped(k))) = _groups(g).Motion.AccelerationBound(k, t, t)
+                pressedBefore(Array.IndexOf(_bodies, snapped(k))) = _groups(g).Motion.AccelerationBound(k, t, t)
             Next
             Dim now(4 * snapped.Length - 1) As Double
             For k = 0 To snapped.Length - 1
@@ -80,11 +79,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 Dim i = Array.IndexOf(_bodies, body)
                 If _world.Walls Then
                     For s = 1 To 4
-                        AddIfLasting(touches, i, -1, CType(s, WallSide), -1, t, released)
+                        AddIfLasting(touches, i, -1, CType(s, WallSide), -1, t, released, pressedBefore)
                     Next
                 End If
                 For f = 0 To _fixed.Length - 1
-                    AddIfLasting(touches, i, -1, WallSide.None, f, t, released)
+                    AddIfLasting(touches, i, -1, WallSide.None, f, t, released, pressedBefore)
                 Next
                 For j = 0 To _bodies.Length - 1
                     If j = i OrElse Not seen.Add(PairKey(i, j)) OrElse _neverMeet.Contains(PairKey(i, j)) Then Continue For
@@ -94,7 +93,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                         Sync(gj, t)
                         _ledger.Settle(_groups(gj), _world, t)
                     End If
-                    If AddIfLasting(touches, Math.Min(i, j), Math.Max(i, j), WallSide.None, -1, t, released) AndAlso inSet.Add(gj) Then order.Add(gj)
+                    If AddIfLasting(touches, Math.Min(i, j), Math.Max(i, j), WallSide.None, -1, t, released, pressedBefore) AndAlso inSet.Add(gj) Then order.Add(gj)
                 Next
             Next
         Loop
@@ -219,7 +218,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' at <paramref name="t"/> (within a slop), do not approach, and part no faster than a bounce of
     ''' <see cref="BounceSlops"/> slops: a contact that may last. Returns whether it was added.
     ''' </summary>
-    Private Function AddIfLasting(touches As List(Of Touch), i As Integer, j As Integer, side As WallSide, f As Integer, t As Double, released As Object) As Boolean
+    Private Function AddIfLasting(touches As List(Of Touch), i As Integer, j As Integer, side As WallSide, f As Integer, t As Double, released As Object,
+                                  pressedBefore As Dictionary(Of Integer, Double)) As Boolean
         Dim key = If(j >= 0, ContactKey.Pair(i, j), If(f >= 0, ContactKey.Fixed(i, f), ContactKey.Wall(i, side)))
         If key.Equals(released) Then Return False
         Dim gap = If(j >= 0, PairGap(i, j), If(f >= 0, FixedGap(i, f), WallGap(i, side)))
@@ -227,7 +227,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If gap.GapAndNormal(t, normal, rate) > Slop Then Return False
         Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
         If rate < -(CreepSpeed + 0.000000001 * speeds) Then Return False
-        Dim press = Math.Max(_world.Gravity, Pressing(i, t) + If(j >= 0, Pressing(j, t), 0))
+        Dim press = Math.Max(_world.Gravity, Pressing(i, t, pressedBefore) + If(j >= 0, Pressing(j, t, pressedBefore), 0))
         ' Or a bounce far too slow to matter beside the bodies' own speeds (pressed by almost nothing, the four slops
         ' would allow any bounce at all): holding it takes a 10⁻¹² part of their kinetic energy at most.
         If rate > Math.Max(Math.Sqrt(2 * press * BounceSlops * Slop), CrumbFraction * speeds) Then Return False
@@ -237,14 +237,14 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     ''' <summary>
     ''' A bound on body i's acceleration at <paramref name="t"/> (m/s²) as it was pressed just before: its motion's
-    ''' now, or, for a body of a group being formed anew (whose motion now is its free flight), the one it had,
-    ''' which counts the pushes through its lasting contacts (a ball pushed onto a box through another by a spring
-    ''' is pressed there though nothing pulls it by itself).
+    ''' now, or, for a body of a group being formed anew (whose motion now is its free flight), the one it had
+    ''' (<paramref name="pressedBefore"/>, by body), which counts the pushes through its lasting contacts (a ball
+    ''' pushed onto a box through another by a spring is pressed there though nothing pulls it by itself).
     ''' </summary>
-    Private Function Pressing(i As Integer, t As Double) As Double
+    Private Function Pressing(i As Integer, t As Double, pressedBefore As Dictionary(Of Integer, Double)) As Double
         Dim now = MotionOf(i).AccelerationBound(_slotOf(i), t, t)
         Dim before As Double
-        If _pressedBefore.TryGetValue(i, before) AndAlso before > now Then Return before
+        If pressedBefore.TryGetValue(i, before) AndAlso before > now Then Return before
         Return now
     End Function
 

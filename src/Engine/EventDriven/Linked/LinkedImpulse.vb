@@ -73,9 +73,7 @@ Friend NotInheritable Class LinkedImpulse
 
     ''' <summary>A rod or a taut string that holds its length through the blow.</summary>
     Friend Sub AddLink(link As Link)
-        Dim r = link.EndB - link.EndA
-        _rows.Add(New Row With {.A = IndexOf(link.A), .B = IndexOf(link.B), .U = r.Normalized(Vector.Zero), .Target = 0,
-                                .Sign = If(link.Kind = LinkKind.String, -1, 0)})
+        _rows.Add(LinkRow(link, If(link.Kind = LinkKind.String, -1, 0), False))
     End Sub
 
     ''' <summary>
@@ -84,15 +82,17 @@ Friend NotInheritable Class LinkedImpulse
     ''' restitution times its impulse like a contact (<see cref="ResolveWedged"/>).
     ''' </summary>
     Friend Sub AddStringAtLength(link As Link)
-        Dim r = link.EndB - link.EndA
-        _rows.Add(New Row With {.A = IndexOf(link.A), .B = IndexOf(link.B), .U = r.Normalized(Vector.Zero), .Target = 0,
-                                .Sign = -1, .IsContact = True})
+        _rows.Add(LinkRow(link, -1, True))
     End Sub
 
+    ''' <summary>The row of a link along it, from end A to end B, asking for no stretch (<paramref name="sign"/> as <see cref="Row.Sign"/>).</summary>
+    Private Function LinkRow(link As Link, sign As Integer, isContact As Boolean) As Row
+        Return New Row With {.A = IndexOf(link.A), .B = IndexOf(link.B), .U = (link.EndB - link.EndA).Normalized(Vector.Zero), .Target = 0,
+                             .Sign = sign, .IsContact = isContact}
+    End Function
+
     Private Function SeparationSpeed(row As Row) As Double
-        Dim va = If(row.A >= 0, _velocities(row.A), Vector.Zero)
-        Dim vb = If(row.B >= 0, _velocities(row.B), Vector.Zero)
-        Return Vector.Dot(vb - va, row.U)
+        Return Vector.Dot(RelativeVelocity(row), row.U)
     End Function
 
     ''' <summary>Solves the rows and writes the new velocities to the bodies.</summary>
@@ -106,9 +106,9 @@ Friend NotInheritable Class LinkedImpulse
     ''' pairwise blows pass back and forth for ever (a ball caged with no room between the ends of a rod): first
     ''' every contact only stops its approach (target 0), which projects the velocities onto those that approach
     ''' nowhere; then each contact (and string snapping taut) gives back <paramref name="restitution"/> times the
-    ''' impulse it took, and what that sends into another contact is stopped again. The projection is orthogonal in the kinetic-energy
-    ''' metric, so the energy after the first phase is the energy before less that of the change; giving back
-    ''' at most all of the change (e ≤ 1) gains nothing, and stopping again only loses.
+    ''' impulse it took, and what that sends into another contact is stopped again. The projection is orthogonal in
+    ''' the kinetic-energy metric, so the energy after the first phase is the energy before less that of the change;
+    ''' giving back at most all of the change (e ≤ 1) gains nothing, and stopping again only loses.
     ''' </summary>
     Friend Sub ResolveWedged(restitution As Double)
         For i = 0 To _rows.Count - 1
@@ -200,9 +200,7 @@ Friend NotInheritable Class LinkedImpulse
             ' The rows' answer to friction pressed the contact further, and its push, at the speed it parts with,
             ' gave back more than friction took: solved again with the contact only kept from approaching, where
             ' every row's target is nothing and the solve can only take energy away.
-            For i = 0 To before.Count - 1
-                _velocities(i) = before(i)
-            Next
+            Restore(before)
             Dim target = _rows(0).Target
             SetTarget(0, 0)
             RubWithRows(row, along, normalImpulse, sliding, staticCoefficient)
@@ -227,17 +225,18 @@ Friend NotInheritable Class LinkedImpulse
         _rows.RemoveAt(_rows.Count - 1)
         If friction <= staticCoefficient * pushed Then Return
         Dim stuck = _velocities.ToList()
-        For i = 0 To before.Count - 1
-            _velocities(i) = before(i)
-        Next
+        Restore(before)
         Push(row, along, sliding)
         Solve()
-        If Vector.Dot(RelativeVelocity(row), along) < 0 Then
-            ' It would have reversed the slip: it stops instead.
-            For i = 0 To stuck.Count - 1
-                _velocities(i) = stuck(i)
-            Next
-        End If
+        ' It would have reversed the slip: it stops instead.
+        If Vector.Dot(RelativeVelocity(row), along) < 0 Then Restore(stuck)
+    End Sub
+
+    ''' <summary>Puts back the velocities <paramref name="saved"/> (one for each body of the blow, as <c>_velocities.ToList()</c> gave them).</summary>
+    Private Sub Restore(saved As List(Of Vector))
+        For i = 0 To saved.Count - 1
+            _velocities(i) = saved(i)
+        Next
     End Sub
 
     ''' <summary>Sets row <paramref name="i"/>'s target separation speed, m/s.</summary>
