@@ -78,6 +78,34 @@ Friend NotInheritable Class HouseholderQr
     End Sub
 
     ''' <summary>
+    ''' Extends the factorization by column <paramref name="col"/> of the same <paramref name="matrix"/> as the last
+    ''' <see cref="Factor"/>: the reflectors so far are applied to it and one more is made, at a cost of rows × Count
+    ''' instead of a new factorization's rows × Count². The earlier columns keep their pivot order (the new one
+    ''' comes last whatever its norm); the pivot row is chosen as in <see cref="Factor"/>. Rows already used as
+    ''' pivots are untouched by the new reflector, so the earlier ones still describe the same Q.
+    ''' </summary>
+    Friend Sub Append(matrix As Double(), col As Integer)
+        Dim s = Count
+        If _f.Length < _rows * (s + 1) Then Array.Resize(_f, 2 * _rows * (s + 1))
+        If _pivotPart.Length < s + 1 Then Array.Resize(_pivotPart, 2 * (s + 1))
+        If _columnOrder.Length < s + 1 Then Array.Resize(_columnOrder, 2 * (s + 1))
+        _columnOrder(s) = col
+        Dim at = s * _rows
+        Array.Copy(matrix, col * _rows, _f, at, _rows)
+        For r = 0 To s - 1
+            Reflect(r, _f, at)
+        Next
+        ChoosePivotRow(s)
+        MakeReflector(s, RemainingNorm(_f, at, s))
+        Count = s + 1
+    End Sub
+
+    ''' <summary>Drops the column appended last (<see cref="Append"/>, or the last of <see cref="Factor"/>).</summary>
+    Friend Sub RemoveLast()
+        Count -= 1
+    End Sub
+
+    ''' <summary>
     ''' The least-squares solution of C[:, cols] x ≈ <paramref name="rhs"/>: x in pivot order (Count entries)
     ''' into <paramref name="solution"/>, and the residual rhs − C x (one entry per row) into
     ''' <paramref name="residual"/>, computed as Q [0; (Qᵀ rhs) below row Count], which is accurate in
