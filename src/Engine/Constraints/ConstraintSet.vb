@@ -33,12 +33,15 @@ Friend NotInheritable Class ConstraintSet
     ' A pivot of the plain factorization below this fraction of its row's own size has lost half its digits.
     Private Const WellFactored As Double = 0.00000001
 
+    ''' <summary>The fraction of its own size (squared) below which what a constraint adds to those before it counts as nothing.</summary>
+    Friend Const DefaultIndependence As Double = 0.000000000001
+
     ''' <summary>
     ''' The constraints of a group whose bodies have the given inverse masses (1/kg, 0 for a body that cannot move).
     ''' A constraint counts as depending on those before it (the solve refuses) when what it adds to their span is
     ''' below <paramref name="independence"/> of its own size (squared).
     ''' </summary>
-    Friend Sub New(rows As Constraint(), inverseMass As Double(), Optional independence As Double = 0.000000000001)
+    Friend Sub New(rows As Constraint(), inverseMass As Double(), Optional independence As Double = DefaultIndependence)
         _independence = independence
         _rows = rows
         _inverseMass = inverseMass
@@ -51,22 +54,14 @@ Friend NotInheritable Class ConstraintSet
         If _slides Then
             _general = New Double(m - 1, m - 1) {}
         End If
-        Dim largest = 0.0, smallest = Double.PositiveInfinity
-        For Each r In rows
-            For Each body In {r.A, r.B}
-                If body < 0 OrElse inverseMass(body) <= 0 Then Continue For
-                largest = Math.Max(largest, inverseMass(body))
-                smallest = Math.Min(smallest, inverseMass(body))
-            Next
-        Next
-        _spread = largest > SpreadRatio * smallest
+        _spread = IsSpread(rows, inverseMass)
         _shared = New Double(m - 1)() {}
         _factor = New Double(m - 1)() {}
         For i = 0 To m - 1
             _shared(i) = New Double(i) {}
             _factor(i) = New Double(i) {}
             For j = 0 To i
-                _shared(i)(j) = SharedInverseMass(rows(i), rows(j))
+                _shared(i)(j) = SharedInverseMass(rows(i), rows(j), inverseMass)
             Next
         Next
     End Sub
@@ -282,13 +277,30 @@ Friend NotInheritable Class ConstraintSet
         Next
     End Sub
 
-    Private Function SharedInverseMass(p As Constraint, q As Constraint) As Double
+    ''' <summary>Σ σ_p σ_q w over the bodies constraints <paramref name="p"/> and <paramref name="q"/> share (1/kg): M_pq ÷ (u_p·u_q).</summary>
+    Friend Shared Function SharedInverseMass(p As Constraint, q As Constraint, inverseMass As Double()) As Double
         Dim s = 0.0
-        If p.A = q.A Then s += _inverseMass(p.A)
-        If p.B >= 0 AndAlso p.B = q.B Then s += _inverseMass(p.B)
-        If p.A = q.B Then s -= _inverseMass(p.A)
-        If p.B >= 0 AndAlso p.B = q.A Then s -= _inverseMass(p.B)
+        If p.A = q.A Then s += inverseMass(p.A)
+        If p.B >= 0 AndAlso p.B = q.B Then s += inverseMass(p.B)
+        If p.A = q.B Then s -= inverseMass(p.A)
+        If p.B >= 0 AndAlso p.B = q.A Then s -= inverseMass(p.B)
         Return s
+    End Function
+
+    ''' <summary>
+    ''' Whether the movable bodies that <paramref name="rows"/> move differ in inverse mass by more than
+    ''' <see cref="SpreadRatio"/>: the forces are then solved in an orthogonalised basis (see SolveSpread), not by Cholesky's method alone.
+    ''' </summary>
+    Friend Shared Function IsSpread(rows As IEnumerable(Of Constraint), inverseMass As Double()) As Boolean
+        Dim largest = 0.0, smallest = Double.PositiveInfinity
+        For Each r In rows
+            For Each body In {r.A, r.B}
+                If body < 0 OrElse inverseMass(body) <= 0 Then Continue For
+                largest = Math.Max(largest, inverseMass(body))
+                smallest = Math.Min(smallest, inverseMass(body))
+            Next
+        Next
+        Return largest > SpreadRatio * smallest
     End Function
 
     ''' <summary>Adds Σ_j λ_j × (constraint j's direction at each end) × w to the values at <paramref name="offset"/> (0 positions, 2 velocities or accelerations).</summary>

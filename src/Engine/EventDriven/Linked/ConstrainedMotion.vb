@@ -214,12 +214,30 @@ Friend NotInheritable Class ConstrainedMotion
     ''' rounding) would be lost to rounding a step later.
     ''' </summary>
     Private Function IndependentRows(rows As List(Of Constraint), y As Double()) As List(Of Constraint)
-        ' The free motion at y, the same for every trial (each solve adds its forces to a copy of it).
-        Dim free = FreeDerivative(y)
         Dim kept As New List(Of Constraint)
+        If rows.Any(Function(c) c.Sliding <> 0) OrElse ConstraintSet.IsSpread(rows, _inverseMass) Then
+            ' A sliding row or bodies of very different masses: the solve is not Cholesky's method alone, so each
+            ' trial is the solve itself. The free motion at y is the same for every trial (each adds its forces to a copy).
+            Dim free = FreeDerivative(y)
+            For Each c In rows
+                kept.Add(c)
+                If Not Admits(kept.ToArray(), y, free) Then kept.RemoveAt(kept.Count - 1)
+            Next
+            Return kept
+        End If
+        ' Otherwise the solve refuses a row exactly when its Cholesky pivot is too small, and the rows before it
+        ' factor as they did before it came: one factor grown row by row answers each trial (see Admits for the two metrics).
+        Dim unit = New GrowingFactor(_inverseMass.Select(Function(w) If(w > 0, 1.0, 0.0)).ToArray(), IndependenceMargin)
+        Dim real = New GrowingFactor(_inverseMass, ConstraintSet.DefaultIndependence)
         For Each c In rows
+            Dim u As Vector, value As Double, rate As Double, curvature As Double
+            c.Measure(y, u, value, rate, curvature)
+            If Not unit.TryAdd(c, u) Then Continue For
+            If Not real.TryAdd(c, u) Then
+                unit.RemoveLast()
+                Continue For
+            End If
             kept.Add(c)
-            If Not Admits(kept.ToArray(), y, free) Then kept.RemoveAt(kept.Count - 1)
         Next
         Return kept
     End Function
