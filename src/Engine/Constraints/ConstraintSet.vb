@@ -376,29 +376,43 @@ Friend NotInheritable Class ConstraintSet
         Next
     End Sub
 
-    ''' <summary>Cholesky's factor L (M = L Lᵀ, lower triangle) of M for the directions in _nx, _ny.</summary>
+    ''' <summary>Cholesky's factor L (M = L Lᵀ, lower triangle) of M for the directions in _nx, _ny, row by row.</summary>
     Private Sub Factor()
-        Dim m = _rows.Length
-        For j = 0 To m - 1
-            Dim lj = _factor(j)
-            Dim diagonal = _shared(j)(j)
-            For p = 0 To j - 1
-                diagonal -= lj(p) * lj(p)
-            Next
-            If Not (diagonal > _independence * _shared(j)(j)) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
-            Dim root = Math.Sqrt(diagonal)
-            lj(j) = root
-            For i = j + 1 To m - 1
-                Dim li = _factor(i)
+        For i = 0 To _rows.Length - 1
+            Dim li = _factor(i)
+            For j = 0 To i - 1
                 Dim s = _shared(i)(j)
                 If s <> 0 Then s *= _nx(i) * _nx(j) + _ny(i) * _ny(j)
-                For p = 0 To j - 1
-                    s -= li(p) * lj(p)
-                Next
-                li(j) = s / root
+                li(j) = s
             Next
+            If Not FactorRow(_factor, li, i, _shared(i)(i), _independence) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
         Next
     End Sub
+
+    ''' <summary>
+    ''' Row k of Cholesky's factor L, from the rows before it (<paramref name="factor"/>(0 … k − 1)): on entry
+    ''' <paramref name="row"/>(j) holds M_kj for j &lt; k, and <paramref name="own"/> is M_kk; on return row(j) holds
+    ''' L_kj and row(k) the root of the pivot, M_kk less the part the rows before already span. False when that pivot
+    ''' is not above <paramref name="independence"/> × M_kk: the row depends on those before it (row is then spoilt).
+    ''' <see cref="GrowingFactor"/> grows a factor with it too, so the two agree to the last bit.
+    ''' </summary>
+    Friend Shared Function FactorRow(factor As Double()(), row As Double(), k As Integer, own As Double, independence As Double) As Boolean
+        For j = 0 To k - 1
+            Dim lj = factor(j)
+            Dim s = row(j)
+            For p = 0 To j - 1
+                s -= row(p) * lj(p)
+            Next
+            row(j) = s / lj(j)
+        Next
+        Dim diagonal = own
+        For p = 0 To k - 1
+            diagonal -= row(p) * row(p)
+        Next
+        If Not (diagonal > independence * own) Then Return False
+        row(k) = Math.Sqrt(diagonal)
+        Return True
+    End Function
 
     ''' <summary>Solves M x = b in place with the factor.</summary>
     Private Sub Solve(b As Double())

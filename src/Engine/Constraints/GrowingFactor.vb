@@ -2,17 +2,18 @@ Option Strict On
 
 ''' <summary>
 ''' Cholesky's factor of a group's M = J W Jᵀ (see <see cref="ConstraintSet"/>) grown one constraint at a time,
-''' for asking which rows of a list each add something to those kept before them. Row k's pivot (its own M_kk less
-''' the part the kept rows already span) is worked out with the same operations in the same order as
-''' <see cref="ConstraintSet"/>'s factorization of the kept rows and row k, so the answer is the same to the last
-''' bit; asking costs k² per row instead of a new factorization's k³.
+''' for asking which rows of a list each add something to those kept before them. Each row is factored by
+''' <see cref="ConstraintSet.FactorRow"/>, as <see cref="ConstraintSet"/> factors its own, so the answer is the same
+''' to the last bit as that of a full factorization of the kept rows and the new one; asking costs k² per row
+''' instead of a new factorization's k³.
 ''' </summary>
 Friend NotInheritable Class GrowingFactor
     Private ReadOnly _inverseMass As Double()
     Private ReadOnly _independence As Double
     Private ReadOnly _rows As New List(Of Constraint)
     Private ReadOnly _directions As New List(Of Vector)
-    Private ReadOnly _factor As New List(Of Double())
+    ' Row k of L for each kept row k (the rows beyond the count are spare).
+    Private _factor As Double()() = Array.Empty(Of Double())()
 
     ''' <param name="inverseMass">per body, 1/kg (0 for a body that cannot move)</param>
     ''' <param name="independence">a row is refused when its pivot is not above this fraction of its own M_kk, as <see cref="ConstraintSet"/> refuses it</param>
@@ -29,24 +30,15 @@ Friend NotInheritable Class GrowingFactor
         Dim k = _rows.Count
         Dim lk(k) As Double
         For j = 0 To k - 1
-            Dim lj = _factor(j)
             Dim s = ConstraintSet.SharedInverseMass(row, _rows(j), _inverseMass)
             If s <> 0 Then s *= direction.X * _directions(j).X + direction.Y * _directions(j).Y
-            For p = 0 To j - 1
-                s -= lk(p) * lj(p)
-            Next
-            lk(j) = s / lj(j)
+            lk(j) = s
         Next
-        Dim own = ConstraintSet.SharedInverseMass(row, row, _inverseMass)
-        Dim diagonal = own
-        For p = 0 To k - 1
-            diagonal -= lk(p) * lk(p)
-        Next
-        If Not (diagonal > _independence * own) Then Return False
-        lk(k) = Math.Sqrt(diagonal)
+        If Not ConstraintSet.FactorRow(_factor, lk, k, ConstraintSet.SharedInverseMass(row, row, _inverseMass), _independence) Then Return False
+        If _factor.Length <= k Then Array.Resize(_factor, 2 * (k + 1))
+        _factor(k) = lk
         _rows.Add(row)
         _directions.Add(direction)
-        _factor.Add(lk)
         Return True
     End Function
 
@@ -55,6 +47,6 @@ Friend NotInheritable Class GrowingFactor
         Dim last = _rows.Count - 1
         _rows.RemoveAt(last)
         _directions.RemoveAt(last)
-        _factor.RemoveAt(last)
+        _factor(last) = Nothing
     End Sub
 End Class

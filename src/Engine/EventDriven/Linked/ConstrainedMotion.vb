@@ -227,7 +227,7 @@ Friend NotInheritable Class ConstrainedMotion
         End If
         ' Otherwise the solve refuses a row exactly when its Cholesky pivot is too small, and the rows before it
         ' factor as they did before it came: one factor grown row by row answers each trial (see Admits for the two metrics).
-        Dim unit = New GrowingFactor(_inverseMass.Select(Function(w) If(w > 0, 1.0, 0.0)).ToArray(), IndependenceMargin)
+        Dim unit = New GrowingFactor(UnitInverseMass(), IndependenceMargin)
         Dim real = New GrowingFactor(_inverseMass, ConstraintSet.DefaultIndependence)
         For Each c In rows
             Dim u As Vector, value As Double, rate As Double, curvature As Double
@@ -252,14 +252,18 @@ Friend NotInheritable Class ConstrainedMotion
         ' very light ball wedged in a corner and a heavy one pressing on it is almost all the light ball's part, which
         ' the corner's faces already span, and would count as depending on them, though it alone holds the heavy
         ' one up. The real masses are asked only whether the solve can take the row at all.
-        Dim unit = _inverseMass.Select(Function(w) If(w > 0, 1.0, 0.0)).ToArray()
         Try
-            Call New ConstraintSet(trial, unit, IndependenceMargin).Tensions(y, CType(free.Clone(), Double()))
+            Call New ConstraintSet(trial, UnitInverseMass(), IndependenceMargin).Tensions(y, CType(free.Clone(), Double()))
             Call New ConstraintSet(trial, _inverseMass).Tensions(y, CType(free.Clone(), Double()))
             Return True
         Catch ex As InvalidOperationException
             Return False
         End Try
+    End Function
+
+    ''' <summary>The inverse masses with every movable body weighing 1 kg (and the others none): the metric rows are judged independent in.</summary>
+    Private Function UnitInverseMass() As Double()
+        Return _inverseMass.Select(Function(w) If(w > 0, 1.0, 0.0)).ToArray()
     End Function
 
     ''' <summary>
