@@ -327,7 +327,10 @@ Friend NotInheritable Class ConstrainedMotion
     Private Sub ExtendTo(time As Double, Optional oneStep As Boolean = False)
         If Double.IsInfinity(time) Then Throw New ArgumentOutOfRangeException(NameOf(time), "a chain's motion is integrated only to a finite time")
         Dim taken = 0
-        Do While _times(_times.Count - 1) < time AndAlso Not _ended AndAlso Not (oneStep AndAlso taken > 0)
+        ' Nothing is integrated past an event found: the motion ends there, and past it the forces are those of a
+        ' group that no longer holds (a contact pulling, harder and harder, on a light body it should have let go).
+        Do While _times(_times.Count - 1) < time AndAlso Not _ended AndAlso Not (oneStep AndAlso taken > 0) AndAlso
+                 Not _times(_times.Count - 1) >= _eventTime
             taken += 1
             If _times.Count > MaxSteps Then Throw New InvalidOperationException($"the chain integrator took more than {MaxSteps} steps from t = {StartTime} s to t = {_times(_times.Count - 1)} s without reaching t = {time} s")
             Dim t = _times(_times.Count - 1)
@@ -697,6 +700,13 @@ Friend NotInheritable Class ConstrainedMotion
             ' thousand steps of a stiff spring, integrated for a stretch the next collision throws away.
             If _times.Count < 2 Then ExtendTo(StartTime + _step, oneStep:=True)
             If Not Double.IsPositiveInfinity(_eventTime) Then Return _eventTime
+            Return _times(_times.Count - 1)
+        End Get
+    End Property
+
+    ''' <summary>The end of the last step taken (s): nothing of the motion is integrated past it.</summary>
+    Friend ReadOnly Property IntegratedTo As Double
+        Get
             Return _times(_times.Count - 1)
         End Get
     End Property
