@@ -118,8 +118,14 @@ Friend NotInheritable Class ConstraintSet
     ''' is as well conditioned as the bodies' own parts.
     ''' </summary>
     Private Sub SolveSpread(b As Double(), accelerations As Double())
-        Dim m = _rows.Length, slots = 2 * _inverseMass.Length
+        Dim m = _rows.Length, n = _inverseMass.Length, slots = 2 * n
         Dim q(m - 1)() As Double, sizes(m - 1) As Double
+        ' support(i): the movable bodies on which Q_i may not be zero, in increasing order. Elsewhere it is exactly
+        ' zero, so the sums below, taken over a support, add up the same terms in the same order as over every body
+        ' and give the same result to the last bit, and rows that share no body (most of a pile's) cost nothing.
+        ' A body that cannot move is in no support: nothing reads its slots.
+        Dim support(m - 1)() As Integer
+        Dim marked(n - 1) As Boolean
         ' taken(i)(j): how much of Q_j was taken from row i (the strictly lower part C of T⁻¹ = I + C).
         Dim taken(m - 1)() As Double
         For i = 0 To m - 1
@@ -131,20 +137,29 @@ Friend NotInheritable Class ConstraintSet
                 row(2 * r.B) -= _nx(i)
                 row(2 * r.B + 1) -= _ny(i)
             End If
-            Dim size = MassMetric.Unit(_inverseMass, row, row)
+            If _inverseMass(r.A) > 0 Then marked(r.A) = True
+            If r.B >= 0 AndAlso _inverseMass(r.B) > 0 Then marked(r.B) = True
+            Dim size = MassMetric.Unit(row, row, MarkedBodies(marked))
             taken(i) = New Double(m - 1) {}
             ' Twice over: one pass of Gram–Schmidt can leave rounding's part of the span behind.
             For pass = 1 To 2
                 For j = 0 To i - 1
-                    Dim p = MassMetric.Unit(_inverseMass, row, q(j)) / sizes(j)
+                    Dim bodies = support(j)
+                    If Not Shares(bodies, marked) Then Continue For
+                    Dim p = MassMetric.Unit(row, q(j), bodies) / sizes(j)
                     If p = 0 Then Continue For
                     taken(i)(j) += p
-                    For k = 0 To slots - 1
-                        row(k) -= p * q(j)(k)
+                    Dim qj = q(j)
+                    For Each k In bodies
+                        row(2 * k) -= p * qj(2 * k)
+                        row(2 * k + 1) -= p * qj(2 * k + 1)
+                        marked(k) = True
                     Next
                 Next
             Next
-            sizes(i) = MassMetric.Unit(_inverseMass, row, row)
+            support(i) = MarkedBodies(marked)
+            Array.Clear(marked, 0, n)
+            sizes(i) = MassMetric.Unit(row, row, support(i))
             If Not (sizes(i) > _independence * size) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
             q(i) = row
         Next
@@ -157,7 +172,7 @@ Friend NotInheritable Class ConstraintSet
         ' M' by Cholesky's method, its factor in the lower triangle of f.
         Dim f(m - 1, m - 1) As Double
         For j = 0 To m - 1
-            Dim own = MassMetric.Weighted(_inverseMass, q(j), q(j))
+            Dim own = MassMetric.Weighted(_inverseMass, q(j), q(j), support(j))
             Dim diagonal = own
             For p = 0 To j - 1
                 diagonal -= f(j, p) * f(j, p)
@@ -165,7 +180,7 @@ Friend NotInheritable Class ConstraintSet
             If Not (diagonal > _independence * own) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
             f(j, j) = Math.Sqrt(diagonal)
             For i = j + 1 To m - 1
-                Dim s = MassMetric.Weighted(_inverseMass, q(i), q(j))
+                Dim s = MassMetric.Weighted(_inverseMass, q(i), q(j), If(support(i).Length < support(j).Length, support(i), support(j)))
                 For p = 0 To j - 1
                     s -= f(i, p) * f(j, p)
                 Next
@@ -187,10 +202,9 @@ Friend NotInheritable Class ConstraintSet
             b(i) = s / f(i, i)
         Next
         ' The accelerations W Qᵀ μ; then λ = Tᵀ μ, from (I + C)ᵀ λ = μ.
-        For k = 0 To _inverseMass.Length - 1
-            Dim w = _inverseMass(k)
-            If w = 0 Then Continue For
-            For i = 0 To m - 1
+        For i = 0 To m - 1
+            For Each k In support(i)
+                Dim w = _inverseMass(k)
                 accelerations(4 * k + 2) += w * b(i) * q(i)(2 * k)
                 accelerations(4 * k + 3) += w * b(i) * q(i)(2 * k + 1)
             Next
@@ -201,6 +215,31 @@ Friend NotInheritable Class ConstraintSet
             Next
         Next
     End Sub
+
+    ''' <summary>The bodies marked in <paramref name="marked"/>, in increasing order.</summary>
+    Private Shared Function MarkedBodies(marked As Boolean()) As Integer()
+        Dim count = 0
+        For k = 0 To marked.Length - 1
+            If marked(k) Then count += 1
+        Next
+        Dim bodies(count - 1) As Integer
+        count = 0
+        For k = 0 To marked.Length - 1
+            If marked(k) Then
+                bodies(count) = k
+                count += 1
+            End If
+        Next
+        Return bodies
+    End Function
+
+    ''' <summary>Whether any of <paramref name="bodies"/> is marked in <paramref name="marked"/>.</summary>
+    Private Shared Function Shares(bodies As Integer(), marked As Boolean()) As Boolean
+        For Each k In bodies
+            If marked(k) Then Return True
+        Next
+        Return False
+    End Function
 
     ''' <summary>
     ''' Factors M and says whether every pivot kept at least <see cref="WellFactored"/> of its row's own size (what

@@ -26,4 +26,25 @@ Friend Module MassMetric
         Next
         Return s
     End Function
+
+    ''' <summary>
+    ''' Σ w_k (x_k · y_k) over <paramref name="bodies"/> only (movable, in increasing order): the same sum, term for
+    ''' term, as over every body where x or y is zero on all the others.
+    ''' </summary>
+    Friend Function Weighted(inverseMass As Double(), x As Double(), y As Double(), bodies As Integer()) As Double
+        Dim s = 0.0
+        For Each k In bodies
+            s += inverseMass(k) * (x(2 * k) * y(2 * k) + x(2 * k + 1) * y(2 * k + 1))
+        Next
+        Return s
+    End Function
+
+    ''' <summary>Σ x_k · y_k over <paramref name="bodies"/> only (movable, in increasing order), each weighing the same.</summary>
+    Friend Function Unit(x As Double(), y As Double(), bodies As Integer()) As Double
+        Dim s = 0.0
+        For Each k In bodies
+            s += x(2 * k) * y(2 * k) + x(2 * k + 1) * y(2 * k + 1)
+        Next
+        Return s
+    End Function
 End Module
