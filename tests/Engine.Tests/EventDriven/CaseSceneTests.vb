@@ -491,80 +491,66 @@ Public Class CaseSceneTests
     End Function
 
     ''' <summary>
-    ''' Runs a frictionless hopper for 10 s with the event solver, sampling every 0.5 s: at each sample no two
-    ''' bodies overlap by more than 10⁻⁹ m, and energy plus what was dissipated stays the starting energy to
-    ''' 10⁻⁹ (relative).
+    ''' Runs a frictionless hopper for up to 10 s with the event solver, sampling every 0.5 s, until every ball is
+    ''' wholly below the opening; then asserts that they all are. At each sample no two bodies overlap by more than
+    ''' 10⁻⁹ m, and energy plus what was dissipated never rises above the starting energy by more than 10⁻⁹ of it
+    ''' (every collision's loss, every jam resolved at once and every settling drop is counted in World.Dissipated,
+    ''' and no touch on a ball sliding down a ramp or along the floor gives energy). It may fall below by up to 10⁻⁸:
+    ''' once balls press on one another the general path integrates them, and keeps their energy only to its
+    ''' integrator's accuracy, which it does not count as dissipated.
     ''' </summary>
-    Private Shared Sub RunHopperKeepingTheBooks(w As World)
+    Private Shared Sub AssertHopperEmpties(w As World)
         EventSolverTestKit.UseEventSolver(w)
         Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+        Dim above As List(Of String) = Nothing
         For k = 1 To 20
             w.Advance(0.5)
             Dim depth = EventSolverTestKit.DeepestOverlap(w)
             Assert.True(depth <= 0.000000001, $"at t = {w.Time} s two bodies overlap by {depth} m")
             Dim drift = (w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated - e0) / Math.Abs(e0)
-            Assert.True(Math.Abs(drift) <= 0.000000001, $"at t = {w.Time} s energy + dissipated is off the starting {e0} J by {drift:G3} of it")
+            Assert.True(drift <= 0.000000001 AndAlso drift >= -0.00000001, $"at t = {w.Time} s energy + dissipated is off the starting {e0} J by {drift:G3} of it")
+            above = w.Circles.Where(Function(b) Not b.IsFixed AndAlso b.Position.Y + b.Radius > HopperOpeningY).
+                Select(Function(b) $"{b.Id} at ({b.Position.X:0.####}, {b.Position.Y:0.####})").ToList()
+            If above.Count = 0 Then Exit For
         Next
-    End Sub
-
-    ''' <summary><see cref="RunHopperKeepingTheBooks"/>, then at the end every ball is wholly below the opening.</summary>
-    Private Shared Sub AssertHopperEmpties(w As World)
-        RunHopperKeepingTheBooks(w)
-        Dim above = w.Circles.Where(Function(b) Not b.IsFixed AndAlso b.Position.Y + b.Radius > HopperOpeningY).
-            Select(Function(b) $"{b.Id} at ({b.Position.X:0.####}, {b.Position.Y:0.####})").ToList()
         Assert.True(above.Count = 0, $"{above.Count} balls still above the opening at t = 10 s: {String.Join(", ", above)}")
-    End Sub
-
-    ''' <summary>
-    ''' Whether or not it empties, a frictionless hopper keeps its energy books and never overlaps: every
-    ''' collision's loss, every jam resolved at once and every settling drop is counted in World.Dissipated,
-    ''' and no touch on a ball sliding down a ramp or along the floor gives energy. Seed −1: the case file.
-    ''' </summary>
-    <Theory>
-    <InlineData(-1, 0.3, 60)>
-    <InlineData(-1, 0.0, 60)>
-    <InlineData(1, 0.3, 60)>
-    <InlineData(4, 0.0, 40)>
-    Public Sub FrictionlessHopper_KeepsItsEnergyBooks_WithNoOverlap(seed As Integer, restitution As Double, balls As Integer)
-        Dim w As World
-        If seed < 0 Then
-            w = SceneFile.LoadFile(TestRepo.CaseFile("event-hopper-frictionless.json"))
-            w.Restitution = restitution
-            Assert.Equal(balls, w.Circles.Where(Function(b) Not b.IsFixed).Count())
-        Else
-            w = Hopper(seed, restitution, balls)
-        End If
-        RunHopperKeepingTheBooks(w)
     End Sub
 
     ''' <summary>
     ''' The hopper of tests/cases/event-hopper-frictionless.json (60 balls), with e = 0.3 as in the file and
     ''' with e = 0: it jammed, balls put to sleep as they slid down a ramp against another, left in the air.
     ''' </summary>
-    <Theory(Skip:=HopperStillJams)>
+    <Theory>
     <InlineData(0.3)>
     <InlineData(0.0)>
     Public Sub FrictionlessHopper_Empties(restitution As Double)
         Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-hopper-frictionless.json"))
         w.Restitution = restitution
+        Assert.Equal(60, w.Circles.Where(Function(b) Not b.IsFixed).Count())
         AssertHopperEmpties(w)
     End Sub
 
     ''' <summary>Other layouts and numbers of balls in the frictionless hopper: each empties, with no overlap and the energy ledger kept.</summary>
-    <Theory(Skip:=HopperStillJams)>
+    <Theory>
     <InlineData(1, 0.3, 60)>
     <InlineData(1, 0.0, 60)>
     <InlineData(3, 0.3, 40)>
-    <InlineData(3, 0.0, 100)>
-    <InlineData(4, 0.3, 100)>
     <InlineData(4, 0.0, 40)>
     Public Sub FrictionlessHopper_EmptiesWhateverTheLayout(seed As Integer, restitution As Double, balls As Integer)
         AssertHopperEmpties(Hopper(seed, restitution, balls))
     End Sub
 
-    ''' <summary>Why the hopper tests are skipped: what the event solver still does wrong in them.</summary>
-    Private Const HopperStillJams As String =
-        "the event solver still jams the frictionless hopper: a body resolved in a cluster twice at one instant " &
-        "(ClusterResponse) is stopped and put to sleep whether or not anything holds it, and a ball may sleep on a " &
-        "neighbour that still moves"
+    ''' <summary>A hundred balls in the frictionless hopper: past the count the fast path hands over (see the reason).</summary>
+    <Theory(Skip:=HundredBallHopperStillJams)>
+    <InlineData(3, 0.0, 100)>
+    <InlineData(4, 0.3, 100)>
+    Public Sub FrictionlessHopperOfAHundredBalls_Empties(seed As Integer, restitution As Double, balls As Integer)
+        AssertHopperEmpties(Hopper(seed, restitution, balls))
+    End Sub
+
+    ''' <summary>Why the hundred-ball hopper tests are skipped: what the event solver still does wrong in them.</summary>
+    Private Const HundredBallHopperStillJams As String =
+        "past SolverState.HandOverUnheldBodies (64) movable bodies the fast path does not hand a world to the general " &
+        "path when a wedged ball would sleep where nothing holds it (the general path integrates a pressed pile of a " &
+        "hundred balls as one group, too slowly), so it still puts such a ball to sleep on a frictionless ramp"
 End Class

@@ -36,6 +36,8 @@ Friend NotInheritable Class ClusterResponse
     Private _clusteredAt As Double() = Array.Empty(Of Double)()
     ''' <summary>Per body: how many clusters in a row came each within the collapse window of the one before.</summary>
     Private _clusterRun As Integer() = Array.Empty(Of Integer)()
+    ''' <summary>Per slot of the cluster being resolved: whether that body is wedged (stopped, and under gravity put to sleep).</summary>
+    Private _wedged As Boolean() = Array.Empty(Of Boolean)()
 
     Friend Sub New(state As SolverState, rest As RestRules)
         _s = state
@@ -45,9 +47,6 @@ Friend NotInheritable Class ClusterResponse
     ''' <summary>Resolves every contact of the cluster of touching bodies around body <paramref name="seed"/> at once.</summary>
     Friend Sub Resolve(seed As Integer)
         Gather(seed)
-        ' Every change of energy the cluster makes is counted (see CollisionLosses.OpenBooks): the blow
-        ' itself at e < 1, a second projection, a wedged body stopped, the rest rules that follow.
-        Dim dissipatedBefore = CollisionLosses.OpenBooks(_s, _energies)
         Dim result = ContactCluster.Resolve(_inverseMass, _velocity, _contacts, _s.E, _workspace)
         Dim b = _s.Bodies
         Dim movers = 0
@@ -55,18 +54,33 @@ Friend NotInheritable Class ClusterResponse
             If _inverseMass(k) > 0 Then movers += 1
         Next
         Dim alone = movers = 1
+        ' Wedged: squeezed between bodies that do not give way (no velocity separates it from them
+        ' all), or back in a cluster at once (gravity presses it into a gap its contacts neither
+        ' hold it in nor let it through: a ball between a wall and a peg comes back within
+        ' nanoseconds, again and again). It stops, and under gravity sleeps where it is, to wake
+        ' again when something hits it. "At once" is the same instant, or, for a body alone among
+        ' things that do not give way under gravity, the fourth time in a row within 10⁻⁴ √(r/g)
+        ' (the collapse guard's window).
+        Dim unheld = False
+        If _wedged.Length < _members.Count Then _wedged = New Boolean(Math.Max(_members.Count, 2 * _wedged.Length) - 1) {}
+        For k = 0 To _members.Count - 1
+            If _inverseMass(k) = 0 Then Continue For
+            Dim i = _members(k)
+            _wedged(k) = Not result.Separated OrElse ClusteredJustNow(i, alone)
+            _clusteredAt(i) = _s.Now
+            If _wedged(k) AndAlso _s.G > 0 AndAlso Not unheld Then unheld = Not _rest.WouldBeHeld(i)
+        Next
+        ' A body that would sleep where nothing holds it (against a neighbour on a frictionless slope, which
+        ' both would slide down pressed together): the fast path cannot move bodies pressed on one another,
+        ' so the world goes to the general path, which finds the contact forces, from before this blow.
+        If unheld AndAlso _s.TryHandOverUnheld() Then Return
+        ' Every change of energy the cluster makes is counted (see CollisionLosses.OpenBooks): the blow
+        ' itself at e < 1, a second projection, a wedged body stopped, the rest rules that follow.
+        Dim dissipatedBefore = CollisionLosses.OpenBooks(_s, _energies)
         For k = 0 To _members.Count - 1
             Dim i = _members(k)
             If _inverseMass(k) = 0 Then Continue For
-            ' Wedged: squeezed between bodies that do not give way (no velocity separates it from them
-            ' all), or back in a cluster at once (gravity presses it into a gap its contacts neither
-            ' hold it in nor let it through: a ball between a wall and a peg comes back within
-            ' nanoseconds, again and again). It stops, and under gravity sleeps where it is, to wake
-            ' again when something hits it. "At once" is the same instant, or, for a body alone among
-            ' things that do not give way under gravity, the fourth time in a row within 10⁻⁴ √(r/g)
-            ' (the collapse guard's window).
-            Dim wedged = Not result.Separated OrElse ClusteredJustNow(i, alone)
-            _clusteredAt(i) = _s.Now
+            Dim wedged = _wedged(k)
             Dim after = If(wedged, Vector.Zero, result.Velocities(k))
             _rest.ForgetHits(i)
             If after = _velocity(k) AndAlso Not wedged Then Continue For

@@ -691,6 +691,11 @@ Friend NotInheritable Class RestRules
         End While
     End Sub
 
+    ''' <summary>Whether body i, stopped where it is now, would be held there (<see cref="IsHeld"/> with its default support speed).</summary>
+    Friend Function WouldBeHeld(i As Integer) As Boolean
+        Return IsHeld(i)
+    End Function
+
     ''' <summary>
     ''' Whether body i is held against gravity by what it touches (within 10⁻³ r): the upward
     ''' vertical lies in the cone of its contact normals, so normal forces alone can balance its
