@@ -3,8 +3,12 @@ Option Strict On
 ''' <summary>
 ''' What the world's links do in one step of a stepping solver (see links.md, "Links in a stepping solver").
 ''' <list type="bullet">
-''' <item>Springs are forces: F = k (d − L) + c ḋ along the line of the ends, read from the positions and
-''' velocities at the start of the step, added to each end's acceleration as F/m.</item>
+''' <item>Springs are forces: the elastic pull k (d − L) along the line of the ends, read from the positions
+''' at the start of the step, is added to each end's acceleration as F/m. The damping c ḋ is taken at the
+''' step's new velocities (<see cref="Damp"/>), so it only slows the ends however strong it is for the step;
+''' taken as a force at the step's start it would reverse ḋ and make it c W h − 1 times larger at every step
+''' once c W h &gt; 2 (W = w_A + w_B: a light body on a strongly damped spring), growing without bound to
+''' infinity and NaN.</item>
 ''' <item>Rods and taut strings are constraints, applied after the bodies have moved (SHAKE and RATTLE, as
 ''' molecular dynamics does it): first the ends are pulled back to the length along the link's direction
 ''' at the start of the step, each in proportion to its inverse mass (so the centre of mass stays where
@@ -100,12 +104,11 @@ Friend NotInheritable Class LinkStep
     End Function
 
     ''' <summary>
-    ''' Adds each spring's pull, divided by the mass, to the accelerations (m/s², indexed like
-    ''' <see cref="World.Movables"/>), from the positions and velocities now; and notes which strings are
-    ''' taut now, before the step.
+    ''' Adds each spring's elastic pull, divided by the mass, to the accelerations (m/s², indexed like
+    ''' <see cref="World.Movables"/>), from the positions now; and notes which strings are taut now, before
+    ''' the step. The springs' damping is not among them: see <see cref="Damp"/>.
     ''' </summary>
     Friend Sub AddAccelerations(acceleration As Vector())
-        DampingPower = 0
         For k = 0 To _links.Length - 1
             Dim l = _links(k)
             If l.Kind <> LinkKind.Spring Then
@@ -115,11 +118,7 @@ Friend NotInheritable Class LinkStep
                 _wasTaut(k) = l.Kind = LinkKind.Rod OrElse d >= l.Length * (1 - TautFraction)
                 Continue For
             End If
-            Dim force = SpringForce(l)
-            If l.Damping > 0 Then
-                Dim rate = l.StretchRate
-                DampingPower += l.Damping * rate * rate
-            End If
+            Dim force = ElasticForce(l)
             If _indexA(k) >= 0 Then acceleration(_indexA(k)) += force * _inverseMassA(k)
             If _indexB(k) >= 0 Then acceleration(_indexB(k)) -= force * _inverseMassB(k)
         Next
@@ -141,18 +140,83 @@ Friend NotInheritable Class LinkStep
         Return sum
     End Function
 
-    ''' <summary>The rate (W) at which the springs' damping took energy at the last <see cref="AddAccelerations"/>: Σ c ḋ².</summary>
-    Friend Property DampingPower As Double
+    ''' <summary>
+    ''' What the springs' damping takes over a step of <paramref name="h"/> s, J, as the solvers book it: for each
+    ''' damped spring, what the damping alone would take from the stretch rate ḋ the ends have now (those the last
+    ''' step's contacts left) in that time, ḋ²/(2W) (1 − e^(−2 c W h)) with W = w_A + w_B: c ḋ² h for a weak damping,
+    ''' and never more than the kinetic energy of the stretching, ḋ²/(2W), however strong. Not what
+    ''' <see cref="Damp"/> takes from a step's kicked velocities: a body pressed against a wall by a spring is kicked
+    ''' into it at every step and the contact takes that back, so at rest the damping takes nothing. (A spring
+    ''' between bodies that cannot move, W = 0, takes c ḋ² h.)
+    ''' </summary>
+    Friend Function DampingLoss(h As Double) As Double
+        Dim loss = 0.0
+        For k = 0 To _links.Length - 1
+            Dim l = _links(k)
+            If l.Kind <> LinkKind.Spring OrElse Not (l.Damping > 0) Then Continue For
+            Dim rate = l.StretchRate
+            Dim w = _inverseMassA(k) + _inverseMassB(k)
+            Dim x = 2 * l.Damping * w * h
+            ' 1 − e^(−x), written so that it keeps its digits when x is small.
+            Dim share = If(x < 0.00001, x * (1 - x / 2), 1 - Math.Exp(-x))
+            loss += If(w > 0, rate * rate / (2 * w) * share, l.Damping * rate * rate * h)
+        Next
+        Return loss
+    End Function
 
     ''' <summary>
-    ''' The force on end A, N: k (d − L) + c ḋ along the unit vector from A to B (so positive pulls A
+    ''' The elastic force on end A, N: k (d − L) along the unit vector from A to B (so positive pulls A
     ''' towards B). Written as k (d − L)/d times the vector A→B, so a zero-length spring needs no
     ''' direction at d = 0; a spring of positive length with its ends together has no direction, and no force.
     ''' </summary>
-    Friend Shared Function SpringForce(l As Link) As Vector
-        Dim vb = If(l.B Is Nothing OrElse l.B.IsFixed, Vector.Zero, l.B.Velocity)
-        Return SpringTerm.Pull(l, l.EndA, l.A.Velocity, l.EndB, vb)
+    Private Shared Function ElasticForce(l As Link) As Vector
+        Dim r = l.EndB - l.EndA
+        Dim d = r.Length
+        If d = 0 Then Return Vector.Zero
+        Return r * (l.Stiffness * (d - l.Length) / d)
     End Function
+
+    ''' <summary>
+    ''' The springs' damping over a step of <paramref name="duration"/> s, taken at the step's new velocities
+    ''' (backward Euler, as drag is): along each damped spring's line n (at the ends' positions now) the stretch rate
+    ''' ḋ = (v_B − v_A)·n that the other forces would give becomes ḋ' = ḋ / (1 + c W t) (W = w_A + w_B), by equal
+    ''' and opposite impulses along n (momentum kept). That only ever slows the stretching, however large c W t is
+    ''' (a light body on a strongly damped spring), and where the spring's pull has the ends creeping (the overdamped
+    ''' limit) it gives them the creep F/c at which the pull and the damping balance. Springs sharing a body are
+    ''' taken one after another. <paramref name="velocities"/> (m/s) are indexed like <see cref="World.Movables"/>,
+    ''' and changed in place.
+    ''' </summary>
+    Friend Sub Damp(duration As Double, velocities As Vector())
+        For k = 0 To _links.Length - 1
+            Dim l = _links(k)
+            If l.Kind <> LinkKind.Spring OrElse Not (l.Damping > 0) Then Continue For
+            Dim w = _inverseMassA(k) + _inverseMassB(k)
+            If w = 0 Then Continue For
+            Dim r = l.EndB - l.EndA
+            Dim d = r.Length
+            If d = 0 Then Continue For
+            Dim n = r / d
+            Dim va = If(_indexA(k) >= 0, velocities(_indexA(k)), Vector.Zero)
+            Dim vb = If(_indexB(k) >= 0, velocities(_indexB(k)), Vector.Zero)
+            Dim rate = Vector.Dot(vb - va, n)
+            If rate = 0 Then Continue For
+            Dim after = rate / (1 + l.Damping * w * duration)
+            ' The impulse (N·s) pulling the ends together that takes the stretch rate from rate to after.
+            Dim impulse = (rate - after) / w
+            If _indexA(k) >= 0 Then velocities(_indexA(k)) += n * (impulse * _inverseMassA(k))
+            If _indexB(k) >= 0 Then velocities(_indexB(k)) -= n * (impulse * _inverseMassB(k))
+        Next
+    End Sub
+
+    ''' <summary>Whether any spring has damping (read at the last <see cref="Prepare"/>).</summary>
+    Friend ReadOnly Property HasDamping As Boolean
+        Get
+            For Each l In _links
+                If l.Kind = LinkKind.Spring AndAlso l.Damping > 0 Then Return True
+            Next
+            Return False
+        End Get
+    End Property
 
     ''' <summary>
     ''' After the bodies have moved by a step of <paramref name="h"/> s: puts rods and strings back to

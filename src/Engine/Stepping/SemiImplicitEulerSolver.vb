@@ -21,6 +21,8 @@ Public NotInheritable Class SemiImplicitEulerSolver
     Private ReadOnly _links As New LinkStep()
     ' Each movable body's acceleration in the current step, m/s² (used only when the world has links).
     Private _acceleration As Vector() = Array.Empty(Of Vector)()
+    ' Each movable body's new velocity in the current step, m/s (used only when the world has links).
+    Private _velocity As Vector() = Array.Empty(Of Vector)()
     ' Drag and buoyancy, read from the world once per advance; Nothing when there are none.
     Private _forces As ForceField
     Private _world As World
@@ -100,29 +102,32 @@ Public NotInheritable Class SemiImplicitEulerSolver
     End Sub
 
     ''' <summary>
-    ''' As <see cref="Integrate"/>, with each spring's pull (from the positions and velocities at the start
-    ''' of the step) and buoyancy added to gravity: v += (g + F/m) h, then x += v h. Drag, −c v, is taken at
-    ''' the new velocity (v' = (v + a h)/(1 + c h/m)), so that even a drag far too strong for the step (c h/m
-    ''' ≫ 1: a small ball in syrup) only slows the body, as it should, instead of reversing it a little more
-    ''' every step; the energy it takes, c |v'|² h, is added to <see cref="World.Dissipated"/>.
+    ''' As <see cref="Integrate"/>, with each spring's elastic pull (from the positions at the start of the step)
+    ''' and buoyancy added to gravity: v += (g + F/m) h, then x += v h. Drag, −c v, is taken at the new velocity
+    ''' (v' = (v + a h)/(1 + c h/m)), so that even a drag far too strong for the step (c h/m ≫ 1: a small ball in
+    ''' syrup) only slows the body, as it should, instead of reversing it a little more every step; the energy it
+    ''' takes, c |v'|² h, is added to <see cref="World.Dissipated"/>. The springs' damping is taken at the new
+    ''' velocities the same way (<see cref="LinkStep.Damp"/>), before the bodies move, for the same reason: a light
+    ''' body on a strongly damped spring (c h (1/m_A + 1/m_B) ≫ 1) creeps as it should instead of oscillating ever
+    ''' faster, to infinity.
     ''' </summary>
     Private Sub IntegrateLinked(h As Double, remaining As Double)
         Dim bodies = _world.Movables
-        If _acceleration.Length < bodies.Count Then _acceleration = New Vector(bodies.Count - 1) {}
+        If _acceleration.Length < bodies.Count Then
+            _acceleration = New Vector(bodies.Count - 1) {}
+            _velocity = New Vector(bodies.Count - 1) {}
+        End If
         Dim gravity = New Vector(0, -_world.Gravity)
         For i = 0 To bodies.Count - 1
             _acceleration(i) = gravity
         Next
         _links.AddAccelerations(_acceleration)
-        ' What the springs' damping takes over the step, c ḋ² h (at the step's start, as the forces are).
-        _world.Dissipate(_links.DampingPower * h)
+        ' What the springs' damping takes over the step, from the stretch rates at its start.
+        _world.Dissipate(_links.DampingLoss(h))
         Dim dragged = _world.DraggedBody
         For i = 0 To bodies.Count - 1
             Dim b = bodies(i)
-            If b Is dragged Then
-                DragStep.Move(_world, b, h, remaining)
-                Continue For
-            End If
+            If b Is dragged Then Continue For
             Dim v = b.Velocity + _acceleration(i) * h
             If _forces IsNot Nothing AndAlso _forces.Acts(b) Then
                 Dim resistance As Double, lift As Double
@@ -130,8 +135,17 @@ Public NotInheritable Class SemiImplicitEulerSolver
                 v = New Vector(v.X, v.Y + lift * b.InverseMass * h) / (1 + resistance * b.InverseMass * h)
                 _world.Dissipate(resistance * v.LengthSquared * h)
             End If
-            b.Velocity = v
-            b.Position += v * h
+            _velocity(i) = v
+        Next
+        _links.Damp(h, _velocity)
+        For i = 0 To bodies.Count - 1
+            Dim b = bodies(i)
+            If b Is dragged Then
+                DragStep.Move(_world, b, h, remaining)
+                Continue For
+            End If
+            b.Velocity = _velocity(i)
+            b.Position += _velocity(i) * h
         Next
     End Sub
 End Class

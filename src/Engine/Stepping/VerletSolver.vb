@@ -41,6 +41,8 @@ Public NotInheritable Class VerletSolver
     Private _lift As Double() = Array.Empty(Of Double)()
     ' Per body: seeded from its velocity at this advance's start (its forces besides gravity not yet known then).
     Private _fresh As Boolean() = Array.Empty(Of Boolean)()
+    ' Per body, in the step under way with damped springs: its velocity over the step, then at the step's end, m/s.
+    Private _stepVelocity As Vector() = Array.Empty(Of Vector)()
 
     ''' <param name="timeStep">sub-step, s, &gt; 0</param>
     Public Sub New(Optional timeStep As Double = DefaultTimeStep)
@@ -154,24 +156,31 @@ Public NotInheritable Class VerletSolver
     End Sub
 
     ''' <summary>
-    ''' As <see cref="Integrate"/>, with each body's own acceleration: gravity plus its springs' pull and buoyancy
-    ''' divided by its mass, read from the positions and velocities at the start of the step (Störmer–Verlet with
+    ''' As <see cref="Integrate"/>, with each body's own acceleration: gravity plus its springs' elastic pull and
+    ''' buoyancy divided by its mass, read from the positions at the start of the step (Störmer–Verlet with
     ''' forces that depend on position, still symplectic for springs and buoyancy). Drag, −c v, is split off
     ''' (Strang splitting): half a step of it alone, v × e^(−c h/(2m)), which is exact for −c v and can only slow
     ''' the body however strong the drag, then the Verlet step, then the other half. Second order, like the rest.
-    ''' The kinetic energy each half takes is added to <see cref="World.Dissipated"/>.
+    ''' The kinetic energy each half takes is added to <see cref="World.Dissipated"/>. The springs' damping is taken
+    ''' at the new velocities (<see cref="LinkStep.Damp"/>): on the step's velocity (x_{n+1} − x_n)/h, once the
+    ''' other forces have kicked it, with the energy it takes added to <see cref="World.Dissipated"/>; and on the
+    ''' velocity shown at the step's end, over its half step. So a light body on a strongly damped spring
+    ''' (c h (1/m_A + 1/m_B) ≫ 1) creeps as it should instead of oscillating ever faster, to infinity.
     ''' </summary>
     Private Sub IntegrateLinked(h As Double, remaining As Double)
         Dim bodies = _world.Movables
         Dim dragged = _world.DraggedBody
-        If _acceleration.Length < bodies.Count Then _acceleration = New Vector(bodies.Count - 1) {}
+        If _acceleration.Length < bodies.Count Then
+            _acceleration = New Vector(bodies.Count - 1) {}
+            _stepVelocity = New Vector(bodies.Count - 1) {}
+        End If
         Dim gravity = New Vector(0, -_world.Gravity)
         For i = 0 To bodies.Count - 1
             _acceleration(i) = gravity
         Next
         _links.AddAccelerations(_acceleration)
-        ' What the springs' damping takes over the step, c ḋ² h (at the step's start, as the forces are).
-        _world.Dissipate(_links.DampingPower * h)
+        ' What the springs' damping takes over the step, from the stretch rates at its start.
+        _world.Dissipate(_links.DampingLoss(h))
         If _dragged.Length < bodies.Count Then
             _dragged = New Boolean(bodies.Count - 1) {}
             _lift = New Double(bodies.Count - 1) {}
@@ -186,6 +195,15 @@ Public NotInheritable Class VerletSolver
         End If
         Dim ratio = h / _hPrevious
         Dim kickFactor = h * (h + _hPrevious) / 2
+        Dim damped = _links.HasDamping
+        If damped Then
+            ' The step's velocity as the position formula gives it, then damped over the kick's span, (h + h')/2.
+            For i = 0 To bodies.Count - 1
+                Dim x = bodies(i).Position
+                _stepVelocity(i) = ((x - _prev(i)) * ratio + _acceleration(i) * kickFactor) / h
+            Next
+            _links.Damp(kickFactor / h, _stepVelocity)
+        End If
         For i = 0 To bodies.Count - 1
             Dim c = bodies(i)
             _touched(i) = False
@@ -196,12 +214,22 @@ Public NotInheritable Class VerletSolver
             End If
             Dim a = _acceleration(i)
             Dim x = c.Position
-            Dim xNext = x + (x - _prev(i)) * ratio + a * kickFactor
+            Dim xNext = If(damped, x + _stepVelocity(i) * h, x + (x - _prev(i)) * ratio + a * kickFactor)
             _prev(i) = x
             c.Position = xNext
             c.Velocity = (xNext - x) / h + a * (h / 2)
             If _dragged(i) Then FinishDragStep(c, i, h)
         Next
+        If damped Then
+            ' The velocity shown at the step's end: the step's, kicked over half a step, damped over the same half.
+            For i = 0 To bodies.Count - 1
+                _stepVelocity(i) = bodies(i).Velocity
+            Next
+            _links.Damp(h / 2, _stepVelocity)
+            For i = 0 To bodies.Count - 1
+                If bodies(i) IsNot dragged Then bodies(i).Velocity = _stepVelocity(i)
+            Next
+        End If
         Array.Clear(_fresh, 0, bodies.Count)
     End Sub
 

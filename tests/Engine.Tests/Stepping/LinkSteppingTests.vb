@@ -293,5 +293,46 @@ Namespace Stepping
             Assert.Equal(expected, rise, 0.01 * expected)
             Assert.True(othersHighest - 5 < 0.01 * expected, $"the others rose {othersHighest - 5} m")
         End Sub
+
+        ''' <summary>
+        ''' A 50 mg ball on a compressed spring to a fixed point, damped at c = 0.55 N·s/m (tests/cases), g = 100,
+        ''' e = 0.34: c h/m = 11 at the 1 ms step. Taken as a force at the step's start, the damping reversed the
+        ''' stretch rate and made it ten times larger every step: 10⁵ m/s by t = 0.01 s, infinity and NaN (an
+        ''' ArithmeticException in a wall contact) by t = 0.3 s. Taken at the step's new velocities it only slows the
+        ''' stretching: the ball swings down about the fixed point as if on a rod, bounces along the floor and comes
+        ''' to rest in the bottom right corner, where the spring, still 0.16 m short of its length, holds it. It never
+        ''' gains energy, and the books (energy plus what was taken) never show more than it started with.
+        ''' </summary>
+        <Theory>
+        <InlineData("euler")>
+        <InlineData("verlet")>
+        Public Sub LightBallOnAStronglyDampedSpring_SwingsDown_AndComesToRestInTheCorner_NeverGainingEnergy(solver As String)
+            Dim w = Scenes.SceneFile.LoadFile(TestRepo.CaseFile("stepping-light-ball-on-damped-spring.json"))
+            w.Solver = SolverFactory.Create(solver)
+            Dim ball = w.Circles(0)
+            Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+            Dim dissipated = 0.0
+            Dim highest = 0.0
+            Dim settled = Vector.Zero
+            For i = 1 To 40
+                w.Advance(0.05)
+                Assert.True(Finite(ball.Position) AndAlso Finite(ball.Velocity), $"t = {w.Time}: {ball.Position}, {ball.Velocity}")
+                Assert.True(w.Dissipated >= dissipated, $"t = {w.Time}: dissipated fell from {dissipated} J to {w.Dissipated} J")
+                dissipated = w.Dissipated
+                Dim energy = w.KineticEnergy() + w.PotentialEnergy()
+                highest = Math.Max(highest, energy / e0)
+                Assert.True(energy <= e0, $"t = {w.Time}: {energy} J against {e0} J at the start")
+                Assert.True(energy + w.Dissipated <= e0, $"t = {w.Time}: {energy} J + {w.Dissipated} J taken against {e0} J at the start")
+                If i = 30 Then settled = ball.Position
+            Next
+            _output.WriteLine($"{solver}: energy at most {highest} of the start's; {dissipated} J taken of {e0} J; at {ball.Position}")
+            Assert.Equal(settled, ball.Position)
+            Assert.Equal(w.Width - ball.Radius, ball.Position.X, 0.000000001)
+            Assert.Equal(ball.Radius, ball.Position.Y, 0.000000001)
+        End Sub
+
+        Private Shared Function Finite(v As Vector) As Boolean
+            Return Not (Double.IsNaN(v.X) OrElse Double.IsInfinity(v.X) OrElse Double.IsNaN(v.Y) OrElse Double.IsInfinity(v.Y))
+        End Function
     End Class
 End Namespace
