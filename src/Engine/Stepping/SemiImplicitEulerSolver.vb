@@ -109,7 +109,8 @@ Public NotInheritable Class SemiImplicitEulerSolver
     ''' takes, c |v'|² h, is added to <see cref="World.Dissipated"/>. The springs' damping is taken at the new
     ''' velocities the same way (<see cref="LinkStep.Damp"/>), before the bodies move, for the same reason: a light
     ''' body on a strongly damped spring (c h (1/m_A + 1/m_B) ≫ 1) creeps as it should instead of oscillating ever
-    ''' faster, to infinity.
+    ''' faster, to infinity. What it takes is booked from the stretch rates at the step's start
+    ''' (<see cref="LinkStep.DampingLoss"/>).
     ''' </summary>
     Private Sub IntegrateLinked(h As Double, remaining As Double)
         Dim bodies = _world.Movables

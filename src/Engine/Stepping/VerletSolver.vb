@@ -163,9 +163,10 @@ Public NotInheritable Class VerletSolver
     ''' the body however strong the drag, then the Verlet step, then the other half. Second order, like the rest.
     ''' The kinetic energy each half takes is added to <see cref="World.Dissipated"/>. The springs' damping is taken
     ''' at the new velocities (<see cref="LinkStep.Damp"/>): on the step's velocity (x_{n+1} − x_n)/h, once the
-    ''' other forces have kicked it, with the energy it takes added to <see cref="World.Dissipated"/>; and on the
-    ''' velocity shown at the step's end, over its half step. So a light body on a strongly damped spring
-    ''' (c h (1/m_A + 1/m_B) ≫ 1) creeps as it should instead of oscillating ever faster, to infinity.
+    ''' other forces have kicked it, and on the velocity shown at the step's end, over its half step. So a light
+    ''' body on a strongly damped spring (c h (1/m_A + 1/m_B) ≫ 1) creeps as it should instead of oscillating ever
+    ''' faster, to infinity. What the damping takes is booked from the stretch rates at the step's start
+    ''' (<see cref="LinkStep.DampingLoss"/>).
     ''' </summary>
     Private Sub IntegrateLinked(h As Double, remaining As Double)
         Dim bodies = _world.Movables
