@@ -62,11 +62,12 @@ Friend NotInheritable Class SolverState
     Friend Const HandOverUnheldMassRatio As Double = 1000000.0
 
     ''' <summary>
-    ''' Asks for the hand-over of a world in which a body would sleep where nothing holds it; whether it will happen
-    ''' (only in a world of at most <see cref="HandOverUnheldBodies"/> bodies whose masses are no more than
-    ''' <see cref="HandOverUnheldMassRatio"/> apart).
+    ''' Whether the world may be handed over when a body would sleep where nothing holds it: it has at most
+    ''' <see cref="HandOverUnheldBodies"/> movable bodies, whose masses are no more than
+    ''' <see cref="HandOverUnheldMassRatio"/> apart. Asked before anything asks whether a wedged body is held.
     ''' </summary>
-    Friend Function TryHandOverUnheld() As Boolean
+    Friend Function MayHandOverUnheld() As Boolean
+        If Bodies.Count > HandOverUnheldBodies Then Return False
         Dim lightest = Double.PositiveInfinity, heaviest = 0.0
         For i = 0 To Bodies.Count - 1
             Dim w = Bodies.Shapes(i).InverseMass
@@ -74,8 +75,7 @@ Friend NotInheritable Class SolverState
             lightest = Math.Min(lightest, 1 / w)
             heaviest = Math.Max(heaviest, 1 / w)
         Next
-        If heaviest > HandOverUnheldMassRatio * lightest Then Return False
-        Return TryHandOver(HandOverUnheldBodies)
+        Return Not (heaviest > HandOverUnheldMassRatio * lightest)
     End Function
 
     ''' <summary>Asks for the hand-over (<see cref="HandOver"/>); whether it will happen (only in a world of at most <paramref name="most"/> bodies).</summary>

@@ -329,8 +329,7 @@ Friend NotInheritable Class ConstrainedMotion
         Dim taken = 0
         ' Nothing is integrated past an event found: the motion ends there, and past it the forces are those of a
         ' group that no longer holds (a contact pulling, harder and harder, on a light body it should have let go).
-        Do While _times(_times.Count - 1) < time AndAlso Not _ended AndAlso Not (oneStep AndAlso taken > 0) AndAlso
-                 Not _times(_times.Count - 1) >= _eventTime
+        Do While IntegratedTo < Math.Min(time, _eventTime) AndAlso Not _ended AndAlso Not (oneStep AndAlso taken > 0)
             taken += 1
             If _times.Count > MaxSteps Then Throw New InvalidOperationException($"the chain integrator took more than {MaxSteps} steps from t = {StartTime} s to t = {_times(_times.Count - 1)} s without reaching t = {time} s")
             Dim t = _times(_times.Count - 1)

@@ -61,6 +61,8 @@ Friend NotInheritable Class ClusterResponse
         ' again when something hits it. "At once" is the same instant, or, for a body alone among
         ' things that do not give way under gravity, the fourth time in a row within 10⁻⁴ √(r/g)
         ' (the collapse guard's window).
+        ' Whether a wedged body is held is asked only where the answer can hand the world over.
+        Dim askHeld = _s.G > 0 AndAlso _s.MayHandOverUnheld()
         Dim unheld = False
         If _wedged.Length < _members.Count Then _wedged = New Boolean(Math.Max(_members.Count, 2 * _wedged.Length) - 1) {}
         For k = 0 To _members.Count - 1
@@ -68,12 +70,12 @@ Friend NotInheritable Class ClusterResponse
             Dim i = _members(k)
             _wedged(k) = Not result.Separated OrElse ClusteredJustNow(i, alone)
             _clusteredAt(i) = _s.Now
-            If _wedged(k) AndAlso _s.G > 0 AndAlso Not unheld Then unheld = Not _rest.WouldBeHeld(i)
+            If _wedged(k) AndAlso askHeld AndAlso Not unheld Then unheld = Not _rest.WouldBeHeld(i)
         Next
         ' A body that would sleep where nothing holds it (against a neighbour on a frictionless slope, which
         ' both would slide down pressed together): the fast path cannot move bodies pressed on one another,
         ' so the world goes to the general path, which finds the contact forces, from before this blow.
-        If unheld AndAlso _s.TryHandOverUnheld() Then Return
+        If unheld AndAlso _s.TryHandOver(SolverState.HandOverUnheldBodies) Then Return
         ' Every change of energy the cluster makes is counted (see CollisionLosses.OpenBooks): the blow
         ' itself at e < 1, a second projection, a wedged body stopped, the rest rules that follow.
         Dim dissipatedBefore = CollisionLosses.OpenBooks(_s, _energies)
