@@ -169,38 +169,17 @@ Friend NotInheritable Class ConstraintSet
                 b(i) -= taken(i)(j) * b(j)
             Next
         Next
-        ' M' by Cholesky's method, its factor in the lower triangle of f.
-        Dim f(m - 1, m - 1) As Double
-        For j = 0 To m - 1
-            Dim own = MassMetric.Weighted(_inverseMass, q(j), q(j), support(j))
-            Dim diagonal = own
-            For p = 0 To j - 1
-                diagonal -= f(j, p) * f(j, p)
-            Next
-            If Not (diagonal > _independence * own) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
-            f(j, j) = Math.Sqrt(diagonal)
-            For i = j + 1 To m - 1
-                Dim s = MassMetric.Weighted(_inverseMass, q(i), q(j), If(support(i).Length < support(j).Length, support(i), support(j)))
-                For p = 0 To j - 1
-                    s -= f(i, p) * f(j, p)
-                Next
-                f(i, j) = s / f(j, j)
-            Next
-        Next
+        ' M' by Cholesky's method, row by row, as the general solve factors M.
+        Dim f(m - 1)() As Double
         For i = 0 To m - 1
-            Dim s = b(i)
-            For p = 0 To i - 1
-                s -= f(i, p) * b(p)
+            Dim li(i) As Double
+            For j = 0 To i - 1
+                li(j) = MassMetric.Weighted(_inverseMass, q(i), q(j), If(support(i).Length < support(j).Length, support(i), support(j)))
             Next
-            b(i) = s / f(i, i)
+            If Not FactorRow(f, li, i, MassMetric.Weighted(_inverseMass, q(i), q(i), support(i)), _independence) Then Throw New InvalidOperationException("the constraints of a group hold its bodies in more ways than they can move (a constraint is redundant)")
+            f(i) = li
         Next
-        For i = m - 1 To 0 Step -1
-            Dim s = b(i)
-            For p = i + 1 To m - 1
-                s -= f(p, i) * b(p)
-            Next
-            b(i) = s / f(i, i)
-        Next
+        SolveFactored(f, b, m)
         ' The accelerations W Qᵀ μ; then λ = Tᵀ μ, from (I + C)ᵀ λ = μ.
         For i = 0 To m - 1
             For Each k In support(i)
@@ -436,14 +415,7 @@ Friend NotInheritable Class ConstraintSet
     ''' <see cref="GrowingFactor"/> grows a factor with it too, so the two agree to the last bit.
     ''' </summary>
     Friend Shared Function FactorRow(factor As Double()(), row As Double(), k As Integer, own As Double, independence As Double) As Boolean
-        For j = 0 To k - 1
-            Dim lj = factor(j)
-            Dim s = row(j)
-            For p = 0 To j - 1
-                s -= row(p) * lj(p)
-            Next
-            row(j) = s / lj(j)
-        Next
+        ForwardSubstitute(factor, row, k)
         Dim diagonal = own
         For p = 0 To k - 1
             diagonal -= row(p) * row(p)
@@ -455,21 +427,33 @@ Friend NotInheritable Class ConstraintSet
 
     ''' <summary>Solves M x = b in place with the factor.</summary>
     Private Sub Solve(b As Double())
-        Dim m = b.Length
-        For i = 0 To m - 1
-            Dim li = _factor(i)
+        SolveFactored(_factor, b, b.Length)
+    End Sub
+
+    ''' <summary>
+    ''' Solves L Lᵀ x = <paramref name="b"/> in place for the first <paramref name="count"/> rows of Cholesky's factor
+    ''' L (<paramref name="factor"/>(i)(j) = L_ij, j ≤ i).
+    ''' </summary>
+    Private Shared Sub SolveFactored(factor As Double()(), b As Double(), count As Integer)
+        ForwardSubstitute(factor, b, count)
+        For i = count - 1 To 0 Step -1
+            Dim s = b(i)
+            For p = i + 1 To count - 1
+                s -= factor(p)(i) * b(p)
+            Next
+            b(i) = s / factor(i)(i)
+        Next
+    End Sub
+
+    ''' <summary>Solves L y = <paramref name="b"/> in place for the first <paramref name="count"/> rows of L.</summary>
+    Private Shared Sub ForwardSubstitute(factor As Double()(), b As Double(), count As Integer)
+        For i = 0 To count - 1
+            Dim li = factor(i)
             Dim s = b(i)
             For p = 0 To i - 1
                 s -= li(p) * b(p)
             Next
             b(i) = s / li(i)
-        Next
-        For i = m - 1 To 0 Step -1
-            Dim s = b(i)
-            For p = i + 1 To m - 1
-                s -= _factor(p)(i) * b(p)
-            Next
-            b(i) = s / _factor(i)(i)
         Next
     End Sub
 
