@@ -362,6 +362,13 @@ Public NotInheritable Class EventDrivenSolver
         Next
     End Sub
 
+    ''' <summary>When the fast path handed the world over to the general path (s; +∞: it has not).</summary>
+    Friend ReadOnly Property HandedOverAt As Double
+        Get
+            Return _handedOverAt
+        End Get
+    End Property
+
     ''' <summary>Gridded bodies that did not fit in their cell's lanes (for tests).</summary>
     Friend ReadOnly Property OverflowCount As Integer
         Get

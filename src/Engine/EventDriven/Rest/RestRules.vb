@@ -691,9 +691,14 @@ Friend NotInheritable Class RestRules
         End While
     End Sub
 
-    ''' <summary>Whether body i, stopped where it is now, would be held there (<see cref="IsHeld"/> with its default support speed).</summary>
+    ''' <summary>
+    ''' Whether body i, stopped where it is now, would be held there by what it touches (<see cref="IsHeld"/>),
+    ''' counting neighbours at any speed that do not move away from it. Asked of a body wedged at an instant, to
+    ''' choose between sleep and the general path: in a settling pile the balls around a wedged ball still move
+    ''' but hold it all the same, and a pile handed over to the general path settles hundreds of times slower.
+    ''' </summary>
     Friend Function WouldBeHeld(i As Integer) As Boolean
-        Return IsHeld(i)
+        Return IsHeld(i, Double.PositiveInfinity)
     End Function
 
     ''' <summary>
