@@ -128,7 +128,7 @@ Friend NotInheritable Class ConstrainedMotion
         Dim snapNow As Constraint = Nothing
         For Each l In links
             If l.Kind = LinkKind.Rod Then
-                held.Add(TieOf(l))
+                If LinkedMotions.IsShortRod(l) Then slack.Add(TieOf(l)) Else held.Add(TieOf(l))
             ElseIf l.Kind = LinkKind.String Then
                 Dim state = StringState(l, released)
                 If state > 0 Then snapNow = TieOf(l)
@@ -185,6 +185,11 @@ Friend NotInheritable Class ConstrainedMotion
             ' stays at nothing.
             If spare <= WatchSlop AndAlso Implied(_slackTies(i), held, y) Then margin = Math.Max(WatchSlop, margin)
             _snapAt(i) = If(spare > margin, 0, Math.Min(spare, 0) - margin)
+            ' A rod short of its length (LinkedMotions.IsShortRod) comes back to it where the circle its body rolls
+            ' round touches its own, along the row that holds the body there: it reaches its length there only to the
+            ' integrator's accuracy and passes on. It snaps taut only once over-long by a watched contact's slop: a blow
+            ' there, with two rows all but in line, would stop the body dead across them.
+            If _slack(i).Kind = LinkKind.Rod AndAlso spare > margin Then _snapAt(i) = -Math.Max(WatchSlop, margin)
         Next
         _watched = watched.Where(Function(c) Not Equals(c.Tag, released)).ToArray()
         ' A watched contact already pressed in a little at the start (a body put on a level face beside it) is

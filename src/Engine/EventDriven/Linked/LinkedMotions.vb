@@ -9,6 +9,17 @@ Friend Module LinkedMotions
     Friend Const FullFraction As Double = 0.000000001
 
     ''' <summary>
+    ''' Whether <paramref name="l"/> is a rod short of its length (by more than <see cref="FullFraction"/> of it). Only a
+    ''' rod that a group watched, as the others held implied it, gets there: a ball hung from two points one above the
+    ''' other, the rods' circles touching at the ball, rolls round the smaller circle and leaves the longer rod short.
+    ''' Such a rod is watched as a slack string is until it reaches its length again; held as it is, it would put its
+    ''' ends back at its length at once, a jump that makes or takes energy.
+    ''' </summary>
+    Friend Function IsShortRod(l As Link) As Boolean
+        Return l.Kind = LinkKind.Rod AndAlso l.Distance < l.Length * (1 - FullFraction)
+    End Function
+
+    ''' <summary>
     ''' Whether string <paramref name="l"/> is taut: its ends at its full length (within <see cref="FullFraction"/>
     ''' and <paramref name="slop"/>, m) and neither moving apart nor together (within FullFraction of the speeds
     ''' that matter, or <paramref name="speedSlop"/>, m/s, if larger). <paramref name="gravity"/>: m/s².
