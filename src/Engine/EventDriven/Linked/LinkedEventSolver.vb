@@ -339,10 +339,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
 
     ''' <summary>
     ''' Body i hits body j (i &lt; j), a wall or fixed body f at t: resolve it with the links and lasting contacts
-    ''' of both, report it, and group the bodies anew; when <paramref name="wedged"/>, with every contact touching
-    ''' the bodies it moves too (LinkedEventSolver.Wedge.vb).
+    ''' of both, report it, and group the bodies anew; when <paramref name="wedged"/>, or always with e = 0, with every
+    ''' contact touching the bodies it moves too (LinkedEventSolver.Wedge.vb).
     ''' </summary>
     Private Sub Collide(i As Integer, j As Integer, side As WallSide, f As Integer, t As Double, tEnd As Double, wedged As Boolean)
+        ' With no bounce, a blow is resolved with every contact touching the bodies it moves from the first: pairwise,
+        ' the approach it leaves between a body wedged in a cluster and the next is passed round and round.
+        If _world.Restitution = 0 Then wedged = True
         Dim gi = _groupOf(i)
         Dim gj = If(j >= 0, _groupOf(j), -1)
         Sync(gi, t)

@@ -117,6 +117,11 @@ Friend NotInheritable Class LinkedImpulse
             _rows(i) = row
         Next
         Solve()
+        ' Nothing to give back: the projection is the blow.
+        If restitution = 0 Then
+            WriteVelocities()
+            Return
+        End If
         For i = 0 To _rows.Count - 1
             Dim row = _rows(i)
             If row.IsContact AndAlso row.Impulse <> 0 Then
