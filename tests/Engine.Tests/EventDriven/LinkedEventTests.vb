@@ -8,7 +8,7 @@ Namespace EventDriven
     ''' <summary>
     ''' Links in the event solver against closed forms and exact answers: pendulums on strings and rods,
     ''' a string going slack and snapping taut, Newton's cradle on strings, a mass on a vertical spring, a
-    ''' spinning dumbbell, collisions with the links' impulses in the same solve, and what it refuses (a ball coming to rest on a box in a scene with links).
+    ''' spinning dumbbell, collisions with the links' impulses in the same solve, and a ball coming to rest on a box in a scene with links (which it once refused).
     ''' </summary>
     Public Class LinkedEventTests
         Private Const G As Double = 9.81
