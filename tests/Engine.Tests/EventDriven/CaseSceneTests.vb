@@ -575,7 +575,6 @@ Public Class CaseSceneTests
         AssertHopperEmpties(Hopper(seed, restitution, balls))
     End Sub
 
-    ''' <summary>Why the hundred-ball hopper tests are skipped: what the event solver still does wrong in them.</summary>
     ''' <summary>
     ''' A 1 kg ball at 1 m/s strikes the end of a dumbbell (two 4 kg balls on a rod) lying on the floor, with two
     ''' 0.5 kg balls touching in a row between its ends (e = 0, g = 9.81; the rod puts the world on the general
@@ -619,6 +618,7 @@ Public Class CaseSceneTests
         Next
     End Sub
 
+    ''' <summary>Why the hundred-ball hopper tests are skipped: what the event solver still does wrong in them.</summary>
     Private Const HundredBallHopperStillJams As String =
         "past SolverState.HandOverUnheldBodies (64) movable bodies the fast path does not hand a world to the general " &
         "path when a wedged ball would sleep where nothing holds it (the general path integrates a pressed pile of a " &
