@@ -88,6 +88,12 @@ Friend NotInheritable Class SpringPairMotion
         Return {0, 0, size, size}
     End Function
 
+    Friend Overrides ReadOnly Property StepsTaken As Integer
+        Get
+            Return _path.StepCount
+        End Get
+    End Property
+
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
         Dim r As Vector, w As Vector
         _path.StateAt(time, 0, r, w)
