@@ -708,6 +708,12 @@ Friend NotInheritable Class ConstrainedMotion
         End Get
     End Property
 
+    Friend Overrides ReadOnly Property StepsTaken As Integer
+        Get
+            Return _times.Count - 1
+        End Get
+    End Property
+
     ''' <summary>The end of the last step taken (s): nothing of the motion is integrated past it.</summary>
     Friend ReadOnly Property IntegratedTo As Double
         Get

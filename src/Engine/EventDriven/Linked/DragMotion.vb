@@ -63,6 +63,12 @@ Friend NotInheritable Class DragMotion
         Return {y(2), y(3), f.X * inverseMass, f.Y * inverseMass - _gravity, power}
     End Function
 
+    Friend Overrides ReadOnly Property StepsTaken As Integer
+        Get
+            Return _path.StepCount
+        End Get
+    End Property
+
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
         _path.StateAt(time, 0, position, velocity)
     End Sub

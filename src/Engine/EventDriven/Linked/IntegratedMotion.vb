@@ -89,6 +89,12 @@ Friend NotInheritable Class IntegratedMotion
         Return d
     End Function
 
+    Friend Overrides ReadOnly Property StepsTaken As Integer
+        Get
+            Return _path.StepCount
+        End Get
+    End Property
+
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
         _path.StateAt(time, k, position, velocity)
     End Sub

@@ -67,6 +67,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 now(4 * k + 2) = snapped(k).Velocity.X
                 now(4 * k + 3) = snapped(k).Velocity.Y
             Next
+            Retire(_groups(g).Motion)
             _groups(g).Motion = New SnapshotMotion(snapped, t, FreeAccelerations(snapped, _groups(g).Links, now))
         Next
         Dim touches As New List(Of Touch)
@@ -185,6 +186,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Next
 
         ' 8. In place of the groups they came from.
+        For Each g In inSet
+            Retire(_groups(g).Motion)
+        Next
         Dim kept = Enumerable.Range(0, _groups.Count).Where(Function(g) Not inSet.Contains(g)).Select(Function(g) _groups(g)).ToList()
         kept.AddRange(made)
         _groups = kept

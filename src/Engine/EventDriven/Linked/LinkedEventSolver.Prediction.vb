@@ -6,6 +6,8 @@ Option Strict On
 Partial Friend NotInheritable Class LinkedEventSolver
     ' How many times the contact searches have measured a gap, over the solver's life.
     Private _gapEvaluations As Long
+    ' How many integrator steps the motions replaced so far had taken.
+    Private _retiredSteps As Long
     ' How far (s, absolute) the searches under way need look (see Reach): +∞ but while a body just changed is predicted.
     Private _reach As Double = Double.PositiveInfinity
     ' Whether the last search found a contact (rather than stopping where it was told to, to be taken up again there).
@@ -20,6 +22,21 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Return _gapEvaluations
         End Get
     End Property
+
+    ''' <summary>
+    ''' How many integrator steps the groups' motions have taken since the solver was made, those it has replaced and
+    ''' those it moves by now: the work of integrating them, counted exactly (see <see cref="GapEvaluations"/>).
+    ''' </summary>
+    Friend ReadOnly Property IntegratorSteps As Long
+        Get
+            Return _retiredSteps + _groups.Sum(Function(g) CLng(If(g.Motion Is Nothing, 0, g.Motion.StepsTaken)))
+        End Get
+    End Property
+
+    ''' <summary>Counts the steps of a motion about to be replaced.</summary>
+    Private Sub Retire(motion As LinkedMotion)
+        If motion IsNot Nothing Then _retiredSteps += motion.StepsTaken
+    End Sub
 
     Private Sub PredictAll(tEnd As Double)
         For i = 0 To _bodies.Length - 1

@@ -161,6 +161,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
         _lastTime = Double.NaN
         Dim bodies = w.Movables.ToList()
         _bodies = bodies.ToArray()
+        For Each g In _groups
+            Retire(g.Motion)
+        Next
         _groups = FormGroups(w, bodies)
         Dim n = _bodies.Length
         _offset = New Vector(n - 1) {}

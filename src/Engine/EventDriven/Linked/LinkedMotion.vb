@@ -12,6 +12,13 @@ Friend MustInherit Class LinkedMotion
         Me.StartTime = startTime
     End Sub
 
+    ''' <summary>How many integrator steps this motion has taken so far (0 for a closed form): the work of integrating it, counted exactly.</summary>
+    Friend Overridable ReadOnly Property StepsTaken As Integer
+        Get
+            Return 0
+        End Get
+    End Property
+
     ''' <summary>The bodies this motion moves, in its own order (one or two).</summary>
     Friend ReadOnly Property Bodies As Shape()
 

@@ -54,6 +54,13 @@ Friend NotInheritable Class QuinticTrajectory
         End Get
     End Property
 
+    ''' <summary>How many steps have been taken so far.</summary>
+    Friend ReadOnly Property StepCount As Integer
+        Get
+            Return _times.Count - 1
+        End Get
+    End Property
+
     ''' <summary>Takes steps until the last step ends at or after <paramref name="time"/> (s).</summary>
     Private Sub ExtendTo(time As Double)
         If Double.IsInfinity(time) Then Throw New ArgumentOutOfRangeException(NameOf(time), $"{_what} integrates only to a finite time")

@@ -16,6 +16,9 @@ Friend NotInheritable Class SpringPairMotion
 
     Private Const RelativeTolerance As Double = 0.000000000003
     Private Const AbsoluteTolerance As Double = 0.0000000000003
+    ' How far ahead (s) the motion is looked at once, at most: the stretch starts at its first step and doubles each
+    ' time its end is reached (as IntegratedMotion's).
+    Private Const Lookahead As Double = 0.1
 
     Private ReadOnly _links As Link()
     Private ReadOnly _gravity As Double
@@ -28,6 +31,10 @@ Friend NotInheritable Class SpringPairMotion
     Private ReadOnly _centreVelocity As Vector
     ' The separation r and its rate (m, m/s), integrated.
     Private ReadOnly _path As QuinticTrajectory
+    ' The first step (s), and the end of the stretch looked at so far (s, absolute): the contact searches stop there,
+    ' so that a stiff spring's pair, made anew at each collision, is integrated only as far as the next one needs.
+    Private ReadOnly _firstStep As Double
+    Private _lookedTo As Double
 
     ''' <summary>Whether the group is two bodies joined only by springs between them (none to a fixed point).</summary>
     Friend Shared Function Fits(group As LinkedGroup) As Boolean
@@ -51,9 +58,29 @@ Friend NotInheritable Class SpringPairMotion
         For Each l In _links
             fastest = Math.Max(fastest, Math.Sqrt(l.Stiffness / _reduced))
         Next
-        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, {r.X, r.Y, w.X, w.Y}, startTime, If(fastest > 0, 0.06 / fastest, 0.001), RelativeTolerance, AbsoluteTolerance,
+        _firstStep = If(fastest > 0, 0.06 / fastest, 0.001)
+        _lookedTo = startTime + _firstStep
+        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, {r.X, r.Y, w.X, w.Y}, startTime, _firstStep, RelativeTolerance, AbsoluteTolerance,
                                       rounding:=AddressOf Rounding)
     End Sub
+
+    ''' <summary>
+    ''' The end of the stretch looked at so far: nothing happens there but looking further. Without it the searches
+    ''' of both bodies looked a whole horizon ahead after every collision, and the separation was integrated that far
+    ''' each time: a 4 kN/m spring between two 10 mg balls, one struck every microsecond by a ball it pinned, took
+    ''' 28 000 steps (30 ms of CPU) per collision.
+    ''' </summary>
+    Friend Overrides ReadOnly Property TransitionTime As Double
+        Get
+            Return _lookedTo
+        End Get
+    End Property
+
+    ''' <summary>Looks twice as far from the start (at most <see cref="Lookahead"/> more) and goes on as it was.</summary>
+    Friend Overrides Function LookFurther(time As Double) As Boolean
+        _lookedTo = time + Math.Min(Lookahead, Math.Max(time - StartTime, _firstStep))
+        Return True
+    End Function
 
     ''' <summary>d/dt of (r, ṙ): ṙ, and the springs' push along r ÷ μ (m/s²).</summary>
     Private Function Derivative(y As Double()) As Double()
@@ -87,6 +114,12 @@ Friend NotInheritable Class SpringPairMotion
         size *= SpringTerm.Ulps / _reduced
         Return {0, 0, size, size}
     End Function
+
+    Friend Overrides ReadOnly Property StepsTaken As Integer
+        Get
+            Return _path.StepCount
+        End Get
+    End Property
 
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
         Dim r As Vector, w As Vector
