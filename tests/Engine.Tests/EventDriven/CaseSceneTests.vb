@@ -341,6 +341,43 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' Two 1 kg balls (r = 5 cm, e = 0.3, no friction): one rests on the floor, the other is dropped from 2 cm
+    ''' above its top, 0.5° off it. Nothing balances the top ball's weight along the slope of the lower one, so it
+    ''' rolls off, pushing the lower one aside, and both end on the floor. A ball within 2.6° of another's top
+    ''' counted as held, and the top ball went to sleep there after four bounces.
+    ''' </summary>
+    <Fact>
+    Public Sub BallDroppedJustOffAnothersTop_RollsOff()
+        AssertBothEndOnTheFloor(SceneFile.LoadFile(TestRepo.CaseFile("event-ball-asleep-on-ball-top.json")))
+    End Sub
+
+    ''' <summary>The same drop with other offsets from the top (degrees) and restitutions.</summary>
+    <Theory>
+    <InlineData(0.05, 0.3)>
+    <InlineData(0.05, 0.0)>
+    <InlineData(2.0, 0.0)>
+    Public Sub BallDroppedJustOffAnothersTop_RollsOff_WhateverTheOffset(degrees As Double, restitution As Double)
+        Dim w As New World(1, 1, 9.81, restitution)
+        Dim angle = degrees * Math.PI / 180
+        w.Add(New Circle(New Vector(0.5, 0.05), 0.05, 1, id:="low"))
+        w.Add(New Circle(New Vector(0.5 + 0.1 * Math.Sin(angle), 0.05 + 0.1 * Math.Cos(angle) + 0.02), 0.05, 1, id:="top"))
+        AssertBothEndOnTheFloor(w)
+    End Sub
+
+    ''' <summary>Runs the two balls 5 s (energy never gained, no overlap), then asserts that both rest on the floor (to 10⁻⁹ m).</summary>
+    Private Shared Sub AssertBothEndOnTheFloor(w As World)
+        EventSolverTestKit.UseEventSolver(w)
+        Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+        For k = 1 To 10
+            w.Advance(0.5)
+            EventSolverTestKit.AssertNoEnergyGainNorOverlap(w, e0)
+        Next
+        For Each ball In w.Circles
+            Assert.True(Math.Abs(ball.Position.Y - ball.Radius) <= 0.000000001, $"{ball.Id} at y = {ball.Position.Y} m at t = 5 s, not on the floor")
+        Next
+    End Sub
+
+    ''' <summary>
     ''' The balls on the pegs of tests/cases/event-ball-asleep-on-peg-top.json, looked at every 0.05 s for 10 s:
     ''' every ball asleep above the floor's layers (centre higher than 0.5 m) could be held where it is by what
     ''' it touches that does not move (the floor, a wall, a peg, a ball asleep or still). Without friction each

@@ -19,8 +19,8 @@ Friend NotInheritable Class RestRules
     ''' <summary>Contact normals gathered by IsHeld (scratch, fixed size).</summary>
     Private ReadOnly _normalX As Double() = New Double(15) {}
     Private ReadOnly _normalY As Double() = New Double(15) {}
-    ''' <summary>Whether each gathered normal is a wall's or a fixed body's (exact), rather than another body's.</summary>
-    Private ReadOnly _normalExact As Boolean() = New Boolean(15) {}
+    ''' <summary>Whether each gathered normal is a wall's or a fixed body's, rather than another body's.</summary>
+    Private ReadOnly _normalFixed As Boolean() = New Boolean(15) {}
     Private _nNormals As Integer
     ''' <summary>Whether a cluster of still bodies is held by the contact forces (see <see cref="HeldOnSlope"/>).</summary>
     Private ReadOnly _equilibrium As EquilibriumCheck
@@ -746,14 +746,13 @@ Friend NotInheritable Class RestRules
             If b.Mode(j) <> BodyMode.Sleeping AndAlso MovesAway(j, c.Normal) Then Continue For
             AddNormal(c.Normal.X, c.Normal.Y, False)
         Next
-        ' One support alone holds a body only if it is level. A fixed body (a face, a corner, a peg) must
-        ' be level to rounding: on a frictionless slope of any angle, however small, a body slides (g sin θ
-        ' along it), and off a peg's top it rolls. Another body within 2.6° of level also holds it: the
-        ' top of a ball is where a pile's balls sit, and rolling off from there is left to the pile's own settling.
+        ' One support alone holds a body only if it is level to rounding, whatever it is: on a frictionless
+        ' slope of any angle, however small, a body slides (g sin θ along it), and off the top of a peg or of
+        ' another ball it rolls (a ball dropped 0.05° off another's top rolls off it to the floor).
         ' Otherwise up = (0, 1) must lie between two of the normals (RestingFaces.HoldsUp, which is symmetric in
         ' its two normals and never holds for a normal paired with itself, so each pair is asked once).
         For a = 0 To _nNormals - 1
-            If _normalY(a) > If(_normalExact(a), RestingFaces.LevelCosine, 0.999) Then Return HeldOnSlope(i)
+            If _normalY(a) > RestingFaces.LevelCosine Then Return HeldOnSlope(i)
             Dim na = New Vector(_normalX(a), _normalY(a))
             For k = a + 1 To _nNormals - 1
                 If RestingFaces.HoldsUp(na, New Vector(_normalX(k), _normalY(k))) Then Return HeldOnSlope(i)
@@ -770,7 +769,7 @@ Friend NotInheritable Class RestRules
     ''' </summary>
     Private Function HeldOnSlope(i As Integer) As Boolean
         For a = 0 To _nNormals - 1
-            If _normalExact(a) AndAlso _normalY(a) > 0 AndAlso _normalY(a) <= RestingFaces.LevelCosine Then
+            If _normalFixed(a) AndAlso _normalY(a) > 0 AndAlso _normalY(a) <= RestingFaces.LevelCosine Then
                 If _equilibrium.Holds(i) Then Return True
                 Return False
             End If
@@ -813,11 +812,11 @@ Friend NotInheritable Class RestRules
         Return vx * n.X + vy * n.Y < 0
     End Function
 
-    Private Sub AddNormal(x As Double, y As Double, Optional exact As Boolean = True)
+    Private Sub AddNormal(x As Double, y As Double, Optional fixedSupport As Boolean = True)
         If _nNormals < _normalX.Length Then
             _normalX(_nNormals) = x
             _normalY(_nNormals) = y
-            _normalExact(_nNormals) = exact
+            _normalFixed(_nNormals) = fixedSupport
             _nNormals += 1
         End If
     End Sub
