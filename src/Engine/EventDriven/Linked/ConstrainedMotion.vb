@@ -23,10 +23,9 @@ Friend NotInheritable Class ConstrainedMotion
     Private Const AbsoluteTolerance As Double = 0.000000000001
     ' Steps kept from one start at most: far more than any advance needs, far less than the memory holds.
     Private Const MaxSteps As Integer = 2000000
-    ' A group looks at most this far ahead at once (s), for its events and its bodies' searches, doubling the
-    ' stretch it looks at each time it reaches its end; after this many steps it hands over to a new motion, which starts
-    ' its list of steps anew.
-    Private Const Lookahead As Double = 0.1
+    ' A group looks ahead for its events and its bodies' searches a stretch at a time, doubling it each time it
+    ' reaches its end (Lookahead.StretchEnd); after this many steps it hands over to a new motion, which starts its
+    ' list of steps anew.
     Private Const RestartSteps As Integer = 20000
     ' The state is projected back onto the lengths when it has drifted off by more than this fraction.
     Private Const DriftFraction As Double = 0.000000000001
@@ -723,13 +722,14 @@ Friend NotInheritable Class ConstrainedMotion
 
     ''' <summary>
     ''' At the end of the steps looked at, with no event on them: takes as many steps again (up to
-    ''' <see cref="Lookahead"/> at once) and returns True, so the motion goes on as it was; False once it has taken so
-    ''' many that the group had better start anew from where it is.
+    ''' <see cref="Lookahead.LongestStretchSeconds"/> at once, <see cref="Lookahead.StretchEnd"/>) and returns True,
+    ''' so the motion goes on as it was; False once it has taken so many that the group had better start anew from
+    ''' where it is.
     ''' </summary>
     Friend Overrides Function LookFurther(time As Double) As Boolean
         If _eventRow IsNot Nothing OrElse _ended OrElse Not Double.IsPositiveInfinity(_eventTime) OrElse time <> _times(_times.Count - 1) Then Return False
         If _times.Count > RestartSteps Then Return False
-        ExtendTo(time + Math.Min(Lookahead, Math.Max(time - StartTime, _step)))
+        ExtendTo(Lookahead.StretchEnd(StartTime, time, _step))
         Return True
     End Function
 

@@ -14,9 +14,6 @@ Friend NotInheritable Class IntegratedMotion
 
     Private Const RelativeTolerance As Double = 0.000000000003
     Private Const AbsoluteTolerance As Double = 0.0000000000003
-    ' How far ahead (s) the motion is looked at once, at most: the stretch starts at its first step and doubles each
-    ' time its end is reached.
-    Private Const Lookahead As Double = 0.1
 
     Private ReadOnly _links As Link()
     Private ReadOnly _gravity As Double
@@ -25,10 +22,9 @@ Friend NotInheritable Class IntegratedMotion
     Private ReadOnly _forces As ForceField
     ' Per body x, y, vx, vy (m, m/s), integrated.
     Private ReadOnly _path As QuinticTrajectory
-    ' The first step (s), and the end of the stretch looked at so far (s, absolute): the contact searches stop there,
-    ' so that a stiff spring's group, made anew at each collision, is integrated only as far as the next one needs.
-    Private ReadOnly _firstStep As Double
-    Private _lookedTo As Double
+    ' The stretch looked at so far: the contact searches stop at its end, so that a stiff spring's group, made anew
+    ' at each collision, is integrated only as far as the next one needs.
+    Private ReadOnly _lookahead As Lookahead
 
     Friend Sub New(bodies As Shape(), links As List(Of Link), startTime As Double, gravity As Double, Optional forces As ForceField = Nothing)
         MyBase.New(bodies, startTime)
@@ -50,22 +46,22 @@ Friend NotInheritable Class IntegratedMotion
                 If l.A Is b OrElse l.B Is b Then fastest = Math.Max(fastest, Math.Sqrt(l.Stiffness / b.Mass))
             Next
         Next
-        _firstStep = If(fastest > 0, 0.06 / fastest, 0.001)
-        _lookedTo = startTime + _firstStep
-        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, y, startTime, _firstStep, RelativeTolerance, AbsoluteTolerance,
+        Dim firstStepSeconds = If(fastest > 0, 0.06 / fastest, 0.001)
+        _lookahead = New Lookahead(startTime, firstStepSeconds)
+        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, y, startTime, firstStepSeconds, RelativeTolerance, AbsoluteTolerance,
                                       rounding:=AddressOf Rounding)
     End Sub
 
     ''' <summary>The end of the stretch looked at so far: nothing happens there but looking further.</summary>
     Friend Overrides ReadOnly Property TransitionTime As Double
         Get
-            Return _lookedTo
+            Return _lookahead.EndTimeSeconds
         End Get
     End Property
 
-    ''' <summary>Looks twice as far from the start (at most <see cref="Lookahead"/> more) and goes on as it was.</summary>
+    ''' <summary>Looks twice as far from the start (<see cref="Lookahead.LookFurther"/>) and goes on as it was.</summary>
     Friend Overrides Function LookFurther(time As Double) As Boolean
-        _lookedTo = time + Math.Min(Lookahead, Math.Max(time - StartTime, _firstStep))
+        _lookahead.LookFurther(time)
         Return True
     End Function
 

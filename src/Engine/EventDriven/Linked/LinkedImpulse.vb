@@ -156,30 +156,24 @@ Friend NotInheritable Class LinkedImpulse
     ''' 2·10⁻⁸ m/s off, in line with a 1.5 t ball's string snapping taut on a 58 mg body, took 37 kN·s and gave 3·10⁻⁴ J).
     ''' </summary>
     Private Sub HoldRows()
-        Dim held As New List(Of Integer)
+        ' Most blows hold no link, or none whose ends move: they allocate nothing here.
+        Dim heldCount = 0
         Dim moving = False
         For i = 0 To _rows.Count - 1
             If Not _rows(i).Held Then Continue For
-            held.Add(i)
+            heldCount += 1
             If SeparationSpeed(_rows(i)) <> 0 Then moving = True
         Next
         If Not moving Then Return
-        Dim inverse = _bodies.Select(Function(b) b.InverseMass).ToArray()
-        Dim rows(held.Count - 1) As ContactRow
-        Dim scale = 0.0
-        For Each v In _velocities
-            scale = Math.Max(scale, v.Length)
-        Next
-        For k = 0 To held.Count - 1
-            Dim r = _rows(held(k))
+        Dim rows(heldCount - 1) As ContactRow
+        Dim k = 0
+        For i = 0 To _rows.Count - 1
+            Dim r = _rows(i)
+            If Not r.Held Then Continue For
             rows(k) = New ContactRow(If(r.B >= 0, r.B, ContactRow.None), If(r.A >= 0, r.A, ContactRow.None), r.U, 0, True)
+            k += 1
         Next
-        Dim result(_bodies.Count - 1) As Vector
-        Dim forces(held.Count - 1) As Double
-        _solve.Solve(inverse, _velocities, rows, ContactSolve.ApproachTolerance * scale, result, forces)
-        For i = 0 To _bodies.Count - 1
-            _velocities(i) = result(i)
-        Next
+        SolveRows(rows, 0)
         ' The contacts struck give back the speeds they arrive at now.
         For i = 0 To _rows.Count - 1
             Dim r = _rows(i)
@@ -196,31 +190,45 @@ Friend NotInheritable Class LinkedImpulse
     ''' </summary>
     Private Sub Solve()
         If _rows.Count = 0 Then Return
-        Dim inverse = _bodies.Select(Function(b) b.InverseMass).ToArray()
         Dim rows(_rows.Count - 1) As ContactRow
-        Dim scale = 0.0
-        For Each v In _velocities
-            scale = Math.Max(scale, v.Length)
-        Next
+        Dim largestTargetSpeed = 0.0
         For i = 0 To _rows.Count - 1
             Dim r = _rows(i)
             Dim s = If(r.Sign = 0, 1, r.Sign)
             ' Value s·(u·(v_B − v_A) − T): with the solve's A = this row's B and direction s·u.
             rows(i) = New ContactRow(If(r.B >= 0, r.B, ContactRow.None), If(r.A >= 0, r.A, ContactRow.None), r.U * s, -s * r.Target, r.Sign = 0)
-            scale = Math.Max(scale, Math.Abs(r.Target))
+            largestTargetSpeed = Math.Max(largestTargetSpeed, Math.Abs(r.Target))
         Next
-        Dim result(_bodies.Count - 1) As Vector
-        Dim forces(_rows.Count - 1) As Double
-        _solve.Solve(inverse, _velocities, rows, ContactSolve.ApproachTolerance * scale, result, forces)
-        For i = 0 To _bodies.Count - 1
-            _velocities(i) = result(i)
-        Next
+        Dim forces = SolveRows(rows, largestTargetSpeed)
         For i = 0 To _rows.Count - 1
             Dim r = _rows(i)
             r.Impulse = If(r.Sign = 0, 1, r.Sign) * forces(i)
             _rows(i) = r
         Next
     End Sub
+
+    ''' <summary>
+    ''' Solves <paramref name="rows"/> (in the solve's own terms, on the bodies of the blow) from the velocities now
+    ''' with <see cref="ContactSolve"/>, puts the velocities it finds in their place and returns each row's force
+    ''' (N·s, in the solve's sign). Its tolerance is <see cref="ContactSolve.ApproachTolerance"/> times the fastest
+    ''' body's speed or <paramref name="targetSpeedMetresPerSecond"/> (the largest target speed asked of a row),
+    ''' whichever is more.
+    ''' </summary>
+    Private Function SolveRows(rows As ContactRow(), targetSpeedMetresPerSecond As Double) As Double()
+        Dim inverse = _bodies.Select(Function(b) b.InverseMass).ToArray()
+        Dim scale = 0.0
+        For Each v In _velocities
+            scale = Math.Max(scale, v.Length)
+        Next
+        scale = Math.Max(scale, targetSpeedMetresPerSecond)
+        Dim result(_bodies.Count - 1) As Vector
+        Dim forces(rows.Length - 1) As Double
+        _solve.Solve(inverse, _velocities, rows, ContactSolve.ApproachTolerance * scale, result, forces)
+        For i = 0 To _bodies.Count - 1
+            _velocities(i) = result(i)
+        Next
+        Return forces
+    End Function
 
     ''' <summary>
     ''' Coulomb friction at the blow's own contact (the first added), once its normal impulse is known: the bodies'

@@ -16,9 +16,6 @@ Friend NotInheritable Class SpringPairMotion
 
     Private Const RelativeTolerance As Double = 0.000000000003
     Private Const AbsoluteTolerance As Double = 0.0000000000003
-    ' How far ahead (s) the motion is looked at once, at most: the stretch starts at its first step and doubles each
-    ' time its end is reached (as IntegratedMotion's).
-    Private Const Lookahead As Double = 0.1
 
     Private ReadOnly _links As Link()
     Private ReadOnly _gravity As Double
@@ -31,10 +28,9 @@ Friend NotInheritable Class SpringPairMotion
     Private ReadOnly _centreVelocity As Vector
     ' The separation r and its rate (m, m/s), integrated.
     Private ReadOnly _path As QuinticTrajectory
-    ' The first step (s), and the end of the stretch looked at so far (s, absolute): the contact searches stop there,
-    ' so that a stiff spring's pair, made anew at each collision, is integrated only as far as the next one needs.
-    Private ReadOnly _firstStep As Double
-    Private _lookedTo As Double
+    ' The stretch looked at so far: the contact searches stop at its end, so that a stiff spring's pair, made anew at
+    ' each collision, is integrated only as far as the next one needs.
+    Private ReadOnly _lookahead As Lookahead
 
     ''' <summary>Whether the group is two bodies joined only by springs between them (none to a fixed point).</summary>
     Friend Shared Function Fits(group As LinkedGroup) As Boolean
@@ -58,9 +54,9 @@ Friend NotInheritable Class SpringPairMotion
         For Each l In _links
             fastest = Math.Max(fastest, Math.Sqrt(l.Stiffness / _reduced))
         Next
-        _firstStep = If(fastest > 0, 0.06 / fastest, 0.001)
-        _lookedTo = startTime + _firstStep
-        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, {r.X, r.Y, w.X, w.Y}, startTime, _firstStep, RelativeTolerance, AbsoluteTolerance,
+        Dim firstStepSeconds = If(fastest > 0, 0.06 / fastest, 0.001)
+        _lookahead = New Lookahead(startTime, firstStepSeconds)
+        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, {r.X, r.Y, w.X, w.Y}, startTime, firstStepSeconds, RelativeTolerance, AbsoluteTolerance,
                                       rounding:=AddressOf Rounding)
     End Sub
 
@@ -72,13 +68,13 @@ Friend NotInheritable Class SpringPairMotion
     ''' </summary>
     Friend Overrides ReadOnly Property TransitionTime As Double
         Get
-            Return _lookedTo
+            Return _lookahead.EndTimeSeconds
         End Get
     End Property
 
-    ''' <summary>Looks twice as far from the start (at most <see cref="Lookahead"/> more) and goes on as it was.</summary>
+    ''' <summary>Looks twice as far from the start (<see cref="Lookahead.LookFurther"/>) and goes on as it was.</summary>
     Friend Overrides Function LookFurther(time As Double) As Boolean
-        _lookedTo = time + Math.Min(Lookahead, Math.Max(time - StartTime, _firstStep))
+        _lookahead.LookFurther(time)
         Return True
     End Function
 
