@@ -64,11 +64,8 @@ Friend NotInheritable Class EquilibriumCheck
 
     ''' <summary>
     ''' Whether body i, brought to rest where it is now, would be held there with its cluster of bodies at rest.
-    ''' When the cluster was solved and is not held, <see cref="Solved"/> is True and the cluster, its rows and
-    ''' each body's acceleration and each row's force stay readable until the next call.
     ''' </summary>
     Friend Function Holds(i As Integer, Optional quick As Boolean = True) As Boolean
-        Solved = False
         If _s.G = 0 Then Return True
         If quick AndAlso Not HeldByItsOwnContacts(i) Then Return False
         Gather(i)
@@ -81,51 +78,10 @@ Friend NotInheritable Class EquilibriumCheck
         _solve.Solve(_inverseMass, _free, _rows, ContactSolve.ApproachTolerance * _s.G, _result, _forces)
         Dim limit = RestingAcceleration()
         For k = 0 To n - 1
-            If Not (_result(k).Length <= limit) Then
-                Solved = True
-                Return False
-            End If
+            If Not (_result(k).Length <= limit) Then Return False
         Next
         Return True
     End Function
-
-    ''' <summary>True after <see cref="Holds"/> solved a cluster that is not held: its data below are readable.</summary>
-    Friend Property Solved As Boolean
-
-    ''' <summary>The last cluster's bodies (solver numbers; the first is the body asked about).</summary>
-    Friend ReadOnly Property Members As List(Of Integer)
-        Get
-            Return _members
-        End Get
-    End Property
-
-    ''' <summary>Each member's inverse mass, 1/kg.</summary>
-    Friend ReadOnly Property InverseMasses As List(Of Double)
-        Get
-            Return _inverseMass
-        End Get
-    End Property
-
-    ''' <summary>The last cluster's contact rows (A and B are places in <see cref="Members"/>).</summary>
-    Friend ReadOnly Property Rows As List(Of ContactRow)
-        Get
-            Return _rows
-        End Get
-    End Property
-
-    ''' <summary>Each member's acceleration in the last cluster under gravity and the contact forces, m/s².</summary>
-    Friend ReadOnly Property Accelerations As Vector()
-        Get
-            Return _result
-        End Get
-    End Property
-
-    ''' <summary>Each row's force in the last cluster, N (≥ 0; &gt; 0 where the contact presses).</summary>
-    Friend ReadOnly Property Forces As Double()
-        Get
-            Return _forces
-        End Get
-    End Property
 
     ''' <summary>
     ''' A quick necessary test: body i alone, with everything it touches held still, can be held only if the

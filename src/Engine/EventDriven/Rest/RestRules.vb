@@ -778,23 +778,6 @@ Friend NotInheritable Class RestRules
     End Function
 
     ''' <summary>
-    ''' After a cluster was found not held: its sleeping members that the contact forces do not hold fly again,
-    ''' so that what leant on them can move as the forces say rather than chatter against bodies that would give way.
-    ''' </summary>
-    Private Sub WakeUnheld()
-        Dim members = _equilibrium.Members
-        Dim accelerations = _equilibrium.Accelerations
-        Dim limit = _equilibrium.RestingAcceleration()
-        For k = 1 To members.Count - 1
-            Dim j = members(k)
-            If _bodies.Mode(j) <> BodyMode.Sleeping OrElse accelerations(k).Length <= limit Then Continue For
-            _s.Sync(j)
-            MakeFree(j)
-            _s.Changed(j)
-        Next
-    End Sub
-
-    ''' <summary>
     ''' Whether body j, not asleep, is slow enough now to be settling with a pile (below the speed at which a
     ''' body outside a burst may sleep): only such a body can hold another up. One faster than that is on its
     ''' way somewhere, and what slept on it would be left hanging in the air when it goes.
