@@ -39,14 +39,14 @@ Friend NotInheritable Class IntegratedMotion
             y(4 * k + 2) = bodies(k).Velocity.X
             y(4 * k + 3) = bodies(k).Velocity.Y
         Next
-        ' A first step of a hundredth of the fastest spring's period; the error control corrects it at once.
+        ' The fastest spring's angular frequency (rad/s), for the first step.
         Dim fastest = 0.0
         For Each l In links
             For Each b In bodies
                 If l.A Is b OrElse l.B Is b Then fastest = Math.Max(fastest, Math.Sqrt(l.Stiffness / b.Mass))
             Next
         Next
-        Dim firstStepSeconds = If(fastest > 0, 0.06 / fastest, 0.001)
+        Dim firstStepSeconds = Lookahead.FirstStepSeconds(fastest)
         _lookahead = New Lookahead(startTime, firstStepSeconds)
         _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, y, startTime, firstStepSeconds, RelativeTolerance, AbsoluteTolerance,
                                       rounding:=AddressOf Rounding)

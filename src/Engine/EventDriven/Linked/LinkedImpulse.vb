@@ -68,7 +68,7 @@ Friend NotInheritable Class LinkedImpulse
     ''' <summary>The contact: <paramref name="a"/> touches <paramref name="b"/> (Nothing: a wall or a fixed body) with <paramref name="normal"/> from a towards b.</summary>
     Friend Sub AddContact(a As Shape, b As Shape, normal As Vector, restitution As Double)
         Dim row As New Row With {.A = IndexOf(a), .B = If(b Is Nothing, -1, IndexOf(b)), .U = normal, .Sign = 1, .IsContact = True, .Restitution = restitution}
-        row.Target = -restitution * Math.Min(SeparationSpeed(row), 0)
+        row.Target = ArrivalTarget(row)
         _rows.Add(row)
     End Sub
 
@@ -149,6 +149,11 @@ Friend NotInheritable Class LinkedImpulse
         Return If(i >= 0, _bodies(i).InverseMass, 0)
     End Function
 
+    ''' <summary>Newton's rule for a contact being resolved: it leaves at e times the speed it arrives at now (m/s; 0 when it does not approach).</summary>
+    Private Function ArrivalTarget(row As Row) As Double
+        Return -row.Restitution * Math.Min(SeparationSpeed(row), 0)
+    End Function
+
     ''' <summary>
     ''' Puts the held links' separation speeds to 0 exactly: the velocities closest to those now (kinetic-energy metric)
     ''' at which no held link's ends separate or approach. That projection takes the energy of the change away and adds
@@ -178,7 +183,7 @@ Friend NotInheritable Class LinkedImpulse
         For i = 0 To _rows.Count - 1
             Dim r = _rows(i)
             If Not r.IsContact OrElse r.Held OrElse r.Restitution = 0 Then Continue For
-            r.Target = -r.Restitution * Math.Min(SeparationSpeed(r), 0)
+            r.Target = ArrivalTarget(r)
             _rows(i) = r
         Next
     End Sub

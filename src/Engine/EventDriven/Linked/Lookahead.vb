@@ -33,6 +33,15 @@ Friend NotInheritable Class Lookahead
         End Get
     End Property
 
+    ''' <summary>
+    ''' The first step (s) of an integrator of springs whose fastest angular frequency is
+    ''' <paramref name="fastestRadiansPerSecond"/> (rad/s; 0 for none): a hundredth of that spring's period, or 1 ms;
+    ''' the error control corrects it at once.
+    ''' </summary>
+    Friend Shared Function FirstStepSeconds(fastestRadiansPerSecond As Double) As Double
+        Return If(fastestRadiansPerSecond > 0, 0.06 / fastestRadiansPerSecond, 0.001)
+    End Function
+
     ''' <summary>At <paramref name="timeSeconds"/> (s, absolute), the end reached: looks twice as far from the start (at least the first step more, at most <see cref="LongestStretchSeconds"/>).</summary>
     Friend Sub LookFurther(timeSeconds As Double)
         _endTimeSeconds = StretchEnd(_startTimeSeconds, timeSeconds, _firstStepSeconds)

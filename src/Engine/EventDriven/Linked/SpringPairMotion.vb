@@ -49,12 +49,12 @@ Friend NotInheritable Class SpringPairMotion
         _centre = (a.Mass / total) * a.CentreOfMass + (b.Mass / total) * b.CentreOfMass
         _centreVelocity = (a.Mass / total) * a.Velocity + (b.Mass / total) * b.Velocity
         Dim r = b.CentreOfMass - a.CentreOfMass, w = b.Velocity - a.Velocity
-        ' A first step of a hundredth of the fastest spring's period; the error control corrects it at once.
+        ' The fastest spring's angular frequency (rad/s), for the first step.
         Dim fastest = 0.0
         For Each l In _links
             fastest = Math.Max(fastest, Math.Sqrt(l.Stiffness / _reduced))
         Next
-        Dim firstStepSeconds = If(fastest > 0, 0.06 / fastest, 0.001)
+        Dim firstStepSeconds = Lookahead.FirstStepSeconds(fastest)
         _lookahead = New Lookahead(startTime, firstStepSeconds)
         _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, {r.X, r.Y, w.X, w.Y}, startTime, firstStepSeconds, RelativeTolerance, AbsoluteTolerance,
                                       rounding:=AddressOf Rounding)
