@@ -28,6 +28,8 @@ Friend NotInheritable Class EquilibriumCheck
     Private _neighbours As Integer() = Array.Empty(Of Integer)()
     Private _result As Vector() = Array.Empty(Of Vector)()
     Private _forces As Double() = Array.Empty(Of Double)()
+    ' Whether the sleeping bodies the asked body touches join the cluster as movable bodies (Holds' sleepersMove).
+    Private _sleepersMove As Boolean
     ' Normals of the asked body's own contacts (the quick first test).
     Private ReadOnly _ownNormals As New List(Of Vector)
 
@@ -64,9 +66,13 @@ Friend NotInheritable Class EquilibriumCheck
 
     ''' <summary>
     ''' Whether body i, brought to rest where it is now, would be held there with its cluster of bodies at rest.
+    ''' With <paramref name="sleepersMove"/>, the sleeping bodies body i touches join the cluster as movable bodies
+    ''' too (those they touch in turn still hold as fixed ones): a ball asleep on a frictionless floor holds up what
+    ''' leans on it only if something holds it from the side.
     ''' </summary>
-    Friend Function Holds(i As Integer, Optional quick As Boolean = True) As Boolean
+    Friend Function Holds(i As Integer, Optional quick As Boolean = True, Optional sleepersMove As Boolean = False) As Boolean
         If _s.G = 0 Then Return True
+        _sleepersMove = sleepersMove
         If quick AndAlso Not HeldByItsOwnContacts(i) Then Return False
         Gather(i)
         For Each k In _members
@@ -158,7 +164,7 @@ Friend NotInheritable Class EquilibriumCheck
             Dim pairGap = 1.0E-3 * Math.Max(b.Size(k).Scale, b.Size(j).Scale) + Math.Max(SolverState.SlopAt(p.X, p.Y), SolverState.SlopAt(pj.X, pj.Y))
             Dim c = ContactRules.OverlapWithBody(_s, k, j, p, pj)
             If c.Depth < -pairGap Then Continue For
-            If b.Mode(j) = BodyMode.Sleeping Then
+            If b.Mode(j) = BodyMode.Sleeping AndAlso Not (_sleepersMove AndAlso slot.HasValue AndAlso slot.Value = 0) Then
                 AddFixed(slot, c.Normal)
                 Continue For
             End If

@@ -1,0 +1,74 @@
+Option Strict On
+Imports PhysicsEngine
+Imports PhysicsEngine.Scenes
+Imports Xunit
+
+''' <summary>
+''' A ball settling on two balls that stand on a frictionless floor. Its weight pushes them apart along the
+''' contact normals; the floor pushes only upwards, so unless something holds them from the side (a wall, a
+''' neighbour) they slide apart and the ball drops between them to the floor. Held from the side, the three
+''' are at rest and sleep.
+''' </summary>
+Public Class RestOnLooseSupportTests
+    ''' <summary>
+    ''' tests/cases/event-ball-asleep-in-loose-vee.json: two 1 kg balls (r = 5 cm) on the floor 3 cm apart, a
+    ''' third dropped onto the V between them (e = 0.3). It used to sleep in the V at y = 0.126 m, the two
+    ''' below never moving. At 5 s it lies on the floor.
+    ''' </summary>
+    <Fact>
+    Public Sub BallDroppedIntoTheVOfTwoLooseBalls_PushesThemApart_AndReachesTheFloor()
+        AssertTopEndsOnTheFloor(SceneFile.LoadFile(TestRepo.CaseFile("event-ball-asleep-in-loose-vee.json")))
+    End Sub
+
+    ''' <summary>The same with other restitutions and the drop a little off the V's centre (m).</summary>
+    <Theory>
+    <InlineData(0.0, 0.0)>
+    <InlineData(0.003, 0.3)>
+    <InlineData(-0.01, 0.6)>
+    Public Sub BallDroppedIntoTheVOfTwoLooseBalls_ReachesTheFloor_WhateverTheOffset(offset As Double, restitution As Double)
+        Dim w As New World(1, 1, 9.81, restitution)
+        w.Add(New Circle(New Vector(0.435, 0.05), 0.05, 1, id:="left"))
+        w.Add(New Circle(New Vector(0.565, 0.05), 0.05, 1, id:="right"))
+        w.Add(New Circle(New Vector(0.5 + offset, 0.3), 0.05, 1, id:="top"))
+        AssertTopEndsOnTheFloor(w)
+    End Sub
+
+    ''' <summary>
+    ''' The two below touch the side walls of a box 26 cm wide, so the walls hold them from the side: the ball
+    ''' comes to rest in the V where it touches both, (0.13, 0.05 + √(0.1² − 0.08²)) = (0.13, 0.11) m, and the
+    ''' three sleep there.
+    ''' </summary>
+    <Fact>
+    Public Sub BallDroppedIntoTheVOfTwoBallsHeldByWalls_SleepsInTheV()
+        Dim w As New World(0.26, 1, 9.81, 0.3)
+        Dim left = New Circle(New Vector(0.05, 0.05), 0.05, 1, id:="left")
+        Dim right = New Circle(New Vector(0.21, 0.05), 0.05, 1, id:="right")
+        Dim top = New Circle(New Vector(0.13, 0.3), 0.05, 1, id:="top")
+        w.Add(left)
+        w.Add(right)
+        w.Add(top)
+        Dim solver = EventSolverTestKit.UseEventSolver(w)
+        Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+        For k = 1 To 10
+            w.Advance(0.5)
+            EventSolverTestKit.AssertNoEnergyGainNorOverlap(w, e0)
+        Next
+        Assert.True(solver.IsAsleep(top), "the top ball is still awake at t = 5 s")
+        Assert.True(Math.Abs(top.Position.X - 0.13) <= 0.0001 AndAlso Math.Abs(top.Position.Y - 0.11) <= 0.0001,
+                    $"the top ball is at {top.Position} m at t = 5 s, not in the V at (0.13, 0.11)")
+        Assert.Equal(0.05, left.Position.X, 12)
+        Assert.Equal(0.21, right.Position.X, 12)
+    End Sub
+
+    ''' <summary>Runs the scene 5 s (energy never gained, no overlap), then asserts that the ball "top" lies on the floor (to 10⁻⁹ m).</summary>
+    Private Shared Sub AssertTopEndsOnTheFloor(w As World)
+        EventSolverTestKit.UseEventSolver(w)
+        Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
+        For k = 1 To 10
+            w.Advance(0.5)
+            EventSolverTestKit.AssertNoEnergyGainNorOverlap(w, e0)
+        Next
+        Dim top = w.Circles.Single(Function(c) c.Id = "top")
+        Assert.True(Math.Abs(top.Position.Y - top.Radius) <= 0.000000001, $"the top ball is at y = {top.Position.Y} m at t = 5 s, not on the floor")
+    End Sub
+End Class
