@@ -94,10 +94,7 @@ Public Class EventHardCaseTests
         w.Add(Circle.CreateFixed(New Vector(8, 8), 0.5))
         Dim solver = UseEventSolver(w)
         solver.MaxEventsPerAdvance = 2000000
-        For k = 1 To 10
-            w.Advance(0.3)
-            Assert.True(DeepestOverlap(w) <= 1.0E-9, $"overlap {DeepestOverlap(w)} at {w.Time}")
-        Next
+        RunChecked(w, 3, 0.3, maxOverlap:=1.0E-9)
         For Each c In w.Circles
             Assert.True(c.Position.IsFinite AndAlso c.Velocity.IsFinite)
         Next
@@ -105,11 +102,6 @@ Public Class EventHardCaseTests
 
     <Fact>
     Public Sub Demo_RunsWithoutOverlap()
-        Dim w = Scenarios.Demo()
-        Dim solver = UseEventSolver(w)
-        For k = 1 To 20
-            w.Advance(0.5)
-            Assert.True(DeepestOverlap(w) <= 1.0E-9, $"overlap {DeepestOverlap(w)} at {w.Time}")
-        Next
+        RunEventSolverChecked(Scenarios.Demo(), 10, 0.5, maxOverlap:=1.0E-9)
     End Sub
 End Class

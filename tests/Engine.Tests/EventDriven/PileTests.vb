@@ -72,12 +72,7 @@ Public Class PileTests
         ' of their fall: counted as dissipated. Looked at often or seldom, the runs differ in rounding.
         Dim w = Scenarios.BoxPile(200, 3.0, 0.3)
         Dim solver = UseEventSolver(w)
-        Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
-        For k = 1 To 8 * looksPerSecond
-            w.Advance(1.0 / looksPerSecond)
-            Dim books = w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated
-            Assert.True(Math.Abs(books - e0) <= 1.0E-12 * e0, $"t = {w.Time} s: KE + PE + dissipated − E0 = {books - e0} J")
-        Next
+        RunChecked(w, 8, 1.0 / looksPerSecond, EnergyLaw.PlusDissipatedKept(1.0E-12))
         Dim boxes = w.Rectangles
         Dim asleep = boxes.Where(Function(a) solver.IsAsleep(a)).ToList()
         Assert.Equal(200, asleep.Count)
@@ -101,12 +96,6 @@ Public Class PileTests
     <InlineData("galton")>
     Public Sub EnergyNeverRises_InAPileOrAGaltonBoard(scene As String)
         Dim w = If(scene = "pile", Scenarios.Pile(40, 0.3), Scenarios.GaltonBoard(500, 12, 20, 10))
-        UseEventSolver(w)
-        Dim e0 = w.KineticEnergy() + w.PotentialEnergy()
-        For k = 1 To 200
-            w.Advance(0.1)
-            Dim books = w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated
-            Assert.True(books - e0 <= 1.0E-9 * e0, $"t = {w.Time} s: KE + PE + dissipated − E0 = {books - e0} J (E0 = {e0} J)")
-        Next
+        RunEventSolverChecked(w, 20, 0.1, EnergyLaw.NeverGained(1.0E-9))
     End Sub
 End Class
