@@ -66,6 +66,13 @@ Friend NotInheritable Class ConstraintSet
         Next
     End Sub
 
+    ''' <summary>Whether the bodies the rows move differ in inverse mass by more than <see cref="SpreadRatio"/> (see <see cref="IsSpread"/>).</summary>
+    Friend ReadOnly Property Spread As Boolean
+        Get
+            Return _spread
+        End Get
+    End Property
+
     ''' <summary>The constraints, in the order of the forces.</summary>
     Friend ReadOnly Property Rows As Constraint()
         Get
@@ -282,6 +289,51 @@ Friend NotInheritable Class ConstraintSet
         Solve(c)
         Apply(state, c, 2)
     End Sub
+
+    ''' <summary>
+    ''' Takes from <paramref name="values"/> (laid out as a state: per body x, y, vx, vy) the part the constraints fix
+    ''' at <paramref name="state"/>: in the positions and in the velocities each, the least mass-weighted change that
+    ''' leaves J × values = 0, as <see cref="ProjectRates"/> takes away ψ̇. What is left moves the bodies only as the
+    ''' constraints let them move. False, <paramref name="values"/> as it was, when a row slides (its force is not
+    ''' along its normal, and the least change in that metric is not the one the forces make).
+    ''' </summary>
+    Friend Function TryRemoveHeld(state As Double(), values As Double()) As Boolean
+        Dim m = _rows.Length
+        If m = 0 Then Return True
+        If _slides Then Return False
+        For i = 0 To m - 1
+            Dim u As Vector, value As Double, rate As Double, curvature As Double
+            _rows(i).Measure(state, u, value, rate, curvature)
+            _nx(i) = u.X
+            _ny(i) = u.Y
+        Next
+        ' Bodies of very different masses: the orthogonalised solve, as the forces are found (see SolveSpread).
+        Dim spread = _spread AndAlso Not FactorsWell()
+        If Not _spread Then Factor()
+        Dim n = _inverseMass.Length
+        For Each offset In {0, 2}
+            Dim c(m - 1) As Double
+            For i = 0 To m - 1
+                Dim r = _rows(i)
+                Dim ax = values(4 * r.A + offset), ay = values(4 * r.A + offset + 1)
+                Dim bx = If(r.B >= 0, values(4 * r.B + offset), 0.0), by = If(r.B >= 0, values(4 * r.B + offset + 1), 0.0)
+                c(i) = _nx(i) * (bx - ax) + _ny(i) * (by - ay)
+            Next
+            If spread Then
+                ' SolveSpread adds its change in the velocity places of a state's layout.
+                Dim change(4 * n - 1) As Double
+                SolveSpread(c, change)
+                For k = 0 To n - 1
+                    values(4 * k + offset) += change(4 * k + 2)
+                    values(4 * k + offset + 1) += change(4 * k + 3)
+                Next
+            Else
+                Solve(c)
+                Apply(values, c, offset)
+            End If
+        Next
+        Return True
+    End Function
 
     ''' <summary>The largest |ψ| ÷ scale over the constraints, and the largest |ψ̇| (m/s).</summary>
     Friend Sub Drift(state As Double(), ByRef lengthError As Double, ByRef rateError As Double)
