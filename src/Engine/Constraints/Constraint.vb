@@ -235,13 +235,32 @@ Friend NotInheritable Class Constraint
     ''' Negative once it has left; +∞ where there is no bound.
     ''' </summary>
     Friend Function Margin(state As Double()) As Double
-        If Not Bounded Then Return Double.PositiveInfinity
+        Dim first As Double, second As Double
+        EndMargins(state, first, second)
+        Return Math.Min(first, second)
+    End Function
+
+    ''' <summary>
+    ''' The two parts of <see cref="Margin"/>, one for each end of the feature's region (m): along a face, how far d
+    ''' is past its first vertex and short of its last; at a corner, how far past the edge before it and short of the
+    ''' edge after it. +∞ both where there is no bound. A contact that starts at one end moving onto the feature
+    ''' leaves it, if at all, by the other end: the two are watched apart.
+    ''' </summary>
+    Friend Sub EndMargins(state As Double(), ByRef first As Double, ByRef second As Double)
+        If Not Bounded Then
+            first = Double.PositiveInfinity
+            second = Double.PositiveInfinity
+            Return
+        End If
         Dim d = Difference(state)
         If Shape = ConstraintShape.Plane Then
             Dim s = Vector.Dot(d - From, Along)
-            Return Math.Min(s, Extent - s)
+            first = s
+            second = Extent - s
+            Return
         End If
         Dim r = d - Normal
-        Return Math.Min(Vector.Dot(r, From), -Vector.Dot(r, Along))
-    End Function
+        first = Vector.Dot(r, From)
+        second = -Vector.Dot(r, Along)
+    End Sub
 End Class

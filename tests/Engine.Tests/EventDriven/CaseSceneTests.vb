@@ -150,6 +150,21 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' A 2 t ball on a string to an 89 t ball (a random scene, 7 bodies, e = 0.59, g = 36), advanced 0.05 s at a
+    ''' time. At t = 0.198 s the 2 t ball, sliding at 12.6 m/s, comes onto the 2.5 cm top face of a fixed box exactly
+    ''' at its end. Its contact's margin on the face (the distance to the nearer end) was 0 there, so it was judged
+    ''' to leave the face at once, was held on the same face again, and so on: "could not get past t = 0.1978905858305924 s
+    ''' with links (100001 events within a nanosecond)". Each end of the face is now watched apart: it leaves by the
+    ''' far end, 2 ms later.
+    ''' </summary>
+    <Fact>
+    Public Sub BallComingOntoAShortFaceAtItsEnd_CrossesIt_NotHeldAndLetGoForEver()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-ball-crossing-short-face-from-its-end.json"))
+        EventSolverTestKit.RunEventSolverChecked(w, 0.5, 0.05, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
+        Assert.Equal(0.5, w.Time, 12)
+    End Sub
+
+    ''' <summary>
     ''' 17 bodies of every kind with friction, strings and springs (a random scene). Advanced 0.05 s at a time, a
     ''' group integrated under its springs was asked for its bounds over a search that ended where it began, before
     ''' it had taken a step, and the run stopped with "Index was out of range" in its first 0.05 s. The bounds over

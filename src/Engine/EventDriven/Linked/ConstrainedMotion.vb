@@ -447,11 +447,8 @@ Friend NotInheritable Class ConstrainedMotion
                 End If
             End If
             If row.Bounded Then
-                Dim m0 = row.Margin(_states(j)), m1 = row.Margin(_states(j + 1))
-                If m1 < 0 Then
-                    Dim root = If(m0 <= 0, t0, ScalarRoot.Brent(Function(t) row.Margin(StateArray(t)), t0, t1, m0, m1))
-                    Keep(root, row, ConstraintEvent.Leaves)
-                End If
+                Dim root = LeavingTime(row, j)
+                If root <= t1 Then Keep(root, row, ConstraintEvent.Leaves)
             End If
         Next
         ' Friction: a sliding contact that stops sliding, a sticking one whose pull outgrows μs times its push.
@@ -491,11 +488,8 @@ Friend NotInheritable Class ConstrainedMotion
                 Keep(root, row, ConstraintEvent.Opens)
             End If
             If row.Bounded Then
-                Dim m0 = row.Margin(_states(j)), m1 = row.Margin(_states(j + 1))
-                If m1 < 0 Then
-                    Dim root = If(m0 <= 0, t0, ScalarRoot.Brent(Function(t) row.Margin(StateArray(t)), t0, t1, m0, m1))
-                    Keep(root, row, ConstraintEvent.Leaves)
-                End If
+                Dim root = LeavingTime(row, j)
+                If root <= t1 Then Keep(root, row, ConstraintEvent.Leaves)
             End If
         Next
         For i = 0 To _slack.Length - 1
@@ -519,6 +513,35 @@ Friend NotInheritable Class ConstrainedMotion
             End If
         Next
     End Sub
+
+    ''' <summary>
+    ''' When in step j a bounded contact leaves its face or corner (<see cref="Constraint.EndMargins"/>), or +∞ if it
+    ''' stays on. Each end is watched apart: a contact that starts exactly at one end, moving onto the face, has a
+    ''' margin of 0 there, and judged by the nearer end alone (the least of the two) it would leave at once, be held
+    ''' again on the same face, and leave again, for ever; it leaves by the far end, where that end's margin turns
+    ''' negative. One that starts at or past an end and is still past it at the step's end leaves at the start.
+    ''' </summary>
+    Private Function LeavingTime(row As Constraint, j As Integer) As Double
+        Dim t0 = _times(j), t1 = _times(j + 1)
+        Dim first0, second0, first1, second1 As Double
+        row.EndMargins(_states(j), first0, second0)
+        row.EndMargins(_states(j + 1), first1, second1)
+        Dim best = Double.PositiveInfinity
+        If first1 < 0 Then
+            best = Math.Min(best, If(first0 <= 0, t0, ScalarRoot.Brent(Function(t) EndMargin(row, t, True), t0, t1, first0, first1)))
+        End If
+        If second1 < 0 Then
+            best = Math.Min(best, If(second0 <= 0, t0, ScalarRoot.Brent(Function(t) EndMargin(row, t, False), t0, t1, second0, second1)))
+        End If
+        Return best
+    End Function
+
+    ''' <summary>One end's part of a bounded contact's margin (m) at <paramref name="time"/>.</summary>
+    Private Function EndMargin(row As Constraint, time As Double, first As Boolean) As Double
+        Dim a As Double, b As Double
+        row.EndMargins(StateArray(time), a, b)
+        Return If(first, a, b)
+    End Function
 
     ''' <summary>A contact's ψ (m) at state <paramref name="y"/>: its gap, negative when pressed in.</summary>
     Private Shared Function Gap(row As Constraint, y As Double()) As Double
