@@ -14,9 +14,11 @@ Public Module StepStability
     ''' <summary>ω h at and beyond which semi-implicit Euler and Verlet are unstable on a spring.</summary>
     Public Const Limit As Double = 2.0
 
-    ''' <summary>Nothing, or a line naming the spring with the largest ω h when that is at least <see cref="Limit"/>, with its figures.</summary>
-    ''' <param name="stepSize">the solver's step h, s</param>
-    Public Function BeyondLimit(world As World, stepSize As Double) As String
+    ''' <summary>
+    ''' The spring with the largest ω h at the step <paramref name="stepSize"/> (s), and that ω h; (Nothing, 0) when the
+    ''' world has no spring. It is beyond the method's limit when ω h ≥ <see cref="Limit"/>.
+    ''' </summary>
+    Public Function Stiffest(world As World, stepSize As Double) As (Spring As Link, OmegaH As Double)
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
         Dim worst = 0.0
         Dim found As Link = Nothing
@@ -29,9 +31,16 @@ Public Module StepStability
                 found = l
             End If
         Next
-        If worst < Limit Then Return Nothing
+        Return (found, worst)
+    End Function
+
+    ''' <summary>Nothing, or a line naming the spring with the largest ω h when that is at least <see cref="Limit"/>, with its figures.</summary>
+    ''' <param name="stepSize">the solver's step h, s</param>
+    Public Function BeyondLimit(world As World, stepSize As Double) As String
+        Dim s = Stiffest(world, stepSize)
+        If s.OmegaH < Limit Then Return Nothing
         Dim inv = CultureInfo.InvariantCulture
-        Return "spring " & found.Id & " has ω h = " & worst.ToString("G4", inv) & " (k = " & found.Stiffness.ToString("G4", inv) & " N/m, ω = " &
-            (worst / stepSize).ToString("G4", inv) & " rad/s, h = " & stepSize.ToString("R", inv) & " s), beyond the stability limit ω h < 2 of an explicit step"
+        Return "spring " & s.Spring.Id & " has ω h = " & s.OmegaH.ToString("G4", inv) & " (k = " & s.Spring.Stiffness.ToString("G4", inv) & " N/m, ω = " &
+            (s.OmegaH / stepSize).ToString("G4", inv) & " rad/s, h = " & stepSize.ToString("R", inv) & " s), beyond the stability limit ω h < 2 of an explicit step"
     End Function
 End Module
