@@ -62,7 +62,7 @@ Friend NotInheritable Class LessonBook
         _files.OpenScene(lesson.Path)
         If ReferenceEquals(_stage.World, before) Then Return ' OpenScene's message says why
         _stage.Emit("lesson " & lesson.FileName & ": " & lesson.Title)
-        _stage.ShowMessage(If(lesson.Summary.Length = 0, lesson.Title & ".", lesson.Title & ": " & lesson.Summary))
+        _stage.ShowMessage(If(lesson.Summary.Length = 0, lesson.Title & ".", lesson.Title & ": " & lesson.Summary) & SolverChoice.StiffSpringAddendum(_stage.World))
     End Sub
 
     ''' <summary>
@@ -110,7 +110,7 @@ Friend NotInheritable Class LessonBook
                 _stage.Inputs.ContainerWidthText = typedWidth
                 _stage.Inputs.ContainerHeightText = typedHeight
                 _stage.Emit("restarted: " & w.Bodies.Count & " bodies")
-                _stage.ShowMessage("Restarted: every body is back where the scene started, and the clock at 0.")
+                _stage.ShowMessage("Restarted: every body is back where the scene started, and the clock at 0." & SolverChoice.StiffSpringAddendum(w))
                 _stage.TakeSnapshot()
                 _stage.Window.ShowSettings()
             End Sub)

@@ -45,7 +45,7 @@ Friend NotInheritable Class SceneFiles
             Sub()
                 _stage.Present(loaded)
                 _stage.Emit("opened " & SafeName(path) & ": " & loaded.Bodies.Count & " bodies")
-                _stage.ShowMessage("Opened " & SafeName(path) & "." & If(loaded.Walls, "", " This scene has no walls: balls can leave the box."))
+                _stage.ShowMessage("Opened " & SafeName(path) & "." & If(loaded.Walls, "", " This scene has no walls: balls can leave the box.") & SolverChoice.StiffSpringAddendum(loaded))
                 _stage.TakeSnapshot()
                 _stage.Window.ShowInputs()
                 _stage.Window.ShowSettings()

@@ -1348,6 +1348,7 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' Moves the scene with the solver <paramref name="name"/> from now on (one of
     ''' <see cref="SolverChoice.Names"/>), and starts every new scene and Restart with it: choose one and
     ''' press Restart to run the same start again with it, and compare. Anything else is refused with a message.
+    ''' A stepping solver on a spring too stiff for its step is told in the message (<see cref="SolverChoice.StiffSpringWarning"/>).
     ''' </summary>
     Public Sub ChooseSolver(name As String)
         If Not SolverChoice.Names.Contains(name) Then
@@ -1359,7 +1360,8 @@ Partial Public NotInheritable Class SimulationPresenter
                 _solverChoice = name
                 _time.UseSolver(name)
                 Emit("solver " & name)
-                ShowMessage(SolverChoice.Title(name) & " from now: " & SolverChoice.ShortPurpose(name) & ". " & RestartCaption.TrimStart("↺"c, " "c) & " (" & RestartKey & ") runs the same start with it, to compare.")
+                ShowMessage(SolverChoice.Title(name) & " from now: " & SolverChoice.ShortPurpose(name) & ". " & RestartCaption.TrimStart("↺"c, " "c) & " (" & RestartKey & ") runs the same start with it, to compare." &
+                    SolverChoice.StiffSpringAddendum(World))
                 TakeSnapshot()
                 _window.ShowSettings()
             End Sub)

@@ -61,4 +61,27 @@ Public Module SolverChoice
         End Select
         Return ""
     End Function
+
+    ''' <summary>
+    ''' "" or, when <paramref name="world"/> runs with a stepping solver (Verlet, Euler) and has a spring too stiff
+    ''' for its step (ω h ≥ 2, see <see cref="StepStability"/>), a sentence for a teacher saying so: "Spring s is
+    ''' too stiff for this step: ω h = 4.5 …, and a step method is stable only below 2, so its swing will grow
+    ''' without bound. The exact solver follows it."
+    ''' </summary>
+    Public Function StiffSpringWarning(world As World) As String
+        If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))
+        Dim h = world.Solver?.TimeStep
+        If Not h.HasValue Then Return ""
+        Dim worst = StepStability.Stiffest(world, h.Value)
+        If worst.Spring Is Nothing OrElse worst.OmegaH < StepStability.Limit Then Return ""
+        Return "Spring " & worst.Spring.Id & " is too stiff for this step: ω h = " & Units.Sig(worst.OmegaH, 2) &
+            " (how fast it swings, ω = " & Units.Quantity(worst.OmegaH / h.Value, "rad/s") & ", times the step h = " & Units.Quantity(h.Value * 1000, "ms") &
+            "), and a step method is stable only below 2, so its swing will grow without bound. The exact solver follows it."
+    End Function
+
+    ''' <summary>"", or a space and <see cref="StiffSpringWarning"/>: what a message about the run adds.</summary>
+    Friend Function StiffSpringAddendum(world As World) As String
+        Dim warning = StiffSpringWarning(world)
+        Return If(warning.Length = 0, "", " " & warning)
+    End Function
 End Module

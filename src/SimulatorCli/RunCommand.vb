@@ -80,18 +80,33 @@ Friend Module RunCommand
         End If
         states?.Writer.WriteLine(StatesHeader)
         series?.Writer.WriteLine(SeriesHeader)
+        Dim warning = StabilityWarning(world)
         Dim clock = Stopwatch.StartNew()
         For Each t In SampleTimes(o.Time, o.Sample)
             Try
                 world.Advance(t - world.Time)
+            Catch ex As SpeedLimitException When warning IsNot Nothing
+                ' The run blew up, as a step beyond the limit does: say why.
+                Throw New SpeedLimitException(ex.Message & "; " & warning, ex)
             Catch ex As Exception When Not TypeOf ex Is OutOfMemoryException AndAlso Not TypeOf ex Is SpeedLimitException AndAlso Not TypeOf ex Is UnsupportedSceneException
-                Throw New InvalidOperationException("the " & world.Solver.Name & " solver failed between t = " & CsvText.Number(world.Time) & " s and t = " & CsvText.Number(t) & " s: " & ex.Message, ex)
+                Throw New InvalidOperationException("the " & world.Solver.Name & " solver failed between t = " & CsvText.Number(world.Time) & " s and t = " & CsvText.Number(t) & " s: " & ex.Message &
+                    If(warning Is Nothing, "", "; " & warning), ex)
             End Try
             If states IsNot Nothing Then WriteStates(states.Writer, t, movable)
             If series IsNot Nothing Then WriteTotals(series.Writer, t, world)
         Next
         clock.Stop()
-        Return New RunSummary(o, world, movable.Count, clock.Elapsed.TotalSeconds)
+        Return New RunSummary(o, world, movable.Count, clock.Elapsed.TotalSeconds, warning)
+    End Function
+
+    ''' <summary>
+    ''' Nothing, or (with a stepping solver) the sentence naming the spring too stiff for its step, ω h ≥ 2: the step
+    ''' cannot follow it, its swing grows without bound, and the run's energies say nothing (see <see cref="StepStability"/>).
+    ''' The run goes on, and the summary ends with the sentence.
+    ''' </summary>
+    Friend Function StabilityWarning(world As World) As String
+        If world.Solver.TimeStep.HasValue Then Return StepStability.BeyondLimit(world, world.Solver.TimeStep.Value)
+        Return Nothing
     End Function
 
     ''' <summary>

@@ -20,9 +20,11 @@ Friend NotInheritable Class RunSummary
     Private ReadOnly _states As String
     Private ReadOnly _events As String
     Private ReadOnly _series As String
+    Private ReadOnly _warning As String
 
     ''' <param name="wallSeconds">wall-clock time of the simulation loop, s</param>
-    Friend Sub New(o As RunOptions, world As World, movable As Integer, wallSeconds As Double)
+    ''' <param name="warning">Nothing, or the sentence naming a spring too stiff for the stepping solver's step (<see cref="RunCommand.StabilityWarning"/>)</param>
+    Friend Sub New(o As RunOptions, world As World, movable As Integer, wallSeconds As Double, warning As String)
         _scene = o.ScenePath
         _bodies = world.Bodies.Count
         _movable = movable
@@ -37,6 +39,7 @@ Friend NotInheritable Class RunSummary
         _states = o.StatesPath
         _events = o.EventsPath
         _series = o.SeriesPath
+        _warning = warning
     End Sub
 
     ''' <summary>Collisions per wall-clock second; Nothing when the run took no measurable time.</summary>
@@ -63,10 +66,14 @@ Friend NotInheritable Class RunSummary
         If _states IsNot Nothing Then lines.Add("states CSV        " & _states)
         If _events IsNot Nothing Then lines.Add("collisions CSV    " & _events)
         If _series IsNot Nothing Then lines.Add("totals CSV        " & _series)
+        If _warning IsNot Nothing Then lines.Add("warning           " & _warning)
         Return String.Join(vbLf, lines)
     End Function
 
-    ''' <summary>One JSON object on one line (cli.md's fields, plus scene, bodies, movable, energy_total and the output files).</summary>
+    ''' <summary>
+    ''' One JSON object on one line (cli.md's fields, plus scene, bodies, movable, energy_total, the output files,
+    ''' and warning: null, or the sentence naming a spring too stiff for the stepping solver's step).
+    ''' </summary>
     Friend Function ToJson() As String
         Using stream As New MemoryStream()
             Using w As New Utf8JsonWriter(stream)
@@ -92,6 +99,7 @@ Friend NotInheritable Class RunSummary
                 w.WriteString("states", _states)
                 w.WriteString("events", _events)
                 w.WriteString("series", _series)
+                w.WriteString("warning", _warning)
                 w.WriteEndObject()
             End Using
             Return Encoding.UTF8.GetString(stream.ToArray())

@@ -1,10 +1,11 @@
 Option Strict On
-Imports PhysicsEngine.Fuzzing.Checking
+Imports PhysicsEngine
 Imports Xunit
 
 ''' <summary>
-''' The stability limit the fuzzer uses to tell a stepping run that blows up on a stiff spring (the method's
-''' limit, noted as unstable) from one that blows up for any other reason (a failure): ω h &lt; 2.
+''' The stability limit of the stepping solvers on a spring, ω h &lt; 2: the fuzzer uses it to tell a stepping run
+''' that blows up on a stiff spring (the method's limit, noted as unstable) from one that blows up for any other
+''' reason (a failure), and the CLI and the app to warn before such a run.
 ''' </summary>
 Public Class StepStabilityTests
     ''' <summary>No gravity, no walls; a 1 kg ball 0.1 m from a point on a spring of rest length 0 and stiffness ω² N/m.</summary>
