@@ -55,27 +55,13 @@ Friend NotInheritable Class SolverState
     Friend Const HandOverUnheldBodies As Integer = 64
 
     ''' <summary>
-    ''' The widest ratio of the movable bodies' masses for that hand-over. Among bodies of masses 10⁶ and more apart,
-    ''' the general path's forces on the lightest are the small difference of great ones, rounding makes them noisy,
-    ''' and its error control takes steps of 10⁻⁷ s (a 52-ball pile of masses 10¹¹ apart: minutes for 0.1 s).
-    ''' </summary>
-    Friend Const HandOverUnheldMassRatio As Double = 1000000.0
-
-    ''' <summary>
     ''' Whether the world may be handed over when a body would sleep where nothing holds it: it has at most
-    ''' <see cref="HandOverUnheldBodies"/> movable bodies, whose masses are no more than
-    ''' <see cref="HandOverUnheldMassRatio"/> apart. Asked before anything asks whether a wedged body is held.
+    ''' <see cref="HandOverUnheldBodies"/> movable bodies. Asked before anything asks whether a wedged body is held.
+    ''' Their masses may be any distance apart: among masses 10⁶ and more apart the general path measures its step
+    ''' error only in what the contacts leave free (docs/links.md, "Bodies of very different masses").
     ''' </summary>
     Friend Function MayHandOverUnheld() As Boolean
-        If Bodies.Count > HandOverUnheldBodies Then Return False
-        Dim lightest = Double.PositiveInfinity, heaviest = 0.0
-        For i = 0 To Bodies.Count - 1
-            Dim w = Bodies.Shapes(i).InverseMass
-            If w <= 0 Then Continue For
-            lightest = Math.Min(lightest, 1 / w)
-            heaviest = Math.Max(heaviest, 1 / w)
-        Next
-        Return Not (heaviest > HandOverUnheldMassRatio * lightest)
+        Return Bodies.Count <= HandOverUnheldBodies
     End Function
 
     ''' <summary>Asks for the hand-over (<see cref="HandOver"/>); whether it will happen (only in a world of at most <paramref name="most"/> bodies).</summary>

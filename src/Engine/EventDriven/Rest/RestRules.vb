@@ -792,7 +792,7 @@ Friend NotInheritable Class RestRules
             If _normalFixed(a) Then Return _equilibrium.Holds(i)
             onBodySlope = True
         Next
-        If Not onBodySlope OrElse _s.Bodies.Count > SolverState.HandOverBodies OrElse Not _s.MayHandOverUnheld() Then Return True
+        If Not onBodySlope OrElse _s.Bodies.Count > SolverState.HandOverBodies Then Return True
         _leansOnLoose = Not _equilibrium.Holds(i, sleepersMove:=True)
         Return Not _leansOnLoose
     End Function
