@@ -56,6 +56,32 @@ Public Class RestOnLooseSupportTests
         Assert.Equal(0.21, right.Position.X, 12)
     End Sub
 
+    ''' <summary>
+    ''' The same V held by the walls: asleep, the ball touches both balls below exactly, at (0.13, 0.11) m to 10⁻¹² m,
+    ''' so the forces that hold it are there to be found: each ball's free-body diagram balances (its acceleration
+    ''' below 10⁻⁹ m/s²). Put to sleep where it merely came within 10⁻³ of its size of them, it was 16 µm off one
+    ''' and its diagram showed only its weight and one push, an acceleration of 7.8 m/s² for a ball at rest.
+    ''' </summary>
+    <Fact>
+    Public Sub BallAsleepInTheVOfTwoBallsHeldByWalls_TouchesBothExactly_AndItsForcesBalance()
+        Dim w As New World(0.26, 1, 9.81, 0.3)
+        Dim left = New Circle(New Vector(0.05, 0.05), 0.05, 1, id:="left")
+        Dim right = New Circle(New Vector(0.21, 0.05), 0.05, 1, id:="right")
+        Dim top = New Circle(New Vector(0.13, 0.3), 0.05, 1, id:="top")
+        w.Add(left)
+        w.Add(right)
+        w.Add(top)
+        Dim solver = EventSolverTestKit.UseEventSolver(w)
+        w.Advance(5)
+        Assert.True(solver.IsAsleep(top), "the top ball is still awake at t = 5 s")
+        Assert.Equal(0.13, top.Position.X, 12)
+        Assert.Equal(0.11, top.Position.Y, 12)
+        For Each b In {left, right, top}
+            Dim a = BodyForces.Diagram(w, b).Acceleration
+            Assert.True(a.Length <= 0.000000001, $"{b.Id}: forces sum to m × {a} m/s² at rest")
+        Next
+    End Sub
+
     ''' <summary>Runs the scene 5 s (energy never gained, no overlap), then asserts that the ball "top" lies on the floor (to 10⁻⁹ m).</summary>
     Private Shared Sub AssertTopEndsOnTheFloor(w As World)
         EventSolverTestKit.RunEventSolverChecked(w, 5, 0.5, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)

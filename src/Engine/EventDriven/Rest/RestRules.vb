@@ -446,48 +446,63 @@ Friend NotInheritable Class RestRules
     End Sub
 
     ''' <summary>
-    ''' A body that goes to sleep held by exactly two flat faces of fixed bodies or walls (the bottom of
-    ''' a V, a corner of the box) is put exactly where it touches both: the point where the two faces,
-    ''' moved out by its outline, cross. It was within 10⁻³ of its size of there; exactly there, a
-    ''' scene that should end at that point does.
+    ''' A body that goes to sleep is put exactly where it touches what holds it: on a level face alone, straight
+    ''' down onto it; on the top of a ball or peg alone, straight out onto it; on exactly two supports (flat faces
+    ''' of fixed bodies or walls, the round outline of a ball or peg, a rounded corner: the bottom of a V, a corner
+    ''' of the box, a ball on the floor against its neighbour, a ball in the hollow between two others), at the point
+    ''' nearest it where it touches both (<see cref="RestSupport.Touching"/>). It was within 10⁻³ of its size of
+    ''' there; exactly there, its contacts touch, so the forces that hold it are those a free-body diagram finds, and
+    ''' a scene that should end at that point does. A sharp corner, or more than two supports, leaves it where it is.
     ''' </summary>
     Private Sub Settle(i As Integer)
         Dim b = _s.Bodies
         Dim p = New Vector(b.Motion(i).Px, b.Motion(i).Py)
         Dim gap = 1.0E-3 * b.Size(i).Scale + SolverState.SlopAt(p.X, p.Y)
         Dim o = b.Outlines(i)
-        ' Faces touched: normal n and level h, so that touching means n·p = h.
         Dim count = 0
-        Dim n1, n2 As Vector, h1, h2 As Double
-        Dim add = Sub(n As Vector, h As Double)
-                      ' Faces that press down (a body resting on this one) do not hold it.
-                      If Vector.Dot(n, p) - h > gap OrElse n.Y < 0 Then Return
-                      If count = 0 Then n1 = n : h1 = h Else n2 = n : h2 = h
+        Dim s1, s2 As RestSupport
+        Dim add = Sub(support As RestSupport)
+                      ' Supports above (a body resting on this one) press down and do not hold it.
+                      If support.NormalAt(p).Y < 0 Then Return
+                      If count = 0 Then s1 = support Else s2 = support
                       count += 1
                   End Sub
+        Dim addFlat = Sub(n As Vector, h As Double)
+                          If Vector.Dot(n, p) - h <= gap Then add(RestSupport.Flat(n, h))
+                      End Sub
+        ' The faces of the pair shape (the support's outline minus the body's) that p lies on, or its round part there.
+        Dim addShape = Sub(shape As Outline, origin As Vector)
+                           Dim first, second As Integer
+                           Dim faces = OutlineContact.TouchingEdges(shape, p - origin, gap, first, second)
+                           If faces = 0 Then
+                               Dim pen = OutlineContact.Penetration(shape, p - origin)
+                               If pen.Depth < -gap Then Return
+                               ' Off every face but touching: on the rounding of a corner or of a ball (the core's point
+                               ' nearest p is the corner), or on a sharp corner, where no single point is right.
+                               If shape.Radius <= 0 Then
+                                   count += 2
+                                   Return
+                               End If
+                               add(RestSupport.Round(p - pen.Normal * (shape.Radius - pen.Depth), shape.Radius))
+                               Return
+                           End If
+                           For Each e In {first, second}
+                               If e < 0 Then Continue For
+                               Dim n = shape.EdgeNormals(e)
+                               addFlat(n, Vector.Dot(n, origin + shape.Corners(e)) + shape.Radius)
+                           Next
+                       End Sub
         If _s.Walls Then
-            add(New Vector(1, 0), -o.MinX)
-            add(New Vector(-1, 0), o.MaxX - _s.Width)
-            add(New Vector(0, 1), -o.MinY)
-            add(New Vector(0, -1), o.MaxY - _s.Height)
+            addFlat(New Vector(1, 0), -o.MinX)
+            addFlat(New Vector(-1, 0), o.MaxX - _s.Width)
+            addFlat(New Vector(0, 1), -o.MinY)
+            addFlat(New Vector(0, -1), o.MaxY - _s.Height)
         End If
         Dim firstNear, lastNear As Integer
         Dim near = _s.ObstaclesNear(i, firstNear, lastNear)
         For q = firstNear To lastNear
             Dim k = near(q)
-            Dim shape = _s.Shapes.Difference(_s.Obstacles.Outlines(k), o)
-            Dim origin = New Vector(_s.Obstacles.X0(k), _s.Obstacles.Y0(k))
-            Dim first, second As Integer
-            Dim faces = OutlineContact.TouchingEdges(shape, p - origin, gap, first, second)
-            If faces = 0 Then
-                If OutlineContact.Penetration(shape, p - origin).Depth >= -gap Then count += 2 ' a corner: not two flat faces
-                Continue For
-            End If
-            For Each e In {first, second}
-                If e < 0 Then Continue For
-                Dim n = shape.EdgeNormals(e)
-                add(n, Vector.Dot(n, origin + shape.Corners(e)) + shape.Radius)
-            Next
+            addShape(_s.Shapes.Difference(_s.Obstacles.Outlines(k), o), New Vector(_s.Obstacles.X0(k), _s.Obstacles.Y0(k)))
         Next
         ' Bodies at rest below do not move up or down either: a box under it holds it by its top face.
         Dim neighbours = GridNeighbours.Collect(_s, i, _neighbours)
@@ -495,32 +510,21 @@ Friend NotInheritable Class RestRules
             Dim j = _neighbours(q)
             ' Asleep, or resting on something level: it does not move up or down.
             If Not (b.Mode(j) = BodyMode.Sleeping OrElse (b.Mode(j) = BodyMode.Supported AndAlso b.Motion(j).Ay = 0 AndAlso b.Motion(j).Ax = 0)) Then Continue For
-            Dim shape = _s.Shapes.Difference(b.Outlines(j), o)
-            Dim origin = New Vector(b.Motion(j).Px, b.Motion(j).Py)
-            Dim first, second As Integer
-            Dim faces = OutlineContact.TouchingEdges(shape, p - origin, gap, first, second)
-            If faces = 0 Then
-                If OutlineContact.Penetration(shape, p - origin).Depth >= -gap Then count += 2
-                Continue For
-            End If
-            For Each e In {first, second}
-                If e < 0 Then Continue For
-                Dim n = shape.EdgeNormals(e)
-                add(n, Vector.Dot(n, origin + shape.Corners(e)) + shape.Radius)
-            Next
+            addShape(_s.Shapes.Difference(b.Outlines(j), o), New Vector(b.Motion(j).Px, b.Motion(j).Py))
         Next
         Dim target As Vector
-        If count = 1 AndAlso n1.Y >= RestingFaces.LevelCosine Then
-            ' One level face holds it: exactly on it.
-            target = New Vector(p.X, h1)
+        If count = 1 AndAlso s1.NormalAt(p).Y >= RestingFaces.LevelCosine Then
+            ' One level support holds it: exactly on it.
+            target = s1.Nearest(p)
         ElseIf count = 2 Then
-            Dim crossing = RestingFaces.Crossing(n1, h1, n2, h2)
-            If Not crossing.HasValue Then Return ' parallel faces: no single point
+            Dim crossing = RestSupport.Touching(p, s1, s2)
+            If Not crossing.HasValue Then Return
             target = crossing.Value
         Else
             Return
         End If
-        If (target - p).Length > gap OrElse Not IsClear(i, target) Then Return
+        ' Never up, beyond rounding: what rests there fell there, and a rise would be energy from nowhere.
+        If (target - p).Length > gap OrElse target.Y - p.Y > SolverState.SlopAt(p.X, p.Y) OrElse Not IsClear(i, target) Then Return
         b.Motion(i).Px = target.X
         b.Motion(i).Py = target.Y
         ' It stands for the last crumb of its fall, which the bounces that would have ended it take:
