@@ -21,6 +21,19 @@ Public Class CliStabilityTests
             "'links':[{'id':'s','type':'spring','a':'ball','at':[5,5],'stiffness':" & stiffness & ",'rest_length':0.05}]}")
     End Function
 
+    ''' <summary>
+    ''' Writes <see cref="SpringScene"/> of <paramref name="stiffness"/> to a fresh folder, runs "run" on it with
+    ''' <paramref name="args"/> after the scene's name, and checks that it exited with <paramref name="exitCode"/>.
+    ''' </summary>
+    Private Shared Function RunSpring(stiffness As String, exitCode As Integer, ParamArray args As String()) As ProcessResult
+        Using t As New TempFolder()
+            Dim scene = t.Write("spring.json", SpringScene(stiffness))
+            Dim r = RunCli({"run", scene}.Concat(args).ToArray())
+            Assert.True(r.ExitCode = exitCode, r.ToString())
+            Return r
+        End Using
+    End Function
+
     Private Const Stiff As String = "9000000"
     Private Const Soft As String = "40"
 
@@ -28,41 +41,29 @@ Public Class CliStabilityTests
     <InlineData("verlet")>
     <InlineData("euler")>
     Public Sub AStiffSpring_WithAStepSolver_EndsTheTextSummaryWithAWarning_AndExits0(solver As String)
-        Using t As New TempFolder()
-            Dim scene = t.Write("stiff.json", SpringScene(Stiff))
-            Dim r = RunCli("run", scene, "--time", "0.02", "--solver", solver, "--dt", "0.001")
-            Assert.True(r.ExitCode = 0, r.ToString())
-            Dim last = r.StdOut.TrimEnd().Split(ChrW(10)).Last()
-            Assert.StartsWith("warning           spring s has ω h = 3 (k = 9E+06 N/m, ω = 3000 rad/s, h = 0.001 s), beyond the stability limit ω h < 2", last, StringComparison.Ordinal)
-        End Using
+        Dim r = RunSpring(Stiff, 0, "--time", "0.02", "--solver", solver, "--dt", "0.001")
+        Dim last = r.StdOut.TrimEnd().Split(ChrW(10)).Last()
+        Assert.StartsWith("warning           spring s has ω h = 3 (k = 9E+06 N/m, ω = 3000 rad/s, h = 0.001 s), beyond the stability limit ω h < 2", last, StringComparison.Ordinal)
     End Sub
 
     <Fact>
     Public Sub AStiffSpring_WithAStepSolver_HasTheWarningInTheJsonSummary()
-        Using t As New TempFolder()
-            Dim scene = t.Write("stiff.json", SpringScene(Stiff))
-            Dim r = RunCli("run", scene, "--time", "0.02", "--solver", "verlet", "--dt", "0.001", "--json")
-            Assert.True(r.ExitCode = 0, r.ToString())
-            Using doc = JsonDocument.Parse(r.StdOut)
-                Dim warning = doc.RootElement.GetProperty("warning")
-                Assert.Equal(JsonValueKind.String, warning.ValueKind)
-                Assert.StartsWith("spring s has ω h = 3 ", warning.GetString(), StringComparison.Ordinal)
-                ' The fields of the contract keep their meaning: the run is reported as it went.
-                Assert.Equal("verlet", doc.RootElement.GetProperty("solver").GetString())
-                Assert.Equal(0.001, doc.RootElement.GetProperty("dt").GetDouble())
-            End Using
+        Dim r = RunSpring(Stiff, 0, "--time", "0.02", "--solver", "verlet", "--dt", "0.001", "--json")
+        Using doc = JsonDocument.Parse(r.StdOut)
+            Dim warning = doc.RootElement.GetProperty("warning")
+            Assert.Equal(JsonValueKind.String, warning.ValueKind)
+            Assert.StartsWith("spring s has ω h = 3 ", warning.GetString(), StringComparison.Ordinal)
+            ' The fields of the contract keep their meaning: the run is reported as it went.
+            Assert.Equal("verlet", doc.RootElement.GetProperty("solver").GetString())
+            Assert.Equal(0.001, doc.RootElement.GetProperty("dt").GetDouble())
         End Using
     End Sub
 
     <Fact>
     Public Sub AStiffSpring_RunUntilItsSpeedOverflows_FailsWithTheWarningInItsMessage()
-        Using t As New TempFolder()
-            Dim scene = t.Write("stiff.json", SpringScene(Stiff))
-            Dim r = RunCli("run", scene, "--time", "1", "--solver", "verlet", "--dt", "0.001", "--json")
-            Assert.True(r.ExitCode = 1, r.ToString())
-            Assert.Contains("faster than", r.StdErr, StringComparison.Ordinal)
-            Assert.Contains("; spring s has ω h = 3 ", r.StdErr, StringComparison.Ordinal)
-        End Using
+        Dim r = RunSpring(Stiff, 1, "--time", "1", "--solver", "verlet", "--dt", "0.001", "--json")
+        Assert.Contains("faster than", r.StdErr, StringComparison.Ordinal)
+        Assert.Contains("; spring s has ω h = 3 ", r.StdErr, StringComparison.Ordinal)
     End Sub
 
     <Theory>
@@ -70,16 +71,11 @@ Public Class CliStabilityTests
     <InlineData(Soft, "verlet")>
     <InlineData(Soft, "euler")>
     Public Sub TheEventSolver_OrASpringTheStepFollows_HasNoWarning(stiffness As String, solver As String)
-        Using t As New TempFolder()
-            Dim scene = t.Write("spring.json", SpringScene(stiffness))
-            Dim text = RunCli("run", scene, "--time", "0.02", "--solver", solver)
-            Assert.True(text.ExitCode = 0, text.ToString())
-            Assert.DoesNotContain("warning", text.StdOut, StringComparison.Ordinal)
-            Dim json = RunCli("run", scene, "--time", "0.02", "--solver", solver, "--json")
-            Assert.True(json.ExitCode = 0, json.ToString())
-            Using doc = JsonDocument.Parse(json.StdOut)
-                Assert.Equal(JsonValueKind.Null, doc.RootElement.GetProperty("warning").ValueKind)
-            End Using
+        Dim text = RunSpring(stiffness, 0, "--time", "0.02", "--solver", solver)
+        Assert.DoesNotContain("warning", text.StdOut, StringComparison.Ordinal)
+        Dim json = RunSpring(stiffness, 0, "--time", "0.02", "--solver", solver, "--json")
+        Using doc = JsonDocument.Parse(json.StdOut)
+            Assert.Equal(JsonValueKind.Null, doc.RootElement.GetProperty("warning").ValueKind)
         End Using
     End Sub
 End Class

@@ -88,26 +88,24 @@ Friend NotInheritable Class ConstraintSet
         Dim m = _rows.Length
         Dim lambda(m - 1) As Double
         If m = 0 Then Return lambda
+        ' λ holds the curvatures until each row's right-hand side is made of it.
+        MeasureNormals(state, curvatures:=lambda)
         For i = 0 To m - 1
             Dim c = _rows(i)
-            Dim u As Vector, value As Double, rate As Double, curvature As Double
-            c.Measure(state, u, value, rate, curvature)
-            _nx(i) = u.X
-            _ny(i) = u.Y
+            Dim u = New Vector(_nx(i), _ny(i))
             Dim f = c.ForceDirection(u)
             _fx(i) = f.X
             _fy(i) = f.Y
             Dim relative = AccelerationB(accelerations, c) - Acceleration(accelerations, c.A)
-            lambda(i) = Vector.Dot(u, relative) - curvature
+            lambda(i) = Vector.Dot(u, relative) - lambda(i)
         Next
         If _slides Then
             ' A sliding contact's force is not along its normal: M_ij = (u_i·f_j) Σ σσw is not symmetric.
             SolveGeneral(lambda)
             ApplyForces(accelerations, lambda)
-        ElseIf _spread AndAlso Not FactorsWell() Then
+        ElseIf NeedsSpreadSolve() Then
             SolveSpread(lambda, accelerations)
         Else
-            If Not _spread Then Factor()
             Solve(lambda)
             Apply(accelerations, lambda, 2)
         End If
@@ -228,6 +226,33 @@ Friend NotInheritable Class ConstraintSet
     End Function
 
     ''' <summary>
+    ''' Measures every row at <paramref name="state"/>: its normal u into _nx, _ny and, into whichever of the arrays
+    ''' is given, its ψ (m), ψ̇ (m/s) and κ (m/s²).
+    ''' </summary>
+    Private Sub MeasureNormals(state As Double(), Optional values As Double() = Nothing, Optional rates As Double() = Nothing, Optional curvatures As Double() = Nothing)
+        For i = 0 To _rows.Length - 1
+            Dim u As Vector, value As Double, rate As Double, curvature As Double
+            _rows(i).Measure(state, u, value, rate, curvature)
+            _nx(i) = u.X
+            _ny(i) = u.Y
+            If values IsNot Nothing Then values(i) = value
+            If rates IsNot Nothing Then rates(i) = rate
+            If curvatures IsNot Nothing Then curvatures(i) = curvature
+        Next
+    End Sub
+
+    ''' <summary>
+    ''' Whether M, for the normals measured, must be solved the orthogonalised way (<see cref="SolveSpread"/>): its
+    ''' rows move bodies of very different masses and the plain factor lost too many digits. False when the plain
+    ''' factor, made here, serves <see cref="Solve"/>.
+    ''' </summary>
+    Private Function NeedsSpreadSolve() As Boolean
+        If _spread Then Return Not FactorsWell()
+        Factor()
+        Return False
+    End Function
+
+    ''' <summary>
     ''' Factors M and says whether every pivot kept at least <see cref="WellFactored"/> of its row's own size (what
     ''' the rows share cost it no more than half its digits); False also where the factorization refuses a row.
     ''' </summary>
@@ -253,15 +278,12 @@ Friend NotInheritable Class ConstraintSet
         If m = 0 Then Return
         Dim c(m - 1) As Double
         For iteration = 1 To 4
+            MeasureNormals(state, values:=c)
             Dim worst = 0.0
             For i = 0 To m - 1
-                Dim u As Vector, value As Double, rate As Double, curvature As Double
-                _rows(i).Measure(state, u, value, rate, curvature)
-                _nx(i) = u.X
-                _ny(i) = u.Y
                 ' Moving the ends by μ along u (A along it, B against it, each by its inverse mass) raises ψ by
                 ' M μ: so M μ = −ψ (for a tie, d − L).
-                c(i) = -value
+                c(i) = -c(i)
                 worst = Math.Max(worst, Math.Abs(c(i)) / _rows(i).Scale)
             Next
             ' Gauss–Newton converges quadratically: from the integrator's drift one step reaches rounding.
@@ -278,12 +300,9 @@ Friend NotInheritable Class ConstraintSet
         Dim m = _rows.Length
         If m = 0 Then Return
         Dim c(m - 1) As Double
+        MeasureNormals(state, rates:=c)
         For i = 0 To m - 1
-            Dim u As Vector, value As Double, rate As Double, curvature As Double
-            _rows(i).Measure(state, u, value, rate, curvature)
-            _nx(i) = u.X
-            _ny(i) = u.Y
-            c(i) = -rate
+            c(i) = -c(i)
         Next
         Factor()
         Solve(c)
@@ -301,15 +320,9 @@ Friend NotInheritable Class ConstraintSet
         Dim m = _rows.Length
         If m = 0 Then Return True
         If _slides Then Return False
-        For i = 0 To m - 1
-            Dim u As Vector, value As Double, rate As Double, curvature As Double
-            _rows(i).Measure(state, u, value, rate, curvature)
-            _nx(i) = u.X
-            _ny(i) = u.Y
-        Next
+        MeasureNormals(state)
         ' Bodies of very different masses: the orthogonalised solve, as the forces are found (see SolveSpread).
-        Dim spread = _spread AndAlso Not FactorsWell()
-        If Not _spread Then Factor()
+        Dim spread = NeedsSpreadSolve()
         Dim n = _inverseMass.Length
         For Each offset In {0, 2}
             Dim c(m - 1) As Double

@@ -22,6 +22,23 @@ Public Class LinkedSearchWorkTests
     End Function
 
     ''' <summary>
+    ''' Runs case <paramref name="name"/> in <paramref name="advances"/> advances of <paramref name="seconds"/> s of the
+    ''' linked solver alone, <paramref name="solver"/>, and checks after each that energy plus dissipated has not grown
+    ''' from the start's and that no two bodies overlap.
+    ''' </summary>
+    Private Shared Function RunKeepingLaws(name As String, seconds As Double, advances As Integer, ByRef solver As LinkedEventSolver) As World
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile(name))
+        Dim e0 = w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated
+        solver = New LinkedEventSolver()
+        solver.Attach(w)
+        For k = 1 To advances
+            solver.Advance(seconds)
+            EventSolverTestKit.AssertNoEnergyGainNorOverlap(w, e0)
+        Next
+        Return w
+    End Function
+
+    ''' <summary>
     ''' Ball c2 is caged with no room between c1 and c3, which a rod holds apart; after the first blow at t = 0 the
     ''' three fly on together, g = 100. c2 flies its parabola and the rod its dumbbell: every search of c2 against
     ''' either end, with the sum of their speed bounds (up to 40 m/s) and a gap that stays at nothing, ran through
@@ -114,14 +131,10 @@ Public Class LinkedSearchWorkTests
     ''' </summary>
     <Fact>
     Public Sub LightBallRattlingUnderAHeavyOne_IsSearchedOnlyToItsNextBounces()
-        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-light-ball-rattling-under-heavy.json"))
-        Dim e0 = w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated
-        Dim s As New LinkedEventSolver()
-        s.Attach(w)
-        s.Advance(0.01)
+        Dim s As LinkedEventSolver = Nothing
+        Dim w = RunKeepingLaws("event-linked-light-ball-rattling-under-heavy.json", 0.01, 1, s)
         Assert.True(w.CollisionCount > 10000, $"{w.CollisionCount} collisions in 0.01 s")
         Assert.True(s.GapEvaluations < 200 * w.CollisionCount, $"{s.GapEvaluations} gap measurements for {w.CollisionCount} collisions")
-        EventSolverTestKit.AssertNoEnergyGainNorOverlap(w, e0)
     End Sub
 
     ''' <summary>
@@ -134,14 +147,8 @@ Public Class LinkedSearchWorkTests
     ''' </summary>
     <Fact>
     Public Sub LightBallPinnedUnderAHeavyPile_IsIntegratedInLongSteps()
-        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-light-ball-pinned-under-heavy-pile.json"))
-        Dim e0 = w.KineticEnergy() + w.PotentialEnergy() + w.Dissipated
-        Dim s As New LinkedEventSolver()
-        s.Attach(w)
-        For k = 1 To 4
-            s.Advance(0.005)
-            EventSolverTestKit.AssertNoEnergyGainNorOverlap(w, e0)
-        Next
+        Dim s As LinkedEventSolver = Nothing
+        Dim w = RunKeepingLaws("event-linked-light-ball-pinned-under-heavy-pile.json", 0.005, 4, s)
         Assert.True(s.IntegratorSteps < 2000, $"{s.IntegratorSteps} integrator steps for 0.02 s ({w.CollisionCount} collisions)")
     End Sub
 End Class
