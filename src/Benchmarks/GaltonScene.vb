@@ -13,7 +13,8 @@ Friend NotInheritable Class GaltonScene
         "Scenarios.GaltonBoard(500 balls, 12 rows of pegs, 20 bins, 10 shelves; e = 0.5): balls slide off sloping shelves, fall " &
         "through a funnel and a chute onto 234 fixed pegs and pile up in the bins, for 15 s. There is no closed form for where each " &
         "ball ends; error = the deepest overlap at the end (between balls, or a ball and a peg, bin, shelf, wall or the container, m), " &
-        "and the note gives how many balls reached the bins and how many times faster than real time the timed runs went (their median)." Implements IBenchScene.Description
+        "and the note gives how many balls reached the bins, how many of those standing still are not held there (their " &
+        "frictionless contact forces and weight do not balance), and how many times faster than real time the timed runs went (their median)." Implements IBenchScene.Description
     Public ReadOnly Property ErrorMetric As String = "max overlap at the end (m)" Implements IBenchScene.ErrorMetric
     Public ReadOnly Property SimulatedSeconds As Double = 15.0 Implements IBenchScene.SimulatedSeconds
 
@@ -27,6 +28,7 @@ Friend NotInheritable Class GaltonScene
         Dim binTop = world.Rectangles.Where(Function(r) r.Id.StartsWith("bin", StringComparison.Ordinal)).Max(Function(r) r.Max.Y)
         Dim inBins = world.Circles.Where(Function(c) Not c.IsFixed AndAlso c.Position.Y < binTop).Count()
         Return New SceneMeasurement(Overlap.Deepest(world),
-                                    inBins.ToString(CultureInfo.InvariantCulture) & " of " & Balls.ToString(CultureInfo.InvariantCulture) & " balls in the bins")
+                                    inBins.ToString(CultureInfo.InvariantCulture) & " of " & Balls.ToString(CultureInfo.InvariantCulture) & " balls in the bins" &
+                                    RestBalance.Note(world))
     End Function
 End Class

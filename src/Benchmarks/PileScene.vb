@@ -17,7 +17,9 @@ Friend NotInheritable Class PileScene
     Public ReadOnly Property Description As String =
         "Scenarios.Pile(N = 40, e = 0.3): circles of mixed radius fall into a box and settle. There is no closed form for the " &
         "final heap, but two things are known: circles must not overlap (error = the deepest overlap at the end, circle–circle or " &
-        "circle–wall, m) and the pile must come to rest (the note gives the time after which total KE stays below 1 mJ)." Implements IBenchScene.Description
+        "circle–wall, m) and the pile must come to rest (the note gives the time after which total KE stays below 1 mJ, and " &
+        "how many of the bodies standing still at the end are not held there: their frictionless contact forces and weight " &
+        "do not balance)." Implements IBenchScene.Description
     Public ReadOnly Property ErrorMetric As String = "max overlap at the end (m)" Implements IBenchScene.ErrorMetric
     Public ReadOnly Property SimulatedSeconds As Double = 4.0 Implements IBenchScene.SimulatedSeconds
 
@@ -44,6 +46,7 @@ Friend NotInheritable Class PileScene
         Else
             note = "at rest from " & restSince.ToString("0.00", CultureInfo.InvariantCulture) & " s"
         End If
+        note &= RestBalance.Note(world)
         Return New SceneMeasurement(Overlap.Deepest(world), note)
     End Function
 
