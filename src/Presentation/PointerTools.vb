@@ -892,7 +892,8 @@ Partial Friend NotInheritable Class PointerTools
         _LinkStart = Nothing
         _toolCursor = Nothing
         _stage.Emit("linked " & link.Id & " " & name & " " & a.Id & " to " & If(b Is Nothing, "anchor " & Units.Pair(anchor, 3), b.Id) & " length " & Units.Num(length, 3) & " m")
-        _stage.ShowMessage("")
+        ' A spring between light bodies (from a scene file) can be too stiff for a stepping solver's step: say so now.
+        _stage.ShowMessage(If(_linkKind = LinkKind.Spring, SolverChoice.StiffSpringWarning(_stage.World), ""))
         _stage.TakeSnapshot()
         _stage.Window.ShowSettings()
     End Sub

@@ -37,6 +37,31 @@ Public Class StiffSpringWarningTests
         Assert.DoesNotContain("too stiff", h.P.Message, StringComparison.Ordinal)
     End Sub
 
+    ''' <summary>
+    ''' Two balls of 0.1 g (lighter than the app makes; a scene file may have them) with Verlet chosen: a spring of
+    ''' 10⁴ N/m added between them with the link tool swings at ω = √(k (1/m + 1/m)) ≈ 14 000 rad/s, ω h ≈ 14. The
+    ''' message says so as the spring is added; a 1 N/m spring (ω h ≈ 0.14) adds nothing.
+    ''' </summary>
+    <Theory>
+    <InlineData("10000", True)>
+    <InlineData("1", False)>
+    Public Sub ASpringAddedWithTheLinkTool_TooStiffForTheStep_IsToldAtOnce(stiffness As String, tooStiff As Boolean)
+        Dim w As New World(8, 5, 0, 1)
+        w.Add(New Circle(New Vector(2, 2), 0.1, 0.0001, id:="a"))
+        w.Add(New Circle(New Vector(4, 2), 0.1, 0.0001, id:="b"))
+        Dim h As New PresenterHarness(w)
+        h.P.ChooseSolver("verlet")
+        h.P.BeginAddLink(LinkKind.Spring, stiffness)
+        h.LeftClick(2, 2)
+        h.LeftClick(4, 2)
+        Dim l = Assert.Single(h.P.World.Links)
+        If tooStiff Then
+            Assert.StartsWith("Spring " & l.Id & " is too stiff for this step: ω h = 14 ", h.P.Message, StringComparison.Ordinal)
+        Else
+            Assert.Equal("", h.P.Message)
+        End If
+    End Sub
+
     <Fact>
     Public Sub ASpringTheStepFollows_AddsNothingToTheMessage()
         ' 40 N/m on 1 kg: ω h = 0.0063.
