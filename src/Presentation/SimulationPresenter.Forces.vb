@@ -9,13 +9,29 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub SetShowForces(value As Boolean)
         Forces.SetShown(value)
         Emit("forces " & If(value, "on", "off"))
-        If value Then EmitForces()
+        If value Then
+            EmitForces()
+            ExplainRest()
+        End If
     End Sub
 
     ''' <summary>Shows the forces of the body with <paramref name="id"/> (empty: the first movable body).</summary>
     Public Sub ChooseForcesBody(id As String)
         Forces.Choose(id)
         EmitForces()
+        ExplainRest()
+    End Sub
+
+    ''' <summary>When the body shown is asleep where its forces do not balance, the message says why it does not move (<see cref="FreeBodyView.RestNote"/>).</summary>
+    Private Sub ExplainRest()
+        Dim d = ForcesDiagram()
+        If d Is Nothing Then Return
+        Dim solver = World.Solver
+        Dim timeline = TryCast(solver, TimelineSolver)
+        If timeline IsNot Nothing Then solver = timeline.Inner
+        Dim exact = TryCast(solver, EventDrivenSolver)
+        Dim note = FreeBodyView.RestNote(d, exact IsNot Nothing AndAlso exact.IsAsleep(d.Body))
+        If note.Length > 0 Then ShowMessage(note)
     End Sub
 
     ''' <summary>The diagram of the body shown, now; Nothing when there is no movable body.</summary>
