@@ -115,14 +115,14 @@ Public NotInheritable Class FreeBodyView
     ''' <summary>
     ''' "" or, for a body the solver holds asleep (<paramref name="asleep"/>) where the forces shown do not balance, a
     ''' sentence for the teacher on why it does not move: the exact solver puts a ball to sleep once it has settled among
-    ''' bodies it then treats as fixed, and without friction those under it would be pushed aside.
+    ''' bodies it then treats as fixed (in a crowd; see docs/event-driven.md §6), and without friction they would move.
     ''' </summary>
     Public Shared Function RestNote(d As FreeBodyDiagram, asleep As Boolean) As String
         If d Is Nothing OrElse Not asleep Then Return ""
         Dim sum = Clean(d.Sum, d)
         If sum = Vector.Zero Then Return ""
         Return d.Body.Id & " is at rest, but the forces shown do not balance (ΣF = " & Units.SigPair(sum) & " N): the exact solver " &
-            "stopped it where it settled, taking the bodies under it as fixed. With no friction they would be pushed aside, and it would move on."
+            "stopped it where it settled, holding the bodies around it as fixed. With no friction they would move, and so would it."
     End Function
 
     ''' <summary>For the trace: the body, each force as "N table 14.7 N 90°", ΣF and m a.</summary>

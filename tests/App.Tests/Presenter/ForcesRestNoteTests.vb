@@ -39,7 +39,7 @@ Public Class ForcesRestNoteTests
         Assert.True(h.P.World.Time >= 4.99, $"ran only to {h.P.World.Time} s")
         h.P.ChooseForcesBody("top")
         Assert.StartsWith("top is at rest, but the forces shown do not balance (ΣF = ", h.P.Message, StringComparison.Ordinal)
-        Assert.EndsWith("With no friction they would be pushed aside, and it would move on.", h.P.Message, StringComparison.Ordinal)
+        Assert.EndsWith("holding the bodies around it as fixed. With no friction they would move, and so would it.", h.P.Message, StringComparison.Ordinal)
     End Sub
 
     ''' <summary>Held by the walls, the same ball's forces balance: nothing to explain. Nor for a ball on the floor alone.</summary>
