@@ -394,21 +394,21 @@ Friend NotInheritable Class ConstrainedMotion
     ''' </summary>
     Private Function DriftBetween(y As Double(), k1 As Double(), result As Double(), k7 As Double(), h As Double) As Double
         If _rows.Length = 0 Then Return 0
-        Dim inside(4 * _n - 1) As Double, c(5) As Double
+        Dim inside(4 * _n - 1) As Double
         Dim first(_rows.Length - 1) As Double, last(_rows.Length - 1) As Double
         Dim u As Vector, value As Double, rate As Double, curvature As Double
         For i = 0 To _rows.Length - 1
             _rows(i).Measure(y, u, first(i), rate, curvature)
             _rows(i).Measure(result, u, last(i), rate, curvature)
         Next
+        Dim c = StepQuintics(y, k1, result, k7, h)
         Dim worst = 0.0
         For Each s In {0.25, 0.5, 0.75}
             For k = 0 To _n - 1
                 For axis = 0 To 1
-                    QuinticSteps.Fill(c, 0, y(4 * k + axis), y(4 * k + 2 + axis) * h, k1(4 * k + 2 + axis) * h * h,
-                                      result(4 * k + axis), result(4 * k + 2 + axis) * h, k7(4 * k + 2 + axis) * h * h)
-                    inside(4 * k + axis) = Poly(c, 0, s)
-                    inside(4 * k + 2 + axis) = Slope(c, 0, s) / h
+                    Dim o = 6 * (2 * k + axis)
+                    inside(4 * k + axis) = Poly(c, o, s)
+                    inside(4 * k + 2 + axis) = Slope(c, o, s) / h
                 Next
             Next
             For i = 0 To _rows.Length - 1
@@ -602,18 +602,25 @@ Friend NotInheritable Class ConstrainedMotion
     Private Function Quintics(j As Integer) As Double()
         Do While _quintics.Count <= j
             Dim i = _quintics.Count
-            Dim h = _times(i + 1) - _times(i)
-            Dim c(12 * _n - 1) As Double
-            For k = 0 To _n - 1
-                For axis = 0 To 1
-                    Dim p0 = _states(i)(4 * k + axis), v0 = _states(i)(4 * k + 2 + axis) * h, a0 = _derivatives(i)(4 * k + 2 + axis) * h * h
-                    Dim p1 = _states(i + 1)(4 * k + axis), v1 = _states(i + 1)(4 * k + 2 + axis) * h, a1 = _derivatives(i + 1)(4 * k + 2 + axis) * h * h
-                    QuinticSteps.Fill(c, 6 * (2 * k + axis), p0, v0, a0, p1, v1, a1)
-                Next
-            Next
-            _quintics.Add(c)
+            _quintics.Add(StepQuintics(_states(i), _derivatives(i), _states(i + 1), _derivatives(i + 1), _times(i + 1) - _times(i)))
         Loop
         Return _quintics(j)
+    End Function
+
+    ''' <summary>
+    ''' The quintics of a step of <paramref name="h"/> s from state <paramref name="y0"/> (derivative <paramref name="d0"/>)
+    ''' to <paramref name="y1"/> (<paramref name="d1"/>), laid out as in <see cref="Quintics"/>.
+    ''' </summary>
+    Private Function StepQuintics(y0 As Double(), d0 As Double(), y1 As Double(), d1 As Double(), h As Double) As Double()
+        Dim c(12 * _n - 1) As Double
+        For k = 0 To _n - 1
+            For axis = 0 To 1
+                Dim p0 = y0(4 * k + axis), v0 = y0(4 * k + 2 + axis) * h, a0 = d0(4 * k + 2 + axis) * h * h
+                Dim p1 = y1(4 * k + axis), v1 = y1(4 * k + 2 + axis) * h, a1 = d1(4 * k + 2 + axis) * h * h
+                QuinticSteps.Fill(c, 6 * (2 * k + axis), p0, v0, a0, p1, v1, a1)
+            Next
+        Next
+        Return c
     End Function
 
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
