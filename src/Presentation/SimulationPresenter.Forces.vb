@@ -9,27 +9,24 @@ Partial Public NotInheritable Class SimulationPresenter
     Public Sub SetShowForces(value As Boolean)
         Forces.SetShown(value)
         Emit("forces " & If(value, "on", "off"))
-        If value Then
-            EmitForces()
-            ExplainRest()
-        End If
+        If value Then EmitAndExplainForces()
     End Sub
 
     ''' <summary>Shows the forces of the body with <paramref name="id"/> (empty: the first movable body).</summary>
     Public Sub ChooseForcesBody(id As String)
         Forces.Choose(id)
-        EmitForces()
-        ExplainRest()
+        EmitAndExplainForces()
     End Sub
 
-    ''' <summary>When the body shown is asleep where its forces do not balance, the message says why it does not move (<see cref="FreeBodyView.RestNote"/>).</summary>
-    Private Sub ExplainRest()
+    ''' <summary>
+    ''' Writes the forces of the body shown to the trace and, when it is asleep where they do not balance, says in the
+    ''' message why it does not move (<see cref="FreeBodyView.RestNote"/>). The diagram is found once for both.
+    ''' </summary>
+    Private Sub EmitAndExplainForces()
         Dim d = ForcesDiagram()
+        Emit(FreeBodyView.TraceLine(d))
         If d Is Nothing Then Return
-        Dim solver = World.Solver
-        Dim timeline = TryCast(solver, TimelineSolver)
-        If timeline IsNot Nothing Then solver = timeline.Inner
-        Dim exact = TryCast(solver, EventDrivenSolver)
+        Dim exact = TryCast(TimelineSolver.Unwrap(World.Solver), EventDrivenSolver)
         Dim note = FreeBodyView.RestNote(d, exact IsNot Nothing AndAlso exact.IsAsleep(d.Body))
         If note.Length > 0 Then ShowMessage(note)
     End Sub

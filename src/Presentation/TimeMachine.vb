@@ -116,8 +116,7 @@ Friend NotInheritable Class TimeMachine
     End Sub
 
     Private Shared Function SolverName(w As World) As String
-        Dim s = TryCast(w.Solver, TimelineSolver)
-        Return If(s IsNot Nothing, s.Inner.Name, w.Solver.Name)
+        Return TimelineSolver.Unwrap(w.Solver).Name
     End Function
 
     Private Sub OnCollision(r As CollisionRecord)

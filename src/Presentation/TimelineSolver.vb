@@ -42,6 +42,12 @@ Public NotInheritable Class TimelineSolver
         End Get
     End Property
 
+    ''' <summary><paramref name="solver"/>'s inner solver when it records a timeline, else <paramref name="solver"/> itself: the one that does the work.</summary>
+    Friend Shared Function Unwrap(solver As ISolver) As ISolver
+        Dim timeline = TryCast(solver, TimelineSolver)
+        Return If(timeline IsNot Nothing, timeline.Inner, solver)
+    End Function
+
     ''' <summary>The inner solver's name.</summary>
     Public ReadOnly Property Name As String Implements ISolver.Name
         Get
