@@ -21,8 +21,7 @@ Public Class RestBalanceTests
     End Sub
 
     ''' <summary>
-    ''' Still bodies that nothing holds: one in the air, and one leaning on it from the side on the floor (pushed
-    ''' by nothing: held). The one in the air falls at g.
+    ''' Two still bodies: one in the air, which nothing holds and which falls at g, and one resting on the floor, held.
     ''' </summary>
     <Fact>
     Public Sub StillBallInTheAir_IsNotHeld_AndItsAccelerationIsG()

@@ -40,13 +40,8 @@ Public Class RestOnLooseSupportTests
     ''' </summary>
     <Fact>
     Public Sub BallDroppedIntoTheVOfTwoBallsHeldByWalls_SleepsInTheV()
-        Dim w As New World(0.26, 1, 9.81, 0.3)
-        Dim left = New Circle(New Vector(0.05, 0.05), 0.05, 1, id:="left")
-        Dim right = New Circle(New Vector(0.21, 0.05), 0.05, 1, id:="right")
-        Dim top = New Circle(New Vector(0.13, 0.3), 0.05, 1, id:="top")
-        w.Add(left)
-        w.Add(right)
-        w.Add(top)
+        Dim left As Circle = Nothing, right As Circle = Nothing, top As Circle = Nothing
+        Dim w = WalledV(left, right, top)
         Dim solver = EventSolverTestKit.UseEventSolver(w)
         EventSolverTestKit.RunChecked(w, 5, 0.5, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
         Assert.True(solver.IsAsleep(top), "the top ball is still awake at t = 5 s")
@@ -64,13 +59,8 @@ Public Class RestOnLooseSupportTests
     ''' </summary>
     <Fact>
     Public Sub BallAsleepInTheVOfTwoBallsHeldByWalls_TouchesBothExactly_AndItsForcesBalance()
-        Dim w As New World(0.26, 1, 9.81, 0.3)
-        Dim left = New Circle(New Vector(0.05, 0.05), 0.05, 1, id:="left")
-        Dim right = New Circle(New Vector(0.21, 0.05), 0.05, 1, id:="right")
-        Dim top = New Circle(New Vector(0.13, 0.3), 0.05, 1, id:="top")
-        w.Add(left)
-        w.Add(right)
-        w.Add(top)
+        Dim left As Circle = Nothing, right As Circle = Nothing, top As Circle = Nothing
+        Dim w = WalledV(left, right, top)
         Dim solver = EventSolverTestKit.UseEventSolver(w)
         w.Advance(5)
         Assert.True(solver.IsAsleep(top), "the top ball is still awake at t = 5 s")
@@ -81,6 +71,21 @@ Public Class RestOnLooseSupportTests
             Assert.True(a.Length <= 0.000000001, $"{b.Id}: forces sum to m × {a} m/s² at rest")
         Next
     End Sub
+
+    ''' <summary>
+    ''' Two 1 kg balls (r = 5 cm) on the floor of a box 26 cm wide, each touching a wall, and a third dropped from 0.3 m
+    ''' onto the V between them (e = 0.3).
+    ''' </summary>
+    Private Shared Function WalledV(ByRef left As Circle, ByRef right As Circle, ByRef top As Circle) As World
+        Dim w As New World(0.26, 1, 9.81, 0.3)
+        left = New Circle(New Vector(0.05, 0.05), 0.05, 1, id:="left")
+        right = New Circle(New Vector(0.21, 0.05), 0.05, 1, id:="right")
+        top = New Circle(New Vector(0.13, 0.3), 0.05, 1, id:="top")
+        w.Add(left)
+        w.Add(right)
+        w.Add(top)
+        Return w
+    End Function
 
     ''' <summary>Runs the scene 5 s (energy never gained, no overlap), then asserts that the ball "top" lies on the floor (to 10⁻⁹ m).</summary>
     Private Shared Sub AssertTopEndsOnTheFloor(w As World)
