@@ -65,10 +65,24 @@ Friend NotInheritable Class Constraint
         Return c
     End Function
 
+    ''' <summary>
+    ''' A body held where it is along <paramref name="normal"/> by two ties in line (<see cref="TieLock"/>): ψ = n·c_A −
+    ''' <paramref name="level"/> (m), kept at zero both ways. <paramref name="scale"/> (m) is the ties' size, the
+    ''' length the drift is measured against; <paramref name="tie"/> the link it comes from.
+    ''' </summary>
+    Friend Shared Function Lock(a As Integer, normal As Vector, level As Double, scale As Double, tie As Object) As Constraint
+        Dim c = New Constraint(ConstraintShape.Plane, a, -1, Vector.Zero, level, normal, True) With {
+            .Extent = Double.PositiveInfinity, .Scale = scale, .Tag = tie, .IsLock = True}
+        Return c
+    End Function
+
+    ''' <summary>Whether this is a <see cref="Lock"/>: no contact, no link, but two links' hold together.</summary>
+    Friend Property IsLock As Boolean
+
     ''' <summary>The same constraint on other slots (a group's bodies numbered anew), with its tag and scale.</summary>
     Friend Function WithSlots(a As Integer, b As Integer) As Constraint
         Dim c = New Constraint(Shape, a, b, Point, Length, Normal, Holds) With {.From = From, .Along = Along, .Extent = Extent, .Tag = Tag, .Scale = Scale,
-            .Friction = Friction, .StaticFriction = StaticFriction, .Sliding = Sliding}
+            .Friction = Friction, .StaticFriction = StaticFriction, .Sliding = Sliding, .IsLock = IsLock}
         Return c
     End Function
 

@@ -65,7 +65,9 @@ Friend NotInheritable Class ConstrainedMotion
     Private ReadOnly _watched As Constraint()
     ' The gap (m) at which each watched contact counts as pressed in.
     Private ReadOnly _pressedAt As Double()
-    ' Every constraint held: the links' ties, then the contacts.
+    ' Bodies held where they are by two ties in line (TieLock): the row along the tangent each such pair adds.
+    Private ReadOnly _locks As Constraint()
+    ' Every constraint held: the links' ties, then the contacts, then the locks.
     Private ReadOnly _rows As Constraint()
     Private ReadOnly _constraints As ConstraintSet
     ' The slack strings, their ties, and how little spare length counts as reaching full length, m.
@@ -137,6 +139,9 @@ Friend NotInheritable Class ConstrainedMotion
         For Each c In contacts
             If Not Equals(c.Tag, released) Then held.Add(c)
         Next
+        ' Two ties in line that hold their body where it is: the row along the tangent that their two rows, one
+        ' only independent, cannot give. Last, so that the ties' and contacts' rows keep their places.
+        held.AddRange(TieLock.Find(held, y))
         ' A constraint the others already imply is not held (its row would make the solve singular): a rod is
         ' watched as a slack string is, a contact left to the contact search. A string or contact whose force would
         ' be negative with the others holding lets go: the most negative first, then look again, at the implied ones
@@ -170,7 +175,8 @@ Friend NotInheritable Class ConstrainedMotion
         Loop
         _rows = held.ToArray()
         _held = held.Where(Function(c) c.Shape = ConstraintShape.Tie).Select(Function(c) DirectCast(c.Tag, Link)).ToArray()
-        _contacts = held.Where(Function(c) c.Shape <> ConstraintShape.Tie).ToArray()
+        _contacts = held.Where(Function(c) c.Shape <> ConstraintShape.Tie AndAlso Not c.IsLock).ToArray()
+        _locks = held.Where(Function(c) c.IsLock).ToArray()
         _constraints = New ConstraintSet(_rows, _inverseMass)
         _slackTies = slack.ToArray()
         _slack = slack.Select(Function(c) DirectCast(c.Tag, Link)).ToArray()
@@ -834,6 +840,9 @@ Friend NotInheritable Class ConstrainedMotion
         For Each c In _contacts
             impulse.AddHeld(Bodies, c)
         Next
+        For Each c In _locks
+            impulse.AddLock(Bodies(c.A), c.Normal)
+        Next
         impulse.Resolve()
         If l.Kind = LinkKind.String Then Snapped = l
         Return False
@@ -893,6 +902,12 @@ Friend NotInheritable Class ConstrainedMotion
     Friend Overrides ReadOnly Property HeldContacts As Constraint()
         Get
             Return _contacts
+        End Get
+    End Property
+
+    Friend Overrides ReadOnly Property HeldLocks As Constraint()
+        Get
+            Return _locks
         End Get
     End Property
 

@@ -133,12 +133,15 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim kinetic = DissipationLedger.Kinetic(shapes)
         ' 4. No contact approaches and no rod stretches: the least change of the velocities (in the kinetic-energy
         '    metric) that makes it so, which rounding alone has made necessary.
-        StopApproaches(shapes, rows, y)
+        '    A body that two ties in line hold where it is (TieLock) does not move across them either: its rows
+        '    along them are one row twice, and its lock is the row they cannot give.
+        Dim locks = TieLock.Find(rows, y)
+        StopApproaches(shapes, rows.Concat(locks).ToList(), y)
 
         ' 5. The forces: the complementarity solve for the accelerations. A contact that pushes is held; one moving
         '    off the end of its face is moved onto the feature it goes onto, and the forces found again.
         Dim pressing = PressingRows(shapes, links, rows, y, touches, local)
-        HoldRates(shapes, pressing, rows, y)
+        HoldRates(shapes, pressing.Concat(locks).ToList(), rows.Concat(locks).ToList(), y)
         ' What the last crumb of a bounce, taken away, held (never more than a bounce of four slops).
         Dim crumb = kinetic - DissipationLedger.Kinetic(shapes)
         If crumb > 0 Then _world.Dissipate(crumb)
@@ -511,7 +514,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim size = bodies.Min(Function(b) Math.Min(b.Outline.MaxX - b.Outline.MinX, b.Outline.MaxY - b.Outline.MinY))
         Dim m = New ConstrainedMotion(bodies, group.Links, contacts, t, _world.Gravity, released, size, touching, forces)
         ' At rest, every force balanced: nothing changes until something reaches it, so nothing is integrated.
-        If m.IsStill(UniformMotion.RestFraction) Then Return New UniformMotion(bodies, m.HeldContacts, m.HeldLinks, m.StartTensions, m.SlackLinks, t)
+        If m.IsStill(UniformMotion.RestFraction) Then Return New UniformMotion(bodies, m.HeldContacts, m.HeldLinks, m.StartTensions, m.SlackLinks, m.HeldLocks, t)
         Return m
     End Function
 

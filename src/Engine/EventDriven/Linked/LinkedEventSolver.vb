@@ -471,5 +471,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
         For Each c In m.HeldContacts
             _impulse.AddHeld(m.Bodies, c)
         Next
+        For Each c In m.HeldLocks
+            _impulse.AddLock(m.Bodies(c.A), c.Normal)
+        Next
     End Sub
 End Class

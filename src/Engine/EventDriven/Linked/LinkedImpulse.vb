@@ -78,6 +78,11 @@ Friend NotInheritable Class LinkedImpulse
         AddContact(bodies(c.A), If(c.B >= 0, bodies(c.B), Nothing), -c.UnitAt(bodies), 0)
     End Sub
 
+    ''' <summary>A body that two ties in line hold where it is (<see cref="TieLock"/>): it does not move along <paramref name="direction"/> through the blow.</summary>
+    Friend Sub AddLock(body As Shape, direction As Vector)
+        _rows.Add(New Row With {.A = IndexOf(body), .B = -1, .U = direction, .Target = 0, .Sign = 0, .Held = True})
+    End Sub
+
     ''' <summary>A rod or a taut string that holds its length through the blow.</summary>
     Friend Sub AddLink(link As Link)
         Dim row = LinkRow(link, If(link.Kind = LinkKind.String, -1, 0), False)

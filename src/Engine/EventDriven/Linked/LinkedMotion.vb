@@ -99,6 +99,13 @@ Friend MustInherit Class LinkedMotion
         End Get
     End Property
 
+    ''' <summary>The rows by which two ties in line hold a body where it is (<see cref="TieLock"/>), on its bodies' slots.</summary>
+    Friend Overridable ReadOnly Property HeldLocks As Constraint()
+        Get
+            Return Array.Empty(Of Constraint)()
+        End Get
+    End Property
+
     ''' <summary>
     ''' Contacts that touch without pressing, which this motion watches until they press in or open clear: their
     ''' pairs are not searched either.

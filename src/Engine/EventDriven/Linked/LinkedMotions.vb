@@ -10,10 +10,10 @@ Friend Module LinkedMotions
 
     ''' <summary>
     ''' Whether <paramref name="l"/> is a rod short of its length (by more than <see cref="FullFraction"/> of it). Only a
-    ''' rod that a group watched, as the others held implied it, gets there: a ball hung from two points one above the
-    ''' other, the rods' circles touching at the ball, rolls round the smaller circle and leaves the longer rod short.
-    ''' Such a rod is watched as a slack string is until it reaches its length again; held as it is, it would put its
-    ''' ends back at its length at once, a jump that makes or takes energy.
+    ''' rod that a group watched, as the others held implied it, can get there (a body held by two rods in line to
+    ''' fixed points cannot: <see cref="TieLock"/> holds it where it is). Such a rod is watched as a slack string is
+    ''' until it reaches its length again; held as it is, it would put its ends back at its length at once, a jump
+    ''' that makes or takes energy.
     ''' </summary>
     Friend Function IsShortRod(l As Link) As Boolean
         Return l.Kind = LinkKind.Rod AndAlso l.Distance < l.Length * (1 - FullFraction)

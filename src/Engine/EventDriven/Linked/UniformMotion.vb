@@ -26,16 +26,19 @@ Friend NotInheritable Class UniformMotion
     Private ReadOnly _held As Link() = Array.Empty(Of Link)()
     Private ReadOnly _tensions As Double() = Array.Empty(Of Double)()
     Private ReadOnly _slack As Link() = Array.Empty(Of Link)()
+    ' The rows by which two ties in line hold a body where it is (TieLock).
+    Private ReadOnly _locks As Constraint() = Array.Empty(Of Constraint)()
 
     ''' <summary>
     ''' A group at rest: every body still and every force balanced (a box on a table held by a spring pulling less
     ''' than its weight, a bob hanging on a string against a wall). Nothing moves, so nothing changes, links and
     ''' all: its rods and taut strings <paramref name="held"/> keep <paramref name="tensions"/> (N), the other
-    ''' <paramref name="slack"/> ones none.
+    ''' <paramref name="slack"/> ones none; <paramref name="locks"/> hold bodies where two ties in line keep them.
     ''' </summary>
-    Friend Sub New(bodies As Shape(), contacts As Constraint(), held As Link(), tensions As Double(), slack As Link(), startTime As Double)
+    Friend Sub New(bodies As Shape(), contacts As Constraint(), held As Link(), tensions As Double(), slack As Link(), locks As Constraint(), startTime As Double)
         MyBase.New(bodies, startTime)
         _contacts = contacts
+        _locks = locks
         _held = held
         _tensions = tensions
         _slack = slack
@@ -149,6 +152,12 @@ Friend NotInheritable Class UniformMotion
     Friend Overrides ReadOnly Property HeldContacts As Constraint()
         Get
             Return _contacts
+        End Get
+    End Property
+
+    Friend Overrides ReadOnly Property HeldLocks As Constraint()
+        Get
+            Return _locks
         End Get
     End Property
 
