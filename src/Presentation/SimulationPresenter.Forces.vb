@@ -18,6 +18,14 @@ Partial Public NotInheritable Class SimulationPresenter
         EmitAndExplainForces()
     End Sub
 
+    ''' <summary>Whether the body shown was, at the last frame that looked, asleep where its forces do not balance.</summary>
+    Private _forcesNoted As Boolean
+
+    ''' <summary>The Forces tab came into view: when the body shown is asleep where its forces do not balance, the message says why.</summary>
+    Public Sub ExplainForces()
+        Explain(ForcesDiagram())
+    End Sub
+
     ''' <summary>
     ''' Writes the forces of the body shown to the trace and, when it is asleep where they do not balance, says in the
     ''' message why it does not move (<see cref="FreeBodyView.RestNote"/>). The diagram is found once for both.
@@ -25,10 +33,33 @@ Partial Public NotInheritable Class SimulationPresenter
     Private Sub EmitAndExplainForces()
         Dim d = ForcesDiagram()
         Emit(FreeBodyView.TraceLine(d))
-        If d Is Nothing Then Return
+        Explain(d)
+    End Sub
+
+    ''' <summary>Says in the message why the body of diagram <paramref name="d"/> does not move, if it is asleep where its forces do not balance.</summary>
+    Private Sub Explain(d As FreeBodyDiagram)
+        Dim note = ForcesRestNote(d)
+        _forcesNoted = note.Length > 0
+        If _forcesNoted Then ShowMessage(note)
+    End Sub
+
+    ''' <summary>The rest note for diagram <paramref name="d"/> (empty: none, or no diagram).</summary>
+    Private Function ForcesRestNote(d As FreeBodyDiagram) As String
+        If d Is Nothing Then Return ""
         Dim exact = TryCast(TimelineSolver.Unwrap(World.Solver), EventDrivenSolver)
-        Dim note = FreeBodyView.RestNote(d, exact IsNot Nothing AndAlso exact.IsAsleep(d.Body))
-        If note.Length > 0 Then ShowMessage(note)
+        Return FreeBodyView.RestNote(d, exact IsNot Nothing AndAlso exact.IsAsleep(d.Body))
+    End Function
+
+    ''' <summary>
+    ''' After a frame of the run, while the forces are drawn on the canvas: the body shown has just gone to sleep where
+    ''' its forces do not balance (it was chosen before): the message says why, once, as choosing it then would.
+    ''' </summary>
+    Private Sub FollowForcesRest()
+        If Not Forces.Shown Then Return
+        Dim note = ForcesRestNote(ForcesDiagram())
+        Dim noted = note.Length > 0
+        If noted AndAlso Not _forcesNoted Then ShowMessage(note)
+        _forcesNoted = noted
     End Sub
 
     ''' <summary>The diagram of the body shown, now; Nothing when there is no movable body.</summary>

@@ -235,6 +235,7 @@ Partial Public NotInheritable Class SimulationPresenter
             Log.EndFrame()
             _graphs.SampleGraphs()
             FollowMeasures()
+            FollowForcesRest()
         End If
         _momentum.FollowMomentumViews(realSeconds, Not IsPaused)
         ' A followed body moves: the view moves with it (not written to the trace every frame).

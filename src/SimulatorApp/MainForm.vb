@@ -582,7 +582,10 @@ Partial Friend NotInheritable Class MainForm
         Dim list = TryCast(page.Controls(0), BufferedListView)
         If list Is Nothing Then ' the Graphs and Forces tabs
             ' Mono sizes a text box again when its page first shows (from the font height it reports): the Forces page is laid out again then.
-            If page Is _forcesPage.Page Then _forcesPage.Arrange()
+            If page Is _forcesPage.Page Then
+                _forcesPage.Arrange()
+                _presenter.ExplainForces()
+            End If
             _trace?.Invoke("tab " & page.Text)
             TraceLayout()
             Return

@@ -12,7 +12,7 @@ Public Class ForcesRestNoteTests
     ''' <paramref name="others"/> more balls resting on the floor far off; with the two below against the walls of a box
     ''' 26 cm wide when <paramref name="walled"/>. Run 5 s.
     ''' </summary>
-    Private Shared Function BallInAV(others As Integer, walled As Boolean) As PresenterHarness
+    Private Shared Function BallInAV(others As Integer, walled As Boolean, Optional beforeRun As Action(Of PresenterHarness) = Nothing) As PresenterHarness
         Dim w As New World(If(walled, 0.26, 4.0), 1, 9.81, 0.3)
         Dim x0 = If(walled, 0.05, 0.435), x1 = If(walled, 0.21, 0.565)
         w.Add(New Circle(New Vector(x0, 0.05), 0.05, 1, id:="left"))
@@ -22,6 +22,7 @@ Public Class ForcesRestNoteTests
             w.Add(New Circle(New Vector(1.0 + 0.2 * k, 0.05), 0.05, 1, id:="o" & k.ToString(Globalization.CultureInfo.InvariantCulture)))
         Next
         Dim h As New PresenterHarness(w)
+        beforeRun?.Invoke(h)
         For k = 1 To 300
             h.P.Tick(1 / 60.0)
         Next
@@ -42,6 +43,32 @@ Public Class ForcesRestNoteTests
         Assert.EndsWith("holding the bodies around it as fixed. With no friction they would move, and so would it.", h.P.Message, StringComparison.Ordinal)
     End Sub
 
+    ''' <summary>
+    ''' Chosen before the run with the forces drawn on the canvas: the message says why once the ball falls asleep in the
+    ''' V, with no new choice.
+    ''' </summary>
+    <Fact>
+    Public Sub BallChosenBeforeTheRun_ForcesDrawn_IsExplainedWhenItFallsAsleep()
+        Dim h = BallInAV(14, walled:=False, beforeRun:=Sub(x)
+                                                           x.P.ChooseForcesBody("top")
+                                                           x.P.SetShowForces(True)
+                                                       End Sub)
+        Assert.True(h.P.World.Time >= 4.99, $"ran only to {h.P.World.Time} s")
+        Assert.StartsWith("top is at rest, but the forces shown do not balance (ΣF = ", h.P.Message, StringComparison.Ordinal)
+    End Sub
+
+    ''' <summary>
+    ''' Chosen before the run, the forces not drawn: nothing is said during the run; the Forces tab coming into view
+    ''' (<see cref="SimulationPresenter.ExplainForces"/>) says it.
+    ''' </summary>
+    <Fact>
+    Public Sub BallChosenBeforeTheRun_ForcesTabOpenedAfter_IsExplained()
+        Dim h = BallInAV(14, walled:=False, beforeRun:=Sub(x) x.P.ChooseForcesBody("top"))
+        Assert.DoesNotContain("do not balance", h.P.Message, StringComparison.Ordinal)
+        h.P.ExplainForces()
+        Assert.StartsWith("top is at rest, but the forces shown do not balance (ΣF = ", h.P.Message, StringComparison.Ordinal)
+    End Sub
+
     ''' <summary>Held by the walls, the same ball's forces balance: nothing to explain. Nor for a ball on the floor alone.</summary>
     <Fact>
     Public Sub TrueRest_AddsNothing()
@@ -51,6 +78,14 @@ Public Class ForcesRestNoteTests
         Dim crowd = BallInAV(14, walled:=False)
         crowd.P.ChooseForcesBody("o3")
         Assert.DoesNotContain("do not balance", crowd.P.Message, StringComparison.Ordinal)
+        ' Drawn on the canvas through the run: nothing either.
+        Dim drawn = BallInAV(0, walled:=True, beforeRun:=Sub(x)
+                                                             x.P.ChooseForcesBody("top")
+                                                             x.P.SetShowForces(True)
+                                                         End Sub)
+        Assert.DoesNotContain("do not balance", drawn.P.Message, StringComparison.Ordinal)
+        drawn.P.ExplainForces()
+        Assert.DoesNotContain("do not balance", drawn.P.Message, StringComparison.Ordinal)
     End Sub
 
     ''' <summary>Before the run, a ball in the air has only its weight, but it is not asleep: nothing to explain.</summary>
