@@ -10,6 +10,14 @@ Option Strict On
 ''' heavy body then carries nearly all the energy, and the rounding of its position (metres) divided by a step of
 ''' the light body's fast oscillation would show in its velocity, and so in the energy, ½Mv², at 10⁻⁹ of the total.
 ''' Here the heavy body's velocity is the exact centre velocity plus only m_light/M of the separation's rate.
+''' <para>
+''' What is integrated is not r itself but its change since the start, δ = r − r₀, and each spring's stretch is worked
+''' out from it without subtracting lengths: |r₀ + δ| − |r₀| = (2 r₀·δ + |δ|²) ÷ (|r₀ + δ| + |r₀|), plus the constant
+''' |r₀| − L. A slow pair 0.17 m apart stretched by 19 µm then has its stretch to the last digit, not to 10⁻¹² of
+''' 0.17 m (which is 10⁻⁸ of the stretch, and showed in its energy); and the error control asks its positions to
+''' 3·10⁻¹³ of the pair's own swing (the stretch its internal energy would make, or the distance its relative speed
+''' covers in a second, whichever is smaller), not of a metre.
+''' </para>
 ''' </summary>
 Friend NotInheritable Class SpringPairMotion
     Inherits LinkedMotion
@@ -26,7 +34,11 @@ Friend NotInheritable Class SpringPairMotion
     ' The centre of mass and its velocity at the start, m and m/s.
     Private ReadOnly _centre As Vector
     Private ReadOnly _centreVelocity As Vector
-    ' The separation r and its rate (m, m/s), integrated.
+    ' The separation at the start r₀ (m), its length |r₀|, and each spring's |r₀| − L (m).
+    Private ReadOnly _start As Vector
+    Private ReadOnly _startLength As Double
+    Private ReadOnly _startStretch As Double()
+    ' The separation's change since the start δ = r − r₀ and its rate (m, m/s), integrated.
     Private ReadOnly _path As QuinticTrajectory
     ' The stretch looked at so far: the contact searches stop at its end, so that a stiff spring's pair, made anew at
     ' each collision, is integrated only as far as the next one needs.
@@ -49,16 +61,41 @@ Friend NotInheritable Class SpringPairMotion
         _centre = (a.Mass / total) * a.CentreOfMass + (b.Mass / total) * b.CentreOfMass
         _centreVelocity = (a.Mass / total) * a.Velocity + (b.Mass / total) * b.Velocity
         Dim r = b.CentreOfMass - a.CentreOfMass, w = b.Velocity - a.Velocity
-        ' The fastest spring's angular frequency (rad/s), for the first step.
-        Dim fastest = 0.0
-        For Each l In _links
+        _start = r
+        _startLength = r.Length
+        _startStretch = _links.Select(Function(l) _startLength - l.Length).ToArray()
+        ' The fastest spring's angular frequency (rad/s), for the first step; the pair's energy in its own frame (J).
+        Dim fastest = 0.0, stiffness = 0.0
+        Dim energy = 0.5 * _reduced * w.LengthSquared
+        For i = 0 To _links.Length - 1
+            Dim l = _links(i)
             fastest = Math.Max(fastest, Math.Sqrt(l.Stiffness / _reduced))
+            stiffness += l.Stiffness
+            energy += 0.5 * l.Stiffness * _startStretch(i) * _startStretch(i)
         Next
         Dim firstStepSeconds = Lookahead.FirstStepSeconds(fastest)
         _lookahead = New Lookahead(startTime, firstStepSeconds)
-        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, {r.X, r.Y, w.X, w.Y}, startTime, firstStepSeconds, RelativeTolerance, AbsoluteTolerance,
-                                      rounding:=AddressOf Rounding)
+        _path = New QuinticTrajectory("the spring integrator", AddressOf Derivative, {0, 0, w.X, w.Y}, startTime, firstStepSeconds, RelativeTolerance,
+                                      AbsoluteTolerance * SwingScale(energy, stiffness), rounding:=AddressOf Rounding)
     End Sub
+
+    ''' <summary>
+    ''' The pair's own swing, as a number of metres (or metres per second) at most 1: the stretch its internal energy
+    ''' <paramref name="energy"/> (J) would make on the springs (<paramref name="stiffness"/>, N/m in all), or the
+    ''' relative speed it would have (distance in a second), whichever is smaller; never below 10⁻¹².
+    ''' </summary>
+    Private Function SwingScale(energy As Double, stiffness As Double) As Double
+        Dim stretch = If(stiffness > 0, Math.Sqrt(2 * energy / stiffness), 1.0)
+        Dim speed = Math.Sqrt(2 * energy / _reduced)
+        Return Math.Max(0.000000000001, Math.Min(1.0, Math.Min(stretch, speed)))
+    End Function
+
+    ''' <summary>|r| − |r₀| for r = r₀ + δ (m), with no lengths subtracted: (2 r₀·δ + |δ|²) ÷ (|r| + |r₀|).</summary>
+    Private Function StretchSinceStart(delta As Vector, dist As Double) As Double
+        Dim sum = dist + _startLength
+        If sum = 0 Then Return 0
+        Return (2 * Vector.Dot(_start, delta) + delta.LengthSquared) / sum
+    End Function
 
     ''' <summary>
     ''' The end of the stretch looked at so far: nothing happens there but looking further. Without it the searches
@@ -78,18 +115,21 @@ Friend NotInheritable Class SpringPairMotion
         Return True
     End Function
 
-    ''' <summary>d/dt of (r, ṙ): ṙ, and the springs' push along r ÷ μ (m/s²).</summary>
+    ''' <summary>d/dt of (δ, ṙ): ṙ, and the springs' push along r ÷ μ (m/s²).</summary>
     Private Function Derivative(y As Double()) As Double()
-        Dim r As New Vector(y(0), y(1)), w As New Vector(y(2), y(3))
+        Dim delta As New Vector(y(0), y(1)), w As New Vector(y(2), y(3))
+        Dim r = _start + delta
         Dim d(3) As Double
         d(0) = y(2)
         d(1) = y(3)
         Dim dist = r.Length
         If dist = 0 Then Return d
+        Dim grown = StretchSinceStart(delta, dist)
         Dim along = 0.0
-        For Each l In _links
+        For i = 0 To _links.Length - 1
+            Dim l = _links(i)
             ' k(d − L) + c ḋ: positive pulls the ends together.
-            along += l.Stiffness * (dist - l.Length) + l.Damping * Vector.Dot(w, r) / dist
+            along += l.Stiffness * (grown + _startStretch(i)) + l.Damping * Vector.Dot(w, r) / dist
         Next
         Dim acceleration = r * (-along / (dist * _reduced))
         d(2) = acceleration.X
@@ -98,14 +138,16 @@ Friend NotInheritable Class SpringPairMotion
     End Function
 
     ''' <summary>
-    ''' How far d/dt of (r, ṙ) may be off by rounding alone: a few units in the last place of Σ (k (|r| + L) + c |ṙ|)
-    ''' ÷ μ, the sizes of the numbers whose difference the push is (at a stiff spring's length it is all rounding).
+    ''' How far d/dt of (δ, ṙ) may be off by rounding alone: a few units in the last place of Σ (k (|grown| + ||r₀| − L|)
+    ''' + c |ṙ|) ÷ μ, the sizes of the numbers the push is made of (the stretch is worked out without subtracting
+    ''' lengths, so it is as exact as its parts).
     ''' </summary>
     Private Function Rounding(y As Double()) As Double()
         Dim size = 0.0
-        Dim dist = Math.Sqrt(y(0) * y(0) + y(1) * y(1)), rate = Math.Sqrt(y(2) * y(2) + y(3) * y(3))
-        For Each l In _links
-            size += l.Stiffness * (dist + l.Length) + l.Damping * rate
+        Dim delta As New Vector(y(0), y(1))
+        Dim grown = Math.Abs(StretchSinceStart(delta, (_start + delta).Length)), rate = Math.Sqrt(y(2) * y(2) + y(3) * y(3))
+        For i = 0 To _links.Length - 1
+            size += _links(i).Stiffness * (grown + Math.Abs(_startStretch(i))) + _links(i).Damping * rate
         Next
         size *= SpringTerm.Ulps / _reduced
         Return {0, 0, size, size}
@@ -118,8 +160,9 @@ Friend NotInheritable Class SpringPairMotion
     End Property
 
     Friend Overrides Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
-        Dim r As Vector, w As Vector
-        _path.StateAt(time, 0, r, w)
+        Dim delta As Vector, w As Vector
+        _path.StateAt(time, 0, delta, w)
+        Dim r = _start + delta
         Dim tau = time - StartTime
         Dim centre = New Vector(_centre.X + _centreVelocity.X * tau, _centre.Y + (_centreVelocity.Y - 0.5 * _gravity * tau) * tau)
         Dim centreVelocity = New Vector(_centreVelocity.X, _centreVelocity.Y - _gravity * tau)
