@@ -14,7 +14,10 @@ Option Strict On
 ''' Ends within <c>slop</c> metres of the full length count as taut already: the string pulls now (0)
 ''' if they are moving apart, or moving across the string with nothing pulling them inwards (the
 ''' first non-zero derivative of g decides, each taken as zero within rounding); if they are moving
-''' together it is the next time they get that far apart. Ends further apart than L + slop are over-stretched: taut now (0).
+''' together it is the next time they get that far apart. Ends further apart than L + slop are over-stretched: taut now
+''' (0) if they are not moving together; if they are, the string is going slack, and it is taut the next time they
+''' are that far apart again, as for ends at its length (a snap now would have nothing to stop, and the same answer
+''' after it would be asked again for ever).
 ''' </summary>
 Public Module StringTaut
     ''' <summary>
@@ -28,7 +31,8 @@ Public Module StringTaut
         Dim r = position - anchor
         Dim c0 = length * length - r.LengthSquared
         Dim tolerance = 2 * length * slop
-        If c0 < -tolerance Then Return 0
+        If c0 < -tolerance AndAlso Vector.Dot(r, velocity) >= 0 Then Return 0
+        c0 = Math.Max(c0, -tolerance)
         Dim alpha = -0.5 * gravity
         ' |r + v t + α ŷ t²|² expanded; g(t) is its negative plus L².
         Dim c4 = -(alpha * alpha)
@@ -55,7 +59,7 @@ Public Module StringTaut
         Dim w = velocity2 - velocity1
         Dim c0 = length * length - r.LengthSquared
         Dim tolerance = 2 * length * slop
-        If c0 < -tolerance Then Return 0
+        If c0 < -tolerance AndAlso Vector.Dot(r, w) >= 0 Then Return 0
         Dim c1 = -2 * Vector.Dot(r, w)
         If c0 <= tolerance AndAlso Math.Abs(c1) <= TimeOfImpact.ApproachFraction * 2 * length * w.Length Then c1 = 0
         Return RootFinding.EarliestEntryQuadratic(-w.LengthSquared, c1, Math.Max(c0, -tolerance), tolerance)

@@ -71,8 +71,15 @@ Namespace Links
             ' A point a rounding outside, moving inwards, is the same case.
             Dim rounded = p * (1 + 0.0000000000000002)
             Assert.Equal(chord, StringTaut.AnchoredTautTime(anchor, 1, rounded, inward, 0, Slop), 0.000000000001)
-            ' Over-stretched: taut now. At rest without gravity: never.
-            Assert.Equal(0.0, StringTaut.AnchoredTautTime(anchor, 1, p * 1.1, inward, G, Slop))
+            ' Over-stretched and moving outwards: taut now. Moving inwards, the string is going slack: it is taut the next
+            ' time the body is that far out (g = 0: the chord of that circle), not now, where a snap would stop nothing.
+            Assert.Equal(0.0, StringTaut.AnchoredTautTime(anchor, 1, p * 1.1, p, G, Slop))
+            Dim far = p * 1.1
+            Assert.Equal(-2 * Vector.Dot(far, inward) / inward.LengthSquared, StringTaut.AnchoredTautTime(anchor, 1, far, inward, 0, Slop), 0.000000000001)
+            Dim falling = StringTaut.AnchoredTautTime(anchor, 1, far, inward, G, Slop)
+            Assert.True(falling > 0 AndAlso falling < Double.PositiveInfinity, $"taut after {falling} s")
+            ' Over-stretched at rest: taut now. Inside it at rest without gravity: never.
+            Assert.Equal(0.0, StringTaut.AnchoredTautTime(anchor, 1, p * 1.1, Vector.Zero, 0, Slop))
             Assert.Equal(Double.PositiveInfinity, StringTaut.AnchoredTautTime(anchor, 1, p * 0.5, Vector.Zero, 0, Slop))
         End Sub
 
@@ -97,6 +104,15 @@ Namespace Links
             Assert.Equal(0.0, StringTaut.PairTautTime(a, Vector.Zero, b, New Vector(0.1, 0), 1, Slop))
             Assert.Equal(0.0, StringTaut.PairTautTime(a, Vector.Zero, b, New Vector(0, 3), 1, Slop))
             Assert.Equal(Double.PositiveInfinity, StringTaut.PairTautTime(a, New Vector(1, 1), New Vector(0.5, 0), New Vector(1, 1), 1, Slop))
+            ' Over-stretched: taut now while the ends move apart or keep their distance; coming together, the next time they
+            ' are that far apart again (the chord), or a pair a few nanometres over a 300 m string that a blow sent back
+            ' together was found taut now, snapped to no effect, and found taut again, for ever.
+            Dim over As New Vector(1.1, 0)
+            Assert.Equal(0.0, StringTaut.PairTautTime(a, Vector.Zero, over, New Vector(0.1, 0), 1, Slop))
+            Assert.Equal(0.0, StringTaut.PairTautTime(a, Vector.Zero, over, Vector.Zero, 1, Slop))
+            Assert.Equal(2 * 1.1 * 1 / (1 + 0.25), StringTaut.PairTautTime(a, Vector.Zero, over, New Vector(-1, 0.5), 1, Slop), 0.000000000001)
+            Dim stretched As New Vector(300.000000005, 0)
+            Assert.True(StringTaut.PairTautTime(a, Vector.Zero, stretched, New Vector(-0.001, 0.0001), 300, 0.000000001) > 1)
         End Sub
 
         <Fact>

@@ -467,9 +467,15 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Next
         Dim pressing As New List(Of Constraint)
         For k = 0 To rows.Count - 1
-            If rows(k).Holds OrElse forces(k) > 0 Then pressing.Add(rows(k))
+            If rows(k).Holds OrElse (forces(k) > 0 AndAlso Not ReleasedNow(rows(k))) Then pressing.Add(rows(k))
         Next
         Return pressing
+    End Function
+
+    ''' <summary>Whether contact <paramref name="c"/> was let go earlier in this instant (see TransitionOf): it is watched, not held.</summary>
+    Private Function ReleasedNow(c As Constraint) As Boolean
+        Dim key = TryCast(c.Tag, ContactKey)
+        Return key IsNot Nothing AndAlso _releasedNow.Contains(key.Value)
     End Function
 
     ''' <summary>Whether two contact constraints are on the same feature.</summary>

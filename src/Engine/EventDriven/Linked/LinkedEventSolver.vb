@@ -76,6 +76,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ' Events within a nanosecond of the last instant, and when that instant was.
     Private _instant As Integer
     Private _lastTime As Double = Double.NaN
+    ' The contacts (their keys' values) whose force fell to zero within this instant: none is held again within it.
+    Private ReadOnly _releasedNow As New HashSet(Of Long)
 
     ''' <summary>Called when the world is given to the solver.</summary>
     Friend Sub Attach(world As World)
@@ -150,6 +152,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _instant = 0
             _lastTime = t
             Array.Clear(_hitsNow, 0, _hitsNow.Length)
+            _releasedNow.Clear()
         End If
     End Sub
 
@@ -337,6 +340,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Dim a = Array.IndexOf(m.Bodies, l.A), b = If(l.IsAnchored, -1, Array.IndexOf(m.Bodies, l.B))
             _reports.Add(New CollisionRecord(t, l, before(a), l.A.Velocity, If(b >= 0, before(b), Vector.Zero), If(b >= 0, l.B.Velocity, Vector.Zero)))
         End If
+        ' A contact let go at this instant is not held again within it: at a point where two contacts' forces both reach
+        ' zero, each group formed without one found the other's force falling through zero at once, and the two groups
+        ' took turns for ever, a few units in the last place of the clock apart.
+        Dim key = TryCast(m.Released, ContactKey)
+        If key IsNot Nothing Then _releasedNow.Add(key.Value)
         Repredict(Regroup(New List(Of Integer) From {g}, t, m.Released), tEnd)
     End Sub
 
