@@ -193,41 +193,53 @@ Public NotInheritable Class Outline
     ''' </summary>
     Public ReadOnly Property Centroid As Vector
         Get
-            If Corners.Length = 1 Then Return Corners(0)
-            If Corners.Length = 2 Then Return 0.5 * (Corners(0) + Corners(1))
-            ' Core: fan of triangles from corner 0, measured from corner 0 so large offsets cancel less.
-            Dim o = Corners(0)
-            Dim a2 = 0.0, mx = 0.0, my = 0.0
-            For i = 1 To Corners.Length - 2
-                Dim p = Corners(i) - o, q = Corners(i + 1) - o
-                Dim c = Vector.Cross(p, q)
-                a2 += c
-                mx += c * (p.X + q.X) / 3
-                my += c * (p.Y + q.Y) / 3
-            Next
-            Dim area = 0.5 * a2
-            Dim moment = New Vector(0.5 * mx, 0.5 * my)
-            Dim r = Radius
-            If r > 0 Then
-                For i = 0 To Corners.Length - 1
-                    ' The strip along edge i: a rectangle L × R centred half a radius out from the edge's middle.
-                    Dim stripArea = EdgeLengths(i) * r
-                    Dim stripCentre = 0.5 * (Corners(i) + Corners((i + 1) Mod Corners.Length)) + (0.5 * r) * EdgeNormals(i) - o
-                    area += stripArea
-                    moment += stripArea * stripCentre
-                    ' The sector at corner i, between the normals of the edges that meet there: its
-                    ' centre of area lies on the bisector at 4R sin(θ/2) / (3θ) from the corner.
-                    Dim n1 = EdgeNormals((i + Corners.Length - 1) Mod Corners.Length), n2 = EdgeNormals(i)
-                    Dim theta = Math.Atan2(Vector.Cross(n1, n2), Vector.Dot(n1, n2))
-                    Dim sectorArea = 0.5 * r * r * theta
-                    Dim reach = 4 * r * Math.Sin(0.5 * theta) / (3 * theta)
-                    area += sectorArea
-                    moment += sectorArea * (Corners(i) - o + reach * (n1 + n2).Normalized(n2))
-                Next
+            ' An outline never changes: its centroid is worked out once (a spring to a box asks for it at every step).
+            If Not _centroidKnown Then
+                _centroid = CentroidOfArea()
+                _centroidKnown = True
             End If
-            Return o + moment / area
+            Return _centroid
         End Get
     End Property
+
+    Private _centroid As Vector
+    Private _centroidKnown As Boolean
+
+    Private Function CentroidOfArea() As Vector
+        If Corners.Length = 1 Then Return Corners(0)
+        If Corners.Length = 2 Then Return 0.5 * (Corners(0) + Corners(1))
+        ' Core: fan of triangles from corner 0, measured from corner 0 so large offsets cancel less.
+        Dim o = Corners(0)
+        Dim a2 = 0.0, mx = 0.0, my = 0.0
+        For i = 1 To Corners.Length - 2
+            Dim p = Corners(i) - o, q = Corners(i + 1) - o
+            Dim c = Vector.Cross(p, q)
+            a2 += c
+            mx += c * (p.X + q.X) / 3
+            my += c * (p.Y + q.Y) / 3
+        Next
+        Dim area = 0.5 * a2
+        Dim moment = New Vector(0.5 * mx, 0.5 * my)
+        Dim r = Radius
+        If r > 0 Then
+            For i = 0 To Corners.Length - 1
+                ' The strip along edge i: a rectangle L × R centred half a radius out from the edge's middle.
+                Dim stripArea = EdgeLengths(i) * r
+                Dim stripCentre = 0.5 * (Corners(i) + Corners((i + 1) Mod Corners.Length)) + (0.5 * r) * EdgeNormals(i) - o
+                area += stripArea
+                moment += stripArea * stripCentre
+                ' The sector at corner i, between the normals of the edges that meet there: its
+                ' centre of area lies on the bisector at 4R sin(θ/2) / (3θ) from the corner.
+                Dim n1 = EdgeNormals((i + Corners.Length - 1) Mod Corners.Length), n2 = EdgeNormals(i)
+                Dim theta = Math.Atan2(Vector.Cross(n1, n2), Vector.Dot(n1, n2))
+                Dim sectorArea = 0.5 * r * r * theta
+                Dim reach = 4 * r * Math.Sin(0.5 * theta) / (3 * theta)
+                area += sectorArea
+                moment += sectorArea * (Corners(i) - o + reach * (n1 + n2).Normalized(n2))
+            Next
+        End If
+        Return o + moment / area
+    End Function
 
     ''' <summary>
     ''' The set of differences core_b − core_a grown by r_a + r_b: body A (outline a, reference point p_A)
