@@ -834,15 +834,7 @@ Friend NotInheritable Class ConstrainedMotion
         Dim impulse As New LinkedImpulse()
         ' A contact whose normal points from B to A: "approaching" along it is the ends moving apart, and its push pulls them together.
         impulse.AddContact(l.A, If(l.IsAnchored, Nothing, l.B), -(l.EndB - l.EndA).Normalized(Vector.Zero), restitution)
-        For Each other In _held
-            impulse.AddLink(other)
-        Next
-        For Each c In _contacts
-            impulse.AddHeld(Bodies, c)
-        Next
-        For Each c In _locks
-            impulse.AddLock(Bodies(c.A), c.Normal)
-        Next
+        impulse.AddHeldRowsOf(Me)
         impulse.Resolve()
         If l.Kind = LinkKind.String Then Snapped = l
         Return False

@@ -470,17 +470,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Return _quietAt = _now AndAlso _quiet.Contains(key.Value)
     End Function
 
-    ''' <summary>Group g's held links and lasting contacts as rows of the blow under way: they hold through it.</summary>
+    ''' <summary>Group g's held links, lasting contacts and locks as rows of the blow under way: they hold through it.</summary>
     Private Sub AddHeldRows(g As Integer)
-        Dim m = _groups(g).Motion
-        For Each l In m.HeldLinks
-            _impulse.AddLink(l)
-        Next
-        For Each c In m.HeldContacts
-            _impulse.AddHeld(m.Bodies, c)
-        Next
-        For Each c In m.HeldLocks
-            _impulse.AddLock(m.Bodies(c.A), c.Normal)
-        Next
+        _impulse.AddHeldRowsOf(_groups(g).Motion)
     End Sub
 End Class

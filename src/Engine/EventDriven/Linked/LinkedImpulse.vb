@@ -78,6 +78,22 @@ Friend NotInheritable Class LinkedImpulse
         AddContact(bodies(c.A), If(c.B >= 0, bodies(c.B), Nothing), -c.UnitAt(bodies), 0)
     End Sub
 
+    ''' <summary>
+    ''' Every row motion <paramref name="m"/> holds, through the blow: its rods and taut strings, its lasting contacts,
+    ''' and the locks of bodies two ties in line hold where they are.
+    ''' </summary>
+    Friend Sub AddHeldRowsOf(m As LinkedMotion)
+        For Each l In m.HeldLinks
+            AddLink(l)
+        Next
+        For Each c In m.HeldContacts
+            AddHeld(m.Bodies, c)
+        Next
+        For Each c In m.HeldLocks
+            AddLock(m.Bodies(c.A), c.Normal)
+        Next
+    End Sub
+
     ''' <summary>A body that two ties in line hold where it is (<see cref="TieLock"/>): it does not move along <paramref name="direction"/> through the blow.</summary>
     Friend Sub AddLock(body As Shape, direction As Vector)
         _rows.Add(New Row With {.A = IndexOf(body), .B = -1, .U = direction, .Target = 0, .Sign = 0, .Held = True})
