@@ -46,17 +46,23 @@ Partial Public NotInheritable Class SimulationPresenter
     ''' <summary>The rest note for diagram <paramref name="d"/> (empty: none, or no diagram).</summary>
     Private Function ForcesRestNote(d As FreeBodyDiagram) As String
         If d Is Nothing Then Return ""
+        Return FreeBodyView.RestNote(d, IsAsleep(d.Body))
+    End Function
+
+    ''' <summary>Whether the exact solver (inside the time machine's wrapper) holds <paramref name="body"/> asleep.</summary>
+    Private Function IsAsleep(body As Shape) As Boolean
         Dim exact = TryCast(TimelineSolver.Unwrap(World.Solver), EventDrivenSolver)
-        Return FreeBodyView.RestNote(d, exact IsNot Nothing AndAlso exact.IsAsleep(d.Body))
+        Return exact IsNot Nothing AndAlso exact.IsAsleep(body)
     End Function
 
     ''' <summary>
     ''' After a frame of the run, while the forces are drawn on the canvas: the body shown has just gone to sleep where
-    ''' its forces do not balance (it was chosen before): the message says why, once, as choosing it then would.
+    ''' its forces do not balance (it was chosen before): the message says why, once, as choosing it then would. Its
+    ''' diagram is found only while it is asleep, not every frame.
     ''' </summary>
     Private Sub FollowForcesRest()
         If Not Forces.Shown Then Return
-        Dim note = ForcesRestNote(ForcesDiagram())
+        Dim note = If(IsAsleep(Forces.BodyIn(World)), ForcesRestNote(ForcesDiagram()), "")
         Dim noted = note.Length > 0
         If noted AndAlso Not _forcesNoted Then ShowMessage(note)
         _forcesNoted = noted
