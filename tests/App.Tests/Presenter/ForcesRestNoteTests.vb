@@ -29,6 +29,15 @@ Public Class ForcesRestNoteTests
         Return h
     End Function
 
+    ''' <summary>Chooses the top ball in the Forces view and draws its forces on the canvas.</summary>
+    Private Shared Sub DrawTopForces(h As PresenterHarness)
+        h.P.ChooseForcesBody("top")
+        h.P.SetShowForces(True)
+    End Sub
+
+    ''' <summary>How the message begins when it explains the top ball's rest.</summary>
+    Private Const TopExplained As String = "top is at rest, but the forces shown do not balance (ΣF = "
+
     ''' <summary>
     ''' With 17 movable bodies the solver lets the ball sleep in the V (it asks whether the two below are held only in a
     ''' world of at most 16): its diagram has its weight and two pushes that point apart, and the message says why it
@@ -39,7 +48,7 @@ Public Class ForcesRestNoteTests
         Dim h = BallInAV(14, walled:=False)
         Assert.True(h.P.World.Time >= 4.99, $"ran only to {h.P.World.Time} s")
         h.P.ChooseForcesBody("top")
-        Assert.StartsWith("top is at rest, but the forces shown do not balance (ΣF = ", h.P.Message, StringComparison.Ordinal)
+        Assert.StartsWith(TopExplained, h.P.Message, StringComparison.Ordinal)
         Assert.EndsWith("holding the bodies around it as fixed. With no friction they would move, and so would it.", h.P.Message, StringComparison.Ordinal)
     End Sub
 
@@ -49,12 +58,9 @@ Public Class ForcesRestNoteTests
     ''' </summary>
     <Fact>
     Public Sub BallChosenBeforeTheRun_ForcesDrawn_IsExplainedWhenItFallsAsleep()
-        Dim h = BallInAV(14, walled:=False, beforeRun:=Sub(x)
-                                                           x.P.ChooseForcesBody("top")
-                                                           x.P.SetShowForces(True)
-                                                       End Sub)
+        Dim h = BallInAV(14, walled:=False, beforeRun:=AddressOf DrawTopForces)
         Assert.True(h.P.World.Time >= 4.99, $"ran only to {h.P.World.Time} s")
-        Assert.StartsWith("top is at rest, but the forces shown do not balance (ΣF = ", h.P.Message, StringComparison.Ordinal)
+        Assert.StartsWith(TopExplained, h.P.Message, StringComparison.Ordinal)
     End Sub
 
     ''' <summary>
@@ -66,7 +72,7 @@ Public Class ForcesRestNoteTests
         Dim h = BallInAV(14, walled:=False, beforeRun:=Sub(x) x.P.ChooseForcesBody("top"))
         Assert.DoesNotContain("do not balance", h.P.Message, StringComparison.Ordinal)
         h.P.ExplainForces()
-        Assert.StartsWith("top is at rest, but the forces shown do not balance (ΣF = ", h.P.Message, StringComparison.Ordinal)
+        Assert.StartsWith(TopExplained, h.P.Message, StringComparison.Ordinal)
     End Sub
 
     ''' <summary>Held by the walls, the same ball's forces balance: nothing to explain. Nor for a ball on the floor alone.</summary>
@@ -79,10 +85,7 @@ Public Class ForcesRestNoteTests
         crowd.P.ChooseForcesBody("o3")
         Assert.DoesNotContain("do not balance", crowd.P.Message, StringComparison.Ordinal)
         ' Drawn on the canvas through the run: nothing either.
-        Dim drawn = BallInAV(0, walled:=True, beforeRun:=Sub(x)
-                                                             x.P.ChooseForcesBody("top")
-                                                             x.P.SetShowForces(True)
-                                                         End Sub)
+        Dim drawn = BallInAV(0, walled:=True, beforeRun:=AddressOf DrawTopForces)
         Assert.DoesNotContain("do not balance", drawn.P.Message, StringComparison.Ordinal)
         drawn.P.ExplainForces()
         Assert.DoesNotContain("do not balance", drawn.P.Message, StringComparison.Ordinal)

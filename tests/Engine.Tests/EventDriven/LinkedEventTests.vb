@@ -25,6 +25,26 @@ Namespace EventDriven
             Return w
         End Function
 
+        ''' <summary>An event world with g = 0 and e = 1 holding balls <paramref name="a"/> and <paramref name="b"/> on a spring of <paramref name="stiffness"/> N/m and <paramref name="length"/> m.</summary>
+        Private Shared Function SpringPairWorld(a As Circle, b As Circle, stiffness As Double, length As Double) As World
+            Dim w = EventWorld(0, 1.0)
+            w.Add(a)
+            w.Add(b)
+            w.Add(Link.CreateSpring(a, b, stiffness, length))
+            Return w
+        End Function
+
+        ''' <summary>The largest |E − E₀| ÷ E₀ of kinetic plus potential energy after each of <paramref name="advances"/> advances of <paramref name="seconds"/> s.</summary>
+        Private Shared Function WorstEnergyDrift(w As World, advances As Integer, seconds As Double) As Double
+            Dim energy = w.KineticEnergy() + w.PotentialEnergy()
+            Dim worst = 0.0
+            For i = 1 To advances
+                w.Advance(seconds)
+                worst = Math.Max(worst, Math.Abs(w.KineticEnergy() + w.PotentialEnergy() - energy) / energy)
+            Next
+            Return worst
+        End Function
+
         <Theory>
         <InlineData(LinkKind.String)>
         <InlineData(LinkKind.Rod)>
@@ -382,18 +402,9 @@ Namespace EventDriven
         Public Sub TwoBallsOnAStretchedSpinningSpring_KeepTheirEnergy_To1e9_Over100Seconds()
             ' g = 0: the pair spins about its centre of mass while the spring stretches and shortens. Kinetic plus
             ' spring energy is the only energy there is, and nothing takes any away.
-            Dim w = EventWorld(0, 1.0)
-            Dim a As New Circle(New Vector(4, 5), 0.1, 1, New Vector(0, 1.5))
-            Dim b As New Circle(New Vector(6, 5), 0.1, 2, New Vector(0, -0.75))
-            w.Add(a)
-            w.Add(b)
-            w.Add(Link.CreateSpring(a, b, 20, 1.2))
-            Dim energy = w.KineticEnergy() + w.PotentialEnergy()
-            Dim worst = 0.0
-            For i = 1 To 100
-                w.Advance(1.0)
-                worst = Math.Max(worst, Math.Abs(w.KineticEnergy() + w.PotentialEnergy() - energy) / energy)
-            Next
+            Dim w = SpringPairWorld(New Circle(New Vector(4, 5), 0.1, 1, New Vector(0, 1.5)),
+                                    New Circle(New Vector(6, 5), 0.1, 2, New Vector(0, -0.75)), 20, 1.2)
+            Dim worst = WorstEnergyDrift(w, 100, 1.0)
             Assert.True(worst <= 0.000000001, $"the energy drifted by {worst} of itself")
             Assert.Equal(100.0, w.Time, 9)
         End Sub
@@ -403,18 +414,9 @@ Namespace EventDriven
             ' g = 0: two balls 0.17 m apart on a 215 N/m spring at its length, one moving at 0.8 mm/s: they swing by some
             ' 20 µm, 10⁻⁴ of their distance apart. The stretch must be held to its own size, not to 10⁻¹² of 0.17 m
             ' (10⁻⁸ of it): integrated as the separation itself, the energy drifted by 7·10⁻⁸ of itself in 10 s.
-            Dim w = EventWorld(0, 1.0)
-            Dim a As New Circle(New Vector(1.7, 5), 0.01, 0.3, New Vector(0.0008, 0.0001))
-            Dim b As New Circle(New Vector(1.87, 5), 0.01, 0.2, Vector.Zero)
-            w.Add(a)
-            w.Add(b)
-            w.Add(Link.CreateSpring(a, b, 215, 0.17))
-            Dim energy = w.KineticEnergy() + w.PotentialEnergy()
-            Dim worst = 0.0
-            For i = 1 To 200
-                w.Advance(0.05)
-                worst = Math.Max(worst, Math.Abs(w.KineticEnergy() + w.PotentialEnergy() - energy) / energy)
-            Next
+            Dim w = SpringPairWorld(New Circle(New Vector(1.7, 5), 0.01, 0.3, New Vector(0.0008, 0.0001)),
+                                    New Circle(New Vector(1.87, 5), 0.01, 0.2, Vector.Zero), 215, 0.17)
+            Dim worst = WorstEnergyDrift(w, 200, 0.05)
             Assert.True(worst <= 0.000000001, $"the energy drifted by {worst} of itself")
         End Sub
 
@@ -423,18 +425,10 @@ Namespace EventDriven
             ' A 0.7 g ball on a spring to a 6.4 t ball: the light one oscillates some 57 times a second while the heavy
             ' one, carrying nearly all the energy, drifts at 0.2 m/s. Sampled between the integrator's steps, the heavy
             ' ball's velocity must not carry its position's rounding divided by the light ball's short steps.
-            Dim w = EventWorld(0, 1.0)
             Dim light As New Circle(New Vector(5.17, 3.5), 0.0038, 0.0006941805430169185, New Vector(0.16620070135733775, -0.3483425589605806))
             Dim heavy As New Circle(New Vector(5.0, 6.587), 0.108, 6375.7145191157, New Vector(0.11892047219725678, -0.19005385617435033))
-            w.Add(light)
-            w.Add(heavy)
-            w.Add(Link.CreateSpring(light, heavy, 88.5700359321693, (heavy.Position - light.Position).Length))
-            Dim energy = w.KineticEnergy() + w.PotentialEnergy()
-            Dim worst = 0.0
-            For i = 1 To 600
-                w.Advance(0.0005)
-                worst = Math.Max(worst, Math.Abs(w.KineticEnergy() + w.PotentialEnergy() - energy) / energy)
-            Next
+            Dim w = SpringPairWorld(light, heavy, 88.5700359321693, (heavy.Position - light.Position).Length)
+            Dim worst = WorstEnergyDrift(w, 600, 0.0005)
             _output.WriteLine($"worst relative energy change {worst}")
             Assert.True(worst <= 0.000000001, $"the energy moved by {worst} of itself")
         End Sub
