@@ -323,7 +323,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 ' Too slow to show it opening from the bound below (a body sliding along a face, or resting):
                 ' look for the opening step by step, with the bound from above, until the overlap could have
                 ' grown by the slop; two sharp shapes have no such bound, so briefly, with the speed alone.
-                Dim sinks = Closing(gap, t0, tEnd, Math.Min(d, 0) - Slop, speed, below, above, oneSided)
+                ' (A hair short of the slop, as the search lands within rounding of its target either side, and no contact
+                ' may end deeper than the slop.)
+                Dim sinks = Closing(gap, t0, tEnd, Math.Min(d, 0) - 0.999 * Slop, speed, below, above, oneSided)
                 Dim limit = If(sinks.Found, sinks.Time, sinks.ClearUntil)
                 Dim sharp = Double.IsPositiveInfinity(above)
                 Dim opened = ConservativeAdvancement.FirstContact(New Opening(gap, 2 * Slop), t0, limit, 0, speed, above, If(sharp, SharpOpeningBudget, 100000))
