@@ -677,6 +677,26 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' A ball drifting at 0.3 mm/s on two slack strings (one to a point above it, one to a ball at rest 2.9 m away), g = 0:
+    ''' nothing acts on it for the two seconds, so its speed is its speed. Integrated as a chain, it changed in the
+    ''' eleventh digit at every look and the energy by 10⁻⁹ of itself; a group whose links are all slack strings now flies,
+    ''' each body on its own parabola until a string snaps taut.
+    ''' </summary>
+    <Fact>
+    Public Sub BallOnTwoSlackStrings_FliesAtItsOwnSpeed_ToTheLastDigit()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-slow-ball-on-two-slack-strings.json"))
+        Dim ball = w.Bodies.First(Function(b) b.Id = "c7")
+        Dim v = ball.Velocity, p = ball.Position
+        w.Solver = SolverFactory.Create("event")
+        For k = 1 To 40
+            w.Advance(0.05)
+            Assert.Equal(v, ball.Velocity)
+        Next
+        Dim drift = p + v * w.Time - ball.Position
+        Assert.True(drift.Length <= 0.0000000000001, $"the ball is {drift.Length} m off its straight line")
+    End Sub
+
+    ''' <summary>
     ''' Runs the case file <paramref name="name"/> to <paramref name="seconds"/> in advances of 0.05 s, energy never gained
     ''' (to 10⁻⁹) and no overlap (over 10⁻⁹ m) after each, and asserts that it got there.
     ''' </summary>

@@ -131,7 +131,7 @@ Friend NotInheritable Class ConstrainedMotion
             If l.Kind = LinkKind.Rod Then
                 If LinkedMotions.IsShortRod(l) Then slack.Add(TieOf(l)) Else held.Add(TieOf(l))
             ElseIf l.Kind = LinkKind.String Then
-                Dim state = StringState(l, released)
+                Dim state = LinkedMotions.StringState(l, gravity, released)
                 If state > 0 Then snapNow = TieOf(l)
                 If state = 0 Then held.Add(TieOf(l)) Else slack.Add(TieOf(l))
             End If
@@ -282,18 +282,6 @@ Friend NotInheritable Class ConstrainedMotion
     ''' </summary>
     Private Function Implied(row As Constraint, held As List(Of Constraint), y As Double()) As Boolean
         Return Not Admits(held.Append(row).ToArray(), y, FreeDerivative(y))
-    End Function
-
-    ''' <summary>−1 slack, 0 taut (at full length, not moving along itself), +1 over-long and stretching (it must snap now).</summary>
-    Private Function StringState(l As Link, released As Object) As Integer
-        If l Is released Then Return -1
-        Dim d = l.Distance
-        If d < l.Length * (1 - LinkedMotions.FullFraction) Then Return -1
-        Dim rate = l.StretchRate
-        Dim vb = If(l.IsAnchored, Vector.Zero, l.B.Velocity)
-        Dim scale = l.A.Velocity.Length + vb.Length + Math.Sqrt(Math.Max(_gravity, 1) * l.Length)
-        If Math.Abs(rate) <= LinkedMotions.FullFraction * scale Then Return 0
-        Return If(rate > 0 AndAlso d >= l.Length, 1, -1)
     End Function
 
     Private Function TieOf(l As Link) As Constraint

@@ -32,6 +32,22 @@ Friend Module LinkedMotions
     End Function
 
     ''' <summary>
+    ''' −1 slack, 0 taut (at full length, not moving along itself), +1 over-long and stretching (it must snap now), for
+    ''' string <paramref name="l"/> under <paramref name="gravity"/> (m/s²); <paramref name="released"/> (a string that has
+    ''' just gone slack or snapped back) is slack whatever the rounding says.
+    ''' </summary>
+    Friend Function StringState(l As Link, gravity As Double, released As Object) As Integer
+        If l Is released Then Return -1
+        Dim d = l.Distance
+        If d < l.Length * (1 - FullFraction) Then Return -1
+        Dim rate = l.StretchRate
+        Dim vb = If(l.IsAnchored, Vector.Zero, l.B.Velocity)
+        Dim scale = l.A.Velocity.Length + vb.Length + Math.Sqrt(Math.Max(gravity, 1) * l.Length)
+        If Math.Abs(rate) <= FullFraction * scale Then Return 0
+        Return If(rate > 0 AndAlso d >= l.Length, 1, -1)
+    End Function
+
+    ''' <summary>
     ''' The closed form for <paramref name="group"/> from its bodies' states at <paramref name="time"/> (s).
     ''' <paramref name="released"/>: a string that has just gone slack (its tension fell to zero) or snapped back is
     ''' slack, whatever the rounding says.
@@ -52,6 +68,7 @@ Friend Module LinkedMotions
             Return New IntegratedMotion(group.Bodies.ToArray(), group.Links, time, g)
         End If
         If IsChain(group) Then
+            If SlackFlightMotion.Fits(group.Links, g, released) Then Return New SlackFlightMotion(group.Bodies.ToArray(), group.Links, time, g, slop)
             Return New ConstrainedMotion(group.Bodies.ToArray(), group.Links, Array.Empty(Of Constraint)(), time, g, released, ForcedMotions.Size(group))
         End If
         If group.Bodies.Count = 1 Then
