@@ -162,6 +162,8 @@ Friend NotInheritable Class ConstrainedMotion
             Next
             If worst < 0 Then
                 For Each c In candidates.Except(independent)
+                    ' A lock the others already imply (the body is held by a contact across it too) is simply not needed.
+                    If c.IsLock Then Continue For
                     If c.Shape = ConstraintShape.Tie Then slack.Add(c) Else watched.Add(c)
                 Next
                 held = independent
