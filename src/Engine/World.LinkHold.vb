@@ -56,6 +56,9 @@ Partial Public NotInheritable Class World
                 worst = Math.Max(worst, Math.Abs(off) / l.Length)
             Next
             If worst <= 0.000000000001 Then Exit For
+            ' Two rods to nearly the same direction (two fixed points almost in line with the body): moving the ends along
+            ' one link at a time undoes the other's each pass and creeps to their crossing. All at once it is reached.
+            If pass = 20 Then PolishLengths(ties, bodies)
         Next
         ' Then speeds along them.
         Dim index As New Dictionary(Of Shape, Integer)
@@ -97,4 +100,30 @@ Partial Public NotInheritable Class World
         If notes.Count > 0 Then _solver?.Invalidate(Nothing)
         Return notes
     End Function
+
+    ''' <summary>
+    ''' Puts every rod, and every string at or past its length, at its length at once: the least mass-weighted move of
+    ''' the bodies (Gauss–Newton steps, <see cref="ConstraintSet.ProjectPositions"/>). Left as it is where the links
+    ''' depend on one another (two rods in line): the passes before have done what can be done.
+    ''' </summary>
+    Private Shared Sub PolishLengths(ties As List(Of Link), bodies As List(Of Shape))
+        Dim index As New Dictionary(Of Shape, Integer)
+        For k = 0 To bodies.Count - 1
+            index(bodies(k)) = k
+        Next
+        Dim held = ties.Where(Function(l) index.ContainsKey(l.A) AndAlso (l.IsAnchored OrElse index.ContainsKey(l.B)) AndAlso
+                                          (l.Kind = LinkKind.Rod OrElse l.Distance >= l.Length)).ToList()
+        If held.Count = 0 Then Return
+        Dim rows = held.Select(Function(l) Constraint.Tie(index(l.A), If(l.IsAnchored, -1, index(l.B)), If(l.IsAnchored, l.EndB, Vector.Zero),
+                                                          l.Length, l.Kind = LinkKind.Rod)).ToArray()
+        Dim y = Constraint.StateOf(bodies)
+        Try
+            Call New ConstraintSet(rows, bodies.Select(Function(b) b.InverseMass).ToArray()).ProjectPositions(y)
+        Catch ex As InvalidOperationException
+            Return
+        End Try
+        For k = 0 To bodies.Count - 1
+            bodies(k).Position += New Vector(y(4 * k), y(4 * k + 1)) - bodies(k).CentreOfMass
+        Next
+    End Sub
 End Class

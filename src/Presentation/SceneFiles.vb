@@ -43,9 +43,13 @@ Friend NotInheritable Class SceneFiles
         Remember(path)
         _stage.Guarded(
             Sub()
+                ' Rods and taut strings the file sets off their lengths, or with their ends moving apart, are put right
+                ' before anything moves, as the command line does; the teacher is told what changed.
+                Dim held = loaded.HoldLinks()
                 _stage.Present(loaded)
                 _stage.Emit("opened " & SafeName(path) & ": " & loaded.Bodies.Count & " bodies")
-                _stage.ShowMessage("Opened " & SafeName(path) & "." & If(loaded.Walls, "", " This scene has no walls: balls can leave the box.") & SolverChoice.StiffSpringAddendum(loaded))
+                _stage.ShowMessage("Opened " & SafeName(path) & "." & If(loaded.Walls, "", " This scene has no walls: balls can leave the box.") & SolverChoice.StiffSpringAddendum(loaded) &
+                                   If(held.Count = 0, "", " Put right: " & String.Join("; ", held) & "."))
                 _stage.TakeSnapshot()
                 _stage.Window.ShowInputs()
                 _stage.Window.ShowSettings()

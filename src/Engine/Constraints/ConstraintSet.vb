@@ -274,6 +274,15 @@ Friend NotInheritable Class ConstraintSet
     ''' centre of mass is not moved by constraints between bodies.
     ''' </summary>
     Friend Sub Project(state As Double())
+        ProjectPositions(state)
+        ProjectRates(state)
+    End Sub
+
+    ''' <summary>
+    ''' Moves the bodies back onto ψ = 0 by the least mass-weighted change of their positions (Gauss–Newton steps on ψ,
+    ''' until within a few roundings), velocities as they are.
+    ''' </summary>
+    Friend Sub ProjectPositions(state As Double())
         Dim m = _rows.Length
         If m = 0 Then Return
         Dim c(m - 1) As Double
@@ -292,7 +301,6 @@ Friend NotInheritable Class ConstraintSet
             Solve(c)
             Apply(state, c, 0)
         Next
-        ProjectRates(state)
     End Sub
 
     ''' <summary>Takes away the constraints' ψ̇ by the least mass-weighted change of the velocities, positions as they are.</summary>

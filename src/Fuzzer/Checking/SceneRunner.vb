@@ -20,6 +20,8 @@ Namespace Checking
                             Optional stopAt As String = Nothing, Optional keepLog As Boolean = False) As RunOutcome
             Dim world = SceneFile.Load(text)
             world.Solver = SolverFactory.Create(solver)
+            ' As the command line does at load: rods and taut strings set off their lengths are put on them first.
+            world.HoldLinks()
             Dim isEvent = TypeOf world.Solver Is EventDrivenSolver
             Dim outcome As New RunOutcome()
             Dim log As CollisionLog = Nothing

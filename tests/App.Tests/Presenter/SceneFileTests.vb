@@ -49,6 +49,24 @@ Public Class SceneFileTests
         Assert.Contains("opened cradle.json: 6 bodies", h.TraceLines)
     End Sub
 
+    ''' <summary>
+    ''' A file whose rod has its ends moving apart along it: the window puts it right as it opens the scene, as the command
+    ''' line does, and says what changed (the rod keeps its length; the kinetic energy before and after).
+    ''' </summary>
+    <Fact>
+    Public Sub Open_ARodWhoseEndsMoveApart_IsPutRight_AndTheMessageSaysSo()
+        Dim w As New World(10, 10)
+        Dim bob As New Circle(New Vector(5, 4), 0.1, 2, New Vector(1, -0.5)) With {.Id = "bob"}
+        w.Add(bob)
+        w.Add(Link.CreateTie(LinkKind.Rod, bob, New Vector(5, 5), 1, "arm"))
+        Dim h As New PresenterHarness(store:=New FakeStore With {.ToLoad = w})
+        h.P.OpenScene("/tmp/rod.json")
+        Assert.Same(w, h.P.World)
+        Assert.Equal(New Vector(1, 0), bob.Velocity)
+        Assert.Contains("Put right: links[0] ('arm', a rod): its ends moved apart along it; they now keep its length (kinetic energy 1.25 J before, 1 J after).",
+                        h.View.LastMessage, StringComparison.Ordinal)
+    End Sub
+
     <Fact>
     Public Sub Open_ASceneTooFastToShow_IsRefusedWithThePlace_AndTheSceneIsKept()
         Dim fast As New World(10, 10)
