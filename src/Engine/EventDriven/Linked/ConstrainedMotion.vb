@@ -21,6 +21,10 @@ Friend NotInheritable Class ConstrainedMotion
 
     Private Const RelativeTolerance As Double = 0.00000000001
     Private Const AbsoluteTolerance As Double = 0.000000000001
+    ' The energy is kept (KeepEnergy) only while the kinetic is at least this share of the energy's terms, and by a
+    ' velocity factor no further than this from 1.
+    Private Const EnergyShare As Double = 0.001
+    Private Const EnergyCorrection As Double = 0.00000001
     ' Steps kept from one start at most: far more than any advance needs, far less than the memory holds.
     Private Const MaxSteps As Integer = 2000000
     ' A group looks ahead for its events and its bodies' searches a stretch at a time, doubling it each time it
@@ -98,6 +102,10 @@ Friend NotInheritable Class ConstrainedMotion
     Private _eventKind As ConstraintEvent
     ' The integration met a state where the constraints are no longer independent: nothing is integrated past it.
     Private _ended As Boolean
+    ' Whether nothing in the group does work but gravity and its springs (no damping, no sliding friction, no drag), and
+    ' then its energy at the start, J: each step's velocities are scaled back onto it (KeepEnergy).
+    Private ReadOnly _conservative As Boolean
+    Private ReadOnly _energy As Double
 
     ''' <summary>
     ''' The group of <paramref name="bodies"/>, <paramref name="links"/> and lasting <paramref name="contacts"/>
@@ -202,6 +210,11 @@ Friend NotInheritable Class ConstrainedMotion
         ' A watched contact already pressed in a little at the start (a body put on a level face beside it) is
         ' judged from there: pressed a slop further in, not at once.
         _pressedAt = _watched.Select(Function(c) Math.Min(0, Gap(c, y)) - WatchSlop).ToArray()
+        _conservative = _forces Is Nothing AndAlso _springs.All(Function(l) l.Damping = 0) AndAlso _rows.All(Function(c) c.Sliding = 0)
+        If _conservative Then
+            Dim kinetic As Double, scale As Double
+            _energy = Energy(y, kinetic, scale)
+        End If
         _hasEvents = _slack.Length > 0 OrElse _watched.Length > 0 OrElse _rows.Any(Function(c) Not c.Holds OrElse c.StuckTo IsNot Nothing)
         Dim tensions As Double() = Nothing
         _times.Add(startTime)
@@ -356,6 +369,7 @@ Friend NotInheritable Class ConstrainedMotion
                             slope = Derivative(result, tensions)
                         End If
                         If _constraints.Spread Then worst = Math.Max(worst, DriftBetween(y, k1, result, slope, h))
+                        If worst <= 1 AndAlso _conservative Then KeepEnergy(result, slope)
                     End If
                 Catch ex As InvalidOperationException
                     ' The constraints lose their independence within the step (two contacts turning parallel, a group
@@ -416,6 +430,57 @@ Friend NotInheritable Class ConstrainedMotion
         Next
         Return worst
     End Function
+
+    ''' <summary>
+    ''' The group's energy at state <paramref name="y"/>, J: kinetic (<paramref name="kinetic"/>), gravity's m g y and its
+    ''' springs' ½ k (d − L)². <paramref name="size"/> is the sum of the sizes of those terms, the scale of their rounding.
+    ''' </summary>
+    Private Function Energy(y As Double(), ByRef kinetic As Double, ByRef size As Double) As Double
+        kinetic = 0
+        Dim potential = 0.0
+        size = 0
+        For k = 0 To _n - 1
+            Dim m = Bodies(k).Mass
+            kinetic += 0.5 * m * (y(4 * k + 2) * y(4 * k + 2) + y(4 * k + 3) * y(4 * k + 3))
+            potential += m * _gravity * y(4 * k + 1)
+            size += Math.Abs(m * _gravity * y(4 * k + 1))
+        Next
+        For Each l In _springs
+            Dim a = Array.IndexOf(Bodies, l.A)
+            Dim b = If(l.IsAnchored, -1, Array.IndexOf(Bodies, l.B))
+            Dim pb = If(b >= 0, New Vector(y(4 * b), y(4 * b + 1)), l.EndB)
+            Dim stretch = (pb - New Vector(y(4 * a), y(4 * a + 1))).Length - l.Length
+            potential += 0.5 * l.Stiffness * stretch * stretch
+            size += 0.5 * l.Stiffness * stretch * stretch
+        Next
+        size += kinetic
+        Return kinetic + potential
+    End Function
+
+    ''' <summary>
+    ''' Puts a step's <paramref name="result"/> back on the group's energy at its start, where nothing in it does work but
+    ''' gravity and its springs: its velocities scaled by √((E₀ − V)/T), a change that keeps every held row's rate at
+    ''' nothing (each is a sum of velocities) and moves along the motion. The error control holds each step to 10⁻¹¹ of
+    ''' the coordinates; thousands of steps would let the energy wander by 10⁻⁹ of itself and more (a 97 mg ball on a
+    ''' spring bouncing round a box at 700 m/s lost 7·10⁻⁸ of its energy in 0.3 s). Only where the bodies move enough
+    ''' that the rounding of the energy's terms is not the whole correction, and never by more than a step's error could
+    ''' be: anything larger is not drift. <paramref name="slope"/>'s positions' rates follow the velocities.
+    ''' </summary>
+    Private Sub KeepEnergy(result As Double(), slope As Double())
+        Dim kinetic As Double, size As Double
+        Dim potential = Energy(result, kinetic, size) - kinetic
+        If kinetic <= EnergyShare * size Then Return
+        Dim wanted = _energy - potential
+        If wanted <= 0 Then Return
+        Dim factor = Math.Sqrt(wanted / kinetic)
+        If factor = 1 OrElse Math.Abs(factor - 1) > EnergyCorrection Then Return
+        For k = 0 To _n - 1
+            result(4 * k + 2) *= factor
+            result(4 * k + 3) *= factor
+            slope(4 * k) = result(4 * k + 2)
+            slope(4 * k + 1) = result(4 * k + 3)
+        Next
+    End Sub
 
     ''' <summary>A speed of the chain's size, m/s: the fastest body's, or √(gL) for a chain at rest.</summary>
     Private Function SpeedScale(y As Double()) As Double
