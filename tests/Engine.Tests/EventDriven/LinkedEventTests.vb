@@ -421,6 +421,36 @@ Namespace EventDriven
         End Sub
 
         <Fact>
+        Public Sub TwoBallsOnSlackStrings_FallFreely_UntilTheStringToTheirAnchorSnapsTautWhereAParabolaSaysItDoes()
+            ' Ball a hangs 1 m below a point on a 1.5 m string, ball b 0.5 m beside it on a 1 m string to a; both let go at
+            ' rest, e = 0.5. They fall together (their string stays as slack as it was), exactly on their parabolas, until
+            ' a is 1.5 m below the point: ½ g t² = 0.5 m. There its string snaps taut, a collision with the point: a comes
+            ' back up at half its speed, b falls on.
+            Dim w = EventWorld(restitution:=0.5)
+            Dim a As New Circle(New Vector(5, 5), 0.05, 1, Vector.Zero, "a")
+            Dim b As New Circle(New Vector(5.5, 5), 0.05, 1, Vector.Zero, "b")
+            w.Add(a)
+            w.Add(b)
+            w.Add(Link.CreateTie(LinkKind.String, a, New Vector(5, 6), 1.5))
+            w.Add(Link.CreateTie(LinkKind.String, a, b, 1))
+            Dim records As New List(Of CollisionRecord)
+            w.CollisionListener = Sub(c) records.Add(c)
+            Dim snap = Math.Sqrt(1 / G)
+            w.Advance(0.9 * snap)
+            Dim t = w.Time
+            Assert.Equal(5 - 0.5 * G * t * t, a.Position.Y, 13)
+            Assert.Equal(-G * t, b.Velocity.Y, 13)
+            Assert.Empty(records)
+            w.Advance(0.2 * snap)
+            Dim taut = Assert.Single(records)
+            Assert.Equal("string-taut", taut.KindName)
+            Assert.Equal(snap, taut.Time, 12)
+            Assert.Equal(0.5 * G * snap, taut.AVelocityAfter.Y, 9)
+            t = w.Time
+            Assert.Equal(-G * t, b.Velocity.Y, 12)
+        End Sub
+
+        <Fact>
         Public Sub ABallHeldOnTheFloorByASpring_SlidingToAndFro_KeepsItsEnergy_To1e10_Over300Seconds()
             ' g = 0: a spring to a point 2 m below the floor holds a ball on it, and pulls it back and forth along it. The
             ' contact makes the motion an integrated one, each step held to 10⁻¹¹ of the coordinates: step by step the

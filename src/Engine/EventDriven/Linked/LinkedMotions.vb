@@ -68,7 +68,13 @@ Friend Module LinkedMotions
             Return New IntegratedMotion(group.Bodies.ToArray(), group.Links, time, g)
         End If
         If IsChain(group) Then
-            If SlackFlightMotion.Fits(group.Links, g, released) Then Return New SlackFlightMotion(group.Bodies.ToArray(), group.Links, time, g, slop)
+            If SlackFlightMotion.Fits(group.Links, g, released) Then
+                Dim flight = New SlackFlightMotion(group.Bodies.ToArray(), group.Links, time, g, slop)
+                ' A string at full length that the flight would take past it at once, its ends not moving apart (a body
+                ' swung across it, 31 km/s across 0.95 m): it pulls, and the integrated chain holds it; the flight would
+                ' snap it, find nothing to stop, and snap it again, for ever.
+                If flight.TransitionTime > time Then Return flight
+            End If
             Return New ConstrainedMotion(group.Bodies.ToArray(), group.Links, Array.Empty(Of Constraint)(), time, g, released, ForcedMotions.Size(group))
         End If
         If group.Bodies.Count = 1 Then
