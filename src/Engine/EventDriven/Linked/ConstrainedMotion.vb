@@ -103,7 +103,7 @@ Friend NotInheritable Class ConstrainedMotion
     ' The integration met a state where the constraints are no longer independent: nothing is integrated past it.
     Private _ended As Boolean
     ' Whether nothing in the group does work but gravity and its springs (no damping, no sliding friction, no drag), and
-    ' then its energy at the start, J: each step's velocities are scaled back onto it (KeepEnergy).
+    ' then the energy it was handed at its start, J: each step's velocities are scaled back onto it (KeepEnergy).
     Private ReadOnly _conservative As Boolean
     Private ReadOnly _energy As Double
 
@@ -472,8 +472,8 @@ Friend NotInheritable Class ConstrainedMotion
     End Function
 
     ''' <summary>
-    ''' Puts a step's <paramref name="result"/> back on the group's energy at its start, where nothing in it does work but
-    ''' gravity and its springs: its velocities scaled by √((E₀ − V)/T), a change that keeps every held row's rate at
+    ''' Puts a step's <paramref name="result"/> back on the energy the group was handed at its start, where nothing in it
+    ''' does work but gravity and its springs: its velocities scaled by √((E₀ − V)/T), a change that keeps every held row's rate at
     ''' nothing (each is a sum of velocities) and moves along the motion. The error control holds each step to 10⁻¹¹ of
     ''' the coordinates; thousands of steps would let the energy wander by 10⁻⁹ of itself and more (a 97 mg ball on a
     ''' spring bouncing round a box at 700 m/s lost 7·10⁻⁸ of its energy in 0.3 s). Only where the bodies move enough
