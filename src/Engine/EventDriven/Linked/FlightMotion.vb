@@ -115,15 +115,24 @@ Friend NotInheritable Class FlightMotion
         Dim n = (body.CentreOfMass - _string.EndB).Normalized(Vector.Zero)
         Dim outwards = Vector.Dot(body.Velocity, n)
         If outwards <= 0 Then Return False
-        Dim after = world.Restitution * outwards
-        ' What presses the body out along the string: gravity, or the turning of the string's line as it swings round.
-        Dim across = body.Velocity - n * outwards
-        Dim pressing = Math.Max(Math.Max(world.Gravity, 0.000001), across.LengthSquared / _string.Length)
-        If after < SettleFraction * Math.Sqrt(pressing * _string.Length) Then after = 0
+        Dim after = BounceOffAnchor(body.Velocity, n, outwards, _string.Length, world)
         body.Velocity -= n * (outwards + after)
         Snapped = _string
         If after > 0 Then _released = _string
         Return after > 0
+    End Function
+
+    ''' <summary>
+    ''' The speed (m/s) at which a body moving <paramref name="outwards"/> (m/s) along unit <paramref name="n"/> comes back
+    ''' off a string of <paramref name="length"/> (m) to a fixed point snapping taut: e times as much, or nothing below
+    ''' <see cref="SettleFraction"/> of √(pressing × L), where the string stays taut.
+    ''' </summary>
+    Friend Shared Function BounceOffAnchor(velocity As Vector, n As Vector, outwards As Double, length As Double, world As World) As Double
+        Dim after = world.Restitution * outwards
+        ' What presses the body out along the string: gravity, or the turning of the string's line as it swings round.
+        Dim across = velocity - n * outwards
+        Dim pressing = Math.Max(Math.Max(world.Gravity, 0.000001), across.LengthSquared / length)
+        Return If(after < SettleFraction * Math.Sqrt(pressing * length), 0, after)
     End Function
 
     Private _released As Link

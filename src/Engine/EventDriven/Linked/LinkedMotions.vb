@@ -91,7 +91,7 @@ Friend Module LinkedMotions
             Dim first = If(l.A Is a, a, b)
             Return New DumbbellMotion(first, If(first Is a, b, a), l, time, g)
         End If
-        Return New PairFlightMotion(a, b, l, time, g, slop)
+        Return New SlackFlightMotion({a, b}, {l}, time, g, slop)
     End Function
 
     ''' <summary>Whether the group has a rod or string and is more than one body on one link or two bodies on one link (a double pendulum, a rope, a chain).</summary>

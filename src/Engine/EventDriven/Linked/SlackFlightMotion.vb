@@ -1,8 +1,8 @@
 Option Strict On
 
 ''' <summary>
-''' Bodies joined by slack strings and nothing else (a loose chain in flight, a body on two slack strings): each
-''' flies its own parabola until the first string snaps taut. A pair's string is taut where their difference,
+''' Bodies joined by slack strings and nothing else (two balls on a slack string, a loose chain in flight, a body on
+''' two slack strings): each flies its own parabola until the first string snaps taut. A pair's string is taut where their difference,
 ''' free of gravity, reaches its length (a quadratic); a string to a fixed point where the body's parabola meets
 ''' the circle (a quartic), both solved by <see cref="StringTaut"/>. Nothing is integrated: the motion is exact,
 ''' and a body's velocity stays what it was to the last bit, where an integrated group's would drift by the
@@ -11,8 +11,8 @@ Option Strict On
 Friend NotInheritable Class SlackFlightMotion
     Inherits LinkedMotion
 
-    ' Below these speeds after a snap the string stays taut, as for one string alone (FlightMotion, PairFlightMotion):
-    ' the snaps of an inelastic string form a geometric series whose end would otherwise take endless events.
+    ' Below these speeds after a snap the string stays taut, as for a body on one string to a point (FlightMotion): the
+    ' snaps of an inelastic string form a geometric series whose end would otherwise take endless events.
     Private Const SettleFraction As Double = 0.000001
 
     Private ReadOnly _flights As FlightMotion()
@@ -89,14 +89,12 @@ Friend NotInheritable Class SlackFlightMotion
         Dim vb = If(l.IsAnchored, Vector.Zero, l.B.Velocity)
         Dim apart = Vector.Dot(vb - a.Velocity, n)
         If apart <= 0 Then Return False
-        Dim after = world.Restitution * apart
+        Dim after As Double
         If l.IsAnchored Then
-            ' What presses the body out along the string: gravity, or the turning of the string's line as it swings round.
-            Dim across = a.Velocity - n * Vector.Dot(a.Velocity, n)
-            Dim pressing = Math.Max(Math.Max(world.Gravity, 0.000001), across.LengthSquared / l.Length)
-            If after < SettleFraction * Math.Sqrt(pressing * l.Length) Then after = 0
-        ElseIf after < SettleFraction * (a.Velocity.Length + vb.Length) Then
-            after = 0
+            after = FlightMotion.BounceOffAnchor(a.Velocity, -n, apart, l.Length, world)
+        Else
+            after = world.Restitution * apart
+            If after < SettleFraction * (a.Velocity.Length + vb.Length) Then after = 0
         End If
         Dim wb = If(l.IsAnchored, 0, l.B.InverseMass)
         Dim impulse = (apart + after) / (a.InverseMass + wb)
