@@ -16,7 +16,8 @@ Friend Module ContactFeatures
     ''' the boundary, or pressed in. Nothing where d is on a sharp corner (R = 0) and not on an edge it stays on: a
     ''' corner of one box on a corner of another holds nothing.
     ''' </summary>
-    Friend Function OnOutline(a As Integer, b As Integer, shift As Vector, k As Outline, d As Vector, w As Vector, q As Vector, slop As Double) As Constraint
+    Friend Function OnOutline(a As Integer, b As Integer, shift As Vector, k As Outline, d As Vector, w As Vector, q As Vector, slop As Double,
+                              Optional offFace As Boolean = False) As Constraint
         Dim corners = k.Corners, normals = k.EdgeNormals, lengths = k.EdgeLengths
         Dim r = k.Radius
         Dim m = corners.Length
@@ -45,7 +46,12 @@ Friend Module ContactFeatures
             Dim n = normals(edge)
             Dim t = RestingFaces.Along(n)
             Dim s = Vector.Dot(t, d - corners(edge))
-            If Not RestingFaces.IsLeaving(s, Vector.Dot(t, w), Vector.Dot(t, q), lengths(edge), slop) Then
+            ' offFace: the contact has just gone off an end of this face; at that end, with neither speed nor acceleration
+            ' along the face to say so again, it is on the corner.
+            Dim atAnEnd = s <= slop OrElse s >= lengths(edge) - slop
+            Dim undecided = Vector.Dot(t, w) = 0 AndAlso Vector.Dot(t, q) = 0
+            If Not RestingFaces.IsLeaving(s, Vector.Dot(t, w), Vector.Dot(t, q), lengths(edge), slop) AndAlso
+               Not (offFace AndAlso atAnEnd AndAlso undecided) Then
                 Return Constraint.Plane(a, b, shift, n, Vector.Dot(n, corners(edge)) + r, corners(edge), t, lengths(edge))
             End If
         End If

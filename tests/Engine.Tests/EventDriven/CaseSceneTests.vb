@@ -755,6 +755,23 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' A 131 t ball balanced exactly on a box's top corner, on a spring at its length to a 2 t ball flying past (g = 73).
+    ''' The spring's push grows from nothing, so at the start the ball has neither speed nor acceleration along the box's
+    ''' top: held on the top face, it went off its end at once; found again at that end, with nothing along the face to say
+    ''' which way it went, it was held on the face again, for ever ("could not get past t = 0 s"). A contact that has just
+    ''' gone off its face's end is now held on the corner there, and the ball rolls off round it.
+    ''' </summary>
+    <Fact>
+    Public Sub BallBalancedOnABoxCornerPushedOffByASpring_GoesRoundTheCorner()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-ball-balanced-on-box-corner-pushed-off-by-spring.json"))
+        Dim ball = w.Bodies.First(Function(b) b.Id = "c1")
+        Dim corner = New Vector(ball.Position.X, ball.Position.Y - 0.01338444959798122)
+        EventSolverTestKit.RunEventSolverChecked(w, 0.1, 0.05, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
+        Assert.Equal(0.1, w.Time, 12)
+        Assert.True(ball.Position.X < corner.X, $"the ball is at x = {ball.Position.X} m, not past the corner at {corner.X} m")
+    End Sub
+
+    ''' <summary>
     ''' Runs the case file <paramref name="name"/> to <paramref name="seconds"/> in advances of 0.05 s, energy never gained
     ''' (to 10⁻⁹) and no overlap (over 10⁻⁹ m) after each, and asserts that it got there.
     ''' </summary>

@@ -885,6 +885,13 @@ Friend NotInheritable Class ConstrainedMotion
         End Get
     End Property
 
+    ''' <summary>After <see cref="Transition"/>: the contact (its tag) that left the end of its face or corner there, or Nothing.</summary>
+    Friend ReadOnly Property LeftItsFeature As Object
+        Get
+            Return If(_eventKind = ConstraintEvent.Leaves AndAlso _eventRow IsNot Nothing, _eventRow.Tag, Nothing)
+        End Get
+    End Property
+
     ''' <summary>
     ''' A string goes slack or a contact lifts off (its force fell to zero), or a contact leaves its face or corner:
     ''' nothing changes at that instant. Or a string snaps taut: like a collision along the string, its ends' speed

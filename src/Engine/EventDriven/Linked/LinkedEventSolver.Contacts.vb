@@ -284,7 +284,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 shift = _fixed(touch.Fixed).Position + _offset(i)
                 k = _differences(i, touch.Fixed)
             End If
-            c = ContactFeatures.OnOutline(a, b, shift, k, pa - pb - shift, va - vb, qa - qb, Slop)
+            c = ContactFeatures.OnOutline(a, b, shift, k, pa - pb - shift, va - vb, qa - qb, Slop, _offFaceNow.Contains(touch.Key.Value))
         End If
         If c Is Nothing Then Return Nothing
         c.Tag = touch.Key

@@ -78,6 +78,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private _lastTime As Double = Double.NaN
     ' The contacts (their keys' values) whose force fell to zero within this instant: none is held again within it.
     Private ReadOnly _releasedNow As New HashSet(Of Long)
+    ' The contacts that went off the end of their face at this instant (ConstrainedMotion.LeftItsFeature): found again
+    ' at that end with nothing along the face yet to say which way they go, they go onto the corner, not the face.
+    Private ReadOnly _offFaceNow As New HashSet(Of Long)
 
     ''' <summary>Called when the world is given to the solver.</summary>
     Friend Sub Attach(world As World)
@@ -153,6 +156,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _lastTime = t
             Array.Clear(_hitsNow, 0, _hitsNow.Length)
             _releasedNow.Clear()
+            _offFaceNow.Clear()
         End If
     End Sub
 
@@ -345,6 +349,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
         ' took turns for ever, a few units in the last place of the clock apart.
         Dim key = TryCast(m.Released, ContactKey)
         If key IsNot Nothing Then _releasedNow.Add(key.Value)
+        ' A contact that left its face at once, from exactly its end (a ball balanced on a box's corner, its speed and
+        ' acceleration along the face both nothing, pushed off by a spring whose pull only grows): the face would be
+        ' chosen again and left again at once, for ever.
+        Dim leaving = TryCast(TryCast(m, ConstrainedMotion)?.LeftItsFeature, ContactKey)
+        If leaving IsNot Nothing Then _offFaceNow.Add(leaving.Value)
         Repredict(Regroup(New List(Of Integer) From {g}, t, m.Released), tEnd)
     End Sub
 
