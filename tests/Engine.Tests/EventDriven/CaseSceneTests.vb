@@ -772,6 +772,22 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' A 1.3 mg triangle slides into the corner of the floor and the left wall just ahead of a 1.5 t polygon, which
+    ''' wedges it there (g = 100, e = 0.05): the world goes to the general path of lasting contact, whose group of the two
+    ''' let the triangle sink 3 nm into the floor; then, flying alone, it was more than a slop into the floor, which the
+    ''' search for a wall took for a body already past the wall's plane, and it fell through the floor (5 cm below it by
+    ''' t = 0.9 s). A body further into a wall than the slop and still going in is struck at once.
+    ''' </summary>
+    <Fact>
+    Public Sub LightTriangleWedgedIntoTheFloorCorner_NeverFallsThroughTheFloor()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-light-triangle-wedged-into-floor-corner.json"))
+        Dim triangle = w.Bodies.First(Function(b) b.Id = "p2")
+        EventSolverTestKit.RunEventSolverChecked(w, 1, 0.05, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001,
+            eachStep:=Sub(x) Assert.True(triangle.Position.Y + triangle.Outline.MinY >= -0.00000001, $"at t = {x.Time} s the triangle is {-(triangle.Position.Y + triangle.Outline.MinY)} m into the floor"))
+        Assert.Equal(1, w.Time, 12)
+    End Sub
+
+    ''' <summary>
     ''' Runs the case file <paramref name="name"/> to <paramref name="seconds"/> in advances of 0.05 s, energy never gained
     ''' (to 10⁻⁹) and no overlap (over 10⁻⁹ m) after each, and asserts that it got there.
     ''' </summary>

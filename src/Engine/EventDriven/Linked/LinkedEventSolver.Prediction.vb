@@ -265,6 +265,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
                 Case WallSide.Bottom : gap = p.Y + _low(i).Y : rate = v.Y : accel = a.Y
                 Case Else : gap = _world.Height - _high(i).Y - p.Y : rate = -v.Y : accel = -a.Y
             End Select
+            ' Further into the wall than the slop and still going in (carried there by a group that did not hold the wall):
+            ' struck now. A wall has no end to be past, as a face's plane has, and left to the quadratic it was never
+            ' struck at all: a 1.3 mg triangle 3 nm into the floor fell through it.
+            If gap < -Slop AndAlso (rate < 0 OrElse (rate = 0 AndAlso accel < 0)) Then
+                _found = True
+                Return _now
+            End If
             Dim t = _now + TimeOfImpact.GapCloses(gap, rate, accel, Slop)
             _found = t < Double.PositiveInfinity
             Return t
