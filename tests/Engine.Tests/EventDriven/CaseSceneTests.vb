@@ -774,9 +774,10 @@ Public Class CaseSceneTests
     ''' <summary>
     ''' A 1.3 mg triangle slides into the corner of the floor and the left wall just ahead of a 1.5 t polygon, which
     ''' wedges it there (g = 100, e = 0.05): the world goes to the general path of lasting contact, whose group of the two
-    ''' let the triangle sink 3 nm into the floor; then, flying alone, it was more than a slop into the floor, which the
-    ''' search for a wall took for a body already past the wall's plane, and it fell through the floor (5 cm below it by
-    ''' t = 0.9 s). A body further into a wall than the slop and still going in is struck at once.
+    ''' let the triangle sink 3 nm into the floor (the rounding of 10⁵ N of contact forces on 1.3 mg, kept as an
+    ''' acceleration); then, flying alone, it was more than a slop into the floor, which the search for a wall took for a
+    ''' body already past the wall's plane, and it fell through the floor (5 cm below it by t = 0.9 s). Such rounding is
+    ''' now no acceleration, and a body further into a wall than the slop and still going in is struck at once.
     ''' </summary>
     <Fact>
     Public Sub LightTriangleWedgedIntoTheFloorCorner_NeverFallsThroughTheFloor()
