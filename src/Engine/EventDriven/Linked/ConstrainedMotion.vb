@@ -715,6 +715,29 @@ Friend NotInheritable Class ConstrainedMotion
         velocity = New Vector(Slope(c, ox, s) / h, Slope(c, oy, s) / h)
     End Sub
 
+    ''' <summary>
+    ''' Every body's state at <paramref name="time"/>, read from the quintics, and where nothing in the group does work but
+    ''' gravity and its springs, its velocities scaled onto the energy it was handed, as each step's end is
+    ''' (<see cref="KeepEnergy"/>): between the ends the quintic's own error, of order h⁶, moved the energy read there by
+    ''' up to 2.7·10⁻⁹ of itself (a 1.6 mg ball on a 178 N/m spring, snapping a string taut 9 000 times a second).
+    ''' </summary>
+    Friend Overrides Sub StatesAt(time As Double, positions As Vector(), velocities As Vector())
+        MyBase.StatesAt(time, positions, velocities)
+        If Not _conservative Then Return
+        Dim y(4 * _n - 1) As Double
+        For k = 0 To _n - 1
+            y(4 * k) = positions(k).X
+            y(4 * k + 1) = positions(k).Y
+            y(4 * k + 2) = velocities(k).X
+            y(4 * k + 3) = velocities(k).Y
+        Next
+        Dim slope(4 * _n - 1) As Double
+        KeepEnergy(y, slope)
+        For k = 0 To _n - 1
+            velocities(k) = New Vector(y(4 * k + 2), y(4 * k + 3))
+        Next
+    End Sub
+
     Private Shared Function Poly(c As Double(), o As Integer, s As Double) As Double
         Return c(o) + s * (c(o + 1) + s * (c(o + 2) + s * (c(o + 3) + s * (c(o + 4) + s * c(o + 5)))))
     End Function

@@ -278,12 +278,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Sub Sync(g As Integer, t As Double)
         Dim m = _groups(g).Motion
         If m Is Nothing Then Return
-        For k = 0 To m.Bodies.Length - 1
-            Dim p As Vector, v As Vector
-            m.StateAt(t, k, p, v)
+        Dim n = m.Bodies.Length
+        Dim positions(n - 1) As Vector, velocities(n - 1) As Vector
+        m.StatesAt(t, positions, velocities)
+        For k = 0 To n - 1
             Dim body = m.Bodies(k)
-            body.Position = p - _offset(Array.IndexOf(_bodies, body))
-            body.Velocity = v
+            body.Position = positions(k) - _offset(Array.IndexOf(_bodies, body))
+            body.Velocity = velocities(k)
         Next
     End Sub
 

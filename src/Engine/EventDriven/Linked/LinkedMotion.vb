@@ -28,6 +28,16 @@ Friend MustInherit Class LinkedMotion
     ''' <summary>Body k's position (m) and velocity (m/s) at <paramref name="time"/> (s, ≥ <see cref="StartTime"/>).</summary>
     Friend MustOverride Sub StateAt(time As Double, k As Integer, ByRef position As Vector, ByRef velocity As Vector)
 
+    ''' <summary>
+    ''' Every body's position (m) and velocity (m/s) at <paramref name="time"/> (s), in this motion's order: what is written
+    ''' to the bodies. By default each body's <see cref="StateAt"/>.
+    ''' </summary>
+    Friend Overridable Sub StatesAt(time As Double, positions As Vector(), velocities As Vector())
+        For k = 0 To Bodies.Length - 1
+            StateAt(time, k, positions(k), velocities(k))
+        Next
+    End Sub
+
     ''' <summary>An upper bound on body k's speed (m/s) over [<paramref name="t0"/>, <paramref name="t1"/>].</summary>
     Friend MustOverride Function SpeedBound(k As Integer, t0 As Double, t1 As Double) As Double
 
