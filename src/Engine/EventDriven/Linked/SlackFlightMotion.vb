@@ -2,10 +2,10 @@ Option Strict On
 
 ''' <summary>
 ''' Bodies joined by slack strings and nothing else (two balls on a slack string, a loose chain in flight, a body on
-''' two slack strings): each flies its own parabola until the first string snaps taut. A pair's string is taut where their difference,
-''' free of gravity, reaches its length (a quadratic); a string to a fixed point where the body's parabola meets
-''' the circle (a quartic), both solved by <see cref="StringTaut"/>. Nothing is integrated: the motion is exact,
-''' and a body's velocity stays what it was to the last bit, where an integrated group's would drift by the
+''' two slack strings): each flies its own parabola until the first string snaps taut. A pair's string is taut where
+''' their difference, free of gravity, reaches its length (a quadratic); a string to a fixed point where the body's
+''' parabola meets the circle (a quartic), both solved by <see cref="StringTaut"/>. Nothing is integrated: the motion
+''' is exact, and a body's velocity stays what it was to the last bit, where an integrated group's would drift by the
 ''' rounding of its positions.
 ''' </summary>
 Friend NotInheritable Class SlackFlightMotion
