@@ -37,6 +37,10 @@ Partial Public NotInheritable Class World
         Dim ties = _links.Where(Function(l) l.Kind <> LinkKind.Spring).ToList()
         If ties.Count = 0 Then Return notes
         Dim bodies = _movables.ToList()
+        Dim index As New Dictionary(Of Shape, Integer)
+        For k = 0 To bodies.Count - 1
+            index(bodies(k)) = k
+        Next
         ' Lengths first: a few passes of moving each offending link's ends along it, in proportion to inverse mass.
         Dim moved As New HashSet(Of Link)
         For pass = 1 To 20
@@ -58,13 +62,9 @@ Partial Public NotInheritable Class World
             If worst <= 0.000000000001 Then Exit For
             ' Two rods to nearly the same direction (two fixed points almost in line with the body): moving the ends along
             ' one link at a time undoes the other's each pass and creeps to their crossing. All at once it is reached.
-            If pass = 20 Then PolishLengths(ties, bodies)
+            If pass = 20 Then PolishLengths(ties, bodies, index)
         Next
         ' Then speeds along them.
-        Dim index As New Dictionary(Of Shape, Integer)
-        For k = 0 To bodies.Count - 1
-            index(bodies(k)) = k
-        Next
         Dim rows As New List(Of ContactRow), rowLinks As New List(Of Link)
         Dim scale = 0.0
         For Each b In bodies
@@ -104,13 +104,10 @@ Partial Public NotInheritable Class World
     ''' <summary>
     ''' Puts every rod, and every string at or past its length, at its length at once: the least mass-weighted move of
     ''' the bodies (Gauss–Newton steps, <see cref="ConstraintSet.ProjectPositions"/>). Left as it is where the links
-    ''' depend on one another (two rods in line): the passes before have done what can be done.
+    ''' depend on one another (two rods in line): the passes before have done what can be done. <paramref name="index"/>:
+    ''' each movable body's place in <paramref name="bodies"/>.
     ''' </summary>
-    Private Shared Sub PolishLengths(ties As List(Of Link), bodies As List(Of Shape))
-        Dim index As New Dictionary(Of Shape, Integer)
-        For k = 0 To bodies.Count - 1
-            index(bodies(k)) = k
-        Next
+    Private Shared Sub PolishLengths(ties As List(Of Link), bodies As List(Of Shape), index As Dictionary(Of Shape, Integer))
         Dim held = ties.Where(Function(l) index.ContainsKey(l.A) AndAlso (l.IsAnchored OrElse index.ContainsKey(l.B)) AndAlso
                                           (l.Kind = LinkKind.Rod OrElse l.Distance >= l.Length)).ToList()
         If held.Count = 0 Then Return

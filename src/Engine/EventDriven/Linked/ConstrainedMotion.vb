@@ -459,15 +459,9 @@ Friend NotInheritable Class ConstrainedMotion
             potential += m * _gravity * y(4 * k + 1)
             size += Math.Abs(m * _gravity * y(4 * k + 1))
         Next
-        For Each l In _springs
-            Dim a = Array.IndexOf(Bodies, l.A)
-            Dim b = If(l.IsAnchored, -1, Array.IndexOf(Bodies, l.B))
-            Dim pb = If(b >= 0, New Vector(y(4 * b), y(4 * b + 1)), l.EndB)
-            Dim stretch = (pb - New Vector(y(4 * a), y(4 * a + 1))).Length - l.Length
-            potential += 0.5 * l.Stiffness * stretch * stretch
-            size += 0.5 * l.Stiffness * stretch * stretch
-        Next
-        size += kinetic
+        Dim springs = SpringTerm.Energy(_springs, Bodies, y)
+        potential += springs
+        size += springs + kinetic
         Return kinetic + potential
     End Function
 
@@ -478,9 +472,9 @@ Friend NotInheritable Class ConstrainedMotion
     ''' the coordinates; thousands of steps would let the energy wander by 10⁻⁹ of itself and more (a 97 mg ball on a
     ''' spring bouncing round a box at 700 m/s lost 7·10⁻⁸ of its energy in 0.3 s). Only where the bodies move enough
     ''' that the rounding of the energy's terms is not the whole correction, and never by more than a step's error could
-    ''' be: anything larger is not drift. <paramref name="slope"/>'s positions' rates follow the velocities.
+    ''' be: anything larger is not drift. <paramref name="slope"/>'s positions' rates, when given, follow the velocities.
     ''' </summary>
-    Private Sub KeepEnergy(result As Double(), slope As Double())
+    Private Sub KeepEnergy(result As Double(), Optional slope As Double() = Nothing)
         Dim kinetic As Double, size As Double
         Dim potential = Energy(result, kinetic, size) - kinetic
         If kinetic <= EnergyShare * size Then Return
@@ -491,6 +485,7 @@ Friend NotInheritable Class ConstrainedMotion
         For k = 0 To _n - 1
             result(4 * k + 2) *= factor
             result(4 * k + 3) *= factor
+            If slope Is Nothing Then Continue For
             slope(4 * k) = result(4 * k + 2)
             slope(4 * k + 1) = result(4 * k + 3)
         Next
@@ -731,8 +726,7 @@ Friend NotInheritable Class ConstrainedMotion
             y(4 * k + 2) = velocities(k).X
             y(4 * k + 3) = velocities(k).Y
         Next
-        Dim slope(4 * _n - 1) As Double
-        KeepEnergy(y, slope)
+        KeepEnergy(y)
         For k = 0 To _n - 1
             velocities(k) = New Vector(y(4 * k + 2), y(4 * k + 3))
         Next

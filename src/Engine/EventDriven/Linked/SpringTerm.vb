@@ -63,6 +63,21 @@ Friend Module SpringTerm
     End Sub
 
     ''' <summary>
+    ''' The energy stored in <paramref name="springs"/> at state <paramref name="y"/> of <paramref name="bodies"/>, J:
+    ''' Σ ½ k (d − L)², the ends read as <see cref="Add"/> reads them.
+    ''' </summary>
+    Friend Function Energy(springs As IEnumerable(Of Link), bodies As Shape(), y As Double()) As Double
+        Dim sum = 0.0
+        For Each l In springs
+            Dim a As Integer, b As Integer, pa As Vector, va As Vector, pb As Vector, vb As Vector
+            Ends(l, bodies, y, a, b, pa, va, pb, vb)
+            Dim stretch = (pb - pa).Length - l.Length
+            sum += 0.5 * l.Stiffness * stretch * stretch
+        Next
+        Return sum
+    End Function
+
+    ''' <summary>
     ''' Spring <paramref name="l"/>'s ends in state <paramref name="y"/> of <paramref name="bodies"/>: their slots
     ''' <paramref name="a"/> and <paramref name="b"/> (−1 for an end that is not among them, fixed or an anchor, which
     ''' stays at its own point, still), positions (m) and velocities (m/s).
