@@ -278,7 +278,7 @@ Public NotInheritable Class Pendulum
 
     ''' <summary>
     ''' The first time (s, ≥ 0) at which the tension falls to zero, where a string goes slack: 0 when
-    ''' it is not positive at the start, +∞ when it never falls to zero. With energy,
+    ''' it is not positive at the start (unless it is zero within rounding and rising), +∞ when it never falls to zero. With energy,
     ''' T/m = L θ'₀² − 2g cos θ₀ + 3g cos θ, so it vanishes where cos θ = c* = (2g cos θ₀ − L θ'₀²)/(3g)
     ''' (for a start at the bottom with speed u, at the height (u² + gL)/(3g) above it). That angle is
     ''' reached only if c* lies above the lowest cos θ of the motion (cos θmax, or −1 for a rotation);
@@ -286,7 +286,13 @@ Public NotInheritable Class Pendulum
     ''' </summary>
     Public Function SlackTime() As Double
         Dim cos0 = (_startCosHalf - _startSinHalf) * (_startCosHalf + _startSinHalf)
-        If _length * _startRate * _startRate + _gravity * cos0 <= 0 Then Return 0
+        Dim pull = _length * _startRate * _startRate + _gravity * cos0
+        ' d(T/m)/dt = −3g sin θ θ': the tension rises where sin θ θ' < 0.
+        Dim rising = 2 * _startSinHalf * _startCosHalf * _startRate < 0
+        ' A start at zero tension, within rounding, with the tension rising (a ball leaving the top of a round support
+        ' it slid on, where the string to the support's centre takes over) is not slack: the pull grows from there.
+        Dim fromZero = rising AndAlso pull <= 0 AndAlso pull >= -PullRounding * (_length * _startRate * _startRate + Math.Abs(_gravity))
+        If pull <= 0 AndAlso Not fromZero Then Return 0
         If _gravity = 0 OrElse _regime = PendulumRegime.Rest OrElse _regime = PendulumRegime.Uniform Then Return Double.PositiveInfinity
         Dim cosSlack = (2 * _gravity * cos0 - _length * _startRate * _startRate) / (3 * _gravity)
         If cosSlack <= -1 Then Return Double.PositiveInfinity
@@ -306,8 +312,23 @@ Public NotInheritable Class Pendulum
         Dim falling = 2 * _startSinHalf * _startCosHalf * _startRate > 0
         Dim halfPeriod = 2 * _jacobi.QuarterPeriod
         Dim margin = If(falling, -1, 1) * RoundingMargin(halfPeriod)
-        Dim u = Math.Min(FirstAfter(u1, halfPeriod, _u0 + margin), FirstAfter(-u1, halfPeriod, _u0 + margin))
+        Dim first = FirstAfter(u1, halfPeriod, _u0 + margin), second = FirstAfter(-u1, halfPeriod, _u0 + margin)
+        Dim u = Math.Min(first, second)
+        ' From zero tension, rising: the crossing nearest the start may be the one it rises through, within rounding of
+        ' the start; the string goes slack at the next, where the tension falls (the crossings alternate).
+        If fromZero AndAlso Not FallsAt(u) Then u = Math.Max(first, second)
         Return Math.Max(0, (u - _u0) / _rate)
+    End Function
+
+    ''' <summary>The share of the tension's scale, L θ'² + g (N/kg), within which a tension counts as zero: rounding.</summary>
+    Private Const PullRounding As Double = 0.000000001
+
+    ''' <summary>Whether the tension falls at elliptic argument <paramref name="u"/> (sin θ θ' > 0 there).</summary>
+    Private Function FallsAt(u As Double) As Boolean
+        If Double.IsInfinity(u) Then Return True
+        Dim sh As Double, ch As Double, rate As Double
+        HalfAngleAt((u - _u0) / _rate, sh, ch, rate)
+        Return sh * ch * rate > 0
     End Function
 
     ''' <summary>

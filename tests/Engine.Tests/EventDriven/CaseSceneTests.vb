@@ -635,6 +635,52 @@ Public Class CaseSceneTests
         Next
     End Sub
 
+    ''' <summary>
+    ''' A 2.6 mg ball resting on the upper left of a fixed ball, on a string to its centre as long as their touching
+    ''' distance (e = 0). It slides down round the peg until the contact's push falls to zero, where the string takes over
+    ''' from zero tension: the pendulum found its tension zero there and went slack at once, the flight found the string
+    ''' taut at once, in turn for ever ("could not get past t = 0.01400738438883028 s"). The ball swings on.
+    ''' </summary>
+    <Fact>
+    Public Sub BallOnAStringToThePegItRestsOn_SwingsOnWhereTheStringTakesOver()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-ball-on-string-to-peg-it-rests-on.json"))
+        Dim ball = w.Find("c11"), peg = w.Find("f0")
+        Dim length = w.FindLink("l0").Length
+        EventSolverTestKit.RunEventSolverChecked(w, 0.5, 0.01, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001,
+            eachStep:=Sub(x) Assert.True(Math.Abs((ball.Position - peg.Position).Length - length) <= 0.000000001, $"at t = {x.Time} s the ball is {(ball.Position - peg.Position).Length} m from the peg's centre, the string {length} m"))
+        Assert.Equal(0.5, w.Time, 12)
+    End Sub
+
+    ''' <summary>
+    ''' The textbook case with a string: a 1 kg ball released at rest on top of a fixed ball, 30° above the horizontal
+    ''' from its centre, on a string to that centre as long as their touching distance L. It slides round until
+    ''' sin φ = (2/3) sin 30° (where it would fly off), and from there swings on the string, never leaving the circle:
+    ''' its speed everywhere is √(2 g (y₀ − y)), to 10⁻⁹ of itself, and it swings through the bottom.
+    ''' </summary>
+    <Theory>
+    <InlineData(0.0)>
+    <InlineData(0.5)>
+    Public Sub BallReleasedOnAPegOnAStringToItsCentre_SlidesThenSwings_KeepingItsEnergy(restitution As Double)
+        Dim w As New World(3, 3, 9.81, restitution)
+        Dim centre = New Vector(1.5, 1.5)
+        Dim peg = Circle.CreateFixed(centre, 0.1, "peg")
+        Dim length = 0.15
+        Dim start = centre + New Vector(-Math.Cos(Math.PI / 6), Math.Sin(Math.PI / 6)) * length
+        Dim ball = New Circle(start, 0.05, 1.0, Vector.Zero, "ball")
+        w.Add(peg)
+        w.Add(ball)
+        w.Add(Link.CreateTie(LinkKind.String, ball, peg, length, "string"))
+        Dim lowest = Double.PositiveInfinity
+        EventSolverTestKit.RunEventSolverChecked(w, 1, 0.01, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001,
+            eachStep:=Sub(x)
+                          Assert.True(Math.Abs((ball.Position - centre).Length - length) <= 0.000000001, $"at t = {x.Time} s the ball is off the circle")
+                          Dim expected = Math.Sqrt(2 * 9.81 * (start.Y - ball.Position.Y))
+                          Assert.True(Math.Abs(ball.Velocity.Length - expected) <= 0.000000001 * (expected + 1), $"at t = {x.Time} s speed {ball.Velocity.Length} m/s, not {expected}")
+                          lowest = Math.Min(lowest, ball.Position.Y)
+                      End Sub)
+        Assert.True(lowest < centre.Y - 0.99 * length, $"lowest {lowest} m")
+    End Sub
+
     ''' <summary>Why the hundred-ball hopper tests are skipped: what the event solver still does wrong in them.</summary>
     Private Const HundredBallHopperStillJams As String =
         "past SolverState.HandOverUnheldBodies (64) movable bodies the fast path does not hand a world to the general " &

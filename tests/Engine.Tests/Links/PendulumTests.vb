@@ -211,6 +211,41 @@ Namespace Links
             Assert.Equal(0.0, p.SlackTime())
         End Sub
 
+        ''' <summary>
+        ''' A bob above the horizontal swinging down at just the speed that makes the tension zero there (L θ'² = −g cos θ),
+        ''' as where a ball leaves the round top it slid on and the string to its centre takes over: the tension rises
+        ''' from zero, so the string is not slack now; it goes slack where the tension next falls to zero, at the same
+        ''' height on the other side. Also with the tension a rounding error below zero.
+        ''' </summary>
+        <Theory>
+        <InlineData(2.0, 0.0)>
+        <InlineData(2.0, -0.000000000001)>
+        <InlineData(1.7, 0.000000000001)>
+        <InlineData(2.6, -0.0000000001)>
+        Public Sub SlackTime_FromZeroTensionRising_IsWhereItFallsToZeroOnTheOtherSide(theta As Double, pullError As Double)
+            Dim length = 0.8
+            Dim rate = -Math.Sqrt(-G * Math.Cos(theta) / length * (1 + pullError))
+            Dim p = Released(length, theta, rate)
+            Dim t = p.SlackTime()
+            Assert.True(t > 0 AndAlso t < p.Period, $"slack at {t}")
+            Dim start = p.PositionAt(0) - Anchor, there = p.PositionAt(t) - Anchor
+            Assert.Equal(-start.X, there.X, 1.0E-9)
+            Assert.Equal(start.Y, there.Y, 1.0E-9)
+            For k = 1 To 99
+                Assert.True(p.TensionPerMassAt(t * k / 100) > 0)
+            Next
+        End Sub
+
+        ''' <summary>The same start with the bob swinging up (the tension falling from zero): slack at once.</summary>
+        <Fact>
+        Public Sub SlackTime_FromZeroTensionFalling_IsNow()
+            Dim length = 0.8, theta = 2.0
+            Dim rate = Math.Sqrt(-G * Math.Cos(theta) / length)
+            Assert.True(Released(length, theta, rate).SlackTime() < 0.000000000001)
+            ' Well below zero (not rounding) and rising: slack at once too.
+            Assert.Equal(0.0, Released(length, theta, -rate * 0.99).SlackTime())
+        End Sub
+
         <Fact>
         Public Sub TimeToAngle_ReachesTheAngleFirstThen()
             Dim rng As New Random(21)

@@ -438,12 +438,14 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim free = FreeAccelerations(shapes, links, y)
         Dim result(n - 1) As Vector
         Dim forces(rows.Count - 1) As Double
+        Dim solveRows As ContactRow() = Nothing
+        Dim scale As Double
         For attempt = 1 To 5
-            Dim scale = _world.Gravity
+            scale = _world.Gravity
             For Each a In free
                 scale = Math.Max(scale, a.Length)
             Next
-            Dim solveRows(rows.Count - 1) As ContactRow
+            solveRows = New ContactRow(rows.Count - 1) {}
             For k = 0 To rows.Count - 1
                 Dim u As Vector, value As Double, rate As Double, curvature As Double
                 rows(k).Measure(y, u, value, rate, curvature)
@@ -467,9 +469,26 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Next
         Dim pressing As New List(Of Constraint)
         For k = 0 To rows.Count - 1
-            If rows(k).Holds OrElse (forces(k) > 0 AndAlso Not ReleasedNow(rows(k))) Then pressing.Add(rows(k))
+            If rows(k).Holds OrElse ((forces(k) > 0 OrElse TakesOverFromZero(rows(k), solveRows(k), result, ContactSolve.ApproachTolerance * scale)) AndAlso
+                                     Not ReleasedNow(rows(k))) Then pressing.Add(rows(k))
         Next
         Return pressing
+    End Function
+
+    ''' <summary>
+    ''' Whether contact <paramref name="c"/>, pressing with no force (its relative acceleration, <paramref name="row"/>'s value
+    ''' at the accelerations <paramref name="result"/>, is zero within <paramref name="tolerance"/>, m/s²), is held all the
+    ''' same: at this instant a string's pull or a contact's push fell to zero, and then the search found the bodies' motion
+    ''' closing this contact at once. Its push takes over from nothing: a ball whose string goes slack where it swings up
+    ''' round the peg the string is tied to goes on round the peg. Flying, it went into the peg by the third power of time
+    ''' until struck a slop in, and the energy moved by that slop's worth each time.
+    ''' </summary>
+    Private Function TakesOverFromZero(c As Constraint, row As ContactRow, result As Vector(), tolerance As Double) As Boolean
+        If Not _anyReleasedNow Then Return False
+        Dim key = TryCast(c.Tag, ContactKey)
+        If key Is Nothing OrElse Not IsQuiet(key) Then Return False
+        Dim a = If(row.A = ContactRow.None, Vector.Zero, result(row.A)), b = If(row.B = ContactRow.None, Vector.Zero, result(row.B))
+        Return Math.Abs(Vector.Dot(row.Direction, a - b) + row.Offset) <= tolerance
     End Function
 
     ''' <summary>Whether contact <paramref name="c"/> was let go earlier in this instant (see TransitionOf): it is watched, not held.</summary>

@@ -78,6 +78,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private _lastTime As Double = Double.NaN
     ' The contacts (their keys' values) whose force fell to zero within this instant: none is held again within it.
     Private ReadOnly _releasedNow As New HashSet(Of Long)
+    ' Whether a motion ended within this instant by a string's pull or a contact's push falling to zero (see TakesOverFromZero).
+    Private _anyReleasedNow As Boolean
     ' The contacts that went off the end of their face at this instant (ConstrainedMotion.LeftItsFeature): found again
     ' at that end with nothing along the face yet to say which way they go, they go onto the corner, not the face.
     Private ReadOnly _offFaceNow As New HashSet(Of Long)
@@ -156,6 +158,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _lastTime = t
             Array.Clear(_hitsNow, 0, _hitsNow.Length)
             _releasedNow.Clear()
+            _anyReleasedNow = False
             _offFaceNow.Clear()
         End If
     End Sub
@@ -345,6 +348,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Dim a = Array.IndexOf(m.Bodies, l.A), b = If(l.IsAnchored, -1, Array.IndexOf(m.Bodies, l.B))
             _reports.Add(New CollisionRecord(t, l, before(a), l.A.Velocity, If(b >= 0, before(b), Vector.Zero), If(b >= 0, l.B.Velocity, Vector.Zero)))
         End If
+        ' Something let go at this instant: a contact the search finds closing at once may take over from it.
+        If m.Released IsNot Nothing Then _anyReleasedNow = True
         ' A contact let go at this instant is not held again within it: at a point where two contacts' forces both reach
         ' zero, each group formed without one found the other's force falling through zero at once, and the two groups
         ' took turns for ever, a few units in the last place of the clock apart.
