@@ -50,6 +50,46 @@ Friend Module TieLock
     End Function
 
     ''' <summary>
+    ''' The contacts of <paramref name="rows"/> with walls and fixed bodies that a tie of the same body to a fixed point
+    ''' (a rod, or a string taken as taut) already keeps, at <paramref name="state"/>: the contact lies in line with the
+    ''' tie and opens the way the tie pulls (a ball on the floor straight under the point its string is tied to, the
+    ''' string as long as the height). With z the move towards the anchor and s along the tangent, the tie asks
+    ''' z ≥ s²/(2L) (z = s²/(2L) for a rod) and the contact z ≥ 0, or z ≥ −s²/(2R) round a convex body: the tie's ask
+    ''' is the stronger, so the contact never pushes. Taken as a row of its own beside the tie, a few nanometres off the
+    ''' line (the two then all but parallel), it made a corner of the two: a ball swinging through the bottom of its
+    ''' swing, grazing the floor, was stopped dead there.
+    ''' </summary>
+    Friend Function ImpliedContacts(rows As IEnumerable(Of Constraint), state As Double()) As HashSet(Of Constraint)
+        Dim implied As New HashSet(Of Constraint)
+        Dim ties = rows.Where(Function(c) c.Shape = ConstraintShape.Tie AndAlso c.B < 0).ToList()
+        If ties.Count = 0 Then Return implied
+        For Each c In rows
+            If c.Shape = ConstraintShape.Tie OrElse c.IsLock OrElse c.B >= 0 Then Continue For
+            Dim uc As Vector, value As Double, rate As Double, curvature As Double
+            c.Measure(state, uc, value, rate, curvature)
+            For Each t In ties
+                If t.A <> c.A Then Continue For
+                Dim ut As Vector
+                t.Measure(state, ut, value, rate, curvature)
+                If KeepsOpen(ut, uc) Then
+                    implied.Add(c)
+                    Exit For
+                End If
+            Next
+        Next
+        Return implied
+    End Function
+
+    ''' <summary>
+    ''' Whether a tie pulling its body along <paramref name="towardsAnchor"/> (unit) keeps a contact that opens as the body
+    ''' moves along <paramref name="opening"/> (unit) from ever pushing: the two in line, the same way (see
+    ''' <see cref="ImpliedContacts"/>).
+    ''' </summary>
+    Friend Function KeepsOpen(towardsAnchor As Vector, opening As Vector) As Boolean
+        Return Vector.Dot(towardsAnchor, opening) > 0 AndAlso Math.Abs(Vector.Cross(towardsAnchor, opening)) <= InLineSine
+    End Function
+
+    ''' <summary>
     ''' Whether two ties in line hold their body where it is: <paramref name="rod1"/> and <paramref name="rod2"/> say
     ''' whether each is a rod (else a string), L1 and L2 their lengths (m), <paramref name="sameSide"/> whether the
     ''' anchors lie on the same side of the body (see the summary above for the reasoning).

@@ -135,13 +135,17 @@ Partial Friend NotInheritable Class LinkedEventSolver
         '    metric) that makes it so, which rounding alone has made necessary.
         '    A body that two ties in line hold where it is (TieLock) does not move across them either: its rows
         '    along them are one row twice, and its lock is the row they cannot give.
+        '    A contact that a tie in line with it already keeps (TieLock.ImpliedContacts) never pushes: it is only watched.
         Dim locks = TieLock.Find(rows, y)
-        StopApproaches(shapes, rows.Concat(locks).ToList(), y)
+        Dim implied = TieLock.ImpliedContacts(rows, y)
+        Dim solved = rows.Where(Function(c) Not implied.Contains(c)).ToList()
+        StopApproaches(shapes, solved.Concat(locks).ToList(), y)
 
         ' 5. The forces: the complementarity solve for the accelerations. A contact that pushes is held; one moving
         '    off the end of its face is moved onto the feature it goes onto, and the forces found again.
-        Dim pressing = PressingRows(shapes, links, rows, y, touches, local)
-        HoldRates(shapes, pressing.Concat(locks).ToList(), rows.Concat(locks).ToList(), y)
+        Dim pressing = PressingRows(shapes, links, solved, y, touches, local)
+        HoldRates(shapes, pressing.Concat(locks).ToList(), solved.Concat(locks).ToList(), y)
+        rows = solved.Concat(rows.Where(Function(c) implied.Contains(c))).ToList()
         ' What the last crumb of a bounce, taken away, held (never more than a bounce of four slops).
         Dim crumb = kinetic - DissipationLedger.Kinetic(shapes)
         If crumb > 0 Then _world.Dissipate(crumb)
@@ -233,7 +237,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim normal As Vector, rate As Double
         If gap.GapAndNormal(t, normal, rate) > Slop Then Return False
         Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
-        If rate < -(CreepSpeed + 0.000000001 * speeds) Then Return False
+        If rate < -(CreepSpeed + 0.000000001 * speeds) AndAlso Not (j < 0 AndAlso KeptOpenByATie(i, normal)) Then Return False
         Dim press = Math.Max(_world.Gravity, Pressing(i, t, pressedBefore) + If(j >= 0, Pressing(j, t, pressedBefore), 0))
         ' Or a bounce far too slow to matter beside the bodies' own speeds (pressed by almost nothing, the four slops
         ' would allow any bounce at all): holding it takes a 10⁻¹² part of their kinetic energy at most.

@@ -276,19 +276,24 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _found = t < Double.PositiveInfinity
             Return t
         End If
-        Return PredictGap(i, If(f >= 0, FixedGap(i, f), WallGap(i, side)), tEnd)
+        Return PredictGap(i, If(f >= 0, FixedGap(i, f), WallGap(i, side)), tEnd, IsQuiet(key))
     End Function
 
-    Private Function PredictGap(i As Integer, gap As LinkedGap, tEnd As Double) As Double
+    ''' <summary>
+    ''' Body i's next contact across <paramref name="gap"/>, searched up to <paramref name="tEnd"/>. A contact found
+    ''' <paramref name="quiet"/> at this instant (touching and judged not to be struck: see Collide) is not found
+    ''' closing now again: the search goes on from its opening.
+    ''' </summary>
+    Private Function PredictGap(i As Integer, gap As LinkedGap, tEnd As Double, quiet As Boolean) As Double
         Dim m = MotionOf(i)
         Dim until = SearchEnd(tEnd, m, m)
         Dim speed = m.SpeedBound(_slotOf(i), _now, until)
         Dim accel = m.AccelerationBound(_slotOf(i), _now, until)
         ' A wall is flat: its gap's second derivative is the acceleration across it.
-        If gap.Difference Is Nothing Then Return Recheck(FirstContact(gap, _now, until, speed, accel, accel, False), until, tEnd)
+        If gap.Difference Is Nothing Then Return Recheck(FirstContact(gap, _now, until, speed, accel, accel, False, quiet:=quiet), until, tEnd)
         Dim curved = UpperCurvature(accel, speed, gap.Difference.Radius)
-        If _bodies(i).Kind = ShapeKind.Circle Then Return Recheck(FirstContact(gap, _now, until, speed, curved, curved, False), until, tEnd)
-        Return Recheck(FirstContact(gap, _now, until, speed, accel, curved, True), until, tEnd)
+        If _bodies(i).Kind = ShapeKind.Circle Then Return Recheck(FirstContact(gap, _now, until, speed, curved, curved, False, quiet:=quiet), until, tEnd)
+        Return Recheck(FirstContact(gap, _now, until, speed, accel, curved, True, quiet:=quiet), until, tEnd)
     End Function
 
     ''' <summary>A search that found nothing before the horizon is taken up again there (an event that is not a contact).</summary>
@@ -299,7 +304,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
     End Function
 
     ''' <summary>
-    ''' The first contact of a gap in [t0, tEnd] (s): now when touching and closing. When touching and not
+    ''' The first contact of a gap in [t0, tEnd] (s): now when touching and closing (unless <paramref name="quiet"/>). When touching and not
     ''' closing (just after a bounce), first the time the gap has opened to twice the slop, and from there
     ''' when it closes; if it cannot be shown to open that far, when the overlap grows by the slop. Otherwise
     ''' when the gap closes. <paramref name="below"/> (m/s²) bounds the gap's second derivative from below
@@ -314,12 +319,12 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' far side, after passing right through it, and the contact between never looked for.
     ''' </summary>
     Private Function FirstContact(gap As LinkedGap, t0 As Double, tEnd As Double, speed As Double, below As Double, above As Double, oneSided As Boolean,
-                                  Optional speeds As Double = 0) As Double
+                                  Optional speeds As Double = 0, Optional quiet As Boolean = False) As Double
         Dim n As Vector, rate As Double
         Dim d = gap.GapAndNormal(t0, n, rate)
         _gapEvaluations += 1
         If d <= Slop Then
-            If rate < -(CreepSpeed + 0.000000001 * Math.Max(speed, speeds)) Then Return t0
+            If rate < -(CreepSpeed + 0.000000001 * Math.Max(speed, speeds)) AndAlso Not quiet Then Return t0
             ' Leaving at rate ḋ, the gap is at least d + ḋ s − ½ A s² (A the bound from below): where that
             ' parabola first reaches twice the slop, the gap has opened that far, and it did not close before.
             Dim opens = OpeningTime(d, rate, below, 2 * Slop)

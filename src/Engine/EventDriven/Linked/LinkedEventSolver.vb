@@ -396,9 +396,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
             PredictAgain(i, j, side, f, tEnd)
             Return
         End If
-        If rate >= -(CreepSpeed + 0.000000001 * speeds) Then
+        If rate >= -(CreepSpeed + 0.000000001 * speeds) OrElse (j < 0 AndAlso KeptOpenByATie(i, normal)) Then
             ' Touching, not approaching, and pressed together (or pressed in by a slop): whether the touch holds is
             ' for the one rule to say. From here on, this instant, the touch is searched for, not solved for.
+            ' Or approaching only as a tie in line with it lets the body graze it (a bob through the bottom of its swing
+            ' just touching the floor): the tie keeps it from pushing, and the same blow would be struck again at once.
             Quiet(If(j >= 0, ContactKey.Pair(i, j), If(f >= 0, ContactKey.Fixed(i, f), ContactKey.Wall(i, side))), t)
             Dim touched As New List(Of Integer) From {gi}
             If gj >= 0 AndAlso gj <> gi Then touched.Add(gj)
@@ -452,6 +454,22 @@ Partial Friend NotInheritable Class LinkedEventSolver
         _reports.Add(New CollisionRecord(t, a, other, side, CollisionKinds.Between(a, other), aBefore, a.Velocity, bBefore, If(b Is Nothing, Vector.Zero, b.Velocity)))
         Repredict(Regroup(groups, t, Nothing), tEnd)
     End Sub
+
+    ''' <summary>
+    ''' Whether a rod or taut string of body i to a fixed point lies in line with its contact of <paramref name="normal"/>
+    ''' (from the body towards a wall or fixed body) and pulls the way that contact opens: the contact can never push
+    ''' (<see cref="TieLock.ImpliedContacts"/>), and what it approaches at is only the tie's turning (a bob through the
+    ''' bottom of its swing, just touching the floor). A string counts when it is at its full length, not stretching.
+    ''' </summary>
+    Private Function KeptOpenByATie(i As Integer, normal As Vector) As Boolean
+        For Each l In _groups(_groupOf(i)).Links
+            If Not l.IsAnchored OrElse l.A IsNot _bodies(i) Then Continue For
+            If l.Kind = LinkKind.Spring Then Continue For
+            If l.Kind = LinkKind.String AndAlso Not LinkedMotions.IsTaut(l, _world.Gravity, Slop) Then Continue For
+            If TieLock.KeepsOpen((l.EndB - l.EndA).Normalized(Vector.Zero), -normal) Then Return True
+        Next
+        Return False
+    End Function
 
     ''' <summary>
     ''' Whether a blow's bodies a and b (b Nothing: fixed) still close on both faces with normals <paramref name="first"/>
