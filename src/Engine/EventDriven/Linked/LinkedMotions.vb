@@ -87,7 +87,7 @@ Friend Module LinkedMotions
             End Select
         End If
         Dim b = group.Bodies(1)
-        If l.Kind = LinkKind.Rod OrElse (Not slack AndAlso PairTaut(a, b, l)) Then
+        If l.Kind = LinkKind.Rod OrElse (Not slack AndAlso PairTaut(a, b, l, slop)) Then
             Dim first = If(l.A Is a, a, b)
             Return New DumbbellMotion(first, If(first Is a, b, a), l, time, g)
         End If
@@ -125,11 +125,16 @@ Friend Module LinkedMotions
         Return StringTaut.AnchoredTautTime(l.EndB, l.Length, body.CentreOfMass, v, g, slop) = 0
     End Function
 
-    ''' <summary>A string between two free bodies is taut at full length when they do not move along it (its pull, μω²L, is never negative).</summary>
-    Private Function PairTaut(a As Shape, b As Shape, l As Link) As Boolean
+    ''' <summary>
+    ''' A string between two free bodies is taut at full length (within <paramref name="slop"/>, m, as the flight's search
+    ''' for the string snapping taut allows) when they do not move along it (its pull, μω²L, is never negative). Short
+    ''' of the length by less than the slop, a pair turning on it was found snapping taut at once, with nothing to stop,
+    ''' again and again, and never taut.
+    ''' </summary>
+    Private Function PairTaut(a As Shape, b As Shape, l As Link, slop As Double) As Boolean
         Dim r = b.CentreOfMass - a.CentreOfMass
         Dim d = r.Length
-        If d < l.Length * (1 - FullFraction) Then Return False
+        If d < l.Length * (1 - FullFraction) - slop Then Return False
         Dim w = b.Velocity - a.Velocity
         Return Math.Abs(Vector.Dot(w, r) / d) <= FullFraction * (w.Length + a.Velocity.Length + b.Velocity.Length)
     End Function
