@@ -221,16 +221,19 @@ Public Module SpecConformance
         Return Math.Abs(Math.Abs(turning) - 2 * Math.PI) < 0.000001
     End Function
 
+    ''' <summary>The centre of area (shoelace formula), measured from the first corner: from the origin, a small polygon a kilometre out loses microns to rounding.</summary>
     Private Function Centroid(corners As List(Of (X As Double, Y As Double))) As (X As Double, Y As Double)
+        Dim o = corners(0)
         Dim a2 = 0.0, cx = 0.0, cy = 0.0
         For i = 0 To corners.Count - 1
-            Dim p = corners(i), q = corners((i + 1) Mod corners.Count)
+            Dim p = (X:=corners(i).X - o.X, Y:=corners(i).Y - o.Y)
+            Dim q = (X:=corners((i + 1) Mod corners.Count).X - o.X, Y:=corners((i + 1) Mod corners.Count).Y - o.Y)
             Dim cross = p.X * q.Y - q.X * p.Y
             a2 += cross
             cx += (p.X + q.X) * cross
             cy += (p.Y + q.Y) * cross
         Next
-        Return (cx / (3 * a2), cy / (3 * a2))
+        Return (o.X + cx / (3 * a2), o.Y + cy / (3 * a2))
     End Function
 
     Private Function Num(e As JsonElement, name As String, Optional fallback As Double = Double.NaN) As Double

@@ -136,14 +136,16 @@ Namespace Scenes
                 Return
             End If
             link.Length = Positive(f, "length", f.RequiredNumber("length"))
+            Dim distanceText As String = Nothing, lengthText As String = Nothing
+            SceneReader.Distinct(distance, link.Length, distanceText, lengthText)
             If link.Kind = LinkKind.Rod AndAlso Math.Abs(link.Length - distance) > LengthTolerance Then
-                Throw New SceneFormatException(f.PlaceOf("length"), "a rod's length must be the distance between its ends in the file, " & SceneReader.Brief(distance) &
-                    " m, not " & SceneReader.Brief(link.Length) & " m (they differ by " & SceneReader.Brief(Math.Abs(link.Length - distance)) &
+                Throw New SceneFormatException(f.PlaceOf("length"), "a rod's length must be the distance between its ends in the file, " & distanceText &
+                    " m, not " & lengthText & " m (they differ by " & SceneReader.Brief(Math.Abs(link.Length - distance)) &
                     " m; leave ""length"" out to use the distance)")
             End If
             If link.Kind = LinkKind.String AndAlso link.Length < distance - LengthTolerance Then
-                Throw New SceneFormatException(f.PlaceOf("length"), "a string of " & SceneReader.Brief(link.Length) & " m cannot reach between its ends, which are " &
-                    SceneReader.Brief(distance) & " m apart in the file (" & SceneReader.Brief(distance - link.Length) & " m too short)")
+                Throw New SceneFormatException(f.PlaceOf("length"), "a string of " & lengthText & " m cannot reach between its ends, which are " &
+                    distanceText & " m apart in the file (" & SceneReader.Brief(distance - link.Length) & " m too short)")
             End If
         End Sub
 

@@ -388,6 +388,19 @@ Namespace Scenes
             Return value.ToString("G6", CultureInfo.InvariantCulture)
         End Function
 
+        ''' <summary>
+        ''' Two values for a message that compares them: briefly, or in full where brief they would read the same
+        ''' ("1078.02 m, not 1078.02 m" says nothing).
+        ''' </summary>
+        Friend Sub Distinct(first As Double, second As Double, ByRef firstText As String, ByRef secondText As String)
+            firstText = Brief(first)
+            secondText = Brief(second)
+            If firstText = secondText Then
+                firstText = first.ToString("R", CultureInfo.InvariantCulture)
+                secondText = second.ToString("R", CultureInfo.InvariantCulture)
+            End If
+        End Sub
+
         Private Function Build(s As WorldSettings, bodies As List(Of BodySpec), liquids As List(Of LiquidSpec), links As List(Of LinkSpec)) As World
             Dim w As New World(s.Width, s.Height, s.Gravity, s.Restitution, s.Walls) With {
                 .Friction = s.Friction, .StaticFriction = s.StaticFriction, .AirDensity = s.AirDensity}

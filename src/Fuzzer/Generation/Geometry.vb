@@ -25,18 +25,13 @@ Namespace Generation
             Return (p - (a + ab * u)).Length
         End Function
 
-        ''' <summary>The centre of area of a simple polygon (shoelace formula), m.</summary>
+        ''' <summary>
+        ''' The centre of area of a convex polygon, m, as the engine finds it (a polygon body's reference point): a rod's
+        ''' "length" written as the distance between its ends must be the distance the reader measures, to 10⁻⁹ m. The
+        ''' shoelace formula from the origin, 1 km out, was 1.6·10⁻⁶ m off the engine's.
+        ''' </summary>
         Friend Function Centroid(vertices As IReadOnlyList(Of Vector)) As Vector
-            Dim area2 = 0.0, cx = 0.0, cy = 0.0
-            For i = 0 To vertices.Count - 1
-                Dim p = vertices(i)
-                Dim q = vertices((i + 1) Mod vertices.Count)
-                Dim cross = Vector.Cross(p, q)
-                area2 += cross
-                cx += (p.X + q.X) * cross
-                cy += (p.Y + q.Y) * cross
-            Next
-            Return New Vector(cx / (3 * area2), cy / (3 * area2))
+            Return Polygon.CreateFixed(vertices).CentreOfMass
         End Function
 
         ''' <summary>True when every turn of the closed polygon goes the same way and none is straight (strictly convex, area &gt; 0).</summary>

@@ -127,11 +127,11 @@ Public Class SceneLinkErrorTests
     <Theory>
     <InlineData("[{'type':'rod','a':'ball','at':[2,3.5],'length':1.4}]", "links[0].length: a rod's length must be the distance between its ends in the file, 1.5 m, not 1.4 m (they differ by 0.1 m; leave ""length"" out to use the distance)")>
     <InlineData("[{'type':'rod','a':'ball','at':[2,3.5],'length':1.6}]", "links[0].length: a rod's length must be the distance between its ends in the file, 1.5 m, not 1.6 m (they differ by 0.1 m; leave ""length"" out to use the distance)")>
-    <InlineData("[{'type':'rod','a':'ball','at':[2,3.5],'length':1.500000002}]", "links[0].length: a rod's length must be the distance between its ends in the file, 1.5 m, not 1.5 m (they differ by 2E-09 m; leave ""length"" out to use the distance)")>
+    <InlineData("[{'type':'rod','a':'ball','at':[2,3.5],'length':1.500000002}]", "links[0].length: a rod's length must be the distance between its ends in the file, 1.5 m, not 1.500000002 m (they differ by 2E-09 m; leave ""length"" out to use the distance)")>
     <InlineData("[{'type':'rod','a':'ball','b':'ball2','length':2}]", "links[0].length: a rod's length must be the distance between its ends in the file, 1 m, not 2 m (they differ by 1 m; leave ""length"" out to use the distance)")>
     <InlineData("[{'type':'rod','a':'ball','at':[2,2],'length':1}]", "links[0].length: a rod's length must be the distance between its ends in the file, 0 m, not 1 m (they differ by 1 m; leave ""length"" out to use the distance)")>
     <InlineData("[{'type':'string','a':'ball','at':[2,3.5],'length':1.2}]", "links[0].length: a string of 1.2 m cannot reach between its ends, which are 1.5 m apart in the file (0.3 m too short)")>
-    <InlineData("[{'type':'string','a':'ball','at':[2,3.5],'length':1.499999998}]", "links[0].length: a string of 1.5 m cannot reach between its ends, which are 1.5 m apart in the file (2E-09 m too short)")>
+    <InlineData("[{'type':'string','a':'ball','at':[2,3.5],'length':1.499999998}]", "links[0].length: a string of 1.499999998 m cannot reach between its ends, which are 1.5 m apart in the file (2E-09 m too short)")>
     <InlineData("[{'type':'rod','a':'ball','at':[2,2]}]", "links[0]: the rod's ends are at the same point in the file (x = 2, y = 2), so it would have length 0")>
     <InlineData("[{'type':'string','a':'box','at':[4.5,0.25]}]", "links[0]: the string's ends are at the same point in the file (x = 4.5, y = 0.25), so it needs a ""length"" greater than 0")>
     Public Sub LengthThatDoesNotFitTheFile_Errors(links As String, expected As String)
