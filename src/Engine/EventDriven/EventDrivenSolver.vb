@@ -217,7 +217,7 @@ Public NotInheritable Class EventDrivenSolver
         WriteBack(_s.Now)
         _dirty = True
         If _s.World.DraggedBody IsNot Nothing Then Return _s.Now ' carried by hand: the next advance steps it (AdvanceLinked)
-        Return _linked.AdvanceWithin(tEnd - _s.Now, deadline, _s.Now)
+        Return _linked.AdvanceWithin(tEnd - _s.Now, deadline, _s.Now, tEnd)
     End Function
 
     ''' <summary>

@@ -104,13 +104,16 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' As <see cref="Advance"/>, stopping between two events once the wall clock passes <paramref name="deadline"/>
     ''' (Stopwatch ticks). The bodies are written back at the time reached, where the state is exact, and that time
     ''' is returned; the next advance carries on from the same predictions, as one long advance would. It starts at
-    ''' <paramref name="start"/> (s) when given, the world's bodies being there then (the fast path hands over mid-advance).
+    ''' <paramref name="start"/> (s) when given, the world's bodies being there then (the fast path hands over mid-advance),
+    ''' and ends at <paramref name="finish"/> (s) when given: the end of the fast path's advance to the bit (start plus
+    ''' what was left of it may round off it, and the next advance would then start the solver afresh, its motions
+    ''' rounded differently from those of a run sampled at other times).
     ''' </summary>
-    Friend Function AdvanceWithin(duration As Double, deadline As Long, Optional start As Double = Double.NaN) As Double
+    Friend Function AdvanceWithin(duration As Double, deadline As Long, Optional start As Double = Double.NaN, Optional finish As Double = Double.NaN) As Double
         If Double.IsNaN(start) Then start = _world.Time
         If _dirty OrElse _now <> start Then Rebuild(start)
         _reports.Clear()
-        Dim reached = AdvanceTo(_now + duration, deadline)
+        Dim reached = AdvanceTo(If(Double.IsNaN(finish), _now + duration, finish), deadline)
         For Each r In _reports
             _world.ReportCollision(r)
         Next
