@@ -694,6 +694,18 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' The same ball with a second light ball beside the first (random scene 27467 again): at t = 0.575 s it rolls on the
+    ''' floor a micron beside the point straight under the anchor, its string 0.3 nm over its length. The string snapped
+    ''' taut and sent it up at 10⁻⁴ m/s, a bounce the floor's contact took away as the last crumb of a series, holding the
+    ''' ball on the floor; the string, its ends coming together, was left slack and snapped taut again at once, for ever.
+    ''' A string coming back from its full length slower than such a crumb may now hold, as the contact may.
+    ''' </summary>
+    <Fact>
+    Public Sub BallBesideItsStringsAnchorLine_SnapsItTautAndRollsOn()
+        AssertRunsTo("event-linked-ball-beside-its-strings-anchor-line-snaps-it-taut.json", 2)
+    End Sub
+
+    ''' <summary>
     ''' A ball rolling along the floor at u passes straight under the point its string is tied to, the string exactly as long
     ''' as the height of that point above the ball's centre: it swings up as a pendulum from its lowest point, to the height
     ''' u²/(2g) each time, and grazes the floor at the bottom of each swing without a collision (e = 0.5, so any would lose

@@ -118,7 +118,8 @@ Partial Friend NotInheritable Class LinkedEventSolver
         For Each l In links
             Dim a = local(Array.IndexOf(_bodies, l.A))
             Dim b = If(l.IsAnchored, -1, local(Array.IndexOf(_bodies, l.B)))
-            If (l.Kind = LinkKind.Rod AndAlso Not LinkedMotions.IsShortRod(l)) OrElse (l.Kind = LinkKind.String AndAlso l IsNot released AndAlso LinkedMotions.IsTaut(l, _world.Gravity)) Then
+            If (l.Kind = LinkKind.Rod AndAlso Not LinkedMotions.IsShortRod(l)) OrElse
+               (l.Kind = LinkKind.String AndAlso l IsNot released AndAlso (LinkedMotions.IsTaut(l, _world.Gravity) OrElse EndOfABounce(l, t, pressedBefore))) Then
                 Dim c = Constraint.Tie(a, b, If(l.IsAnchored, l.EndB, Vector.Zero), l.Length, l.Kind = LinkKind.Rod)
                 c.Tag = l
                 rows.Add(c)
@@ -244,6 +245,24 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If rate > Math.Max(Math.Sqrt(2 * press * BounceSlops * Slop), CrumbFraction * speeds) Then Return False
         touches.Add(New Touch With {.Key = key, .Body = i, .Other = j, .Side = side, .Fixed = f})
         Return True
+    End Function
+
+    ''' <summary>
+    ''' Whether string <paramref name="l"/>, at its full length (within a slop) with its ends coming together, comes back
+    ''' slower than a bounce of <see cref="BounceSlops"/> slops, as a touching contact that may last does
+    ''' (<see cref="AddIfLasting"/>): then it may hold, as such a contact may. A string snapping taut on a body that a
+    ''' contact holds back (a ball rolling on the floor just beside the point straight under its string's anchor, the
+    ''' string as long as the height) sends it up that slowly; the contact's own rule took the bounce away and held the
+    ''' ball on the floor, and the string, left slack, snapped taut again at once, for ever.
+    ''' </summary>
+    Private Function EndOfABounce(l As Link, t As Double, pressedBefore As Dictionary(Of Integer, Double)) As Boolean
+        If l.Distance < l.Length * (1 - LinkedMotions.FullFraction) - Slop Then Return False
+        Dim rate = l.StretchRate
+        If rate >= 0 Then Return False
+        Dim a = Array.IndexOf(_bodies, l.A), b = If(l.IsAnchored, -1, Array.IndexOf(_bodies, l.B))
+        Dim speeds = l.A.Velocity.Length + If(b >= 0, l.B.Velocity.Length, 0)
+        Dim press = Math.Max(_world.Gravity, Pressing(a, t, pressedBefore) + If(b >= 0, Pressing(b, t, pressedBefore), 0))
+        Return -rate <= Math.Max(Math.Sqrt(2 * press * BounceSlops * Slop), CrumbFraction * speeds)
     End Function
 
     ''' <summary>
