@@ -276,13 +276,13 @@ Partial Friend NotInheritable Class LinkedEventSolver
             _found = t < Double.PositiveInfinity
             Return t
         End If
-        Return PredictGap(i, If(f >= 0, FixedGap(i, f), WallGap(i, side)), tEnd, IsQuiet(key))
+        Return PredictGap(i, If(f >= 0, FixedGap(i, f), WallGap(i, side)), tEnd, KeptOpenNow(key))
     End Function
 
     ''' <summary>
-    ''' Body i's next contact across <paramref name="gap"/>, searched up to <paramref name="tEnd"/>. A contact found
-    ''' <paramref name="quiet"/> at this instant (touching and judged not to be struck: see Collide) is not found
-    ''' closing now again: the search goes on from its opening.
+    ''' Body i's next contact across <paramref name="gap"/>, searched up to <paramref name="tEnd"/>. A contact
+    ''' <paramref name="quiet"/> (found within this instant approaching only as a tie in line lets its body graze it: see
+    ''' Collide) is not found closing now again: the search goes on from its opening.
     ''' </summary>
     Private Function PredictGap(i As Integer, gap As LinkedGap, tEnd As Double, quiet As Boolean) As Double
         Dim m = MotionOf(i)

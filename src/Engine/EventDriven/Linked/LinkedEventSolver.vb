@@ -80,6 +80,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private ReadOnly _releasedNow As New HashSet(Of Long)
     ' Whether a motion ended within this instant by a string's pull or a contact's push falling to zero (see TakesOverFromZero).
     Private _anyReleasedNow As Boolean
+    ' The contacts (their keys' values) found within this instant approaching only as a tie in line lets the body graze
+    ' them (KeptOpenByATie): the search does not find them closing now again.
+    Private ReadOnly _keptOpenNow As New HashSet(Of Long)
     ' The contacts that went off the end of their face at this instant (ConstrainedMotion.LeftItsFeature): found again
     ' at that end with nothing along the face yet to say which way they go, they go onto the corner, not the face.
     Private ReadOnly _offFaceNow As New HashSet(Of Long)
@@ -162,6 +165,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Array.Clear(_hitsNow, 0, _hitsNow.Length)
             _releasedNow.Clear()
             _anyReleasedNow = False
+            _keptOpenNow.Clear()
             _offFaceNow.Clear()
         End If
     End Sub
@@ -399,12 +403,15 @@ Partial Friend NotInheritable Class LinkedEventSolver
             PredictAgain(i, j, side, f, tEnd)
             Return
         End If
-        If rate >= -(CreepSpeed + 0.000000001 * speeds) OrElse (j < 0 AndAlso KeptOpenByATie(i, normal)) Then
+        Dim key = If(j >= 0, ContactKey.Pair(i, j), If(f >= 0, ContactKey.Fixed(i, f), ContactKey.Wall(i, side)))
+        Dim grazing = rate < -(CreepSpeed + 0.000000001 * speeds) AndAlso j < 0 AndAlso KeptOpenByATie(i, normal)
+        If rate >= -(CreepSpeed + 0.000000001 * speeds) OrElse grazing Then
             ' Touching, not approaching, and pressed together (or pressed in by a slop): whether the touch holds is
             ' for the one rule to say. From here on, this instant, the touch is searched for, not solved for.
             ' Or approaching only as a tie in line with it lets the body graze it (a bob through the bottom of its swing
             ' just touching the floor): the tie keeps it from pushing, and the same blow would be struck again at once.
-            Quiet(If(j >= 0, ContactKey.Pair(i, j), If(f >= 0, ContactKey.Fixed(i, f), ContactKey.Wall(i, side))), t)
+            Quiet(key, t)
+            If grazing Then _keptOpenNow.Add(key.Value)
             Dim touched As New List(Of Integer) From {gi}
             If gj >= 0 AndAlso gj <> gi Then touched.Add(gj)
             Repredict(Regroup(touched, t, Nothing), tEnd)
@@ -504,6 +511,11 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' <summary>Whether contact <paramref name="key"/> was found touching without approaching now.</summary>
     Private Function IsQuiet(key As ContactKey) As Boolean
         Return _quietAt = _now AndAlso _quiet.Contains(key.Value)
+    End Function
+
+    ''' <summary>Whether contact <paramref name="key"/> was found within this instant approaching only as a tie in line with it lets its body graze it.</summary>
+    Private Function KeptOpenNow(key As ContactKey) As Boolean
+        Return _keptOpenNow.Contains(key.Value)
     End Function
 
     ''' <summary>Group g's held links, lasting contacts and locks as rows of the blow under way: they hold through it.</summary>
