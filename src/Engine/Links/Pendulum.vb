@@ -286,15 +286,16 @@ Public NotInheritable Class Pendulum
     ''' </summary>
     Public Function SlackTime() As Double
         Dim cos0 = (_startCosHalf - _startSinHalf) * (_startCosHalf + _startSinHalf)
-        Dim pull = _length * _startRate * _startRate + _gravity * cos0
-        ' d(T/m)/dt = −3g sin θ θ': the tension rises where sin θ θ' < 0.
-        Dim rising = 2 * _startSinHalf * _startCosHalf * _startRate < 0
+        Dim spin = _length * _startRate * _startRate ' L θ'₀², N/kg
+        Dim pull = spin + _gravity * cos0
+        ' d(T/m)/dt = −3g sin θ θ': the tension falls where sin θ θ' > 0 and rises where it is < 0.
+        Dim sinRate = 2 * _startSinHalf * _startCosHalf * _startRate
         ' A start at zero tension, within rounding, with the tension rising (a ball leaving the top of a round support
         ' it slid on, where the string to the support's centre takes over) is not slack: the pull grows from there.
-        Dim fromZero = rising AndAlso pull <= 0 AndAlso pull >= -PullRounding * (_length * _startRate * _startRate + Math.Abs(_gravity))
+        Dim fromZero = sinRate < 0 AndAlso pull <= 0 AndAlso pull >= -PullRounding * (spin + Math.Abs(_gravity))
         If pull <= 0 AndAlso Not fromZero Then Return 0
         If _gravity = 0 OrElse _regime = PendulumRegime.Rest OrElse _regime = PendulumRegime.Uniform Then Return Double.PositiveInfinity
-        Dim cosSlack = (2 * _gravity * cos0 - _length * _startRate * _startRate) / (3 * _gravity)
+        Dim cosSlack = (2 * _gravity * cos0 - spin) / (3 * _gravity)
         If cosSlack <= -1 Then Return Double.PositiveInfinity
         Dim sinHalf = Math.Sqrt(0.5 * (1 - cosSlack))
         Dim u1 As Double
@@ -309,7 +310,7 @@ Public NotInheritable Class Pendulum
         End If
         ' cos θ = c* at u = ±u₁ + 2Kn. A start within rounding of that angle counts as now if the
         ' tension is falling there (the point rising: sin θ₀ θ'₀ > 0), else as left behind.
-        Dim falling = 2 * _startSinHalf * _startCosHalf * _startRate > 0
+        Dim falling = sinRate > 0
         Dim halfPeriod = 2 * _jacobi.QuarterPeriod
         Dim margin = If(falling, -1, 1) * RoundingMargin(halfPeriod)
         Dim first = FirstAfter(u1, halfPeriod, _u0 + margin), second = FirstAfter(-u1, halfPeriod, _u0 + margin)

@@ -239,12 +239,21 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If gap.GapAndNormal(t, normal, rate) > Slop Then Return False
         Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
         If rate < -(CreepSpeed + 0.000000001 * speeds) AndAlso Not (j < 0 AndAlso KeptOpenByATie(i, normal)) Then Return False
-        Dim press = Math.Max(_world.Gravity, Pressing(i, t, pressedBefore) + If(j >= 0, Pressing(j, t, pressedBefore), 0))
-        ' Or a bounce far too slow to matter beside the bodies' own speeds (pressed by almost nothing, the four slops
-        ' would allow any bounce at all): holding it takes a 10⁻¹² part of their kinetic energy at most.
-        If rate > Math.Max(Math.Sqrt(2 * press * BounceSlops * Slop), CrumbFraction * speeds) Then Return False
+        If rate > CrumbSpeed(i, j, t, pressedBefore) Then Return False
         touches.Add(New Touch With {.Key = key, .Body = i, .Other = j, .Side = side, .Fixed = f})
         Return True
+    End Function
+
+    ''' <summary>
+    ''' The fastest (m/s) bodies i and j (j −1: a wall, a fixed body or a point) may part and still be held together: a
+    ''' bounce of <see cref="BounceSlops"/> slops under what pressed them just before (<see cref="Pressing"/>, gravity at
+    ''' least), or one far too slow to matter beside their own speeds (pressed by almost nothing, the four slops would
+    ''' allow any bounce at all): holding it takes a 10⁻¹² part of their kinetic energy at most.
+    ''' </summary>
+    Private Function CrumbSpeed(i As Integer, j As Integer, t As Double, pressedBefore As Dictionary(Of Integer, Double)) As Double
+        Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
+        Dim press = Math.Max(_world.Gravity, Pressing(i, t, pressedBefore) + If(j >= 0, Pressing(j, t, pressedBefore), 0))
+        Return Math.Max(Math.Sqrt(2 * press * BounceSlops * Slop), CrumbFraction * speeds)
     End Function
 
     ''' <summary>
@@ -259,10 +268,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         If l.Distance < l.Length * (1 - LinkedMotions.FullFraction) - Slop Then Return False
         Dim rate = l.StretchRate
         If rate >= 0 Then Return False
-        Dim a = Array.IndexOf(_bodies, l.A), b = If(l.IsAnchored, -1, Array.IndexOf(_bodies, l.B))
-        Dim speeds = l.A.Velocity.Length + If(b >= 0, l.B.Velocity.Length, 0)
-        Dim press = Math.Max(_world.Gravity, Pressing(a, t, pressedBefore) + If(b >= 0, Pressing(b, t, pressedBefore), 0))
-        Return -rate <= Math.Max(Math.Sqrt(2 * press * BounceSlops * Slop), CrumbFraction * speeds)
+        Return -rate <= CrumbSpeed(Array.IndexOf(_bodies, l.A), If(l.IsAnchored, -1, Array.IndexOf(_bodies, l.B)), t, pressedBefore)
     End Function
 
     ''' <summary>

@@ -404,8 +404,9 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Return
         End If
         Dim key = If(j >= 0, ContactKey.Pair(i, j), If(f >= 0, ContactKey.Fixed(i, f), ContactKey.Wall(i, side)))
-        Dim grazing = rate < -(CreepSpeed + 0.000000001 * speeds) AndAlso j < 0 AndAlso KeptOpenByATie(i, normal)
-        If rate >= -(CreepSpeed + 0.000000001 * speeds) OrElse grazing Then
+        Dim approaching = rate < -(CreepSpeed + 0.000000001 * speeds)
+        Dim grazing = approaching AndAlso j < 0 AndAlso KeptOpenByATie(i, normal)
+        If Not approaching OrElse grazing Then
             ' Touching, not approaching, and pressed together (or pressed in by a slop): whether the touch holds is
             ' for the one rule to say. From here on, this instant, the touch is searched for, not solved for.
             ' Or approaching only as a tie in line with it lets the body graze it (a bob through the bottom of its swing
