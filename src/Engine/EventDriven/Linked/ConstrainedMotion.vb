@@ -137,7 +137,7 @@ Friend NotInheritable Class ConstrainedMotion
         Dim snapNow As Constraint = Nothing
         For Each l In links
             If l.Kind = LinkKind.Rod Then
-                If LinkedMotions.IsShortRod(l) Then slack.Add(TieOf(l)) Else held.Add(TieOf(l))
+                If LinkedMotions.IsShortRod(l, WatchSlop) Then slack.Add(TieOf(l)) Else held.Add(TieOf(l))
             ElseIf l.Kind = LinkKind.String Then
                 Dim state = LinkedMotions.StringState(l, gravity, released)
                 If state > 0 Then snapNow = TieOf(l)

@@ -118,7 +118,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         For Each l In links
             Dim a = local(Array.IndexOf(_bodies, l.A))
             Dim b = If(l.IsAnchored, -1, local(Array.IndexOf(_bodies, l.B)))
-            If (l.Kind = LinkKind.Rod AndAlso Not LinkedMotions.IsShortRod(l)) OrElse
+            If (l.Kind = LinkKind.Rod AndAlso Not LinkedMotions.IsShortRod(l, Slop)) OrElse
                (l.Kind = LinkKind.String AndAlso l IsNot released AndAlso (LinkedMotions.IsTaut(l, _world.Gravity) OrElse EndOfABounce(l, t, pressedBefore))) Then
                 Dim c = Constraint.Tie(a, b, If(l.IsAnchored, l.EndB, Vector.Zero), l.Length, l.Kind = LinkKind.Rod)
                 c.Tag = l
@@ -406,7 +406,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Function TiesOf(bodies As Shape(), links As List(Of Link)) As List(Of Constraint)
         Dim ties As New List(Of Constraint)
         For Each l In links
-            If l.Kind = LinkKind.Spring OrElse LinkedMotions.IsShortRod(l) OrElse (l.Kind = LinkKind.String AndAlso Not LinkedMotions.IsTaut(l, _world.Gravity)) Then Continue For
+            If l.Kind = LinkKind.Spring OrElse LinkedMotions.IsShortRod(l, Slop) OrElse (l.Kind = LinkKind.String AndAlso Not LinkedMotions.IsTaut(l, _world.Gravity)) Then Continue For
             ties.Add(Constraint.Tie(Array.IndexOf(bodies, l.A), If(l.IsAnchored, -1, Array.IndexOf(bodies, l.B)), If(l.IsAnchored, l.EndB, Vector.Zero), l.Length, l.Kind = LinkKind.Rod))
         Next
         Return ties
