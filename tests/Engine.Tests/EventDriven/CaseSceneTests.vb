@@ -463,6 +463,22 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' Twelve bodies, no links, e = 0, g = 48 (reduced from random scene 30541). The 1 µg ball c173 lies in the bottom-left
+    ''' corner with the 484 t box b0 against it, and the 0.52 kg box b1 and the 755 t ball c200 on it pushing from the
+    ''' right. At t = 0.3003 s the wedged blow, gathering bodies moving at up to 1.5 m/s, was solved to a part in 10¹² of
+    ''' that and left c173 approaching the wall at 1.5·10⁻¹² m/s: struck against the wall alone, then pushed in again by
+    ''' b0, for ever ("could not get past t = 0.30031286064464385 s … 100001 events within a nanosecond"). A wedged blow
+    ''' that leaves its own contact approaching beyond a creep is solved again below one. The run gets past, with no
+    ''' overlap and no energy gained.
+    ''' </summary>
+    <Fact>
+    Public Sub LightBallWedgedInACornerBehindAHeavyBox_GetsPast()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-wedged-light-ball-in-corner-behind-heavy-box.json"))
+        EventSolverTestKit.RunEventSolverChecked(w, 0.31, 0.01, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
+        Assert.Equal(0.31, w.Time, 12)
+    End Sub
+
+    ''' <summary>
     ''' Eight balls (60 µg to 263 t) and no links in a rough world (μk = 0.43), g = 100, e = 0.57: circles take no
     ''' friction, yet the world's μ sent the run down the general path of lasting contact, which could not get past
     ''' t = 0.9586 s (100 001 events within a nanosecond). A world whose movable bodies are all circles has no

@@ -21,6 +21,10 @@ Friend NotInheritable Class LinkedImpulse
     Private ReadOnly _velocities As New List(Of Vector)
     Private ReadOnly _rows As New List(Of Row)
     Private ReadOnly _solve As New ContactSolve()
+    ' The most (m/s) a row may be left approaching by the blow under way (ResolveWedgedAgain's creep; none otherwise).
+    Private _creep As Double = Double.PositiveInfinity
+    ' The velocities a wedged blow started from (ResolveWedged), for solving it again.
+    Private ReadOnly _before As New List(Of Vector)
 
     Private Structure Row
         Public A As Integer
@@ -142,6 +146,8 @@ Friend NotInheritable Class LinkedImpulse
     ''' giving back at most all of the change (e ≤ 1) gains nothing, and stopping again only loses.
     ''' </summary>
     Friend Sub ResolveWedged(restitution As Double)
+        _before.Clear()
+        _before.AddRange(_velocities)
         HoldRows()
         For i = 0 To _rows.Count - 1
             Dim row = _rows(i)
@@ -164,6 +170,25 @@ Friend NotInheritable Class LinkedImpulse
         Next
         Solve()
         WriteVelocities()
+    End Sub
+
+    ''' <summary>
+    ''' The wedged blow just resolved (<see cref="ResolveWedged"/>), solved again from the velocities it started from, with
+    ''' the solve's tolerance (a part in 10¹² of the fastest body's speed) never above <paramref name="creepMetresPerSecond"/>.
+    ''' The blow gathers every body of the groups it touches, but whether a contact is struck is judged by its own two
+    ''' bodies' speeds: a wedged body left approaching a wall by a part in 10¹² of a fast body elsewhere in its group
+    ''' is struck again at once. Writes the new velocities to the bodies.
+    ''' </summary>
+    Friend Sub ResolveWedgedAgain(restitution As Double, creepMetresPerSecond As Double)
+        For i = 0 To _velocities.Count - 1
+            _velocities(i) = _before(i)
+        Next
+        _creep = creepMetresPerSecond
+        Try
+            ResolveWedged(restitution)
+        Finally
+            _creep = Double.PositiveInfinity
+        End Try
     End Sub
 
     Private Function InverseMass(i As Integer) As Double
@@ -238,7 +263,7 @@ Friend NotInheritable Class LinkedImpulse
     ''' with <see cref="ContactSolve"/>, puts the velocities it finds in their place and returns each row's force
     ''' (N·s, in the solve's sign). Its tolerance is <see cref="ContactSolve.ApproachTolerance"/> times the fastest
     ''' body's speed or <paramref name="targetSpeedMetresPerSecond"/> (the largest target speed asked of a row),
-    ''' whichever is more.
+    ''' whichever is more, and never above the creep a wedged blow may be solved again to (<see cref="ResolveWedgedAgain"/>).
     ''' </summary>
     Private Function SolveRows(rows As ContactRow(), targetSpeedMetresPerSecond As Double) As Double()
         Dim inverse = _bodies.Select(Function(b) b.InverseMass).ToArray()
@@ -249,7 +274,7 @@ Friend NotInheritable Class LinkedImpulse
         scale = Math.Max(scale, targetSpeedMetresPerSecond)
         Dim result(_bodies.Count - 1) As Vector
         Dim forces(rows.Length - 1) As Double
-        _solve.Solve(inverse, _velocities, rows, ContactSolve.ApproachTolerance * scale, result, forces)
+        _solve.Solve(inverse, _velocities, rows, Math.Min(ContactSolve.ApproachTolerance * scale, _creep), result, forces)
         For i = 0 To _bodies.Count - 1
             _velocities(i) = result(i)
         Next
