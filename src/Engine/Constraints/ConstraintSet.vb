@@ -27,6 +27,11 @@ Friend NotInheritable Class ConstraintSet
     Private ReadOnly _independence As Double
     ' Whether the bodies the rows move differ in inverse mass by more than SpreadRatio (see SolveSpread).
     Private ReadOnly _spread As Boolean
+    ' When not Nothing (AccelerationRounding), the spread solve adds here the size of every term it sums into each
+    ' acceleration (m/s², laid out as the state).
+    Private _termSizes As Double()
+    ' The spacing of doubles just above 1.
+    Private Const UnitRoundoff As Double = 0.00000000000000022204460492503131
     ' Past this ratio of inverse masses the forces are solved in a basis of the rows made orthogonal slot by slot:
     ' the plain solve loses about its logarithm in digits.
     Private Const SpreadRatio As Double = 1000000.0
@@ -79,6 +84,28 @@ Friend NotInheritable Class ConstraintSet
             Return _rows
         End Get
     End Property
+
+    ''' <summary>
+    ''' How far each component of the accelerations that <see cref="Tensions"/> finds at <paramref name="state"/> may be
+    ''' off by rounding alone (m/s², laid out as the state; <paramref name="free"/>, the free accelerations, is used up):
+    ''' one unit in the last place of the sum of the sizes of the terms added into it. Among bodies of very different
+    ''' masses (the spread solve) a light body's acceleration can be the small sum of great terms: a 2 µg ball among
+    ''' bodies of up to 755 t came out as −31.72381591796875 m/s², then −31.7237548828125 at positions 4·10⁻¹⁶ of
+    ''' themselves away, in steps of 2⁻¹⁴ m/s². Elsewhere nothing is counted: every component is 0.
+    ''' </summary>
+    Friend Function AccelerationRounding(state As Double(), free As Double()) As Double()
+        Dim sizes(state.Length - 1) As Double
+        _termSizes = sizes
+        Try
+            Tensions(state, free)
+        Finally
+            _termSizes = Nothing
+        End Try
+        For i = 0 To sizes.Length - 1
+            sizes(i) *= UnitRoundoff
+        Next
+        Return sizes
+    End Function
 
     ''' <summary>
     ''' The constraints' forces (N) for <paramref name="state"/>, with <paramref name="accelerations"/> holding the
@@ -191,6 +218,10 @@ Friend NotInheritable Class ConstraintSet
                 Dim w = _inverseMass(k)
                 accelerations(4 * k + 2) += w * b(i) * q(i)(2 * k)
                 accelerations(4 * k + 3) += w * b(i) * q(i)(2 * k + 1)
+                If _termSizes IsNot Nothing Then
+                    _termSizes(4 * k + 2) += Math.Abs(w * b(i) * q(i)(2 * k))
+                    _termSizes(4 * k + 3) += Math.Abs(w * b(i) * q(i)(2 * k + 1))
+                End If
             Next
         Next
         For i = m - 1 To 0 Step -1

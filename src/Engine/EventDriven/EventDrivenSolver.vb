@@ -101,6 +101,13 @@ Public NotInheritable Class EventDrivenSolver
         End Get
     End Property
 
+    ''' <summary>The general path of lasting contact this solver hands a world to (for counting its work).</summary>
+    Friend ReadOnly Property General As LinkedEventSolver
+        Get
+            Return _linked
+        End Get
+    End Property
+
     ''' <summary>Attaches the solver to a world; the first advance builds every prediction.</summary>
     Public Sub Attach(world As World) Implements ISolver.Attach
         If world Is Nothing Then Throw New ArgumentNullException(NameOf(world))

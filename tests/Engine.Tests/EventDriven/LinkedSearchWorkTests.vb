@@ -151,4 +151,20 @@ Public Class LinkedSearchWorkTests
         Dim w = RunKeepingLaws("event-linked-light-ball-pinned-under-heavy-pile.json", 0.005, 4, s)
         Assert.True(s.IntegratorSteps < 2000, $"{s.IntegratorSteps} integrator steps for 0.02 s ({w.CollisionCount} collisions)")
     End Sub
+
+    ''' <summary>
+    ''' Twelve bodies from 1 µg to 755 t, e = 0, g = 48, pressed together in a corner from t ≈ 0.31 s (reduced from random
+    ''' scene 30541). The 2 µg ball c196's acceleration, among forces on bodies up to 755 t, comes out of the solve only
+    ''' to 2⁻¹⁴ m/s² (−31.72381591796875 m/s², and −31.7237548828125 at positions 4·10⁻¹⁶ of themselves away): the error
+    ''' of its velocity, held to 10⁻¹² m/s, was that rounding whatever the step, and the group was integrated in steps of
+    ''' 2 µs (116 000 steps and 21 s of CPU for 0.4 s). h times that rounding is now allowed for
+    ''' (ConstraintSet.AccelerationRounding): about 400 steps. No overlap and no energy gained.
+    ''' </summary>
+    <Fact>
+    Public Sub LightBallsAmongHeavyBodiesInACorner_AreIntegratedInLongSteps()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-wedged-light-ball-in-corner-behind-heavy-box.json"))
+        EventSolverTestKit.RunEventSolverChecked(w, 0.4, 0.01, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
+        Dim steps = DirectCast(w.Solver, EventDrivenSolver).General.IntegratorSteps
+        Assert.True(steps < 5000, $"{steps} integrator steps for 0.4 s ({w.CollisionCount} collisions)")
+    End Sub
 End Class

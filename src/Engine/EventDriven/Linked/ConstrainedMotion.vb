@@ -362,6 +362,7 @@ Friend NotInheritable Class ConstrainedMotion
             Dim t = _times(_times.Count - 1)
             Dim y = _states(_states.Count - 1)
             Dim k1 = _derivatives(_derivatives.Count - 1)
+            Dim rounding As Double() = Nothing
             Do
                 Dim h = _step
                 Dim result As Double() = Nothing, slope As Double() = Nothing
@@ -371,7 +372,10 @@ Friend NotInheritable Class ConstrainedMotion
                     ' Among masses 10⁶ apart the light bodies' accelerations are the small difference of great forces, all
                     ' rounding where the rows fix their motion: the error is measured in what the rows leave free, and the
                     ' quintic is kept on the rows between the ends (docs/links.md, "Bodies of very different masses").
-                    worst = DormandPrince.TryStep(AddressOf Derivative, y, k1, h, RelativeTolerance, AbsoluteTolerance, result, slope,
+                    ' And a light body's acceleration among them may be the small sum of great terms, known only to their
+                    ' rounding: h times that is noise no shorter step takes away (ConstraintSet.AccelerationRounding).
+                    If _constraints.Spread AndAlso rounding Is Nothing Then rounding = _constraints.AccelerationRounding(y, FreeDerivative(y))
+                    worst = DormandPrince.TryStep(AddressOf Derivative, y, k1, h, RelativeTolerance, AbsoluteTolerance, result, slope, rounding,
                                                   removeHeld:=If(_constraints.Spread, New Func(Of Double(), Double(), Boolean)(AddressOf _constraints.TryRemoveHeld), Nothing))
                     If worst <= 1 Then
                         Dim lengthError As Double, rateError As Double
