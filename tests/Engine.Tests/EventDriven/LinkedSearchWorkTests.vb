@@ -160,6 +160,33 @@ Public Class LinkedSearchWorkTests
     ''' 2 µs (116 000 steps and 21 s of CPU for 0.4 s). h times that rounding is now allowed for
     ''' (ConstraintSet.AccelerationRounding): about 400 steps. No overlap and no energy gained.
     ''' </summary>
+    ''' <summary>
+    ''' A bob on a rod and on a stiff spring (10⁸ N/m) to a second anchor: nothing of its own ends the group's motion, so
+    ''' it is looked at a stretch at a time, each twice as long as the last up to 0.1 s, in steps of microseconds. An
+    ''' advance out of wall-clock time takes one event only, and one event looked as far as 17 000 steps ahead, so a
+    ''' window waited on it; it now takes at most 256 steps each time it looks further.
+    ''' </summary>
+    <Fact>
+    Public Sub AStiffGroupLookingFurther_TakesABoundedNumberOfStepsAtATime()
+        Dim w As New World(10.0, 10.0, 9.81, 1.0)
+        Dim bob As New Circle(New Vector(5.0, 4.0), 0.1, 1.0, New Vector(1.0, 0.0))
+        w.Add(bob)
+        w.Add(Link.CreateTie(LinkKind.Rod, bob, New Vector(5.0, 5.0), 1.0))
+        w.Add(Link.CreateSpring(bob, New Vector(6.0, 4.0), 100000000.0, 0.9))
+        Dim s = UseEventSolver(w).General
+        Dim mostAtOnce = 0L
+        Dim calls = 0
+        Do While w.Time < 0.05
+            Dim before = s.IntegratorSteps
+            ' No wall-clock time at all: one event per advance.
+            w.AdvanceWithin(0.05 - w.Time, 0.0)
+            mostAtOnce = Math.Max(mostAtOnce, s.IntegratorSteps - before)
+            calls += 1
+        Loop
+        Assert.True(s.IntegratorSteps > 5000, $"{s.IntegratorSteps} steps: the spring is not stiff enough to test this")
+        Assert.True(mostAtOnce <= 256 + 2, $"one advance took {mostAtOnce} steps ({s.IntegratorSteps} steps in {calls} advances)")
+    End Sub
+
     <Fact>
     Public Sub LightBallsAmongHeavyBodiesInACorner_AreIntegratedInLongSteps()
         Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-wedged-light-ball-in-corner-behind-heavy-box.json"))

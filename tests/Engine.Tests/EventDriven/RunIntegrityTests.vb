@@ -119,6 +119,47 @@ Public Class RunIntegrityTests
         Assert.Equal(plain, Fingerprint(w, log))
     End Sub
 
+    ''' <summary>
+    ''' A row of touching balls struck end on, with a pendulum beside it (links: the general path): the blow passes
+    ''' down the row in one event per ball, all at one instant.
+    ''' </summary>
+    Private Shared Function LinkedCradle() As World
+        Dim w As New World(8.0, 5.0, 0.0, 1.0)
+        w.Add(New Circle(New Vector(1.0, 2.0), 0.1, 1.0, New Vector(2.0, 0.0)))
+        For k = 0 To 7
+            w.Add(New Circle(New Vector(3.0 + 0.2 * k, 2.0), 0.1, 1.0))
+        Next
+        Dim bob As New Circle(New Vector(7.0, 3.0), 0.1, 1.0, New Vector(0.0, 1.0))
+        w.Add(bob)
+        w.Add(Link.CreateTie(LinkKind.String, bob, New Vector(6.0, 3.0), 1.0))
+        Return w
+    End Function
+
+    <Fact>
+    Public Sub AWallClockBudget_StopsWithinACascade_WithoutChangingTheRun()
+        ' A cascade at one instant that runs out of time stops between two of its events: a run stuck at one instant
+        ' must not hold a window that waits on the advance.
+        Dim plain = LinkedCradle()
+        UseEventSolver(plain)
+        Dim plainLog = Logged(plain)
+        plain.Advance(2.0)
+        Dim w = LinkedCradle()
+        UseEventSolver(w)
+        Dim log = Logged(w)
+        Dim withinAnInstant = 0
+        Dim calls = 0
+        While w.Time < 2.0
+            Dim heard = log.Count
+            Dim advanced = w.AdvanceWithin(2.0 - w.Time, 0.0)
+            calls += 1
+            Assert.True(calls < 100000, "the budgeted advances do not get on")
+            If advanced = 0 AndAlso log.Count > heard Then withinAnInstant += 1
+        End While
+        ' The striker and the eight balls of the row: seven blows pass on at the instant of the first.
+        Assert.True(withinAnInstant >= 7, $"{withinAnInstant} advances stopped within an instant")
+        Assert.Equal(Fingerprint(plain, plainLog), Fingerprint(w, log))
+    End Sub
+
     <Fact>
     Public Sub BouncingBall_IsShownAtRestOnlyOnceItsBouncesHaveEnded()
         Dim w = Scenarios.BouncingBall(1.0, 0.9)
