@@ -328,9 +328,7 @@ Friend NotInheritable Class ConstraintSet
             Next
             ' Gauss–Newton converges quadratically: from the integrator's drift one step reaches rounding.
             If worst <= 0.000000000000001 Then Exit For
-            Factor()
-            Solve(c)
-            Apply(state, c, 0)
+            ApplyLeastChange(state, c, 0, NeedsSpreadSolve())
         Next
     End Sub
 
@@ -343,9 +341,29 @@ Friend NotInheritable Class ConstraintSet
         For i = 0 To m - 1
             c(i) = -c(i)
         Next
-        Factor()
-        Solve(c)
-        Apply(state, c, 2)
+        ApplyLeastChange(state, c, 2, NeedsSpreadSolve())
+    End Sub
+
+    ''' <summary>
+    ''' Solves M μ = <paramref name="c"/> (μ in place) and adds the change W Jᵀ μ it makes to the positions (offset 0)
+    ''' or the velocities (offset 2) of <paramref name="values"/>, laid out as a state. When <paramref name="spread"/>,
+    ''' the orthogonalised way (<see cref="SolveSpread"/>): put back on its rows, a 1 µg ball wedged between a wall and
+    ''' a 484 t box is moved by its own rows, where the plain factor found them the same row and refused the step.
+    ''' </summary>
+    Private Sub ApplyLeastChange(values As Double(), c As Double(), offset As Integer, spread As Boolean)
+        If spread Then
+            ' SolveSpread adds its change in the velocity places of a state's layout.
+            Dim n = _inverseMass.Length
+            Dim change(4 * n - 1) As Double
+            SolveSpread(c, change)
+            For k = 0 To n - 1
+                values(4 * k + offset) += change(4 * k + 2)
+                values(4 * k + offset + 1) += change(4 * k + 3)
+            Next
+        Else
+            Solve(c)
+            Apply(values, c, offset)
+        End If
     End Sub
 
     ''' <summary>
@@ -362,7 +380,6 @@ Friend NotInheritable Class ConstraintSet
         MeasureNormals(state)
         ' Bodies of very different masses: the orthogonalised solve, as the forces are found (see SolveSpread).
         Dim spread = NeedsSpreadSolve()
-        Dim n = _inverseMass.Length
         For Each offset In {0, 2}
             Dim c(m - 1) As Double
             For i = 0 To m - 1
@@ -371,18 +388,7 @@ Friend NotInheritable Class ConstraintSet
                 Dim bx = If(r.B >= 0, values(4 * r.B + offset), 0.0), by = If(r.B >= 0, values(4 * r.B + offset + 1), 0.0)
                 c(i) = _nx(i) * (bx - ax) + _ny(i) * (by - ay)
             Next
-            If spread Then
-                ' SolveSpread adds its change in the velocity places of a state's layout.
-                Dim change(4 * n - 1) As Double
-                SolveSpread(c, change)
-                For k = 0 To n - 1
-                    values(4 * k + offset) += change(4 * k + 2)
-                    values(4 * k + offset + 1) += change(4 * k + 3)
-                Next
-            Else
-                Solve(c)
-                Apply(values, c, offset)
-            End If
+            ApplyLeastChange(values, c, offset, spread)
         Next
         Return True
     End Function
