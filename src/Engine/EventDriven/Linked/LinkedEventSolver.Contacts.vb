@@ -238,7 +238,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim normal As Vector, rate As Double
         If gap.GapAndNormal(t, normal, rate) > Slop Then Return False
         Dim speeds = _bodies(i).Velocity.Length + If(j >= 0, _bodies(j).Velocity.Length, 0)
-        If rate < -(CreepSpeed + 0.000000001 * speeds) AndAlso Not (j < 0 AndAlso KeptOpenByATie(i, normal)) Then Return False
+        If rate < -ClosingSpeed(speeds) AndAlso Not (j < 0 AndAlso KeptOpenByATie(i, normal)) Then Return False
         If rate > CrumbSpeed(i, j, t, pressedBefore) Then Return False
         touches.Add(New Touch With {.Key = key, .Body = i, .Other = j, .Side = side, .Fixed = f})
         Return True
@@ -637,7 +637,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim u As Vector, value As Double, rate As Double, curvature As Double
         c.Measure(state, u, value, rate, curvature)
         Dim speeds = velocities(c.A).Length + If(c.B >= 0, velocities(c.B).Length, 0)
-        Return rate < -(CreepSpeed + 0.000000001 * speeds)
+        Return rate < -ClosingSpeed(speeds)
     End Function
 
     ''' <summary>

@@ -324,7 +324,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         Dim d = gap.GapAndNormal(t0, n, rate)
         _gapEvaluations += 1
         If d <= Slop Then
-            If rate < -(CreepSpeed + 0.000000001 * Math.Max(speed, speeds)) AndAlso Not quiet Then Return t0
+            If rate < -ClosingSpeed(Math.Max(speed, speeds)) AndAlso Not quiet Then Return t0
             ' Leaving at rate ḋ, the gap is at least d + ḋ s − ½ A s² (A the bound from below): where that
             ' parabola first reaches twice the slop, the gap has opened that far, and it did not close before.
             Dim opens = OpeningTime(d, rate, below, 2 * Slop)

@@ -31,7 +31,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
     Private Const Horizon As Double = 0.02
     ' The spacing of doubles just above 1: a time t is held to within t times this.
     Private Const UnitRoundoff As Double = 0.00000000000000022204460492503131
-    ' A touching pair closes if it approaches faster than this (m/s) plus a billionth of its speeds:
+    ' A touching pair closes if it approaches faster than this (m/s) plus a billionth of its speeds (ClosingSpeed):
     ' slower is rounding left over from a cascade, and would only report collisions of nothing.
     Private Const CreepSpeed As Double = 0.000000000001
     ' Two sharp shapes touching: how many steps (of the speed bound alone) to spend looking for the gap to
@@ -150,6 +150,14 @@ Partial Friend NotInheritable Class LinkedEventSolver
         _now = tEnd
         WriteBack(tEnd)
         Return tEnd
+    End Function
+
+    ''' <summary>
+    ''' The speed (m/s) above which a touching pair whose speeds add up to <paramref name="speeds"/> (m/s) closes:
+    ''' <see cref="CreepSpeed"/> plus a billionth of those speeds. Slower is rounding left over from a blow.
+    ''' </summary>
+    Private Shared Function ClosingSpeed(speeds As Double) As Double
+        Return CreepSpeed + 0.000000001 * speeds
     End Function
 
     ''' <summary>
@@ -406,7 +414,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             Return
         End If
         Dim key = If(j >= 0, ContactKey.Pair(i, j), If(f >= 0, ContactKey.Fixed(i, f), ContactKey.Wall(i, side)))
-        Dim approaching = rate < -(CreepSpeed + 0.000000001 * speeds)
+        Dim approaching = rate < -ClosingSpeed(speeds)
         Dim grazing = approaching AndAlso j < 0 AndAlso KeptOpenByATie(i, normal)
         If Not approaching OrElse grazing Then
             ' Touching, not approaching, and pressed together (or pressed in by a slop): whether the touch holds is
@@ -441,7 +449,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
             ' its own bodies' speeds: left approaching beyond that, it is solved again to below a creep (a 1 µg ball in a
             ' corner, a 484 t box pressing it there in a group with balls at 1 m/s, was left approaching the wall at
             ' 1.5·10⁻¹² m/s, struck alone, and pushed in again by the box, for ever).
-            If SeparationSpeed(a, b, normal) < -(CreepSpeed + 0.000000001 * speeds) Then _impulse.ResolveWedgedAgain(_world.Restitution, 0.5 * CreepSpeed)
+            If SeparationSpeed(a, b, normal) < -ClosingSpeed(speeds) Then _impulse.ResolveWedgedAgain(_world.Restitution, 0.5 * CreepSpeed)
         Else
             _impulse.Resolve()
         End If
@@ -465,7 +473,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
         ' a contact that approached by less than that, but by more than a creep, was left approaching, and would be
         ' struck again at once, for ever (a 2 mg ball left at 10⁻¹² m/s against a wall beside a 187 t ball sliding at
         ' 1.3 m/s). It is stopped by a blow of its own bodies alone.
-        If SeparationSpeed(a, b, normal) < -(CreepSpeed + 0.000000001 * speeds) Then
+        If SeparationSpeed(a, b, normal) < -ClosingSpeed(speeds) Then
             _impulse.Clear()
             _impulse.AddContact(a, b, normal, _world.Restitution)
             Dim before = _impulse.KineticEnergy
@@ -499,7 +507,7 @@ Partial Friend NotInheritable Class LinkedEventSolver
     ''' </summary>
     Private Shared Function StillCloses(a As Shape, b As Shape, first As Vector, second As Vector, aBefore As Vector, bBefore As Vector) As Boolean
         Dim u = a.Velocity - If(b Is Nothing, Vector.Zero, b.Velocity)
-        Dim tolerance = CreepSpeed + 0.000000001 * (aBefore.Length + bBefore.Length)
+        Dim tolerance = ClosingSpeed(aBefore.Length + bBefore.Length)
         Return Vector.Dot(u, first) > tolerance AndAlso Vector.Dot(u, second) > tolerance
     End Function
 
