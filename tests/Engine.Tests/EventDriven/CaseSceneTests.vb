@@ -479,6 +479,22 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' Three balls on links, no gravity, e = 0 (reduced from random scene 33252): c1, on a 4.2 m rod to a fixed peg, comes
+    ''' to rest at t = 0.072 s balanced on the top-left corner of the box r0, 10⁻¹⁵ m over onto its top face. Its touch
+    ''' was taken for the corner (a speed of 5·10⁻¹⁸ m/s along the face said it was leaving it), and the corner, which it
+    ''' was already past by those 10⁻¹⁵ m, was left at once, then taken again, for ever ("could not get past
+    ''' t = 0.19122144394211932 s … 100001 events within a nanosecond"). A contact that starts past an end of its feature
+    ''' by no more than a slop now leaves it only once a slop further past. The run gets past, with no overlap and no
+    ''' energy gained.
+    ''' </summary>
+    <Fact>
+    Public Sub BallBalancedOnABoxCorner_IsHeldThere_AndTheRunGetsPast()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-ball-balanced-on-box-corner.json"))
+        EventSolverTestKit.RunEventSolverChecked(w, 2.0, 0.01, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
+        Assert.Equal(2.0, w.Time, 12)
+    End Sub
+
+    ''' <summary>
     ''' Eight bodies, no links, e = 0, g = 48 (reduced from random scene 30541): the 1 µg ball c173 and the 2 µg ball c196
     ''' pressed among the 484 t box b0 and the 755 t and 417 t balls c200 and c266. At t = 0.9574 s their group of five
     ''' drifted off its contacts by rounding, and putting it back with the plain mass-weighted factor found a light ball's

@@ -598,21 +598,34 @@ Friend NotInheritable Class ConstrainedMotion
     ''' stays on. Each end is watched apart: a contact that starts exactly at one end, moving onto the face, has a
     ''' margin of 0 there, and judged by the nearer end alone (the least of the two) it would leave at once, be held
     ''' again on the same face, and leave again, for ever; it leaves by the far end, where that end's margin turns
-    ''' negative. One that starts at or past an end and is still past it at the step's end leaves at the start.
+    ''' negative. One that starts at or past an end and is still past it at the step's end leaves at the start. But one
+    ''' that starts past an end by no more than a slop leaves only once a slop further past it: rounding put it there (a
+    ''' ball balanced on a box's corner, 10⁻¹⁵ m over onto the top face, was held on the corner, left it at once, and
+    ''' was held on it again, for ever).
     ''' </summary>
     Private Function LeavingTime(row As Constraint, j As Integer) As Double
         Dim t0 = _times(j), t1 = _times(j + 1)
-        Dim first0, second0, first1, second1 As Double
+        Dim first0, second0, first1, second1, firstStart, secondStart As Double
         row.EndMargins(_states(j), first0, second0)
         row.EndMargins(_states(j + 1), first1, second1)
+        row.EndMargins(_states(0), firstStart, secondStart)
+        Dim firstEnd = EndLimit(firstStart), secondEnd = EndLimit(secondStart)
         Dim best = Double.PositiveInfinity
-        If first1 < 0 Then
-            best = Math.Min(best, If(first0 <= 0, t0, ScalarRoot.Brent(Function(t) EndMargin(row, t, True), t0, t1, first0, first1)))
+        If first1 < firstEnd Then
+            best = Math.Min(best, If(first0 <= firstEnd, t0, ScalarRoot.Brent(Function(t) EndMargin(row, t, True) - firstEnd, t0, t1, first0 - firstEnd, first1 - firstEnd)))
         End If
-        If second1 < 0 Then
-            best = Math.Min(best, If(second0 <= 0, t0, ScalarRoot.Brent(Function(t) EndMargin(row, t, False), t0, t1, second0, second1)))
+        If second1 < secondEnd Then
+            best = Math.Min(best, If(second0 <= secondEnd, t0, ScalarRoot.Brent(Function(t) EndMargin(row, t, False) - secondEnd, t0, t1, second0 - secondEnd, second1 - secondEnd)))
         End If
         Return best
+    End Function
+
+    ''' <summary>
+    ''' The margin (m) below which a contact whose margin at one end was <paramref name="atStart"/> (m) at the motion's
+    ''' start has left by that end: 0, or a slop below where it started when that was past the end by a slop at most.
+    ''' </summary>
+    Private Shared Function EndLimit(atStart As Double) As Double
+        Return If(atStart < 0 AndAlso atStart >= -WatchSlop, atStart - WatchSlop, 0)
     End Function
 
     ''' <summary>One end's part of a bounded contact's margin (m) at <paramref name="time"/>.</summary>
