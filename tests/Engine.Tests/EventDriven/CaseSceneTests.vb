@@ -479,6 +479,21 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
+    ''' Seventeen 21 g balls falling into a V of two segments, no links, g = 48, e = 0.37 (reduced from random scene
+    ''' 34354): the exact fast path. From t = 0.155 s c4 slides down one side and c5 is pushed up the other, pressed
+    ''' together; a blow between them struck a hair late left them overlapping beyond rounding, and a pair that starts
+    ''' inside each other and parts was looked for only where it parts and meets again at its touching distance,
+    ''' which it never reached: they sank into each other by what each blow left, 5.8 µm by t = 0.169 s. Such a pair now
+    ''' collides again where it comes back to the depth it started at. No overlap, no energy gained.
+    ''' </summary>
+    <Fact>
+    Public Sub BallsPressedTogetherInAV_DoNotSinkIntoEachOther()
+        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-balls-pressed-together-in-a-v.json"))
+        EventSolverTestKit.RunEventSolverChecked(w, 0.2, 0.001, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
+        Assert.Equal(0.2, w.Time, 12)
+    End Sub
+
+    ''' <summary>
     ''' Three balls on links, no gravity, e = 0 (reduced from random scene 33252): c1, on a 4.2 m rod to a fixed peg, comes
     ''' to rest at t = 0.072 s balanced on the top-left corner of the box r0, 10⁻¹⁵ m over onto its top face. Its touch
     ''' was taken for the corner (a speed of 5·10⁻¹⁸ m/s along the face said it was leaving it), and the corner, which it

@@ -81,6 +81,23 @@ Public Class TimeOfImpactTests
     End Sub
 
     <Fact>
+    Public Sub CircleCircleAccelerated_OverlappingBeyondRounding_PartingThenPressedBack_MeetsAgainAtThatDepth()
+        ' Two balls 1 µm into each other (a blow struck late), parting at 1 mm/s along the line of centres while
+        ' their accelerations press them together at 10 m/s² (each sliding down one side of a V): they come back to
+        ' the same depth after 2 v / a. Waiting for them to part and meet at R (they never part), the pair was never
+        ' looked at again and sank on into each other.
+        Const sumR As Double = 0.13, depth As Double = 0.000001, v As Double = 0.001, a As Double = 10.0
+        Dim t = TimeOfImpact.CircleCircleAccelerated(sumR - depth, 0, v, 0, -a, 0, sumR, Slop)
+        Assert.InRange(t / (2 * v / a), 1 - 1.0E-9, 1 + 1.0E-9)
+        ' Parting fast enough to get out: they meet again where they touch, at R, first.
+        Const fast As Double = 0.1
+        Dim out = TimeOfImpact.CircleCircleAccelerated(sumR - depth, 0, fast, 0, -a, 0, sumR, Slop)
+        ' x(t) = R − depth + v t − ½ a t² falls back through R at the larger root of v t − ½ a t² = depth.
+        Dim expected = (fast + Math.Sqrt(fast * fast - 2 * a * depth)) / a
+        Assert.InRange(out / expected, 1 - 1.0E-9, 1 + 1.0E-9)
+    End Sub
+
+    <Fact>
     Public Sub CircleCircle_HeadOn_MatchesGapOverClosingSpeed()
         ' Centres 1 m apart, radii sum 0.2, closing at 2 m/s: contact after 0.8 / 2 = 0.4 s.
         Dim t = TimeOfImpact.CircleCircle(-1, 0, 2, 0, 0, 0.2, Slop)

@@ -58,8 +58,15 @@ Public Module TimeOfImpact
         ' |Δp + Δv t + α t²|² with α = ½ Δa: t⁴ |α|², t³ 2 α·Δv, t² (|Δv|² + 2 α·Δp), t 2 Δp·Δv, 1 |Δp|² − R².
         Dim alphaX = 0.5 * dAx, alphaY = 0.5 * dAy
         If Math.Abs(c1) <= slopeTol AndAlso c0 <= tol Then c1 = 0
-        Return RootFinding.EarliestEntry(alphaX * alphaX + alphaY * alphaY, 2 * (alphaX * dvx + alphaY * dvy),
-                                         dvx * dvx + dvy * dvy + 2 * (alphaX * dx + alphaY * dy), c1, c0, tol)
+        Dim q4 = alphaX * alphaX + alphaY * alphaY, q3 = 2 * (alphaX * dvx + alphaY * dvy)
+        Dim q2 = dvx * dvx + dvy * dvy + 2 * (alphaX * dx + alphaY * dy)
+        Dim through = RootFinding.EarliestEntry(q4, q3, q2, c1, c0, tol)
+        ' Further into each other than rounding (a blow struck late), and parting: they collide again where they come
+        ' back to that depth, if they do before they part and meet at R. Waiting for R alone, two balls pressed
+        ' together by their accelerations (each sliding down one side of a V) sank into each other by the depth left
+        ' at every blow: 6 µm in 10 ms.
+        If c0 < -tol Then Return Math.Min(through, RootFinding.EarliestEntry(q4, q3, q2, c1, 0, tol))
+        Return through
     End Function
 
     ''' <summary>
