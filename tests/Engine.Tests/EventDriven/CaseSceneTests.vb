@@ -473,9 +473,7 @@ Public Class CaseSceneTests
     ''' </summary>
     <Fact>
     Public Sub LightBallWedgedInACornerBehindAHeavyBox_GetsPast()
-        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-wedged-light-ball-in-corner-behind-heavy-box.json"))
-        EventSolverTestKit.RunEventSolverChecked(w, 0.31, 0.01, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
-        Assert.Equal(0.31, w.Time, 12)
+        AssertRunsTo("event-wedged-light-ball-in-corner-behind-heavy-box.json", 0.31, 0.01)
     End Sub
 
     ''' <summary>
@@ -488,9 +486,7 @@ Public Class CaseSceneTests
     ''' </summary>
     <Fact>
     Public Sub BallsPressedTogetherInAV_DoNotSinkIntoEachOther()
-        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-balls-pressed-together-in-a-v.json"))
-        EventSolverTestKit.RunEventSolverChecked(w, 0.2, 0.001, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
-        Assert.Equal(0.2, w.Time, 12)
+        AssertRunsTo("event-balls-pressed-together-in-a-v.json", 0.2, 0.001)
     End Sub
 
     ''' <summary>
@@ -504,9 +500,7 @@ Public Class CaseSceneTests
     ''' </summary>
     <Fact>
     Public Sub BallBalancedOnABoxCorner_IsHeldThere_AndTheRunGetsPast()
-        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-linked-ball-balanced-on-box-corner.json"))
-        EventSolverTestKit.RunEventSolverChecked(w, 2.0, 0.01, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
-        Assert.Equal(2.0, w.Time, 12)
+        AssertRunsTo("event-linked-ball-balanced-on-box-corner.json", 2.0, 0.01)
     End Sub
 
     ''' <summary>
@@ -519,9 +513,7 @@ Public Class CaseSceneTests
     ''' </summary>
     <Fact>
     Public Sub LightBallsPressedAmongHeavyOnes_AreKeptOnTheirContacts_AndGetPast()
-        Dim w = SceneFile.LoadFile(TestRepo.CaseFile("event-light-balls-pressed-among-heavy-ones.json"))
-        EventSolverTestKit.RunEventSolverChecked(w, 1.0, 0.01, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
-        Assert.Equal(1.0, w.Time, 12)
+        AssertRunsTo("event-light-balls-pressed-among-heavy-ones.json", 1.0, 0.01)
     End Sub
 
     ''' <summary>
@@ -988,12 +980,12 @@ Public Class CaseSceneTests
     End Sub
 
     ''' <summary>
-    ''' Runs the case file <paramref name="name"/> to <paramref name="seconds"/> in advances of 0.05 s, energy never gained
-    ''' (to 10⁻⁹) and no overlap (over 10⁻⁹ m) after each, and asserts that it got there.
+    ''' Runs the case file <paramref name="name"/> to <paramref name="seconds"/> in advances of <paramref name="sample"/> s,
+    ''' energy never gained (to 10⁻⁹) and no overlap (over 10⁻⁹ m) after each, and asserts that it got there.
     ''' </summary>
-    Private Shared Sub AssertRunsTo(name As String, seconds As Double)
+    Private Shared Sub AssertRunsTo(name As String, seconds As Double, Optional sample As Double = 0.05)
         Dim w = SceneFile.LoadFile(TestRepo.CaseFile(name))
-        EventSolverTestKit.RunEventSolverChecked(w, seconds, 0.05, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
+        EventSolverTestKit.RunEventSolverChecked(w, seconds, sample, EnergyLaw.NeverGained(0.000000001), maxOverlap:=0.000000001)
         Assert.Equal(seconds, w.Time, 12)
     End Sub
 End Class
